@@ -1,0 +1,34 @@
+// tsf: tangible scalar fields. One binary, one subcommand per job.
+#include <cstdio>
+#include <exception>
+
+#include "gen/cli/commands.h"
+#include "gen/error.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"tsf " TSF_VERSION " - turn a 2D scalar field into something you can feel:\n"
+                 "a 3D-printable model of hexagonal pillars (STL, 3MF, OpenSCAD) or a surface\n"
+                 "rendered on a force-feedback device."};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "tsf " TSF_VERSION);
+    app.footer("Run 'tsf <command> --help' for the options of one command.\n"
+               "Exit codes: 0 ok, 1 a check failed, 2 bad input, 3 external tool failed,\n"
+               "4 device failed, 130 interrupted.");
+    tsf::cli::addGenCommand(app);
+    tsf::cli::addInfoCommand(app);
+    tsf::cli::addRenderCommand(app);
+    tsf::cli::addVerifyCommand(app);
+    tsf::cli::addFeelCommand(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const tsf::InputError& e) {
+        std::fprintf(stderr, "tsf: error: %s\n", e.what());
+        return tsf::cli::kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "tsf: error: %s\n", e.what());
+        return tsf::cli::kExitToolFailed;
+    }
+    return 0;
+}

@@ -1,0 +1,248 @@
+// Direct mesher: Scene -> exact boundary mesh. See direct_mesher.h.
+//
+// Vertices. A mesh vertex is a lattice vertex (dense id from hex_grid.h) at a
+// snapped height. The heights used at a lattice vertex are the tops of its
+// kept incident cells, plus their bottoms where a bottom face touches it
+// (mirrored: always; flat: only on the rim, where the bottom polygon passes).
+// They are enumerated from the lattice, so no float is ever compared.
+//
+// Walls. Along edge k of kept cell a, the wall is the part of a's z interval
+// that the neighbour b does not cover (all of it if b is not kept). Each wall
+// piece is a vertical planar polygon whose two vertical sides carry every
+// height used at their lattice vertex; it is triangulated by a zipper that
+// always takes one point from each side, so no triangle is degenerate.
+//
+// Flat bottom. The rim of the kept region is one simple polygon (hexagons
+// meet three to a vertex, so the region's boundary never pinches, and the
+// culling rules keep the region simply connected: docs/model.md). It is
+// triangulated as a whole by a constrained Delaunay triangulation with exact
+// predicates, without interior vertices.
+#include "gen/direct_mesher.h"
+
+#include <algorithm>
+#include <cassert>
+#include <unordered_map>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+namespace tsf {
+namespace {
+
+constexpr int kMaxHeightsPerVertex = 6;  // 3 incident cells x (top, bottom)
+
+struct VertexRef {
+    int32_t col, row;
+    int type;  // 0 = top corner of (col, row), 1 = bottom corner
+};
+
+VertexRef decodeVertexId(const HexGrid& g, int64_t id) {
+    const int type = int(id & 1);
+    const int64_t cell = id >> 1;
+    return {int32_t(cell % (int64_t(g.cols) + 2)) - 1, int32_t(cell / (int64_t(g.cols) + 2)) - 1, type};
+}
+
+class MeshBuilder {
+public:
+    explicit MeshBuilder(const Scene& scene) : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat) {
+        first_index_.assign(size_t(latticeVertexIdCount(g_)) + 1, 0);
+    }
+
+    Mesh build() {
+        assignVertices();
+        for (size_t k = 0; k < s_.keptCount(); ++k) addCell(k);
+        if (flat_) addFlatBottom();
+        return std::move(mesh_);
+    }
+
+private:
+    // The (up to three) cells meeting at a lattice vertex; -1 = not kept.
+    int incidentCells(int64_t id, int32_t out[3]) const {
+        const VertexRef v = decodeVertexId(g_, id);
+        // N(h) is corner 2 of h, corner 0 of NW(h), corner 4 of NE(h);
+        // S(h) is corner 5 of h, corner 1 of SW(h), corner 3 of SE(h).
+        int32_t c1, r1, c2, r2;
+        hexNeighbour(v.col, v.row, v.type == 0 ? 2 : 4, c1, r1);
+        hexNeighbour(v.col, v.row, v.type == 0 ? 1 : 5, c2, r2);
+        out[0] = s_.keptAt(v.col, v.row);
+        out[1] = s_.keptAt(c1, r1);
+        out[2] = s_.keptAt(c2, r2);
+        return 3;
+    }
+
+    // Sorted distinct heights (snap units) of the mesh vertices at lattice vertex id.
+    int usedHeights(int64_t id, int64_t out[kMaxHeightsPerVertex]) const {
+        int32_t cells[3];
+        incidentCells(id, cells);
+        int n = 0;
+        const bool rim = cells[0] < 0 || cells[1] < 0 || cells[2] < 0;
+        for (int32_t c : cells) {
+            if (c < 0) continue;
+            out[n++] = s_.top[size_t(c)];
+            if (!flat_ || rim) out[n++] = s_.bottom[size_t(c)];
+        }
+        std::sort(out, out + n);
+        return int(std::unique(out, out + n) - out);
+    }
+
+    void assignVertices() {
+        const int64_t ids = latticeVertexIdCount(g_);
+        uint32_t next = 0;
+        int64_t z[kMaxHeightsPerVertex];
+        for (int64_t id = 0; id < ids; ++id) {
+            first_index_[size_t(id)] = next;
+            const int n = usedHeights(id, z);
+            if (n == 0) continue;
+            const VertexRef v = decodeVertexId(g_, id);
+            const LatticePoint p = hexCorner(g_, v.col, v.row, v.type == 0 ? 2 : 5);
+            for (int h = 0; h < n; ++h) mesh_.positions.push_back(s_.point(p, z[h]));
+            next += uint32_t(n);
+        }
+        first_index_[size_t(ids)] = next;
+    }
+
+    uint32_t vertexIndex(int64_t id, int64_t z) const {
+        int64_t zs[kMaxHeightsPerVertex];
+        const int n = usedHeights(id, zs);
+        const int64_t* at = std::lower_bound(zs, zs + n, z);
+        assert(at != zs + n && *at == z && "height not used at this lattice vertex");
+        return first_index_[size_t(id)] + uint32_t(at - zs);
+    }
+
+    void tri(uint32_t a, uint32_t b, uint32_t c) { mesh_.triangles.push_back({a, b, c}); }
+
+    void addCell(size_t k) {
+        const int32_t c = s_.col[k], r = s_.row[k];
+        int64_t id[kHexCorners];
+        for (int e = 0; e < kHexCorners; ++e) id[e] = hexCornerId(g_, c, r, e);
+        const int64_t top = s_.top[k], bottom = s_.bottom[k];
+        uint32_t t[kHexCorners];
+        for (int e = 0; e < kHexCorners; ++e) t[e] = vertexIndex(id[e], top);
+        for (int e = 2; e < kHexCorners; ++e) tri(t[0], t[e - 1], t[e]);  // CCW from above
+        if (!flat_) {
+            uint32_t b[kHexCorners];
+            for (int e = 0; e < kHexCorners; ++e) b[e] = vertexIndex(id[e], bottom);
+            for (int e = 2; e < kHexCorners; ++e) tri(b[0], b[e], b[e - 1]);  // CCW from below
+        }
+        for (int e = 0; e < kHexCorners; ++e) {
+            int32_t nc, nr;
+            hexNeighbour(c, r, e, nc, nr);
+            const int32_t other = s_.keptAt(nc, nr);
+            const int64_t v = id[e], w = id[(e + 1) % kHexCorners];
+            if (other < 0) {
+                addWall(v, w, bottom, top);
+                continue;
+            }
+            const int64_t obot = s_.bottom[size_t(other)], otop = s_.top[size_t(other)];
+            assert(obot < top && bottom < otop && "neighbouring pillars must overlap in z");
+            if (otop < top) addWall(v, w, otop, top);
+            if (bottom < obot) addWall(v, w, bottom, obot);
+        }
+    }
+
+    // Wall over edge v -> w (counter-clockwise around the cell that owns it,
+    // so the outward normal is (w - v) x up) from z0 to z1.
+    void addWall(int64_t v, int64_t w, int64_t z0, int64_t z1) {
+        int64_t zl[kMaxHeightsPerVertex], zr[kMaxHeightsPerVertex];
+        const int nl = usedHeights(v, zl), nr = usedHeights(w, zr);
+        int li = int(std::lower_bound(zl, zl + nl, z0) - zl);
+        int ri = int(std::lower_bound(zr, zr + nr, z0) - zr);
+        const int lend = int(std::lower_bound(zl, zl + nl, z1) - zl);
+        const int rend = int(std::lower_bound(zr, zr + nr, z1) - zr);
+        assert(li < nl && zl[li] == z0 && ri < nr && zr[ri] == z0);
+        assert(lend < nl && zl[lend] == z1 && rend < nr && zr[rend] == z1);
+        const uint32_t lbase = first_index_[size_t(v)], rbase = first_index_[size_t(w)];
+        while (li < lend || ri < rend) {
+            // Advance the side whose next point is lower (left on ties): the
+            // zipper keeps triangles short and never uses three points of one side.
+            const bool advance_left = ri == rend || (li < lend && zl[li + 1] <= zr[ri + 1]);
+            if (advance_left) {
+                tri(lbase + uint32_t(li), rbase + uint32_t(ri), lbase + uint32_t(li + 1));
+                ++li;
+            } else {
+                tri(lbase + uint32_t(li), rbase + uint32_t(ri), rbase + uint32_t(ri + 1));
+                ++ri;
+            }
+        }
+    }
+
+    void addFlatBottom() {
+        // Rim edges, directed counter-clockwise around the kept region.
+        std::unordered_map<int64_t, int64_t> next_on_rim;
+        for (size_t k = 0; k < s_.keptCount(); ++k) {
+            for (int e = 0; e < kHexCorners; ++e) {
+                int32_t nc, nr;
+                hexNeighbour(s_.col[k], s_.row[k], e, nc, nr);
+                if (s_.keptAt(nc, nr) >= 0) continue;
+                const int64_t v = hexCornerId(g_, s_.col[k], s_.row[k], e);
+                const int64_t w = hexCornerId(g_, s_.col[k], s_.row[k], (e + 1) % kHexCorners);
+                [[maybe_unused]] const bool fresh = next_on_rim.emplace(v, w).second;
+                assert(fresh && "the rim passes a vertex twice");
+            }
+        }
+        if (next_on_rim.empty()) return;
+        std::vector<int64_t> loop;
+        loop.reserve(next_on_rim.size());
+        const int64_t start = next_on_rim.begin()->first;
+        for (int64_t v = start;;) {
+            loop.push_back(v);
+            v = next_on_rim.at(v);
+            if (v == start) break;
+            assert(loop.size() <= next_on_rim.size());
+        }
+        assert(loop.size() == next_on_rim.size() && "the kept region must have one rim");
+
+        using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+        using Vb = CGAL::Triangulation_vertex_base_with_info_2<uint32_t, K>;
+        using Fb = CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<int, K>>;
+        using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+        using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+        Cdt cdt;
+        std::vector<Cdt::Vertex_handle> handles;
+        handles.reserve(loop.size());
+        for (int64_t id : loop) {
+            const uint32_t index = vertexIndex(id, 0);
+            const Vec3& p = mesh_.positions[index];
+            Cdt::Vertex_handle h = cdt.insert(K::Point_2(p.x, p.y));
+            h->info() = index;
+            handles.push_back(h);
+        }
+        assert(cdt.number_of_vertices() == loop.size() && "two rim vertices snapped to one point");
+        for (size_t n = 0; n < handles.size(); ++n) cdt.insert_constraint(handles[n], handles[(n + 1) % handles.size()]);
+        // Faces inside the rim: flood from the infinite face, flipping at constraints.
+        for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+        std::vector<std::pair<Cdt::Face_handle, int>> queue{{cdt.infinite_face(), 0}};
+        while (!queue.empty()) {
+            auto [f, depth] = queue.back();
+            queue.pop_back();
+            if (f->info() != -1) continue;
+            f->info() = depth;
+            for (int e = 0; e < 3; ++e) {
+                Cdt::Face_handle nb = f->neighbor(e);
+                if (nb->info() == -1) queue.push_back({nb, cdt.is_constrained({f, e}) ? depth + 1 : depth});
+            }
+        }
+        for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+            if (f->info() % 2 != 1) continue;
+            // CGAL faces are counter-clockwise from above; the bottom faces down.
+            tri(f->vertex(0)->info(), f->vertex(2)->info(), f->vertex(1)->info());
+        }
+    }
+
+    const Scene& s_;
+    const HexGrid& g_;
+    const bool flat_;
+    std::vector<uint32_t> first_index_;  // lattice vertex id -> first mesh vertex index
+    Mesh mesh_;
+};
+
+}  // namespace
+
+Mesh meshScene(const Scene& scene) {
+    if (scene.keptCount() == 0) return {};
+    return MeshBuilder(scene).build();
+}
+
+}  // namespace tsf

@@ -1,0 +1,23 @@
+// DirectMesher: the boundary of a Scene's solid as an exact triangle mesh.
+//
+// meshScene returns the boundary of the union of the Scene's prisms:
+//   - a top face per kept cell (hexagon, 4 triangles);
+//   - a bottom face per kept cell when mirrored; a flat bottom is ONE polygon
+//     (the outline of the kept region) triangulated without interior vertices;
+//   - a vertical wall wherever a neighbour's z interval does not cover this
+//     cell's (only where heights differ; outer walls on the kept region's rim).
+// Every corner line is split at every height that meets it, so there are no
+// T-junctions; vertices are identified by lattice id and snapped height, never
+// by comparing floats. The result is closed, 2-manifold, outward-oriented
+// (CCW from outside) and has no zero-area triangles.
+#pragma once
+
+#include "gen/mesh.h"
+#include "gen/scene.h"
+
+namespace tsf {
+
+/// Mesh the Scene. An empty Scene (no kept cells) gives an empty Mesh.
+Mesh meshScene(const Scene& scene);
+
+}  // namespace tsf

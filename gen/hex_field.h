@@ -1,0 +1,30 @@
+// HexField: scalar values on the hexagonal lattice described by HexGrid.
+//
+// Layout is the same as HexGrid: row-major over (col, row), row 0 = north,
+// odd rows shifted east by half a cell ("odd-r"). NaN = no data.
+// Produced by resampling a Raster (gen/resample.h) or by binning points
+// (gen/io/point_binning.h); consumed by buildScene (gen/scene.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gen/hex_grid.h"
+
+namespace tsf {
+
+struct HexField {
+    HexGrid grid;
+    std::vector<double> values;  ///< grid.cols * grid.rows, row-major, NaN = no data
+    std::string source;          ///< input file, for reports and headers
+    std::string how;             ///< one line: how the values were made ("mean of 2x2 px", "count of points")
+    /// Centre spacing of the lattice in data units (1 = one raster pixel), so a
+    /// reader of the model can relate millimetres back to data coordinates.
+    double pitch_data = 1.0;
+
+    double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }
+    double& at(int32_t col, int32_t row) { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }
+};
+
+}  // namespace tsf

@@ -1,0 +1,32 @@
+// Raster: a rectangular grid of scalar values as read from a file.
+//
+// Layout: row-major, row 0 is the TOP (north) edge of the picture or map,
+// column 0 the left (west) edge. values.size() == cols * rows.
+// A missing value ("no data") is stored as quiet NaN; readers never store Inf.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tsf {
+
+struct Raster {
+    int32_t cols = 0;
+    int32_t rows = 0;
+    std::vector<double> values;  ///< row-major, row 0 = north; NaN = no data
+    std::string source;          ///< file it came from, for messages and SCAD headers
+    std::string kind;            ///< "csv", "pgm", "png", "esri-ascii", ...
+    /// Size of one raster cell in data units (ESRI cellsize; 1 for images/CSV).
+    double cell_size = 1.0;
+    /// Lower-left corner of the lower-left cell in data units (ESRI xllcorner/yllcorner).
+    double x_origin = 0.0;
+    double y_origin = 0.0;
+
+    double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(cols) + size_t(col)]; }
+    double& at(int32_t col, int32_t row) { return values[size_t(row) * size_t(cols) + size_t(col)]; }
+    bool empty() const { return cols == 0 || rows == 0; }
+};
+
+}  // namespace tsf

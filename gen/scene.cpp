@@ -1,0 +1,291 @@
+// buildScene: from a HexField and parameters to the model description.
+//
+// Height rules (the OpenSCAD library mirrors them; keep both in step):
+//   h_mm      = mapping.heightMm(value)              (0 for no-data cells)
+//   h_units   = snapUnits(h_mm, z_snap)
+//   flat:     bottom = 0,        top = snapUnits(base_mm) + h_units
+//   mirrored: bottom = h_units,  top = bottom + T,
+//             T = max |h_units(a) - h_units(b)| over neighbouring kept cells
+//                 + snapUnits(base_mm)
+#include "gen/scene.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <sstream>
+
+#include "gen/convex_hull.h"
+#include "gen/error.h"
+
+namespace tsf {
+
+int64_t snapUnits(double mm, double snap_mm) { return int64_t(std::llround(mm / snap_mm)); }
+
+double ValueMapping::heightMm(double v) const {
+    if (std::isnan(v)) return 0.0;
+    if (!(value_max > baseline)) return v > baseline ? max_height_mm : 0.0;  // constant field
+    const double t = std::clamp((v - baseline) / (value_max - baseline), 0.0, 1.0);
+    switch (transfer) {
+        case Transfer::Sqrt: return max_height_mm * std::sqrt(t);
+        case Transfer::Log: return max_height_mm * std::log10(1.0 + 99.0 * t) / 2.0;
+        default: return max_height_mm * t;
+    }
+}
+
+double ValueMapping::valueAt(double h) const {
+    if (!(value_max > baseline) || !(max_height_mm > 0)) return baseline;
+    const double s = std::clamp(h / max_height_mm, 0.0, 1.0);
+    double t = s;
+    if (transfer == Transfer::Sqrt) t = s * s;
+    if (transfer == Transfer::Log) t = (std::pow(10.0, 2.0 * s) - 1.0) / 99.0;
+    return baseline + t * (value_max - baseline);
+}
+
+Vec3 Scene::point(const LatticePoint& p, int64_t z_units) const {
+    auto snap = [](double v) { return std::round(v / kXYSnapMm) * kXYSnapMm; };
+    return {snap(latticeX(p, pitch_mm)), snap(latticeY(p, pitch_mm)), zMm(z_units)};
+}
+
+const char* toString(Transfer t) {
+    switch (t) {
+        case Transfer::Sqrt: return "sqrt";
+        case Transfer::Log: return "log";
+        default: return "linear";
+    }
+}
+const char* toString(Cull c) { return c == Cull::None ? "none" : "hull"; }
+const char* toString(Bottom b) { return b == Bottom::Mirrored ? "mirrored" : "flat"; }
+const char* toString(BaselineMode b) {
+    switch (b) {
+        case BaselineMode::Zero: return "zero";
+        case BaselineMode::Min: return "min";
+        case BaselineMode::Value: return "value";
+        default: return "auto";
+    }
+}
+
+namespace {
+
+// Limits that keep every lattice coordinate and height comfortably inside
+// int64 arithmetic and the model inside what a printer can make.
+constexpr int32_t kMaxGridSide = 100000;
+constexpr double kMinPitchMm = 0.05;      // 50 xy snap steps: snapping cannot distort a hexagon
+constexpr double kMaxModelMm = 100000.0;  // 100 m: anything larger is a unit mistake
+constexpr double kMinSnapMm = 1e-6;
+constexpr double kMaxSnapMm = 1.0;
+
+void requireFinitePositive(double v, const char* name, bool allow_zero = false) {
+    if (!std::isfinite(v) || v < 0 || (!allow_zero && v == 0)) {
+        std::ostringstream s;
+        s << name << " must be a finite number " << (allow_zero ? ">= 0" : "> 0") << " (got " << v << ")";
+        throw InputError(s.str());
+    }
+}
+
+void validate(const HexField& field, const SceneParams& p) {
+    if (field.grid.cols <= 0 || field.grid.rows <= 0)
+        throw InputError(field.source, 0, 0, "the field is empty (no rows or no columns)");
+    if (field.grid.cols > kMaxGridSide || field.grid.rows > kMaxGridSide)
+        throw InputError(field.source, 0, 0, "the hex grid is larger than " + std::to_string(kMaxGridSide) + " cells per side");
+    if (int64_t(field.values.size()) != field.grid.cellCount())
+        throw InputError(field.source, 0, 0, "internal: field value count does not match its grid");
+    requireFinitePositive(p.pitch_mm, "cell size (pitch, mm)", true);
+    if (p.pitch_mm == 0) {
+        requireFinitePositive(p.fit_width_mm, "fit width (mm)");
+        requireFinitePositive(p.fit_depth_mm, "fit depth (mm)");
+    }
+    requireFinitePositive(p.max_height_mm, "maximum height (mm)", true);
+    requireFinitePositive(p.base_mm, "base thickness (mm)");
+    if (!(p.z_snap_mm >= kMinSnapMm && p.z_snap_mm <= kMaxSnapMm)) {
+        std::ostringstream s;
+        s << "z snap step must be between " << kMinSnapMm << " and " << kMaxSnapMm << " mm (got " << p.z_snap_mm << ")";
+        throw InputError(s.str());
+    }
+    if (p.base_mm < p.z_snap_mm)
+        throw InputError("base thickness must be at least one z snap step (" + std::to_string(p.z_snap_mm) + " mm)");
+    if (p.max_height_mm + 2 * p.base_mm > kMaxModelMm) throw InputError("model height is larger than 100 m; check the units (mm)");
+    if (p.baseline_mode == BaselineMode::Value && !std::isfinite(p.baseline_value))
+        throw InputError("baseline value must be finite");
+    if (p.value_max && !std::isfinite(*p.value_max)) throw InputError("value at maximum height must be finite");
+}
+
+ValueMapping resolveMapping(const HexField& field, const SceneParams& p, std::vector<std::string>& notes) {
+    double vmin = INFINITY, vmax = -INFINITY;
+    for (double v : field.values) {
+        if (std::isnan(v)) continue;
+        if (!std::isfinite(v))
+            throw InputError(field.source, 0, 0, "the field holds an infinite value; values must be finite numbers");
+        vmin = std::min(vmin, v);
+        vmax = std::max(vmax, v);
+    }
+    if (!(vmin <= vmax)) throw InputError(field.source, 0, 0, "the field has no data: every cell is empty (NaN / no data)");
+    ValueMapping m;
+    m.transfer = p.transfer;
+    m.max_height_mm = p.max_height_mm;
+    switch (p.baseline_mode) {
+        case BaselineMode::Zero: m.baseline = 0.0; break;
+        case BaselineMode::Min: m.baseline = vmin; break;
+        case BaselineMode::Value: m.baseline = p.baseline_value; break;
+        default: m.baseline = vmin >= 0 ? 0.0 : vmin; break;
+    }
+    m.value_max = p.value_max ? *p.value_max : vmax;
+    if (!(m.value_max > m.baseline)) {
+        std::ostringstream s;
+        s << "constant field (every value is " << vmin << (vmin == vmax ? "" : " or below the baseline")
+          << "): all pillars have the same height";
+        notes.push_back(s.str());
+    }
+    int64_t below = 0, above = 0;
+    for (double v : field.values) {
+        if (std::isnan(v)) continue;
+        below += v < m.baseline;
+        above += v > m.value_max;
+    }
+    if (below) notes.push_back(std::to_string(below) + " cells are below the baseline and sit at the floor");
+    if (above) notes.push_back(std::to_string(above) + " cells are above the value at maximum height and are capped");
+    return m;
+}
+
+double resolvePitch(const HexGrid& grid, const SceneParams& p) {
+    double pitch = p.pitch_mm;
+    if (pitch == 0) pitch = std::min(p.fit_width_mm / gridWidth(grid, 1.0), p.fit_depth_mm / gridDepth(grid, 1.0));
+    if (pitch < kMinPitchMm) {
+        std::ostringstream s;
+        s << "cells would be " << pitch << " mm wide; the smallest supported cell is " << kMinPitchMm
+          << " mm (use fewer cells or a larger model)";
+        throw InputError(s.str());
+    }
+    if (gridWidth(grid, pitch) > kMaxModelMm || gridDepth(grid, pitch) > kMaxModelMm)
+        throw InputError("model would be larger than 100 m; check the cell size (mm)");
+    return pitch;
+}
+
+// Number of edge-connected components among the cells marked in `keep`.
+int componentCount(const HexGrid& grid, const std::vector<uint8_t>& keep) {
+    std::vector<uint8_t> seen(keep.size(), 0);
+    std::vector<int64_t> stack;
+    int components = 0;
+    for (int64_t start = 0; start < int64_t(keep.size()); ++start) {
+        if (!keep[start] || seen[start]) continue;
+        ++components;
+        seen[start] = 1;
+        stack.push_back(start);
+        while (!stack.empty()) {
+            const int64_t cell = stack.back();
+            stack.pop_back();
+            const int32_t c = int32_t(cell % grid.cols), r = int32_t(cell / grid.cols);
+            for (int k = 0; k < kHexCorners; ++k) {
+                int32_t nc, nr;
+                hexNeighbour(c, r, k, nc, nr);
+                if (!grid.contains(nc, nr)) continue;
+                const int64_t n = grid.index(nc, nr);
+                if (keep[n] && !seen[n]) { seen[n] = 1; stack.push_back(n); }
+            }
+        }
+    }
+    return components;
+}
+
+}  // namespace
+
+Scene buildScene(const HexField& field, const SceneParams& params) {
+    validate(field, params);
+    Scene s;
+    s.grid = field.grid;
+    s.params = params;
+    s.z_snap_mm = params.z_snap_mm;
+    s.mapping = resolveMapping(field, params, s.notes);
+    s.pitch_mm = resolvePitch(field.grid, params);
+    const HexGrid& g = s.grid;
+    const size_t n = size_t(g.cellCount());
+
+    // Heights above the floor, snapped once; everything below compares integers.
+    std::vector<int64_t> h_units(n, 0);
+    std::vector<uint8_t> nonempty(n, 0);
+    for (size_t idx = 0; idx < n; ++idx) {
+        const double v = field.values[idx];
+        if (std::isnan(v)) continue;
+        ++s.cells_with_data;
+        h_units[idx] = snapUnits(s.mapping.heightMm(v), s.z_snap_mm);
+        nonempty[idx] = h_units[idx] > 0;
+        s.cells_nonempty += nonempty[idx];
+    }
+
+    std::vector<uint8_t> keep(n, 0);
+    if (params.cull == Cull::None) {
+        std::fill(keep.begin(), keep.end(), 1);
+    } else if (s.cells_nonempty == 0) {
+        // Nothing rises above the floor: there is no hull to cull with. Keep
+        // the whole grid as a flat slab rather than print nothing.
+        std::fill(keep.begin(), keep.end(), 1);
+        s.notes.push_back("no cell rises above the floor: the whole grid is kept as a flat slab");
+    } else {
+        std::vector<LatticePoint> centres;
+        centres.reserve(size_t(s.cells_nonempty));
+        for (int32_t r = 0; r < g.rows; ++r)
+            for (int32_t c = 0; c < g.cols; ++c)
+                if (nonempty[size_t(g.index(c, r))]) centres.push_back(hexCentre(g, c, r));
+        s.hull = convexHull(centres);
+        for (int32_t r = 0; r < g.rows; ++r)
+            for (int32_t c = 0; c < g.cols; ++c)
+                keep[size_t(g.index(c, r))] = hullContains(s.hull, hexCentre(g, c, r));
+        if (componentCount(g, keep) > 1) {
+            // A thin hull (one cell, or cells on a line) can miss the cells
+            // between its corners. Every cell within one circumradius of the
+            // hull touches it, and such cells form one piece (docs/model.md).
+            const double reach = 1.0 / kSqrt3 + 1e-9;  // circumradius in pitches, plus rounding slack
+            for (int32_t r = 0; r < g.rows; ++r)
+                for (int32_t c = 0; c < g.cols; ++c)
+                    keep[size_t(g.index(c, r))] = hullDistancePitch(s.hull, hexCentre(g, c, r)) <= reach;
+            s.notes.push_back("the hull of the non-empty cells is too thin to hold the model together; "
+                              "cells touching it were added so the model is one piece");
+        }
+    }
+    assert(componentCount(g, keep) == 1);
+
+    const int64_t base_units = snapUnits(params.base_mm, s.z_snap_mm);
+    s.kept_index.assign(n, -1);
+    for (int32_t r = 0; r < g.rows; ++r) {
+        for (int32_t c = 0; c < g.cols; ++c) {
+            const size_t idx = size_t(g.index(c, r));
+            if (!keep[idx]) continue;
+            s.kept_index[idx] = int32_t(s.col.size());
+            s.col.push_back(c);
+            s.row.push_back(r);
+            s.value.push_back(field.values[idx]);
+            s.cells_nodata_kept += std::isnan(field.values[idx]);
+        }
+    }
+    const size_t kept = s.col.size();
+    s.top.resize(kept);
+    s.bottom.resize(kept);
+    if (params.bottom == Bottom::Flat) {
+        s.floor_units = base_units;
+        for (size_t k = 0; k < kept; ++k) {
+            s.bottom[k] = 0;
+            s.top[k] = base_units + h_units[size_t(g.index(s.col[k], s.row[k]))];
+        }
+    } else {
+        int64_t max_step = 0;
+        for (size_t k = 0; k < kept; ++k) {
+            const int64_t h = h_units[size_t(g.index(s.col[k], s.row[k]))];
+            for (int e = 0; e < kHexCorners; ++e) {
+                int32_t nc, nr;
+                hexNeighbour(s.col[k], s.row[k], e, nc, nr);
+                const int32_t other = s.keptAt(nc, nr);
+                if (other >= 0) max_step = std::max<int64_t>(max_step, std::llabs(h - h_units[size_t(g.index(nc, nr))]));
+            }
+        }
+        s.floor_units = 0;
+        s.mirror_thickness_units = max_step + base_units;
+        for (size_t k = 0; k < kept; ++k) {
+            s.bottom[k] = h_units[size_t(g.index(s.col[k], s.row[k]))];
+            s.top[k] = s.bottom[k] + s.mirror_thickness_units;
+        }
+    }
+    return s;
+}
+
+}  // namespace tsf

@@ -1,0 +1,6 @@
+// Placeholder until the 'feel' command lands; registers nothing.
+#include "gen/cli/commands.h"
+
+namespace tsf::cli {
+void addFeelCommand(CLI::App&) {}
+}  // namespace tsf::cli

@@ -1,0 +1,6 @@
+// Placeholder until the 'verify' command lands; registers nothing.
+#include "gen/cli/commands.h"
+
+namespace tsf::cli {
+void addVerifyCommand(CLI::App&) {}
+}  // namespace tsf::cli
