@@ -1,0 +1,22 @@
+// Size limits for rasters, checked by every reader BEFORE it allocates.
+//
+// A raster is held as doubles (8 bytes per cell), so kMaxRasterCells cells
+// take 800 MB. tsf models have at most a few hundred thousand hexagons, so a
+// larger input would only be averaged down: downsample it first (for example
+// `gdal_translate -outsize 25% 25% big.asc small.asc`).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace tsf {
+
+inline constexpr int64_t kMaxRasterSide = 20'000;         ///< cells along either side
+inline constexpr int64_t kMaxRasterCells = 100'000'000;   ///< cols * rows
+
+/// Throws InputError(path, line, 0, ...) unless 1 <= cols, rows <= kMaxRasterSide
+/// and cols * rows <= kMaxRasterCells. `line` is where the size was read
+/// (0 if not applicable). Never overflows for any int64 input.
+void checkRasterSize(const std::string& path, int line, int64_t cols, int64_t rows);
+
+}  // namespace tsf

@@ -1,0 +1,89 @@
+#include "gen/io/raster_reader.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "gen/error.h"
+#include "gen/io/csv_grid_reader.h"
+#include "gen/io/esri_ascii_reader.h"
+#include "gen/io/input_file.h"
+#include "gen/io/number_field.h"
+#include "gen/io/pgm_reader.h"
+#include "gen/io/png_reader.h"
+
+namespace tsf {
+namespace {
+
+std::string lowerCase(std::string s) {
+    for (char& c : s)
+        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+    return s;
+}
+
+std::string extensionOf(const std::string& path) {
+    return lowerCase(std::filesystem::path(path).extension().string());
+}
+
+bool startsWithNoCase(std::string_view text, std::string_view word) {
+    if (text.size() < word.size()) return false;
+    return lowerCase(std::string(text.substr(0, word.size()))) == word;
+}
+
+}  // namespace
+
+RasterFormat detectRasterFormat(std::string_view bytes, const std::string& path) {
+    constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
+    if (bytes.substr(0, kPngSignature.size()) == kPngSignature) return RasterFormat::kPng;
+    if (bytes.size() >= 3 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '7' &&
+        (bytes[2] == ' ' || bytes[2] == '\t' || bytes[2] == '\n' || bytes[2] == '\r' || bytes[2] == '#'))
+        return RasterFormat::kPgm;
+    std::string_view text = bytes;
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\n' || text.front() == '\r'))
+        text.remove_prefix(1);
+    if (startsWithNoCase(text, "ncols") || startsWithNoCase(text, "nrows")) return RasterFormat::kEsriAscii;
+    const std::string ext = extensionOf(path);
+    if (ext == ".png") return RasterFormat::kPng;
+    if (ext == ".pgm" || ext == ".pnm") return RasterFormat::kPgm;
+    if (ext == ".asc") return RasterFormat::kEsriAscii;
+    return RasterFormat::kCsv;
+}
+
+const char* rasterFormatName(RasterFormat format) {
+    switch (format) {
+        case RasterFormat::kCsv: return "csv";
+        case RasterFormat::kPgm: return "pgm";
+        case RasterFormat::kPng: return "png";
+        case RasterFormat::kEsriAscii: return "esri-ascii";
+        default: return "auto";
+    }
+}
+
+RasterFormat parseRasterFormat(const std::string& name) {
+    const std::string n = lowerCase(name);
+    if (n == "auto" || n.empty()) return RasterFormat::kAuto;
+    if (n == "csv") return RasterFormat::kCsv;
+    if (n == "pgm") return RasterFormat::kPgm;
+    if (n == "png") return RasterFormat::kPng;
+    if (n == "esri-ascii" || n == "asc" || n == "esri") return RasterFormat::kEsriAscii;
+    throw InputError("unknown raster format " + quoteForMessage(name) + "; expected auto, csv, pgm, png or esri-ascii");
+}
+
+Raster parseRaster(std::string_view bytes, const std::string& path, const RasterReadOptions& opts) {
+    checkCsvDelimiter(opts.delimiter);
+    const RasterFormat format = opts.format == RasterFormat::kAuto ? detectRasterFormat(bytes, path) : opts.format;
+    switch (format) {
+        case RasterFormat::kPng: return parsePng(bytes, path);
+        case RasterFormat::kPgm: return parsePgm(bytes, path);
+        case RasterFormat::kEsriAscii: return parseEsriAscii(bytes, path);
+        default: return parseCsvGrid(bytes, path, opts.delimiter);
+    }
+}
+
+Raster readRaster(const std::string& path, const RasterReadOptions& opts) {
+    checkCsvDelimiter(opts.delimiter);
+    const std::string bytes = readInputFile(path);
+    return parseRaster(bytes, path, opts);
+}
+
+}  // namespace tsf
