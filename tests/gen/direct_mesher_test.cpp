@@ -1,0 +1,174 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <tuple>
+
+#include "gen/direct_mesher.h"
+#include "gen/scene.h"
+#include "mesh_invariants.h"
+#include "test_fields.h"
+
+namespace tsf {
+namespace {
+using test::checkInvariants;
+using test::fieldFromFunction;
+using test::fieldFromRows;
+using test::kNaN;
+using test::smallParams;
+
+// Volume of the union of pillars computed from the Scene alone: each kept
+// cell's footprint (its six corners, snapped to the 1 um grid the way the
+// Scene contract says) times its z extent. Shares no code with the mesher.
+double expectedVolume(const Scene& s) {
+    auto snap = [](double v) { return std::round(v / 0.001) * 0.001; };
+    double volume = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        double area2 = 0;
+        for (int e = 0; e < 6; ++e) {
+            const LatticePoint a = hexCorner(s.grid, s.col[k], s.row[k], e);
+            const LatticePoint b = hexCorner(s.grid, s.col[k], s.row[k], (e + 1) % 6);
+            const double ax = snap(a.i * s.pitch_mm / 2), ay = snap(a.j * s.pitch_mm / (2 * std::sqrt(3.0)));
+            const double bx = snap(b.i * s.pitch_mm / 2), by = snap(b.j * s.pitch_mm / (2 * std::sqrt(3.0)));
+            area2 += ax * by - bx * ay;
+        }
+        volume += area2 / 2 * double(s.top[k] - s.bottom[k]) * s.z_snap_mm;
+    }
+    return volume;
+}
+
+// Every kept cell's six top corners exist as mesh vertices at its top height
+// (and bottom corners when mirrored): the values can be read back.
+void expectCellHeightsPresent(const Scene& s, const Mesh& m) {
+    std::set<std::tuple<double, double, double>> pts;
+    for (const Vec3& p : m.positions) pts.insert({p.x, p.y, p.z});
+    for (size_t k = 0; k < s.keptCount(); ++k)
+        for (int e = 0; e < 6; ++e) {
+            const Vec3 top = s.point(hexCorner(s.grid, s.col[k], s.row[k], e), s.top[k]);
+            ASSERT_TRUE(pts.count({top.x, top.y, top.z})) << "cell " << s.col[k] << "," << s.row[k];
+            if (s.params.bottom == Bottom::Mirrored) {
+                const Vec3 bot = s.point(hexCorner(s.grid, s.col[k], s.row[k], e), s.bottom[k]);
+                ASSERT_TRUE(pts.count({bot.x, bot.y, bot.z}));
+            }
+        }
+}
+
+void expectSolid(const HexField& field, const SceneParams& params, const char* what) {
+    SCOPED_TRACE(std::string(what) + " " + toString(params.bottom) + " cull=" + toString(params.cull));
+    const Scene s = buildScene(field, params);
+    const Mesh m = meshScene(s);
+    const auto inv = checkInvariants(m);
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.euler, 2) << inv.describe();
+    EXPECT_EQ(inv.components, 1u) << inv.describe();
+    const double expected = expectedVolume(s);
+    EXPECT_NEAR(inv.volume, expected, 1e-9 * expected) << inv.describe();
+    expectCellHeightsPresent(s, m);
+}
+
+void expectSolidAllModes(const HexField& field, const char* what) {
+    for (Bottom b : {Bottom::Flat, Bottom::Mirrored})
+        for (Cull c : {Cull::Hull, Cull::None}) expectSolid(field, smallParams(b, c), what);
+}
+
+TEST(DirectMesher, SingleCellIsAHexagonalPrism) {
+    const Scene s = buildScene(fieldFromRows({{1}}), smallParams());
+    const Mesh m = meshScene(s);
+    // 12 corners; top 4 triangles, bottom 4, six walls of 2.
+    EXPECT_EQ(m.vertexCount(), 12u);
+    EXPECT_EQ(m.triangleCount(), 20u);
+    expectSolidAllModes(fieldFromRows({{1}}), "1x1");
+}
+
+TEST(DirectMesher, EqualNeighboursGetNoWallBetweenThem) {
+    // Two equal cells side by side: the shared edge carries no wall, so the
+    // solid is one 10-sided prism: 10 top vertices... plus the bottom rim.
+    const Scene s = buildScene(fieldFromRows({{3, 3}}), smallParams(Bottom::Flat, Cull::None));
+    const Mesh m = meshScene(s);
+    EXPECT_EQ(m.vertexCount(), 20u);
+    // Tops 2x4, bottom polygon of 10 vertices -> 8, outer walls 10 x 2.
+    EXPECT_EQ(m.triangleCount(), 8u + 8u + 20u);
+}
+
+TEST(DirectMesher, StepBetweenNeighboursIsOneWallSplitAtEveryCornerHeight) {
+    const Scene s = buildScene(fieldFromRows({{1, 2}}), smallParams(Bottom::Flat, Cull::None));
+    const auto inv = checkInvariants(meshScene(s));
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.euler, 2);
+}
+
+TEST(DirectMesher, FlatBottomHasOnlyRimVertices) {
+    const Scene s = buildScene(fieldFromFunction(12, 10, [](int c, int r) { return (c * 7 + r * 3) % 5; }),
+                               smallParams(Bottom::Flat, Cull::None));
+    const Mesh m = meshScene(s);
+    size_t bottom_vertices = 0, bottom_faces = 0;
+    for (const Vec3& p : m.positions) bottom_vertices += p.z == 0.0;
+    for (const auto& t : m.triangles)
+        bottom_faces += m.positions[t[0]].z == 0 && m.positions[t[1]].z == 0 && m.positions[t[2]].z == 0;
+    // The rim of a 12x10 odd-r block: 2*(2*12+1) along north/south and 2*(2*10) ... count directly:
+    // every rim vertex is on the outline, and a polygon of n vertices needs n - 2 triangles.
+    EXPECT_EQ(bottom_faces, bottom_vertices - 2);
+    EXPECT_LT(bottom_vertices, size_t(2 * (12 + 10) * 2 + 8));  // far fewer than the 2*12*10 lattice vertices
+}
+
+TEST(DirectMesher, ExtremeFields) {
+    expectSolidAllModes(fieldFromRows({{0}}), "1x1 zero");
+    expectSolidAllModes(fieldFromRows({{0, 0, 0}, {0, 5, 0}, {0, 0, 0}}), "one non-zero cell");
+    expectSolidAllModes(fieldFromFunction(6, 5, [](int, int) { return 0.0; }), "all zero");
+    expectSolidAllModes(fieldFromFunction(6, 5, [](int, int) { return 42.0; }), "constant");
+    expectSolidAllModes(fieldFromFunction(8, 7, [](int c, int r) { return 1.0 + 1e-12 * ((c + r) % 3); }), "1e-12 steps");
+    expectSolidAllModes(fieldFromFunction(8, 7, [](int c, int r) { return 1e9 * ((c * r) % 4); }), "1e9 values");
+    expectSolidAllModes(fieldFromFunction(9, 8, [](int c, int r) { return double((c + r) % 2); }), "checkerboard");
+    expectSolidAllModes(fieldFromFunction(9, 8, [](int c, int r) { return (c + 2 * r) % 3 == 0 ? kNaN : double(c); }),
+                        "NaN holes");
+    expectSolidAllModes(fieldFromFunction(9, 8, [](int c, int r) { return c == r ? 1.0 : 0.0; }), "diagonal line");
+    expectSolidAllModes(fieldFromFunction(9, 8, [](int c, int r) { return r == 3 && c % 3 == 0 ? 2.0 : 0.0; }),
+                        "collinear row");
+    expectSolidAllModes(fieldFromFunction(9, 8, [](int c, int r) { return c == 4 && r % 3 == 0 ? 2.0 : 0.0; }),
+                        "collinear column");
+    expectSolidAllModes(fieldFromFunction(9, 8, [](int c, int r) { return (c == 1 && r == 1) || (c == 4 && r == 6) ? 1.0 : 0.0; }),
+                        "knight's move pair");
+    expectSolidAllModes(fieldFromFunction(7, 6, [](int c, int r) { return c - 3.0 + r; }), "negative values");
+    expectSolidAllModes(fieldFromFunction(1, 9, [](int, int r) { return double(r); }), "single column");
+    expectSolidAllModes(fieldFromFunction(9, 1, [](int c, int) { return double(c); }), "single row");
+}
+
+TEST(DirectMesher, RandomFieldsAreAlwaysSolid) {
+    std::mt19937 rng(1234);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int trial = 0; trial < 40; ++trial) {
+        const int cols = 1 + int(u(rng) * 12), rows = 1 + int(u(rng) * 12);
+        const double sparsity = u(rng);
+        HexField f = fieldFromFunction(cols, rows, [&](int, int) {
+            const double x = u(rng);
+            if (x < sparsity * 0.3) return kNaN;
+            if (x < sparsity) return 0.0;
+            return std::floor(u(rng) * 5);  // few distinct levels: many equal neighbours
+        });
+        bool any = false;
+        for (double v : f.values) any |= !std::isnan(v);
+        if (!any) continue;
+        SceneParams p = smallParams(u(rng) < 0.5 ? Bottom::Flat : Bottom::Mirrored, u(rng) < 0.5 ? Cull::Hull : Cull::None);
+        p.transfer = trial % 3 == 0 ? Transfer::Sqrt : Transfer::Linear;
+        expectSolid(f, p, ("random " + std::to_string(trial)).c_str());
+    }
+}
+
+TEST(DirectMesher, ThousandByThousandGridIsSolid) {
+    const HexField f = fieldFromFunction(1000, 1000, [](int c, int r) {
+        return std::sin(c * 0.05) * std::cos(r * 0.03) + 1.0;
+    });
+    SceneParams p = smallParams(Bottom::Flat, Cull::None);
+    p.pitch_mm = 0.2;
+    const Scene s = buildScene(f, p);
+    const Mesh m = meshScene(s);
+    const auto inv = checkInvariants(m);
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.euler, 2);
+    EXPECT_EQ(inv.components, 1u);
+    EXPECT_NEAR(inv.volume, expectedVolume(s), 1e-8 * inv.volume);
+}
+
+}  // namespace
+}  // namespace tsf

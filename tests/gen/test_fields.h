@@ -1,0 +1,45 @@
+// Small hand-made fields for the gen tests.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "gen/hex_field.h"
+#include "gen/scene.h"
+
+namespace tsf::test {
+
+/// Rows are listed north to south, as in a file.
+inline HexField fieldFromRows(const std::vector<std::vector<double>>& rows) {
+    HexField f;
+    f.grid.rows = int32_t(rows.size());
+    f.grid.cols = rows.empty() ? 0 : int32_t(rows[0].size());
+    for (const auto& r : rows) f.values.insert(f.values.end(), r.begin(), r.end());
+    f.source = "test";
+    return f;
+}
+
+inline HexField fieldFromFunction(int cols, int rows, const std::function<double(int, int)>& value) {
+    HexField f;
+    f.grid = {cols, rows};
+    f.values.resize(size_t(cols) * rows);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) f.values[size_t(r) * cols + c] = value(c, r);
+    f.source = "test";
+    return f;
+}
+
+inline SceneParams smallParams(Bottom bottom = Bottom::Flat, Cull cull = Cull::Hull) {
+    SceneParams p;
+    p.pitch_mm = 5.0;
+    p.max_height_mm = 10.0;
+    p.base_mm = 2.0;
+    p.bottom = bottom;
+    p.cull = cull;
+    return p;
+}
+
+inline constexpr double kNaN = NAN;
+
+}  // namespace tsf::test
