@@ -17,8 +17,8 @@ bool isHeader(const std::vector<CsvField>& fields) {
     for (const CsvField& f : fields) {
         double v = 0.0;
         const NumberField kind = parseNumberField(f.text, v);
-        if (kind == NumberField::kNumber || kind == NumberField::kInfinite) return false;
-        if (kind == NumberField::kNotNumber) ++text_fields;
+        if (kind == NumberField::Number || kind == NumberField::Infinite) return false;
+        if (kind == NumberField::NotNumber) ++text_fields;
     }
     return text_fields > 0;
 }
@@ -82,9 +82,9 @@ Raster parseCsvGrid(std::string_view text, const std::string& path, char delimit
         for (const CsvField& f : fields) {
             double v = 0.0;
             const NumberField kind = parseNumberField(f.text, v);
-            if (kind == NumberField::kNumber) {
+            if (kind == NumberField::Number) {
                 raster.values.push_back(v);
-            } else if (kind == NumberField::kNoData) {
+            } else if (kind == NumberField::NoData) {
                 raster.values.push_back(NAN);
             } else {
                 throw InputError(path, f.line, f.column, badNumberMessage(kind, f.text, delim));

@@ -87,8 +87,8 @@ Raster parseEsriAscii(std::string_view text, const std::string& path) {
             hv.value = double(n);
         } else {
             const NumberField kind = parseStrictNumber(token, hv.value);
-            if (kind != NumberField::kNumber) {
-                if (key == "nodata_value" && kind == NumberField::kNotNumber && lowerCase(token) == "nan") {
+            if (kind != NumberField::Number) {
+                if (key == "nodata_value" && kind == NumberField::NotNumber && lowerCase(token) == "nan") {
                     hv.value = NAN;  // GDAL writes "NODATA_value nan"; NaN cells are no data anyway
                 } else {
                     throw InputError(path, hv.line, hv.column, key + ": " + badNumberMessage(kind, token));
@@ -172,9 +172,9 @@ Raster parseEsriAscii(std::string_view text, const std::string& path) {
                                  std::to_string(rows) + " = " + std::to_string(cells));
         double v = 0.0;
         const NumberField kind = parseNumberField(token, v);
-        if (kind == NumberField::kNumber) {
+        if (kind == NumberField::Number) {
             raster.values.push_back(has_nodata && v == nodata ? NAN : v);
-        } else if (kind == NumberField::kNoData) {
+        } else if (kind == NumberField::NoData) {
             raster.values.push_back(NAN);
         } else {
             throw InputError(path, scanner.line(), scanner.column(), badNumberMessage(kind, token));

@@ -33,38 +33,38 @@ bool isNoDataSpelling(std::string_view s) {
 NumberField parseNumber(std::string_view s, double& value) {
     if (!s.empty() && s.front() == '+') {
         s.remove_prefix(1);
-        if (!s.empty() && (s.front() == '-' || s.front() == '+')) return NumberField::kNotNumber;
+        if (!s.empty() && (s.front() == '-' || s.front() == '+')) return NumberField::NotNumber;
     }
-    if (s.empty()) return NumberField::kNotNumber;
+    if (s.empty()) return NumberField::NotNumber;
     const char* first = s.data();
     const char* last = s.data() + s.size();
     const char* digits = first + (*first == '-' ? 1 : 0);
-    if (digits == last) return NumberField::kNotNumber;
+    if (digits == last) return NumberField::NotNumber;
     if (*digits != '.' && (*digits < '0' || *digits > '9')) {
         // A word: the only valid ones are infinities and NaN spellings.
         std::string_view word(digits, size_t(last - digits));
-        if (equalsNoCase(word, "inf") || equalsNoCase(word, "infinity")) return NumberField::kInfinite;
+        if (equalsNoCase(word, "inf") || equalsNoCase(word, "infinity")) return NumberField::Infinite;
         if (equalsNoCase(word, "nan") || (word.size() > 4 && equalsNoCase(word.substr(0, 4), "nan(") &&
                                           word.back() == ')')) {
             value = NAN;
-            return NumberField::kNoData;
+            return NumberField::NoData;
         }
-        return NumberField::kNotNumber;
+        return NumberField::NotNumber;
     }
     double v = 0.0;
     const auto res = std::from_chars(first, last, v, std::chars_format::general);
-    if (res.ptr != last) return NumberField::kNotNumber;
+    if (res.ptr != last) return NumberField::NotNumber;
     if (res.ec == std::errc::result_out_of_range) {
         // from_chars reports both overflow and underflow; strtod tells them apart.
         const std::string copy(s);
         v = std::strtod(copy.c_str(), nullptr);
-        if (!std::isfinite(v)) return NumberField::kInfinite;
+        if (!std::isfinite(v)) return NumberField::Infinite;
     } else if (res.ec != std::errc()) {
-        return NumberField::kNotNumber;
+        return NumberField::NotNumber;
     }
-    if (!std::isfinite(v)) return NumberField::kInfinite;
+    if (!std::isfinite(v)) return NumberField::Infinite;
     value = v;
-    return NumberField::kNumber;
+    return NumberField::Number;
 }
 
 }  // namespace
@@ -73,7 +73,7 @@ NumberField parseNumberField(std::string_view text, double& value) {
     const std::string_view s = trim(text);
     if (isNoDataSpelling(s)) {
         value = NAN;
-        return NumberField::kNoData;
+        return NumberField::NoData;
     }
     return parseNumber(s, value);
 }
@@ -82,8 +82,8 @@ NumberField parseStrictNumber(std::string_view text, double& value) {
     const std::string_view s = trim(text);
     double v = 0.0;
     const NumberField kind = parseNumber(s, v);
-    if (kind == NumberField::kNoData) return NumberField::kNotNumber;
-    if (kind == NumberField::kNumber) value = v;
+    if (kind == NumberField::NoData) return NumberField::NotNumber;
+    if (kind == NumberField::Number) value = v;
     return kind;
 }
 
@@ -101,7 +101,7 @@ bool parseWholeNumber(std::string_view s, int64_t max_value, int64_t& out) {
 
 std::string badNumberMessage(NumberField kind, std::string_view text, char delimiter) {
     const std::string shown = quoteForMessage(trim(text));
-    if (kind == NumberField::kInfinite)
+    if (kind == NumberField::Infinite)
         return "infinite or too large value " + shown + " (largest allowed magnitude is about 1.8e308)";
     std::string msg = "expected a number, found " + shown;
     const std::string_view t = trim(text);
@@ -110,7 +110,7 @@ std::string badNumberMessage(NumberField kind, std::string_view text, char delim
         std::string fixed(t);
         fixed[comma] = '.';
         double v = 0.0;
-        if (parseStrictNumber(fixed, v) == NumberField::kNumber)
+        if (parseStrictNumber(fixed, v) == NumberField::Number)
             msg += " (decimal comma? write " + fixed + ")";
     }
     return msg;

@@ -14,17 +14,17 @@
 namespace tsf {
 
 enum class NumberField {
-    kNumber,     ///< a finite number; value set
-    kNoData,     ///< empty, "nan", "NaN", "NA" (any case) or another NaN spelling; value = NaN
-    kNotNumber,  ///< text that is not a number
-    kInfinite,   ///< "inf", "Infinity", or a number too large for a double ("1e999")
+    Number,     ///< a finite number; value set
+    NoData,     ///< empty, "nan", "NaN", "NA" (any case) or another NaN spelling; value = NaN
+    NotNumber,  ///< text that is not a number
+    Infinite,   ///< "inf", "Infinity", or a number too large for a double ("1e999")
 };
 
 /// Classifies `text` (surrounding spaces/tabs ignored) and sets `value`.
 /// Numbers too small for a double ("1e-400") underflow to 0 or a subnormal.
 NumberField parseNumberField(std::string_view text, double& value);
 
-/// Like parseNumberField but empty and NaN spellings are kNotNumber: for
+/// Like parseNumberField but empty and NaN spellings are NotNumber: for
 /// formats where a missing value has no textual form (PGM, ESRI grids).
 NumberField parseStrictNumber(std::string_view text, double& value);
 
@@ -32,8 +32,8 @@ NumberField parseStrictNumber(std::string_view text, double& value);
 /// most `max_value`. Returns false otherwise (out untouched).
 bool parseWholeNumber(std::string_view text, int64_t max_value, int64_t& out);
 
-/// A one-line description of why `text` (classified as kNotNumber or
-/// kInfinite) is not a value, for InputError: "expected a number, found
+/// A one-line description of why `text` (classified as NotNumber or
+/// Infinite) is not a value, for InputError: "expected a number, found
 /// \"1,5\" (decimal comma? write 1.5)". `delimiter` (0 = none) is the field
 /// delimiter of the file, used for the decimal-comma hint.
 std::string badNumberMessage(NumberField kind, std::string_view text, char delimiter = 0);

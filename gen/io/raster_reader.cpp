@@ -33,49 +33,49 @@ bool startsWithNoCase(std::string_view text, std::string_view word) {
 
 RasterFormat detectRasterFormat(std::string_view bytes, const std::string& path) {
     constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
-    if (bytes.substr(0, kPngSignature.size()) == kPngSignature) return RasterFormat::kPng;
+    if (bytes.substr(0, kPngSignature.size()) == kPngSignature) return RasterFormat::Png;
     if (bytes.size() >= 3 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '7' &&
         (bytes[2] == ' ' || bytes[2] == '\t' || bytes[2] == '\n' || bytes[2] == '\r' || bytes[2] == '#'))
-        return RasterFormat::kPgm;
+        return RasterFormat::Pgm;
     std::string_view text = bytes;
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\n' || text.front() == '\r'))
         text.remove_prefix(1);
-    if (startsWithNoCase(text, "ncols") || startsWithNoCase(text, "nrows")) return RasterFormat::kEsriAscii;
+    if (startsWithNoCase(text, "ncols") || startsWithNoCase(text, "nrows")) return RasterFormat::EsriAscii;
     const std::string ext = extensionOf(path);
-    if (ext == ".png") return RasterFormat::kPng;
-    if (ext == ".pgm" || ext == ".pnm") return RasterFormat::kPgm;
-    if (ext == ".asc") return RasterFormat::kEsriAscii;
-    return RasterFormat::kCsv;
+    if (ext == ".png") return RasterFormat::Png;
+    if (ext == ".pgm" || ext == ".pnm") return RasterFormat::Pgm;
+    if (ext == ".asc") return RasterFormat::EsriAscii;
+    return RasterFormat::Csv;
 }
 
 const char* rasterFormatName(RasterFormat format) {
     switch (format) {
-        case RasterFormat::kCsv: return "csv";
-        case RasterFormat::kPgm: return "pgm";
-        case RasterFormat::kPng: return "png";
-        case RasterFormat::kEsriAscii: return "esri-ascii";
+        case RasterFormat::Csv: return "csv";
+        case RasterFormat::Pgm: return "pgm";
+        case RasterFormat::Png: return "png";
+        case RasterFormat::EsriAscii: return "esri-ascii";
         default: return "auto";
     }
 }
 
 RasterFormat parseRasterFormat(const std::string& name) {
     const std::string n = lowerCase(name);
-    if (n == "auto" || n.empty()) return RasterFormat::kAuto;
-    if (n == "csv") return RasterFormat::kCsv;
-    if (n == "pgm") return RasterFormat::kPgm;
-    if (n == "png") return RasterFormat::kPng;
-    if (n == "esri-ascii" || n == "asc" || n == "esri") return RasterFormat::kEsriAscii;
+    if (n == "auto" || n.empty()) return RasterFormat::Auto;
+    if (n == "csv") return RasterFormat::Csv;
+    if (n == "pgm") return RasterFormat::Pgm;
+    if (n == "png") return RasterFormat::Png;
+    if (n == "esri-ascii" || n == "asc" || n == "esri") return RasterFormat::EsriAscii;
     throw InputError("unknown raster format " + quoteForMessage(name) + "; expected auto, csv, pgm, png or esri-ascii");
 }
 
 Raster parseRaster(std::string_view bytes, const std::string& path, const RasterReadOptions& opts) {
     checkCsvDelimiter(opts.delimiter);
-    const RasterFormat format = opts.format == RasterFormat::kAuto ? detectRasterFormat(bytes, path) : opts.format;
+    const RasterFormat format = opts.format == RasterFormat::Auto ? detectRasterFormat(bytes, path) : opts.format;
     switch (format) {
-        case RasterFormat::kPng: return parsePng(bytes, path);
-        case RasterFormat::kPgm: return parsePgm(bytes, path);
-        case RasterFormat::kEsriAscii: return parseEsriAscii(bytes, path);
+        case RasterFormat::Png: return parsePng(bytes, path);
+        case RasterFormat::Pgm: return parsePgm(bytes, path);
+        case RasterFormat::EsriAscii: return parseEsriAscii(bytes, path);
         default: return parseCsvGrid(bytes, path, opts.delimiter);
     }
 }

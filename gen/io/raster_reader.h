@@ -5,7 +5,7 @@
 //   pgm         netpbm greymap P2/P5 (pgm_reader.h)
 //   png         greyscale PNG (png_reader.h)
 //   esri-ascii  ESRI ASCII grid .asc (esri_ascii_reader.h)
-// Detection (RasterFormat::kAuto): the content decides first - a PNG
+// Detection (RasterFormat::Auto): the content decides first - a PNG
 // signature, "P2"/"P5" (or another netpbm magic, to name it in the error),
 // or a first word "ncols"/"nrows" (ESRI, any case); then the extension
 // (.png, .pgm/.pnm, .asc); anything else is read as grid CSV.
@@ -18,10 +18,10 @@
 
 namespace tsf {
 
-enum class RasterFormat { kAuto, kCsv, kPgm, kPng, kEsriAscii };
+enum class RasterFormat { Auto, Csv, Pgm, Png, EsriAscii };
 
 struct RasterReadOptions {
-    RasterFormat format = RasterFormat::kAuto;
+    RasterFormat format = RasterFormat::Auto;
     /// Grid CSV only: 0 = detect, else ',', ';', '\t' or ' ' (runs of blanks).
     char delimiter = 0;
 };
@@ -33,7 +33,7 @@ Raster readRaster(const std::string& path, const RasterReadOptions& opts = {});
 /// extension and in messages).
 Raster parseRaster(std::string_view bytes, const std::string& path, const RasterReadOptions& opts = {});
 
-/// The format kAuto would choose for these bytes and this file name.
+/// The format Auto would choose for these bytes and this file name.
 RasterFormat detectRasterFormat(std::string_view bytes, const std::string& path);
 
 /// "csv", "pgm", "png", "esri-ascii" or "auto"; same strings as Raster::kind.

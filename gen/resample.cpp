@@ -1,0 +1,172 @@
+#include "gen/resample.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "gen/error.h"
+
+namespace tsf {
+namespace {
+
+constexpr double kRowSpacing = kSqrt3 / 2.0;  // hex row spacing in pitches
+
+std::string formatNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+int32_t clampIndex(double v, int32_t n) {
+    if (!(v >= 0.0)) return 0;  // also NaN
+    if (v >= double(n)) return n - 1;
+    return int32_t(v);
+}
+
+struct PixelPoint {
+    double x = 0.0;  ///< pixels, east
+    double y = 0.0;  ///< pixels, down
+};
+
+PixelPoint hexCentrePx(const ResampleLayout& layout, int32_t col, int32_t row) {
+    const LatticePoint c = hexCentre(layout.grid, col, row);
+    return {layout.x0_px + latticeX(c, layout.pitch_px), layout.y0_px - latticeY(c, layout.pitch_px)};
+}
+
+double nearestValue(const Raster& raster, PixelPoint p) {
+    return raster.at(clampIndex(std::floor(p.x), raster.cols), clampIndex(std::floor(p.y), raster.rows));
+}
+
+double bilinearValue(const Raster& raster, PixelPoint p) {
+    const double u = std::clamp(p.x - 0.5, 0.0, double(raster.cols - 1));
+    const double v = std::clamp(p.y - 0.5, 0.0, double(raster.rows - 1));
+    const int32_t c0 = int32_t(std::floor(u));
+    const int32_t r0 = int32_t(std::floor(v));
+    const int32_t c1 = std::min(c0 + 1, raster.cols - 1);
+    const int32_t r1 = std::min(r0 + 1, raster.rows - 1);
+    const double fu = u - c0;
+    const double fv = v - r0;
+    const double w[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
+    const double z[4] = {raster.at(c0, r0), raster.at(c1, r0), raster.at(c0, r1), raster.at(c1, r1)};
+    double sum = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        if (w[k] == 0.0) continue;
+        if (std::isnan(z[k])) return NAN;
+        sum += w[k] * z[k];
+    }
+    return sum;
+}
+
+}  // namespace
+
+ResampleLayout resampleLayout(int32_t raster_cols, int32_t raster_rows, int hex_cols) {
+    if (raster_cols <= 0 || raster_rows <= 0)
+        throw InputError("cannot resample an empty raster (" + std::to_string(raster_cols) + " x " +
+                         std::to_string(raster_rows) + ")");
+    if (hex_cols < 0 || hex_cols > kMaxResampleCols)
+        throw InputError("hex columns " + std::to_string(hex_cols) + " out of range; expected 1.." +
+                         std::to_string(kMaxResampleCols) + " (0 = one per raster column)");
+    const int32_t cols = hex_cols > 0 ? hex_cols : std::min(raster_cols, kMaxResampleCols);
+    ResampleLayout layout;
+    // A single row needs no room for the shifted odd row.
+    const double p_single = double(raster_cols) / cols;
+    if (std::round(raster_rows / (p_single * kRowSpacing)) <= 1.0) {
+        layout.pitch_px = p_single;
+        layout.grid = {cols, 1};
+    } else {
+        layout.pitch_px = double(raster_cols) / (cols + 0.5);
+        const double rows = std::max(1.0, std::round(raster_rows / (layout.pitch_px * kRowSpacing)));
+        if (rows * cols > double(kMaxResampleCells))
+            throw InputError("resampling " + std::to_string(raster_cols) + " x " + std::to_string(raster_rows) +
+                             " pixels to " + std::to_string(cols) + " hex columns gives " +
+                             formatNumber(rows * cols) + " hexagons; the most is " +
+                             std::to_string(kMaxResampleCells) + " (use fewer hex columns)");
+        layout.grid = {cols, int32_t(rows)};
+    }
+    const double width = gridWidth(layout.grid, layout.pitch_px);
+    const double depth = gridDepth(layout.grid, layout.pitch_px);
+    layout.x0_px = 0.5 * (raster_cols - width);
+    layout.y0_px = 0.5 * (raster_rows + depth);
+    return layout;
+}
+
+HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
+    const ResampleLayout layout = resampleLayout(raster.cols, raster.rows, opts.hex_cols);
+    assert(raster.values.size() == size_t(raster.cols) * size_t(raster.rows));
+    const HexGrid& grid = layout.grid;
+    const double p = layout.pitch_px;
+
+    HexField field;
+    field.grid = grid;
+    field.source = raster.source;
+    field.pitch_data = p * raster.cell_size;
+    field.values.assign(size_t(grid.cellCount()), NAN);
+
+    switch (opts.method) {
+        case ResampleOptions::Method::Nearest:
+        case ResampleOptions::Method::Bilinear:
+            for (int32_t r = 0; r < grid.rows; ++r)
+                for (int32_t c = 0; c < grid.cols; ++c) {
+                    const PixelPoint centre = hexCentrePx(layout, c, r);
+                    field.at(c, r) = opts.method == ResampleOptions::Method::Nearest ? nearestValue(raster, centre)
+                                                                                     : bilinearValue(raster, centre);
+                }
+            break;
+        case ResampleOptions::Method::Mean: {
+            std::vector<double> sum(size_t(grid.cellCount()), 0.0);
+            std::vector<int64_t> finite(size_t(grid.cellCount()), 0);
+            std::vector<int64_t> inside(size_t(grid.cellCount()), 0);
+            for (int32_t pr = 0; pr < raster.rows; ++pr) {
+                const double y_pitch = (layout.y0_px - (pr + 0.5)) / p;
+                for (int32_t pc = 0; pc < raster.cols; ++pc) {
+                    const double x_pitch = (pc + 0.5 - layout.x0_px) / p;
+                    int32_t c = 0, r = 0;
+                    if (!hexCellAt(grid, x_pitch, y_pitch, c, r)) continue;
+                    const size_t k = size_t(grid.index(c, r));
+                    ++inside[k];
+                    const double v = raster.at(pc, pr);
+                    if (std::isnan(v)) continue;
+                    sum[k] += v;
+                    ++finite[k];
+                }
+            }
+            for (int32_t r = 0; r < grid.rows; ++r)
+                for (int32_t c = 0; c < grid.cols; ++c) {
+                    const size_t k = size_t(grid.index(c, r));
+                    if (inside[k] == 0) field.at(c, r) = nearestValue(raster, hexCentrePx(layout, c, r));
+                    else if (finite[k] > 0) field.at(c, r) = sum[k] / double(finite[k]);
+                }
+            break;
+        }
+    }
+
+    std::string what;
+    switch (opts.method) {
+        case ResampleOptions::Method::Mean: what = "mean of the pixels in each hexagon"; break;
+        case ResampleOptions::Method::Nearest: what = "nearest pixel to each hexagon centre"; break;
+        case ResampleOptions::Method::Bilinear: what = "bilinear interpolation at each hexagon centre"; break;
+    }
+    field.how = what + ": " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) + " px -> " +
+                std::to_string(grid.cols) + " x " + std::to_string(grid.rows) + " hexagons, pitch " +
+                formatNumber(p) + " px";
+    return field;
+}
+
+const char* resampleMethodName(ResampleOptions::Method method) {
+    switch (method) {
+        case ResampleOptions::Method::Nearest: return "nearest";
+        case ResampleOptions::Method::Bilinear: return "bilinear";
+        default: return "mean";
+    }
+}
+
+ResampleOptions::Method parseResampleMethod(const std::string& name) {
+    if (name == "mean") return ResampleOptions::Method::Mean;
+    if (name == "nearest") return ResampleOptions::Method::Nearest;
+    if (name == "bilinear") return ResampleOptions::Method::Bilinear;
+    throw InputError("unknown sampling method \"" + name + "\"; expected mean, nearest or bilinear");
+}
+
+}  // namespace tsf
