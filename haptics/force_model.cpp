@@ -1,0 +1,267 @@
+#include "haptics/force_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "gen/error.h"
+
+namespace tsf::haptics {
+namespace {
+
+/// Below this filtered speed the observer cannot dissipate by damping (the
+/// damping force -alpha v would need an unbounded alpha); 0.1 mm/s is under
+/// the velocity filter's noise floor, so nothing real is lost.
+constexpr double kObserverMinSpeed_m_per_s = 1e-4;
+/// Longest time step the mode transitions integrate at once; a stalled loop
+/// must not make the level of detail jump when it resumes.
+constexpr double kMaxModeStep_s = 0.05;
+
+bool isFinite(const Vec3& v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+double smoothstep01(double x) noexcept {
+    x = std::clamp(x, 0.0, 1.0);
+    return x * x * (3.0 - 2.0 * x);
+}
+
+double approach(double value, double target, double max_step) noexcept {
+    if (value < target) return std::min(target, value + max_step);
+    return std::max(target, value - max_step);
+}
+
+/// Scales v down to magnitude `limit` if it is longer; keeps its direction.
+Vec3 clampMagnitude(const Vec3& v, double limit, bool* clamped = nullptr) noexcept {
+    const double m = glm::length(v);
+    if (m > limit && m > 0.0) {
+        if (clamped) *clamped = true;
+        return v * (limit / m);
+    }
+    return v;
+}
+
+void require(bool ok, const std::string& what) {
+    if (!ok) throw InputError(what);
+}
+
+/// Largest |grad H| (m/m) of one level, sampled 4 x 4 per texel.
+double maxSlope(const ForceModel& model, int level) {
+    const ScaleLevel& l = model.space->levels[size_t(level)];
+    const double s = l.base_cells_per_texel;
+    constexpr int kSub = 4;
+    double best = 0.0;
+    for (int32_t j = 0; j < l.grid.rows * kSub; ++j)
+        for (int32_t i = 0; i < l.grid.cols * kSub; ++i) {
+            const double gi = ((i + 0.5) / kSub - 0.5 + 0.5) * s - 0.5;
+            const double gj = ((j + 0.5) / kSub - 0.5 + 0.5) * s - 0.5;
+            const HeightSample h = sampleLevel(*model.space, level, gi, gj, model.params.sampling);
+            const double k = model.mapping.relief_m / model.mapping.cell_m;
+            best = std::max(best, k * std::hypot(h.d_di, h.d_dj));
+        }
+    return best;
+}
+
+}  // namespace
+
+double passiveStiffnessBound(const DeviceLimits& limits, double rate_Hz) noexcept {
+    if (!(rate_Hz > 0.0) || !(limits.rated_rate_Hz > 0.0)) return 0.0;
+    return limits.max_stiffness_N_per_m * std::min(1.0, rate_Hz / limits.rated_rate_Hz);
+}
+
+double springForce_N(double depth_m, double stiffness_N_per_m, double entry_depth_m) noexcept {
+    if (!(depth_m > 0.0)) return 0.0;
+    if (depth_m < entry_depth_m) return stiffness_N_per_m * depth_m * depth_m / (2.0 * entry_depth_m);
+    return stiffness_N_per_m * (depth_m - 0.5 * std::max(0.0, entry_depth_m));
+}
+
+ForceModel makeForceModel(const ScaleSpace& space, const FieldMapping& mapping, const ForceParams& p,
+                          const DeviceLimits& limits, double rate_Hz) {
+    require(!space.levels.empty() && !space.levels[0].grid.empty(), "the field has no levels to render");
+    require(mapping.cell_m > 0.0 && mapping.relief_m > 0.0, "the field mapping is empty");
+    require(rate_Hz > 0.0 && std::isfinite(rate_Hz), "--rate must be a positive number of ticks per second");
+    require(p.max_force_N > 0.0 && p.max_force_N <= limits.max_force_N,
+            "--max-force must be above 0 and at most the device's limit of " + std::to_string(limits.max_force_N) +
+                " N");
+    const double k_bound = passiveStiffnessBound(limits, rate_Hz);
+    const double k_guidance = p.guidance_N > 0.0 ? p.guidance_N / p.guidance_ramp_m : 0.0;
+    require(p.stiffness_N_per_m > 0.0 && std::isfinite(p.stiffness_N_per_m),
+            "--stiffness must be a positive number of N/m");
+    require(p.stiffness_N_per_m + k_guidance <= k_bound,
+            "--stiffness " + std::to_string(p.stiffness_N_per_m) + " N/m" +
+                (k_guidance > 0.0 ? " plus the guidance spring " + std::to_string(k_guidance) + " N/m" : "") +
+                " is above the passive bound of " + std::to_string(k_bound) + " N/m for this device at " +
+                std::to_string(rate_Hz) + " Hz (b > K T / 2); lower it or raise --rate");
+    require(p.entry_depth_m >= 0.0 && p.entry_depth_m <= 0.01, "the entry depth must be between 0 and 10 mm");
+    require(p.mu_static >= 0.0 && p.mu_static <= 1.0 && p.mu_kinetic >= 0.0 && p.mu_kinetic <= p.mu_static,
+            "friction coefficients must satisfy 0 <= --mu-k <= --mu-s <= 1");
+    require(p.stick_speed_m_per_s > 0.0, "the stick speed must be positive");
+    require(p.gravity_N >= 0.0 && p.gravity_N <= p.max_force_N, "--gravity must be between 0 and --max-force");
+    require(p.guidance_N >= 0.0 && p.guidance_N <= p.max_force_N && p.guidance_ramp_m > 0.0,
+            "--guidance must be between 0 and --max-force");
+    require(p.volume_force_N >= 0.0 && p.volume_force_N <= p.max_force_N,
+            "the volume force must be between 0 and --max-force");
+    require(p.volume_edge_fraction > 0.0 && p.volume_edge_fraction <= 0.5,
+            "the volume edge fraction must be in (0, 0.5]");
+    require(p.lod_rate_levels_per_s > 0.0 && p.volume_fade_s > 0.0, "mode transition rates must be positive");
+    require(p.max_damping_Ns_per_m >= 0.0 && p.max_damping_Ns_per_m <= limits.max_damping_Ns_per_m,
+            "the observer's damping must be between 0 and the device's limit of " +
+                std::to_string(limits.max_damping_Ns_per_m) + " N s/m");
+    require(!p.sampling.central_differences || p.sampling.central_step_texels > 0.0,
+            "the central-difference step must be positive");
+    ForceModel m;
+    m.space = &space;
+    m.mapping = mapping;
+    m.params = p;
+    // Twice the energy the spring stores at the force limit: enough to give
+    // back a full press, small enough that a long stretch of absorbed energy
+    // (friction) cannot later pay for a burst from the surface.
+    m.energy_reserve_J = p.max_force_N * p.max_force_N / p.stiffness_N_per_m;
+    m.guidance_slope_bound = p.guidance_N > 0.0 ? maxSlope(m, space.count() - 1) : 0.0;
+    return m;
+}
+
+SurfacePoint surfaceAt(const ForceModel& model, const Vec3& p_m, double level) noexcept {
+    const FieldMapping& map = model.mapping;
+    const GridPoint g = deviceToGrid(map, p_m);
+    const HeightSample h = sampleScale(*model.space, level, g.gi, g.gj, model.params.sampling);
+    const double k = map.relief_m / map.cell_m;
+    // grid j runs north = device -z.
+    return {map.floor_y_m + map.relief_m * h.height, k * h.d_di, -k * h.d_dj};
+}
+
+ForceOutput computeForce(const ForceModel& model, const ForceState& state, const ForceInput& in) noexcept {
+    ForceOutput out;
+    out.state = state;
+    const ForceParams& P = model.params;
+    const Vec3 p = in.position_m;
+    const Vec3 v = isFinite(in.velocity_m_per_s) ? in.velocity_m_per_s : Vec3(0.0);
+    if (!std::isfinite(in.t_s) || !isFinite(p) || model.space == nullptr || model.space->levels.empty()) {
+        out.flags = kFlagRejected;
+        out.state.observed_force_N = Vec3(0.0);  // zero force is what will be applied
+        return out;
+    }
+    ForceState& s = out.state;
+    const double dt = s.started ? std::max(0.0, in.t_s - s.t_s) : 0.0;
+    const double top_level = double(model.space->count() - 1);
+
+    // Mode transitions: never instantaneous.
+    const double mode_dt = std::min(dt, kMaxModeStep_s);
+    const double lod_target = std::clamp(double(in.lod), 0.0, top_level);
+    if (!s.started) s.lod = lod_target;
+    s.lod = std::clamp(approach(s.lod, lod_target, P.lod_rate_levels_per_s * mode_dt), 0.0, top_level);
+    s.volume_weight = std::clamp(approach(s.volume_weight, in.volume ? 1.0 : 0.0, mode_dt / P.volume_fade_s), 0.0, 1.0);
+
+    // Normal force (eqs 4.3-4.6).
+    const SurfacePoint surf = surfaceAt(model, p, s.lod);
+    const double slope2 = surf.slope_x * surf.slope_x + surf.slope_z * surf.slope_z;
+    const double inv_len = 1.0 / std::sqrt(1.0 + slope2);
+    const Vec3 n = Vec3(-surf.slope_x, 1.0, -surf.slope_z) * inv_len;
+    const double depth = (surf.height_y_m - p.y) * inv_len;
+    out.penetration_m = depth;
+    const double fn = springForce_N(depth, P.stiffness_N_per_m, P.entry_depth_m);
+    Vec3 f_env = n * fn;
+
+    // Friction (eq. 4.7 with a dimensionally sound switch).
+    if (depth > 0.0 && P.friction) {
+        const Vec3 p_o = p + n * depth;  // the probe's point on the surface
+        if (!s.in_contact) {
+            s.stick_point_m = p_o;
+            s.sliding = false;
+        }
+        Vec3 disp = s.stick_point_m - p_o;
+        disp -= n * glm::dot(disp, n);  // keep it tangential
+        const double r = glm::length(disp);
+        const double limit_static = P.mu_static * fn;
+        const double limit_kinetic = P.mu_kinetic * fn;
+        const Vec3 vt = v - n * glm::dot(v, n);
+        if (!s.sliding && P.stiffness_N_per_m * r > limit_static) s.sliding = true;
+        else if (s.sliding && glm::length(vt) < P.stick_speed_m_per_s) s.sliding = false;
+        // Sliding keeps the spring at the kinetic force; sticking keeps it
+        // within the static cone (it can only be outside after fn dropped).
+        const double radius = (s.sliding ? limit_kinetic : limit_static) / P.stiffness_N_per_m;
+        if (r > radius && r > 0.0) disp *= radius / r;
+        s.stick_point_m = p_o + disp;
+        f_env += disp * P.stiffness_N_per_m;
+        s.in_contact = true;
+        if (s.sliding) out.flags |= kFlagSliding;
+    } else {
+        s.in_contact = false;
+        s.sliding = false;
+    }
+    if (depth > 0.0) out.flags |= kFlagContact;
+
+    // Volume (eqs 4.9-4.12).
+    const FieldMapping& map = model.mapping;
+    const double slab = map.volume_top_y_m - map.volume_bottom_y_m;
+    if (s.volume_weight > 0.0 && slab > 0.0 && p.y > map.volume_bottom_y_m && p.y < map.volume_top_y_m) {
+        const double frac = (p.y - map.volume_bottom_y_m) / slab;
+        const double level = s.lod + frac * (top_level - s.lod);
+        const SurfacePoint d = surfaceAt(model, p, level);
+        const Vec3 raw = clampMagnitude(P.volume_force_N * Vec3(-d.slope_x, 1.0 - frac, -d.slope_z), P.volume_force_N);
+        const double e = P.volume_edge_fraction;
+        const double envelope = smoothstep01(frac / e) * smoothstep01((1.0 - frac) / e);
+        f_env += raw * (s.volume_weight * envelope);
+        out.flags |= kFlagInVolume;
+    }
+
+    // Walls at the footprint border.
+    if (P.edge == EdgeMode::kWall) {
+        const double K = P.stiffness_N_per_m, delta = P.entry_depth_m;
+        f_env.x += springForce_N(map.west_x_m - p.x, K, delta) - springForce_N(p.x - map.eastX(), K, delta);
+        f_env.z += springForce_N(map.northZ() - p.z, K, delta) - springForce_N(p.z - map.south_z_m, K, delta);
+    }
+
+    // Conservative forces: gravity and guidance.
+    Vec3 f_cons(0.0, -P.gravity_N, 0.0);
+    if (P.guidance_N > 0.0) {
+        const SurfacePoint g = surfaceAt(model, p, top_level);
+        const double gap = p.y - g.height_y_m;
+        if (gap > 0.0) {
+            const double pull = P.guidance_N * std::min(gap / P.guidance_ramp_m, 1.0) /
+                                std::sqrt(1.0 + model.guidance_slope_bound * model.guidance_slope_bound);
+            f_cons += pull * Vec3(g.slope_x, -1.0, g.slope_z);  // -grad of the potential
+        }
+    }
+
+    // Passivity observer.
+    if (state.started) {
+        s.energy_J -= glm::dot(state.observed_force_N, p - state.position_m);
+        s.energy_J = std::min(s.energy_J, model.energy_reserve_J);
+    }
+    Vec3 f_pc(0.0);
+    const double v2 = glm::dot(v, v);
+    if (P.passivity_observer && s.energy_J < 0.0 && dt > 0.0 && v2 > kObserverMinSpeed_m_per_s * kObserverMinSpeed_m_per_s) {
+        const double alpha = std::min(-s.energy_J / (v2 * dt), P.max_damping_Ns_per_m);
+        f_pc = -alpha * v;
+        out.damping_Ns_per_m = alpha;
+        if (alpha > 0.0) out.flags |= kFlagDamping;
+    }
+
+    // Gain, clamp, final check.
+    const double gain = std::isfinite(in.output_gain) ? std::clamp(in.output_gain, 0.0, 1.0) : 0.0;
+    const Vec3 observed = gain * (f_env + f_pc);
+    const Vec3 total = observed + gain * f_cons;
+    const double mag = glm::length(total);
+    const double scale = mag > P.max_force_N ? P.max_force_N / mag : 1.0;
+    if (scale < 1.0) out.flags |= kFlagClamped;
+    out.force_N = total * scale;
+    s.observed_force_N = observed * scale;
+    if (!isFinite(out.force_N) || !std::isfinite(s.energy_J) || !isFinite(s.stick_point_m)) {
+        out.force_N = Vec3(0.0);
+        out.flags = kFlagRejected;
+        out.state = state;  // do not carry a poisoned state forward
+        out.state.observed_force_N = Vec3(0.0);
+        out.state.position_m = p;
+        out.state.t_s = in.t_s;
+        out.state.started = true;
+        if (!std::isfinite(out.state.energy_J)) out.state.energy_J = 0.0;
+        return out;
+    }
+    s.started = true;
+    s.t_s = in.t_s;
+    s.position_m = p;
+    return out;
+}
+
+}  // namespace tsf::haptics

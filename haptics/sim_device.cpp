@@ -1,0 +1,194 @@
+#include "haptics/sim_device.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "gen/error.h"
+
+namespace tsf::haptics {
+namespace {
+
+/// Speeds and timings of the standard scripts: slow enough to feel, like a
+/// careful explorer (thesis 6.2: participants moved at a few cm/s).
+constexpr double kSweepSpeed_m_per_s = 0.03;
+constexpr int kSweepLines = 6;
+constexpr int kTapsPerSide = 4;
+constexpr double kLiftClearance_m = 0.005;
+
+double lerp(double a, double b, double f) { return a + (b - a) * f; }
+
+}  // namespace
+
+SimTrajectory parseSimTrajectory(const std::string& name) {
+    if (name == "sweep") return SimTrajectory::kSweep;
+    if (name == "taps") return SimTrajectory::kTaps;
+    if (name == "finger") return SimTrajectory::kFinger;
+    throw InputError("--trajectory must be sweep, taps or finger (got '" + name + "')");
+}
+
+SimScript makeSimScript(SimTrajectory kind, const FieldMapping& m, double press_N) {
+    SimScript s;
+    const double margin = 0.05 * std::min(m.eastX() - m.west_x_m, m.south_z_m - m.northZ());
+    const double x0 = m.west_x_m + margin, x1 = m.eastX() - margin;
+    const double z0 = m.northZ() + margin, z1 = m.south_z_m - margin;
+    const double lift_y = m.volume_bottom_y_m + kLiftClearance_m;
+    auto key = [&](double t, double x, double z, double press, double lift) {
+        s.keys.push_back({t, x, z, press, lift, lift_y, 0u});
+    };
+    double t = 0.0;
+    switch (kind) {
+    case SimTrajectory::kSweep: {
+        s.name = "sweep";
+        key(t, x0, z0, press_N, 1.0);
+        t += 0.5;
+        key(t, x0, z0, press_N, 0.0);
+        for (int line = 0; line < kSweepLines; ++line) {
+            const double z = lerp(z0, z1, double(line) / (kSweepLines - 1));
+            const bool east = line % 2 == 0;
+            if (line > 0) {
+                t += std::abs(z1 - z0) / (kSweepLines - 1) / kSweepSpeed_m_per_s;
+                key(t, east ? x0 : x1, z, press_N, 0.0);
+            } else {
+                t += 0.5;  // settle onto the surface
+                key(t, x0, z, press_N, 0.0);
+            }
+            t += (x1 - x0) / kSweepSpeed_m_per_s;
+            key(t, east ? x1 : x0, z, press_N, 0.0);
+        }
+        const SimKeyframe last = s.keys.back();
+        t += 0.5;
+        key(t, last.x_m, last.z_m, press_N, 1.0);
+        break;
+    }
+    case SimTrajectory::kTaps: {
+        s.name = "taps";
+        for (int row = 0; row < kTapsPerSide; ++row)
+            for (int col = 0; col < kTapsPerSide; ++col) {
+                const double x = lerp(x0, x1, (col + 0.5) / kTapsPerSide);
+                const double z = lerp(z0, z1, (row + 0.5) / kTapsPerSide);
+                key(t, x, z, press_N, 1.0);  // arrive lifted
+                t += 0.3;
+                key(t, x, z, press_N, 1.0);
+                t += 0.05;
+                key(t, x, z, press_N, 0.0);  // drop onto the surface
+                t += 0.4;
+                key(t, x, z, press_N, 0.0);
+                t += 0.05;
+                key(t, x, z, press_N, 1.0);  // lift off
+                t += 0.3;
+            }
+        break;
+    }
+    case SimTrajectory::kFinger: {
+        s.name = "finger";
+        const double cx = 0.5 * (x0 + x1), cz = 0.5 * (z0 + z1);
+        const double r = 0.25 * std::min(x1 - x0, z1 - z0);
+        const double peak = 2.0 * press_N;
+        key(t, cx, cz, 0.0, 1.0);
+        t += 0.5;
+        key(t, cx, cz, 0.0, 0.0);
+        t += 2.0;
+        key(t, cx, cz, peak, 0.0);  // press harder and harder
+        t += 1.0;
+        key(t, cx, cz, peak, 0.0);
+        t += 0.5;
+        key(t, cx + r, cz, press_N, 0.0);
+        constexpr int kCircleKeys = 36;
+        const double lap_s = 2.0 * std::numbers::pi * r / kSweepSpeed_m_per_s;
+        for (int k = 1; k <= kCircleKeys; ++k) {
+            const double a = 2.0 * std::numbers::pi * k / kCircleKeys;
+            t += lap_s / kCircleKeys;
+            key(t, cx + r * std::cos(a), cz + r * std::sin(a), press_N, 0.0);
+        }
+        t += 1.0;
+        key(t, cx + r, cz, 0.0, 0.0);
+        t += 0.5;
+        key(t, cx + r, cz, 0.0, 1.0);
+        break;
+    }
+    }
+    const SimKeyframe& first = s.keys.front();
+    s.start_m = Vec3(first.x_m, first.lift_y_m, first.z_m);
+    return s;
+}
+
+SimDevice::SimDevice(SimScript script, DeviceLimits limits, FingerParams finger)
+    : script_(std::move(script)), limits_(limits), finger_(finger) {
+    assert(!script_.keys.empty());
+    for ([[maybe_unused]] size_t k = 1; k < script_.keys.size(); ++k)
+        assert(script_.keys[k].t_s > script_.keys[k - 1].t_s);
+    p_ = script_.start_m;
+}
+
+SimKeyframe SimDevice::targetAt(double t) noexcept {
+    const auto& keys = script_.keys;
+    if (t <= keys.front().t_s) return keys.front();
+    if (t >= keys.back().t_s) return keys.back();
+    if (keys[key_cursor_].t_s > t) key_cursor_ = 0;
+    while (key_cursor_ + 1 < keys.size() && keys[key_cursor_ + 1].t_s <= t) ++key_cursor_;
+    const SimKeyframe& a = keys[key_cursor_];
+    const SimKeyframe& b = keys[key_cursor_ + 1];
+    const double f = (t - a.t_s) / (b.t_s - a.t_s);
+    SimKeyframe k;
+    k.t_s = t;
+    k.x_m = lerp(a.x_m, b.x_m, f);
+    k.z_m = lerp(a.z_m, b.z_m, f);
+    k.press_N = lerp(a.press_N, b.press_N, f);
+    k.lift = lerp(a.lift, b.lift, f);
+    k.lift_y_m = lerp(a.lift_y_m, b.lift_y_m, f);
+    k.buttons = a.buttons;
+    return k;
+}
+
+void SimDevice::step(double dt) noexcept {
+    const SimKeyframe k = targetAt(t_);
+    const FingerParams& f = finger_;
+    Vec3 hand(0.0);
+    hand.x = f.hand_stiffness_N_per_m * (k.x_m - p_.x) - f.hand_damping_Ns_per_m * v_.x;
+    hand.z = f.hand_stiffness_N_per_m * (k.z_m - p_.z) - f.hand_damping_Ns_per_m * v_.z;
+    hand.y = -(1.0 - k.lift) * k.press_N + k.lift * f.hand_stiffness_N_per_m * (k.lift_y_m - p_.y) -
+             f.hand_damping_Ns_per_m * v_.y;
+    Vec3 stop(0.0);
+    const WorkspaceBox& box = limits_.workspace;
+    for (int a = 0; a < 3; ++a) {
+        const double below = box.min_m[a] - p_[a], above = p_[a] - box.max_m[a];
+        if (below > 0.0) stop[a] = f.stop_stiffness_N_per_m * below - f.stop_damping_Ns_per_m * std::min(v_[a], 0.0);
+        if (above > 0.0) stop[a] = -f.stop_stiffness_N_per_m * above - f.stop_damping_Ns_per_m * std::max(v_[a], 0.0);
+    }
+    const Vec3 total = force_ + hand + stop - f.device_damping_Ns_per_m * v_;
+    v_ += total * (dt / f.mass_kg);
+    const Vec3 dp = v_ * dt;
+    work_J_ += glm::dot(force_, dp);
+    max_work_J_ = std::max(max_work_J_, work_J_);
+    p_ += dp;
+    t_ += dt;
+}
+
+ReadStatus SimDevice::read(double loop_time_s, DeviceState& out) noexcept {
+    if (loop_time_s > script_.duration_s()) return ReadStatus::kEnded;
+    // Sub-steps until the loop time; a remainder below a nanosecond is not
+    // worth a step (and could be below the resolution of t_).
+    constexpr double kTimeResolution_s = 1e-9;
+    while (loop_time_s - t_ > kTimeResolution_s) step(std::min(kSimSubstep_s, loop_time_s - t_));
+    out.t_s = t_;
+    out.position_m = p_;
+    out.buttons = targetAt(t_).buttons;
+    out.homed = true;
+    return ReadStatus::kOk;
+}
+
+bool SimDevice::writeForce(const Vec3& force_N) noexcept {
+    const double m = glm::length(force_N);
+    if (!std::isfinite(m) || m > limits_.max_force_N * (1.0 + 1e-9)) {
+        force_ = Vec3(0.0);  // a real driver refuses too
+        return false;
+    }
+    force_ = force_N;
+    return true;
+}
+
+}  // namespace tsf::haptics
