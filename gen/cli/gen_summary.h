@@ -1,0 +1,35 @@
+// The one-screen summary of a generated model, for people and (--json) programs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/hex_field.h"
+#include "gen/mesh.h"
+#include "gen/scene.h"
+
+namespace tsf::cli {
+
+struct GenSummary {
+    std::string input;
+    const HexField* field = nullptr;
+    const Scene* scene = nullptr;
+    const Mesh* mesh = nullptr;
+    std::vector<std::pair<std::string, std::string>> outputs;  ///< (path, what)
+    std::vector<std::pair<std::string, double>> timings_ms;    ///< stage -> ms
+    nlohmann::json verify;  ///< verifier report, null when not run
+    std::string verify_text;
+};
+
+/// Human-readable summary (several lines, each "label  text").
+std::string formatSummary(const GenSummary& s);
+/// The same facts as JSON.
+nlohmann::json summaryJson(const GenSummary& s);
+
+/// Facts about a Scene alone (also used by `tsf info`).
+nlohmann::json sceneFactsJson(const Scene& scene);
+std::string formatSceneFacts(const Scene& scene);
+
+}  // namespace tsf::cli
