@@ -1,6 +1,7 @@
 // tsf gen: field in, model out (mesh file, OpenSCAD, scene sidecar), verified.
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "gen/cli/commands.h"
 #include "gen/cli/gen_options.h"
@@ -9,6 +10,8 @@
 #include "gen/direct_mesher.h"
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_writer.h"
+#include "gen/scene_json.h"
+#include "verify/verify_model.h"
 
 namespace tsf::cli {
 namespace {
@@ -21,10 +24,29 @@ struct GenCommandOptions {
     bool no_verify = false;
     bool json = false;
     bool progress = false;
+    bool no_sidecar = false;
 };
 
 // Grids above this many cells print progress lines without being asked.
 constexpr int64_t kProgressCells = 250000;
+
+// One line per verifier outcome for the summary; failures are listed fully.
+std::string verifyLines(const VerifyReport& r) {
+    std::string passed, other;
+    for (const Check& c : r.checks) {
+        if (c.status == CheckStatus::Pass) passed += (passed.empty() ? "" : ", ") + c.title;
+        else if (c.status != CheckStatus::Skipped) other += "  " + std::string(toString(c.status)) + "      " + c.title +
+                                                          (c.note.empty() ? "" : ": " + c.note) + "\n";
+    }
+    std::string out = "  verify    " + std::string(r.passed() ? "passed" : "FAILED") + " (" + passed + ")\n";
+    if (r.readback) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "  read back %zu cells: heights within %.4f mm of the data (max error %.4f mm)\n",
+                      r.readback->cells_checked, r.readback->tolerance_mm, r.readback->max_error_mm);
+        out += buf;
+    }
+    return out + other;
+}
 
 void runGen(const GenCommandOptions& o) {
     if (o.output.empty() && o.scad.empty())
@@ -45,6 +67,24 @@ void runGen(const GenCommandOptions& o) {
     const Mesh mesh = meshScene(scene);
     summary.mesh = &mesh;
 
+    std::optional<VerifyReport> report;
+    if (!o.no_verify) {
+        timer.begin("verifying");
+        VerifyOptions vo;
+        vo.name = o.output.empty() ? o.scad : o.output;
+        report = verifyModel(mesh, &scene, vo);
+        summary.verify = toJson(*report);
+        summary.verify_text = verifyLines(*report);
+        if (!report->passed()) {
+            // A model that fails its own checks is a bug in tsf: never hand it to a printer.
+            timer.end();
+            std::cerr << formatReport(*report);
+            std::cerr << "tsf: the generated model failed verification; nothing was written. "
+                         "Please report this with the input file.\n";
+            throw CLI::RuntimeError(kExitCheckFailed);
+        }
+    }
+
     if (!o.output.empty()) {
         timer.begin("writing");
         MeshWriteOptions wo;
@@ -52,6 +92,12 @@ void runGen(const GenCommandOptions& o) {
         wo.title = "tsf " TSF_VERSION " " + o.gen.input;
         writeMesh(mesh, o.output, wo);
         summary.outputs.push_back({o.output, "model"});
+    }
+    if (!o.no_sidecar) {
+        // The scene sidecar lets `tsf verify --scene` check any mesh of this model later.
+        const std::string sidecar = (o.output.empty() ? o.scad : o.output) + ".scene.json";
+        writeSceneJson(scene, sidecar);
+        summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
     }
     timer.end();
     summary.timings_ms = timer.stagesMs();
@@ -78,6 +124,7 @@ void addGenCommand(CLI::App& app) {
     cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
     cmd->add_flag("--json", opts->json, "Print the summary as JSON");
     cmd->add_flag("--progress", opts->progress, "Print each stage and its time on stderr");
+    cmd->add_flag("--no-scene", opts->no_sidecar, "Do not write the MODEL.scene.json sidecar");
     cmd->callback([opts] { runGen(*opts); });
 }
 
