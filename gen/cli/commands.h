@@ -3,6 +3,8 @@
 // CLI::RuntimeError(exit_code) (see kExit* below) or tsf::InputError.
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace tsf::cli {
@@ -14,6 +16,10 @@ inline constexpr int kExitBadInput = 2;      ///< bad input file or parameter
 inline constexpr int kExitToolFailed = 3;    ///< an external tool (openscad, ...) failed or is missing
 inline constexpr int kExitDeviceFailed = 4;  ///< a haptic device could not be used
 inline constexpr int kExitInterrupted = 130; ///< SIGINT
+
+/// The command line tsf was started with ("tsf gen field.csv -o m.stl"), for file headers.
+const std::string& invocation();
+void setInvocation(int argc, char** argv);
 
 void addGenCommand(CLI::App& app);     // gen/cli/gen_command.cpp
 void addInfoCommand(CLI::App& app);    // gen/cli/info_command.cpp

@@ -10,6 +10,7 @@
 #include "gen/direct_mesher.h"
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_writer.h"
+#include "gen/scad/scad_emitter.h"
 #include "gen/scene_json.h"
 #include "verify/verify_model.h"
 
@@ -25,6 +26,9 @@ struct GenCommandOptions {
     bool json = false;
     bool progress = false;
     bool no_sidecar = false;
+    std::string scad_strategy = "polyhedron";
+    bool scad_library_beside = false;
+    std::string command_line;
 };
 
 // Grids above this many cells print progress lines without being asked.
@@ -93,6 +97,16 @@ void runGen(const GenCommandOptions& o) {
         writeMesh(mesh, o.output, wo);
         summary.outputs.push_back({o.output, "model"});
     }
+    if (!o.scad.empty()) {
+        timer.begin("writing OpenSCAD");
+        ScadOptions so;
+        parseScadStrategy(o.scad_strategy, so.strategy);
+        so.inline_library = !o.scad_library_beside;
+        so.source = o.gen.input;
+        so.command = o.command_line;
+        writeScad(scene, so, o.scad);
+        for (const std::string& path : scadOutputPaths(so, o.scad)) summary.outputs.push_back({path, "OpenSCAD"});
+    }
     if (!o.no_sidecar) {
         // The scene sidecar lets `tsf verify --scene` check any mesh of this model later.
         const std::string sidecar = (o.output.empty() ? o.scad : o.output) + ".scene.json";
@@ -125,7 +139,17 @@ void addGenCommand(CLI::App& app) {
     cmd->add_flag("--json", opts->json, "Print the summary as JSON");
     cmd->add_flag("--progress", opts->progress, "Print each stage and its time on stderr");
     cmd->add_flag("--no-scene", opts->no_sidecar, "Do not write the MODEL.scene.json sidecar");
-    cmd->callback([opts] { runGen(*opts); });
+    cmd->add_option("--scad-strategy", opts->scad_strategy,
+                    "polyhedron: one polyhedron() built from the values (fast, default) | csg: union of one prism "
+                    "per cell (slow, tolerant of hand-added geometry); see docs/openscad.md")
+        ->check(CLI::IsMember({"polyhedron", "csg"}))->capture_default_str();
+    cmd->add_flag("--scad-library-beside", opts->scad_library_beside,
+                  "Copy the OpenSCAD library into a folder beside the .scad instead of inlining it");
+    cmd->callback([opts] {
+        // The command line goes into the OpenSCAD header so a file says how it was made.
+        opts->command_line = invocation();
+        runGen(*opts);
+    });
 }
 
 void addInfoCommand(CLI::App& app) {

@@ -1,11 +1,28 @@
 // tsf: tangible scalar fields. One binary, one subcommand per job.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "gen/cli/commands.h"
 #include "gen/error.h"
 
+namespace tsf::cli {
+namespace {
+std::string g_invocation;
+}
+const std::string& invocation() { return g_invocation; }
+void setInvocation(int argc, char** argv) {
+    g_invocation = "tsf";
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const bool plain = arg.find_first_of(" \t'\"\\$") == std::string::npos && !arg.empty();
+        g_invocation += " " + (plain ? arg : "'" + arg + "'");
+    }
+}
+}  // namespace tsf::cli
+
 int main(int argc, char** argv) {
+    tsf::cli::setInvocation(argc, argv);
     CLI::App app{"tsf " TSF_VERSION " - turn a 2D scalar field into something you can feel:\n"
                  "a 3D-printable model of hexagonal pillars (STL, 3MF, OpenSCAD) or a surface\n"
                  "rendered on a force-feedback device."};
