@@ -7,6 +7,7 @@
 #include "gen/cli/gen_options.h"
 #include "gen/cli/gen_summary.h"
 #include "gen/cli/stage_timer.h"
+#include "gen/cli/preview.h"
 #include "gen/direct_mesher.h"
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_writer.h"
@@ -29,6 +30,7 @@ struct GenCommandOptions {
     std::string scad_strategy = "polyhedron";
     bool scad_library_beside = false;
     std::string command_line;
+    std::string preview;
 };
 
 // Grids above this many cells print progress lines without being asked.
@@ -97,6 +99,13 @@ void runGen(const GenCommandOptions& o) {
         writeMesh(mesh, o.output, wo);
         summary.outputs.push_back({o.output, "model"});
     }
+    if (!o.preview.empty()) {
+        if (o.output.empty() || lowerCaseExtension(o.output) == ".obj")
+            throw InputError("--preview draws the written model: give -o MODEL.stl, .3mf or .off");
+        timer.begin("drawing preview");
+        writeModelPreview(o.output, o.preview);
+        summary.outputs.push_back({o.preview, "preview picture"});
+    }
     if (!o.scad.empty()) {
         timer.begin("writing OpenSCAD");
         ScadOptions so;
@@ -135,6 +144,7 @@ void addGenCommand(CLI::App& app) {
     cmd->add_option("-o,--output", opts->output, "Model file: .stl (binary), .3mf, .off or .obj");
     cmd->add_option("--scad", opts->scad, "Also write a parametric OpenSCAD file");
     cmd->add_flag("--ascii", opts->ascii, "Write ASCII STL instead of binary");
+    cmd->add_option("--preview", opts->preview, "Also draw the written model to this PNG (needs openscad; xvfb-run when there is no display)");
     cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
     cmd->add_flag("--json", opts->json, "Print the summary as JSON");
     cmd->add_flag("--progress", opts->progress, "Print each stage and its time on stderr");
