@@ -1,0 +1,62 @@
+// AtomicFile: write a file so that readers see either the old file or the
+// complete new one, never a half-written file (docs/design.md, "Outputs are
+// written atomically").
+//
+// Behaviour: the constructor reserves a fresh, empty temporary file in the
+// SAME folder as the target (".<name>.tmp-<pid>-<n>", created exclusively, so
+// two writers never share one). The caller writes the temporary file by path
+// (any library that takes a file name can do it), then calls commit(), which
+// fsyncs the temporary file, renames it over the target (atomic on POSIX file
+// systems because both are in one folder) and fsyncs the folder. If commit()
+// is never reached (an exception, an early return), the destructor removes
+// the temporary file and an existing target is left untouched.
+//
+// Caveats: the new file gets default permissions (0666 minus umask), not the
+// old target's; a symbolic link at the target is replaced by the file rather
+// than written through.
+#pragma once
+
+#include <functional>
+#include <iosfwd>
+#include <string>
+
+namespace tsf {
+
+class AtomicFile {
+public:
+    /// Reserves the temporary file next to target_path.
+    /// Throws tsf::InputError naming target_path when its folder does not
+    /// exist, is not writable, or target_path is an existing folder.
+    explicit AtomicFile(const std::string& target_path);
+    /// Removes the temporary file unless commit() succeeded. Never throws.
+    ~AtomicFile();
+
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    const std::string& targetPath() const { return target_path_; }
+    /// The reserved temporary file to write (exists, empty, same folder).
+    const std::string& tempPath() const { return temp_path_; }
+    bool committed() const { return committed_; }
+
+    /// fsync the temporary file, rename it over the target, fsync the folder.
+    /// Throws std::runtime_error with the OS message when the sync or the
+    /// rename fails (the temporary file is then still removed by the
+    /// destructor). Calling it twice is a bug.
+    void commit();
+
+private:
+    std::string target_path_;
+    std::string temp_path_;
+    bool committed_ = false;
+};
+
+/// Writes path atomically through a stream: opens the temporary file as a
+/// binary std::ofstream, calls write(stream), checks the stream state (a full
+/// disk shows up here), then commits. If write throws, the exception
+/// propagates and no file appears at path (an existing one is untouched).
+/// Throws tsf::InputError for an unusable folder (see AtomicFile) and
+/// std::runtime_error for I/O failures.
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+}  // namespace tsf

@@ -1,0 +1,160 @@
+#include "gen/mesh_io/stl_writer.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <ostream>
+#include <vector>
+
+#include "gen/error.h"
+#include "gen/mesh_io/atomic_file.h"
+#include "gen/mesh_io/mesh_write_checks.h"
+#include "gen/mesh_io/number_text.h"
+
+namespace tsf {
+
+using mesh_io::appendShortest;
+using mesh_io::checkMeshForWriting;
+using mesh_io::printableTitle;
+namespace {
+
+constexpr size_t kHeaderBytes = 80;
+constexpr size_t kFacetBytes = 50;
+// Facets serialised per write() call: large enough to amortise the call,
+// small enough to stay in cache (~200 KB).
+constexpr size_t kFacetsPerChunk = 4096;
+
+struct FloatTriangle {
+    std::array<std::array<float, 3>, 3> corners;
+    std::array<float, 3> normal;
+};
+
+FloatTriangle floatTriangle(const Mesh& mesh, const std::array<uint32_t, 3>& tri) {
+    FloatTriangle out{};
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& p = mesh.positions[tri[k]];
+        out.corners[k] = {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
+    }
+    // Normal of the corners as stored, computed in double.
+    const auto& a = out.corners[0];
+    const auto& b = out.corners[1];
+    const auto& c = out.corners[2];
+    const double ux = double(b[0]) - a[0], uy = double(b[1]) - a[1], uz = double(b[2]) - a[2];
+    const double vx = double(c[0]) - a[0], vy = double(c[1]) - a[1], vz = double(c[2]) - a[2];
+    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const double length = std::sqrt(nx * nx + ny * ny + nz * nz);
+    if (length > 0 && std::isfinite(length)) {
+        out.normal = {static_cast<float>(nx / length), static_cast<float>(ny / length), static_cast<float>(nz / length)};
+    } else {
+        out.normal = {0.0f, 0.0f, 0.0f};
+    }
+    return out;
+}
+
+void putUint32(unsigned char* dst, uint32_t value) {
+    dst[0] = static_cast<unsigned char>(value);
+    dst[1] = static_cast<unsigned char>(value >> 8);
+    dst[2] = static_cast<unsigned char>(value >> 16);
+    dst[3] = static_cast<unsigned char>(value >> 24);
+}
+
+void putFloat(unsigned char* dst, float value) { putUint32(dst, std::bit_cast<uint32_t>(value)); }
+
+bool startsWithSolid(const std::string& text) {
+    size_t i = 0;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    static const char kSolid[] = "solid";
+    for (size_t k = 0; k < 5; ++k) {
+        if (i + k >= text.size() || std::tolower(static_cast<unsigned char>(text[i + k])) != kSolid[k]) return false;
+    }
+    return true;
+}
+
+std::array<char, kHeaderBytes> binaryHeader(const std::string& title) {
+    static const std::string kUnits = " UNITS=mm";
+    std::string text = printableTitle(title);
+    if (startsWithSolid(text)) text = "binary " + text;
+    text.resize(std::min(text.size(), kHeaderBytes - kUnits.size()));
+    text += kUnits;
+    std::array<char, kHeaderBytes> header{};
+    std::copy(text.begin(), text.end(), header.begin());
+    return header;
+}
+
+}  // namespace
+
+void writeStlBinary(const Mesh& mesh, std::ostream& out, const std::string& title) {
+    const auto header = binaryHeader(title);
+    out.write(header.data(), header.size());
+    unsigned char count[4];
+    putUint32(count, static_cast<uint32_t>(mesh.triangles.size()));
+    out.write(reinterpret_cast<const char*>(count), sizeof count);
+
+    std::vector<unsigned char> chunk(kFacetsPerChunk * kFacetBytes);
+    size_t used = 0;
+    for (const auto& tri : mesh.triangles) {
+        const FloatTriangle f = floatTriangle(mesh, tri);
+        unsigned char* dst = chunk.data() + used;
+        for (int k = 0; k < 3; ++k) putFloat(dst + 4 * k, f.normal[k]);
+        for (int c = 0; c < 3; ++c) {
+            for (int k = 0; k < 3; ++k) putFloat(dst + 12 + 12 * c + 4 * k, f.corners[c][k]);
+        }
+        dst[48] = 0;
+        dst[49] = 0;
+        used += kFacetBytes;
+        if (used == chunk.size()) {
+            out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(used));
+            used = 0;
+        }
+    }
+    if (used > 0) out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(used));
+}
+
+void writeStlAscii(const Mesh& mesh, std::ostream& out, const std::string& title) {
+    const std::string name = printableTitle(title);
+    std::string text = "solid " + name + "\n";
+    auto appendTriple = [&text](const std::array<float, 3>& v) {
+        for (int k = 0; k < 3; ++k) {
+            text += ' ';
+            appendShortest(text, v[k]);
+        }
+        text += '\n';
+    };
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const FloatTriangle f = floatTriangle(mesh, mesh.triangles[t]);
+        text += "  facet normal";
+        appendTriple(f.normal);
+        text += "    outer loop\n";
+        for (int c = 0; c < 3; ++c) {
+            text += "      vertex";
+            appendTriple(f.corners[c]);
+        }
+        text += "    endloop\n  endfacet\n";
+        if (text.size() > kFacetsPerChunk * kFacetBytes) {
+            out.write(text.data(), static_cast<std::streamsize>(text.size()));
+            text.clear();
+        }
+    }
+    text += "endsolid " + name + "\n";
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
+void writeStl(const Mesh& mesh, const std::string& path, const MeshWriteOptions& opts) {
+    checkMeshForWriting(mesh, path, /*float32_format=*/true);
+    if (!opts.ascii_stl && mesh.triangles.size() > std::numeric_limits<uint32_t>::max()) {
+        throw InputError(path, 0, 0, "cannot write: binary STL holds at most 4294967295 triangles");
+    }
+    writeFileAtomically(path, [&](std::ostream& out) {
+        if (opts.ascii_stl) {
+            writeStlAscii(mesh, out, opts.title);
+        } else {
+            writeStlBinary(mesh, out, opts.title);
+        }
+    });
+}
+
+}  // namespace tsf

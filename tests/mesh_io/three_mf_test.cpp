@@ -1,0 +1,215 @@
+// 3MF: files we write open with lib3mf itself, in millimetres, with title
+// and application metadata; hand-written packages with units, components
+// and transforms read back where an independent calculation says.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "Model/COM/NMR_DLLInterfaces.h"
+#include "gen/error.h"
+#include "gen/mesh_io/mesh_reader.h"
+#include "gen/mesh_io/mesh_writer.h"
+#include "gen/mesh_io/three_mf_reader.h"
+#include "gen/mesh_io/three_mf_writer.h"
+#include "mesh_io_test_support.h"
+
+namespace tsf {
+namespace {
+
+using test::scratchDir;
+using ::testing::HasSubstr;
+
+// Opens path with lib3mf directly (not through our reader) and returns the
+// model; fails the test if lib3mf cannot read it.
+struct Lib3mfModel {
+    NMR::PLib3MFModel* model = nullptr;
+    explicit Lib3mfModel(const std::string& path) {
+        EXPECT_EQ(NMR::lib3mf_createmodel(&model), LIB3MF_OK);
+        NMR::PLib3MFModelReader* reader = nullptr;
+        EXPECT_EQ(NMR::lib3mf_model_queryreader(model, "3mf", &reader), LIB3MF_OK);
+        EXPECT_EQ(NMR::lib3mf_reader_setstrictmodeactive(reader, true), LIB3MF_OK);
+        EXPECT_EQ(NMR::lib3mf_reader_readfromfileutf8(reader, path.c_str()), LIB3MF_OK) << path;
+        NMR::lib3mf_release(reader);
+    }
+    ~Lib3mfModel() { NMR::lib3mf_release(model); }
+
+    std::string metadata(const std::string& key) const {
+        DWORD count = 0;
+        NMR::lib3mf_model_getmetadatacount(model, &count);
+        for (DWORD i = 0; i < count; ++i) {
+            char buffer[256] = {};
+            ULONG needed = 0;
+            NMR::lib3mf_model_getmetadatakeyutf8(model, i, buffer, sizeof buffer, &needed);
+            if (key == buffer) {
+                NMR::lib3mf_model_getmetadatavalueutf8(model, i, buffer, sizeof buffer, &needed);
+                return buffer;
+            }
+        }
+        return "(missing)";
+    }
+};
+
+TEST(ThreeMfWriter, FileOpensWithLib3mfInMillimetresWithMetadata) {
+    const auto dir = scratchDir();
+    const std::string path = (dir / "cube.3mf").string();
+    MeshWriteOptions opts;
+    opts.title = "Rainfall 2023";
+    writeMesh(test::cube(20.0), path, opts);
+
+    Lib3mfModel lib(path);
+    DWORD unit = 99;
+    ASSERT_EQ(NMR::lib3mf_model_getunit(lib.model, &unit), LIB3MF_OK);
+    EXPECT_EQ(unit, DWORD{NMR::MODELUNIT_MILLIMETER});
+    EXPECT_EQ(lib.metadata("Title"), "Rainfall 2023");
+    EXPECT_THAT(lib.metadata("Application"), HasSubstr("tsf"));
+
+    NMR::PLib3MFModelBuildItemIterator* items = nullptr;
+    ASSERT_EQ(NMR::lib3mf_model_getbuilditems(lib.model, &items), LIB3MF_OK);
+    BOOL has = false;
+    ASSERT_EQ(NMR::lib3mf_builditemiterator_movenext(items, &has), LIB3MF_OK);
+    ASSERT_TRUE(has);
+    NMR::PLib3MFModelBuildItem* item = nullptr;
+    NMR::lib3mf_builditemiterator_getcurrent(items, &item);
+    NMR::PLib3MFModelObjectResource* object = nullptr;
+    NMR::lib3mf_builditem_getobjectresource(item, &object);
+    DWORD vertices = 0, triangles = 0;
+    NMR::lib3mf_meshobject_getvertexcount(object, &vertices);
+    NMR::lib3mf_meshobject_gettrianglecount(object, &triangles);
+    EXPECT_EQ(vertices, 8u);
+    EXPECT_EQ(triangles, 12u);
+    BOOL manifold = false;
+    NMR::lib3mf_meshobject_ismanifoldandoriented(object, &manifold);
+    EXPECT_TRUE(manifold);
+    ASSERT_EQ(NMR::lib3mf_builditemiterator_movenext(items, &has), LIB3MF_OK);
+    EXPECT_FALSE(has);  // exactly one build item
+    NMR::lib3mf_release(object);
+    NMR::lib3mf_release(item);
+    NMR::lib3mf_release(items);
+}
+
+TEST(ThreeMfRoundTrip, ShortDecimalPositionsComeBackExactly) {
+    // Values with at most 6 decimals that float32 holds exactly survive
+    // lib3mf's 6-decimal text, and the indexed topology is kept as is.
+    const auto dir = scratchDir();
+    const std::string path = (dir / "exact.3mf").string();
+    const Mesh original = test::cube(10.5, {0.5, -2.25, 1.125});
+    writeMesh(original, path);
+    MeshReadReport report;
+    const Mesh read = readMesh(path, &report);
+    EXPECT_EQ(report.format, "3mf");
+    EXPECT_EQ(report.merged_vertices, 0u);
+    EXPECT_EQ(read.positions, original.positions);
+    EXPECT_EQ(read.triangles, original.triangles);
+}
+
+TEST(ThreeMfRoundTrip, ArbitraryPositionsComeBackWithinLib3mfPrecision) {
+    // lib3mf 1.8.1 prints coordinates with 6 decimals through its own float
+    // formatting; the documented bound is 1e-6 mm + 2 float32 ulps.
+    const auto dir = scratchDir();
+    const std::string path = (dir / "random.3mf").string();
+    Mesh original;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> coordinate(-300.0, 300.0);
+    for (int i = 0; i < 3000; ++i) original.positions.push_back({coordinate(rng), coordinate(rng), coordinate(rng)});
+    for (uint32_t i = 0; i < 3000; i += 3) original.triangles.push_back({i, i + 1, i + 2});
+    write3mf(original, path);
+    const Mesh read = read3mf(path);
+    ASSERT_EQ(read.vertexCount(), original.vertexCount());
+    EXPECT_EQ(read.triangles, original.triangles);
+    double worst = 0;
+    for (size_t i = 0; i < original.positions.size(); ++i) {
+        const double a[3] = {original.positions[i].x, original.positions[i].y, original.positions[i].z};
+        const double b[3] = {read.positions[i].x, read.positions[i].y, read.positions[i].z};
+        for (int k = 0; k < 3; ++k) {
+            const float f = float(a[k]);
+            const double ulp = std::nextafter(std::fabs(f), INFINITY) - std::fabs(f);
+            const double error = std::fabs(b[k] - f);
+            EXPECT_LE(error, 1e-6 + 2 * ulp) << a[k] << " read back as " << b[k];
+            worst = std::max(worst, error);
+        }
+    }
+    RecordProperty("worst_error_mm", std::to_string(worst));
+}
+
+TEST(ThreeMfWriter, TriangleRepeatingAVertexIsRefusedBeforeWriting) {
+    const auto dir = scratchDir();
+    Mesh m = test::tetrahedron();
+    m.triangles.push_back({2, 2, 3});
+    try {
+        write3mf(m, (dir / "deg.3mf").string());
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_THAT(e.what(), HasSubstr("triangle 4 uses vertex 2 twice"));
+    }
+    EXPECT_TRUE(test::listFiles(dir).empty());
+}
+
+// Tetrahedron (mesh_io_test_support.h) as 3MF XML with the given model unit,
+// placed by a components object and a build item.
+std::string tetraModelXml(const std::string& unit, const std::string& component_transform,
+                          const std::string& item_transform) {
+    return R"(<?xml version="1.0" encoding="UTF-8"?>
+<model unit=")" + unit + R"(" xml:lang="en-US" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">
+ <resources>
+  <object id="1" type="model"><mesh>
+   <vertices><vertex x="0" y="0" z="0"/><vertex x="4" y="0" z="0"/><vertex x="0" y="3" z="0"/><vertex x="0" y="0" z="5"/></vertices>
+   <triangles><triangle v1="0" v2="2" v3="1"/><triangle v1="0" v2="1" v3="3"/><triangle v1="0" v2="3" v3="2"/><triangle v1="1" v2="2" v3="3"/></triangles>
+  </mesh></object>
+  <object id="2" type="model"><components><component objectid="1" transform=")" +
+           component_transform + R"("/></components></object>
+ </resources>
+ <build><item objectid="2" transform=")" + item_transform + R"("/></build>
+</model>)";
+}
+
+TEST(ThreeMfReader, UnitsComponentsAndTransformsAreApplied) {
+    // Component: x scaled by 2, then z + 1. Item: x + 10. Unit: inch.
+    // Vertex (4,0,0) -> (8,0,1) -> (18,0,1) inch = (457.2, 0, 25.4) mm.
+    const std::string package =
+        test::threeMfPackage(tetraModelXml("inch", "2 0 0 0 1 0 0 0 1 0 0 1", "1 0 0 0 1 0 0 0 1 10 0 0"));
+    MeshReadReport report;
+    const Mesh m = parse3mf(package, "inch.3mf", &report);
+    ASSERT_EQ(m.vertexCount(), 4u);
+    EXPECT_DOUBLE_EQ(m.positions[1].x, 18 * 25.4);
+    EXPECT_DOUBLE_EQ(m.positions[1].y, 0.0);
+    EXPECT_DOUBLE_EQ(m.positions[1].z, 25.4);
+    EXPECT_DOUBLE_EQ(m.positions[3].z, 6 * 25.4);
+    EXPECT_NEAR(signedVolume(m), 2 * 10 * std::pow(25.4, 3), 1e-6 * std::pow(25.4, 3));
+    bool noted_unit = false;
+    for (const auto& n : report.notes) noted_unit |= n.find("inch") != std::string::npos;
+    EXPECT_TRUE(noted_unit);
+}
+
+TEST(ThreeMfReader, TransformMatrixIsReadInThe3mfRowVectorConvention) {
+    // 3MF: [x y z 1] * M with M = (m00 m01 m02 / m10 m11 m12 / m20 m21 m22 /
+    // m30 m31 m32). "0 1 0 -1 0 0 0 0 1 0 0 0" turns 90 degrees about z:
+    // x' = -y, y' = x. Vertex (0,3,0) -> (-3,0,0); (4,0,0) -> (0,4,0).
+    const std::string package = test::threeMfPackage(
+        tetraModelXml("millimeter", "1 0 0 0 1 0 0 0 1 0 0 0", "0 1 0 -1 0 0 0 0 1 0 0 0"));
+    const Mesh m = parse3mf(package, "rot.3mf");
+    EXPECT_EQ(m.positions[2], (Vec3{-3, 0, 0}));
+    EXPECT_EQ(m.positions[1], (Vec3{0, 4, 0}));
+}
+
+TEST(ThreeMfReader, GarbageIsAnInputErrorWithLib3mfsReason) {
+    try {
+        parse3mf("PK\x03\x04 this is not a zip file", "junk.3mf");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.path(), "junk.3mf");
+        EXPECT_THAT(e.what(), HasSubstr("not a readable 3MF package"));
+        EXPECT_THAT(e.what(), HasSubstr("lib3mf error"));
+    }
+    EXPECT_THROW(parse3mf("", "empty.3mf"), InputError);
+}
+
+TEST(ThreeMfReader, IndexOutOfRangeInTheXmlIsAnInputError) {
+    std::string xml = tetraModelXml("millimeter", "1 0 0 0 1 0 0 0 1 0 0 0", "1 0 0 0 1 0 0 0 1 0 0 0");
+    xml.replace(xml.find(R"(v3="3")"), 6, R"(v3="7")");
+    EXPECT_THROW(parse3mf(test::threeMfPackage(xml), "range.3mf"), InputError);
+}
+
+}  // namespace
+}  // namespace tsf
