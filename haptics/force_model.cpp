@@ -220,7 +220,9 @@ ForceOutput computeForce(const ForceModel& model, const ForceState& state, const
         if (gap > 0.0) {
             const double pull = P.guidance_N * std::min(gap / P.guidance_ramp_m, 1.0) /
                                 std::sqrt(1.0 + model.guidance_slope_bound * model.guidance_slope_bound);
-            f_cons += pull * Vec3(g.slope_x, -1.0, g.slope_z);  // -grad of the potential
+            // -grad of the potential; the clamp only acts where the sampled
+            // slope bound fell short of the true maximum, by a hair.
+            f_cons += clampMagnitude(pull * Vec3(g.slope_x, -1.0, g.slope_z), P.guidance_N);
         }
     }
 
