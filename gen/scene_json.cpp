@@ -1,0 +1,294 @@
+// Scene <-> JSON sidecar. See scene_json.h.
+#include "gen/scene_json.h"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+#include "gen/error.h"
+#include "gen/mesh_io/atomic_file.h"
+
+namespace tsf {
+namespace {
+
+using nlohmann::json;
+
+json numberOrNull(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
+
+// --- reading helpers: every error names the JSON path ---------------------
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw InputError((path.empty() ? std::string("(top level)") : path) + ": " + what);
+}
+
+const char* typeName(const json& v) { return v.type_name(); }
+
+const json& member(const json& obj, const std::string& path, const char* key) {
+    if (!obj.is_object()) fail(path, std::string("expected an object, found ") + typeName(obj));
+    const auto it = obj.find(key);
+    const std::string p = path.empty() ? key : path + "." + key;
+    if (it == obj.end()) fail(p, "missing");
+    return *it;
+}
+
+std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
+
+int64_t toInt(const json& v, const std::string& path) {
+    if (v.is_number_unsigned()) {
+        if (v.get<uint64_t>() > uint64_t(std::numeric_limits<int64_t>::max())) fail(path, "integer out of range");
+        return int64_t(v.get<uint64_t>());
+    }
+    if (v.is_number_integer()) return v.get<int64_t>();
+    fail(path, std::string("expected an integer, found ") + typeName(v));
+}
+
+int64_t getInt(const json& obj, const std::string& path, const char* key) {
+    return toInt(member(obj, path, key), join(path, key));
+}
+
+int32_t getInt32(const json& obj, const std::string& path, const char* key, int64_t lo, int64_t hi) {
+    const int64_t v = getInt(obj, path, key);
+    if (v < lo || v > hi)
+        fail(join(path, key), "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + " (got " +
+                                  std::to_string(v) + ")");
+    return int32_t(v);
+}
+
+double toNumber(const json& v, const std::string& path) {
+    if (!v.is_number()) fail(path, std::string("expected a number, found ") + typeName(v));
+    return v.get<double>();
+}
+
+double getNumber(const json& obj, const std::string& path, const char* key) {
+    return toNumber(member(obj, path, key), join(path, key));
+}
+
+double getPositive(const json& obj, const std::string& path, const char* key) {
+    const double v = getNumber(obj, path, key);
+    if (!(v > 0) || !std::isfinite(v)) fail(join(path, key), "must be a number > 0");
+    return v;
+}
+
+std::string getString(const json& obj, const std::string& path, const char* key) {
+    const json& v = member(obj, path, key);
+    if (!v.is_string()) fail(join(path, key), std::string("expected a string, found ") + typeName(v));
+    return v.get<std::string>();
+}
+
+template <class E, size_t N>
+E getEnum(const json& obj, const std::string& path, const char* key, const E (&all)[N]) {
+    const std::string s = getString(obj, path, key);
+    std::string names;
+    for (E e : all) {
+        if (s == toString(e)) return e;
+        names += std::string(names.empty() ? "" : ", ") + toString(e);
+    }
+    fail(join(path, key), "unknown value \"" + s + "\" (expected one of: " + names + ")");
+}
+
+const json& getArray(const json& obj, const std::string& path, const char* key) {
+    const json& v = member(obj, path, key);
+    if (!v.is_array()) fail(join(path, key), std::string("expected an array, found ") + typeName(v));
+    return v;
+}
+
+constexpr Transfer kTransfers[] = {Transfer::Linear, Transfer::Sqrt, Transfer::Log};
+constexpr Cull kCulls[] = {Cull::None, Cull::Hull};
+constexpr Bottom kBottoms[] = {Bottom::Flat, Bottom::Mirrored};
+constexpr BaselineMode kBaselines[] = {BaselineMode::Auto, BaselineMode::Zero, BaselineMode::Min, BaselineMode::Value};
+
+// 1-based line and column of a byte offset in text.
+void lineColumn(const std::string& text, size_t byte, int& line, int& column) {
+    line = 1;
+    column = 1;
+    for (size_t i = 0; i < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+}
+
+}  // namespace
+
+json sceneToJson(const Scene& s) {
+    const SceneParams& p = s.params;
+    json hull = json::array();
+    for (const LatticePoint& q : s.hull) hull.push_back({q.i, q.j});
+    json cells = json::array();
+    for (size_t k = 0; k < s.keptCount(); ++k)
+        cells.push_back({{"col", s.col[k]}, {"row", s.row[k]}, {"value", numberOrNull(s.value[k])}, {"top", s.top[k]},
+                         {"bottom", s.bottom[k]}});
+    return {
+        {"format", kSceneJsonFormat},
+        {"version", kSceneJsonVersion},
+        {"grid", {{"cols", s.grid.cols}, {"rows", s.grid.rows}}},
+        {"pitch_mm", s.pitch_mm},
+        {"z_snap_mm", s.z_snap_mm},
+        {"params",
+         {{"pitch_mm", p.pitch_mm},
+          {"fit_width_mm", p.fit_width_mm},
+          {"fit_depth_mm", p.fit_depth_mm},
+          {"max_height_mm", p.max_height_mm},
+          {"base_mm", p.base_mm},
+          {"transfer", toString(p.transfer)},
+          {"baseline_mode", toString(p.baseline_mode)},
+          {"baseline_value", p.baseline_value},
+          {"value_max", p.value_max ? json(*p.value_max) : json(nullptr)},
+          {"z_snap_mm", p.z_snap_mm},
+          {"cull", toString(p.cull)},
+          {"bottom", toString(p.bottom)}}},
+        {"mapping",
+         {{"transfer", toString(s.mapping.transfer)},
+          {"baseline", s.mapping.baseline},
+          {"value_max", s.mapping.value_max},
+          {"max_height_mm", s.mapping.max_height_mm}}},
+        {"floor_units", s.floor_units},
+        {"mirror_thickness_units", s.mirror_thickness_units},
+        {"cells_with_data", s.cells_with_data},
+        {"cells_nonempty", s.cells_nonempty},
+        {"cells_nodata_kept", s.cells_nodata_kept},
+        {"hull", hull},
+        {"notes", s.notes},
+        {"cells", cells},
+    };
+}
+
+Scene sceneFromJson(const json& j) {
+    if (!j.is_object()) fail("", std::string("expected an object, found ") + typeName(j));
+    const std::string format = getString(j, "", "format");
+    if (format != kSceneJsonFormat) fail("format", "expected \"" + std::string(kSceneJsonFormat) + "\", found \"" + format + "\"");
+    const int64_t version = getInt(j, "", "version");
+    if (version != kSceneJsonVersion)
+        fail("version", "unsupported version " + std::to_string(version) + " (this tsf reads version " +
+                            std::to_string(kSceneJsonVersion) + ")");
+
+    Scene s;
+    const json& grid = member(j, "", "grid");
+    s.grid.cols = getInt32(grid, "grid", "cols", 0, std::numeric_limits<int32_t>::max());
+    s.grid.rows = getInt32(grid, "grid", "rows", 0, std::numeric_limits<int32_t>::max());
+    if (s.grid.cellCount() > kMaxSceneJsonCells)
+        fail("grid", "a grid of " + std::to_string(s.grid.cellCount()) + " cells is larger than the " +
+                         std::to_string(kMaxSceneJsonCells) + " a sidecar may describe");
+    s.pitch_mm = getPositive(j, "", "pitch_mm");
+    s.z_snap_mm = getPositive(j, "", "z_snap_mm");
+
+    const json& params = member(j, "", "params");
+    SceneParams& p = s.params;
+    p.pitch_mm = getNumber(params, "params", "pitch_mm");
+    p.fit_width_mm = getNumber(params, "params", "fit_width_mm");
+    p.fit_depth_mm = getNumber(params, "params", "fit_depth_mm");
+    p.max_height_mm = getNumber(params, "params", "max_height_mm");
+    p.base_mm = getNumber(params, "params", "base_mm");
+    p.transfer = getEnum(params, "params", "transfer", kTransfers);
+    p.baseline_mode = getEnum(params, "params", "baseline_mode", kBaselines);
+    p.baseline_value = getNumber(params, "params", "baseline_value");
+    const json& vmax = member(params, "params", "value_max");
+    if (!vmax.is_null()) p.value_max = toNumber(vmax, "params.value_max");
+    p.z_snap_mm = getPositive(params, "params", "z_snap_mm");
+    p.cull = getEnum(params, "params", "cull", kCulls);
+    p.bottom = getEnum(params, "params", "bottom", kBottoms);
+
+    const json& mapping = member(j, "", "mapping");
+    s.mapping.transfer = getEnum(mapping, "mapping", "transfer", kTransfers);
+    s.mapping.baseline = getNumber(mapping, "mapping", "baseline");
+    s.mapping.value_max = getNumber(mapping, "mapping", "value_max");
+    s.mapping.max_height_mm = getNumber(mapping, "mapping", "max_height_mm");
+
+    s.floor_units = getInt(j, "", "floor_units");
+    s.mirror_thickness_units = getInt(j, "", "mirror_thickness_units");
+    s.cells_with_data = getInt(j, "", "cells_with_data");
+    s.cells_nonempty = getInt(j, "", "cells_nonempty");
+    s.cells_nodata_kept = getInt(j, "", "cells_nodata_kept");
+
+    const json& hull = getArray(j, "", "hull");
+    for (size_t i = 0; i < hull.size(); ++i) {
+        const std::string hp = "hull[" + std::to_string(i) + "]";
+        if (!hull[i].is_array() || hull[i].size() != 2) fail(hp, "expected [i, j]");
+        s.hull.push_back({toInt(hull[i][0], hp + "[0]"), toInt(hull[i][1], hp + "[1]")});
+    }
+    const json& notes = getArray(j, "", "notes");
+    for (size_t i = 0; i < notes.size(); ++i) {
+        if (!notes[i].is_string()) fail("notes[" + std::to_string(i) + "]", "expected a string");
+        s.notes.push_back(notes[i].get<std::string>());
+    }
+
+    const json& cells = getArray(j, "", "cells");
+    if (int64_t(cells.size()) > s.grid.cellCount())
+        fail("cells", std::to_string(cells.size()) + " cells do not fit a grid of " +
+                          std::to_string(s.grid.cellCount()));
+    s.kept_index.assign(size_t(s.grid.cellCount()), -1);
+    s.col.reserve(cells.size());
+    s.row.reserve(cells.size());
+    s.value.reserve(cells.size());
+    s.top.reserve(cells.size());
+    s.bottom.reserve(cells.size());
+    int64_t previous = -1;
+    for (size_t k = 0; k < cells.size(); ++k) {
+        const std::string cp = "cells[" + std::to_string(k) + "]";
+        const json& c = cells[k];
+        const int32_t col = getInt32(c, cp, "col", 0, int64_t(s.grid.cols) - 1);
+        const int32_t row = getInt32(c, cp, "row", 0, int64_t(s.grid.rows) - 1);
+        const int64_t index = s.grid.index(col, row);
+        if (index <= previous) fail(cp, "cells must be listed once each, ordered by row then column");
+        previous = index;
+        const json& v = member(c, cp, "value");
+        const double value = v.is_null() ? std::numeric_limits<double>::quiet_NaN() : toNumber(v, cp + ".value");
+        const int64_t top = getInt(c, cp, "top");
+        const int64_t bottom = getInt(c, cp, "bottom");
+        if (!(bottom < top)) fail(cp + ".top", "must be above bottom (" + std::to_string(top) + " <= " + std::to_string(bottom) + ")");
+        s.kept_index[size_t(index)] = int32_t(k);
+        s.col.push_back(col);
+        s.row.push_back(row);
+        s.value.push_back(value);
+        s.top.push_back(top);
+        s.bottom.push_back(bottom);
+    }
+    return s;
+}
+
+void writeSceneJson(const Scene& scene, const std::string& path) {
+    json j = sceneToJson(scene);
+    json cells = std::move(j["cells"]);
+    j.erase("cells");
+    // Everything but the cells indented; then one cell per line, so a person
+    // can find a cell with a text editor and the file stays compact.
+    std::string head = j.dump(2);
+    head.pop_back();  // the closing brace
+    while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
+    writeFileAtomically(path, [&](std::ostream& out) {
+        out << head << ",\n  \"cells\": [";
+        for (size_t k = 0; k < cells.size(); ++k) out << (k ? ",\n    " : "\n    ") << cells[k].dump();
+        out << (cells.empty() ? "]\n}\n" : "\n  ]\n}\n");
+    });
+}
+
+Scene readSceneJson(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, 0, 0, "cannot open the scene file");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError(path, 0, 0, "cannot read the scene file");
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::parse_error& e) {
+        int line = 0, column = 0;
+        lineColumn(text, e.byte > 0 ? e.byte - 1 : 0, line, column);
+        std::string what = e.what();
+        // nlohmann prefixes "[json.exception.parse_error.101] parse error at line L, column C: "
+        const auto colon = what.find(": ");
+        if (colon != std::string::npos) what = what.substr(colon + 2);
+        throw InputError(path, line, column, "not valid JSON: " + what);
+    }
+    try {
+        return sceneFromJson(j);
+    } catch (const InputError& e) {
+        throw InputError(path, 0, 0, e.detail());
+    }
+}
+
+}  // namespace tsf

@@ -1,0 +1,53 @@
+// Scene sidecar: a Scene as JSON, written beside a model (`model.stl.scene.json`)
+// so that `tsf verify --scene` can check the model's heights without the
+// original field and options.
+//
+// Format ("format": "tsf-scene", "version": 1), one object:
+//   grid {cols, rows}, pitch_mm, z_snap_mm,
+//   params {pitch_mm, fit_width_mm, fit_depth_mm, max_height_mm, base_mm,
+//           transfer, baseline_mode, baseline_value, value_max (null = unset),
+//           z_snap_mm, cull, bottom}           -- enums by their CLI names (scene.h toString)
+//   mapping {transfer, baseline, value_max, max_height_mm},
+//   floor_units, mirror_thickness_units, cells_with_data, cells_nonempty,
+//   cells_nodata_kept, hull [[i, j], ...], notes [...],
+//   cells [{col, row, value (null = no data), top, bottom}, ...]   -- ordered by (row, col)
+// Heights (top, bottom, floor_units, ...) are integers in z_snap_mm units;
+// lengths are millimetres; doubles are written in their shortest form that
+// reads back to the same bits, so a Scene round-trips exactly.
+// Scene::kept_index is not stored: it follows from the cells and the grid.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/scene.h"
+
+namespace tsf {
+
+inline constexpr const char* kSceneJsonFormat = "tsf-scene";
+inline constexpr int kSceneJsonVersion = 1;
+/// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
+/// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
+inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;
+
+/// Every field of the Scene (see the file comment).
+nlohmann::json sceneToJson(const Scene& scene);
+
+/// The Scene described by j. Throws InputError (no file, no line) whose
+/// message starts with the JSON path of the problem ("cells[12].top: expected
+/// an integer") for a missing or mistyped member, an unknown enum name, a
+/// wrong format or version, a cell outside the grid, cells out of
+/// (row, col) order or repeated, or a cell whose bottom is not below its top.
+Scene sceneFromJson(const nlohmann::json& j);
+
+/// Writes sceneToJson(scene) to path atomically (gen/mesh_io/atomic_file.h),
+/// one cell per line. Throws InputError for an unusable folder,
+/// std::runtime_error for I/O failures.
+void writeSceneJson(const Scene& scene, const std::string& path);
+
+/// Reads a sidecar. Throws InputError naming path: with line and column for
+/// malformed JSON, with the JSON path (as sceneFromJson) for a bad Scene.
+Scene readSceneJson(const std::string& path);
+
+}  // namespace tsf

@@ -1,0 +1,46 @@
+// Geometric solid checks done with CGAL, behind a CGAL-free interface.
+//
+// Internal to verify/: solid_checks.cpp calls one of the two instantiations
+// (filtered kernel Epick, or exact-construction kernel Epeck); the CGAL code
+// lives in cgal_checks_impl.h, which only the two instantiation files include,
+// so no other translation unit pays CGAL's compile time.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "gen/mesh.h"
+#include "verify/mesh_topology.h"
+
+namespace tsf::detail {
+
+struct GeometricFindings {
+    /// The triangles handed to CGAL needed orient_polygon_soup (flipped
+    /// triangles, non-manifold edges or vertices) before a Surface_mesh could be
+    /// built; the self-intersection test ran on that repaired copy.
+    bool soup_repaired = false;
+    size_t points_duplicated = 0;  ///< by orient_polygon_soup, to split non-manifold places
+    bool mesh_built = false;       ///< a CGAL Surface_mesh was built (else self-intersections not tested)
+
+    std::vector<uint32_t> zero_area_triangles;  ///< three collinear points (exact predicate); ascending
+    size_t intersecting_pair_count = 0;
+    /// Intersecting triangle pairs (original triangle ids, first < second),
+    /// ascending, at most `max_pairs` of them; with a point on each pair's intersection (mm).
+    std::vector<std::pair<uint32_t, uint32_t>> intersecting_pairs;
+    std::vector<Vec3> intersection_points;
+
+    bool volumes_computed = false;          ///< only for a closed oriented manifold
+    double volume_mm3 = 0;                  ///< sum of component volumes, in the kernel's arithmetic
+    std::vector<double> component_volume_mm3;  ///< same order as MeshTopology::components
+
+    double degenerate_ms = 0, build_ms = 0, self_intersection_ms = 0, volume_ms = 0;
+};
+
+/// Runs the geometric checks on the usable triangles of `mesh` (those not in
+/// topo's out-of-range or index-degenerate lists). Requires every position to
+/// be finite (topo.nonfinite_vertices empty).
+GeometricFindings geometricChecksEpick(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs);
+GeometricFindings geometricChecksEpeck(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs);
+
+}  // namespace tsf::detail

@@ -1,0 +1,226 @@
+// checkPrintability: rays along triangle normals, and the bed. See printability.h.
+#include "verify/printability.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include "verify/detail/format.h"
+
+namespace tsf {
+namespace {
+
+using detail::fmtMm;
+
+// A triangle is "steep" (a wall) when its normal is closer to horizontal than
+// to vertical: |n_z| < sin(30 deg) = 1/2.
+constexpr double kSteepNormalZ = 0.5;
+// Gap rays look this many nozzle widths far: a gap wider than that prints
+// whatever the nozzle, and rays that leave the model would otherwise cross it
+// entirely (most of the cost).
+constexpr double kGapSearchNozzles = 10.0;
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// One triangle per planar region: triangles joined across an edge when the
+// far corner of one lies exactly in the plane of the other (exact predicate)
+// and they face the same way. The representative is the region's largest
+// triangle; its centroid is where the region is sampled. A tsf model has one
+// region per hexagonal top and one per wall between two cells, so this cuts
+// the rays several times without losing a feature.
+std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    const size_t nt = mesh.triangles.size();
+    auto P = [&](uint32_t v) {
+        const Vec3& p = mesh.positions[v];
+        return K::Point_3(p.x, p.y, p.z);
+    };
+    std::vector<uint32_t> parent(nt);
+    for (uint32_t i = 0; i < nt; ++i) parent[i] = i;
+    auto find = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    // Half-edges keyed by their directed vertex pair; a consistently oriented
+    // neighbour has the reverse pair.
+    std::vector<std::pair<uint64_t, uint32_t>> half;
+    half.reserve(3 * nt);
+    for (uint32_t t = 0; t < nt; ++t) {
+        const auto& tri = mesh.triangles[t];
+        for (int s = 0; s < 3; ++s) half.push_back({(uint64_t(tri[s]) << 32) | tri[(s + 1) % 3], t});
+    }
+    std::sort(half.begin(), half.end());
+    for (uint32_t t = 0; t < nt; ++t) {
+        const auto& tri = mesh.triangles[t];
+        for (int s = 0; s < 3; ++s) {
+            const uint32_t a = tri[s], b = tri[(s + 1) % 3], c = tri[(s + 2) % 3];
+            const uint64_t reverse = (uint64_t(b) << 32) | a;
+            auto it = std::lower_bound(half.begin(), half.end(), std::make_pair(reverse, uint32_t(0)));
+            if (it == half.end() || it->first != reverse || it->second <= t) continue;  // each pair once
+            const auto& other = mesh.triangles[it->second];
+            uint32_t d = other[0];
+            for (uint32_t v : other)
+                if (v != a && v != b) d = v;
+            // Coplanar, and on opposite sides of the shared edge (same facing).
+            if (CGAL::orientation(P(a), P(b), P(c), P(d)) != CGAL::COPLANAR) continue;
+            const K::Point_3 pa = P(a), pb = P(b), pc = P(c), pd = P(d);
+            if (CGAL::collinear(pa, pb, pc) || CGAL::collinear(pa, pb, pd)) continue;
+            const K::Vector_3 n = CGAL::cross_product(pb - pa, pc - pa);
+            const K::Vector_3 e = CGAL::cross_product(n, pb - pa);  // in-plane, towards c's side
+            if ((e * (pc - pa) > 0) == (e * (pd - pa) > 0)) continue;  // folded onto itself
+            const uint32_t x = find(t), y = find(it->second);
+            if (x != y) parent[std::max(x, y)] = std::min(x, y);
+        }
+    }
+    std::vector<double> best_area(nt, -1.0);
+    std::vector<uint32_t> best(nt, 0);
+    for (uint32_t t = 0; t < nt; ++t) {
+        const auto& tri = mesh.triangles[t];
+        const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+        const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+        const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        const double area2 = nx * nx + ny * ny + nz * nz;
+        const uint32_t r = find(t);
+        if (area2 > best_area[r]) {
+            best_area[r] = area2;
+            best[r] = t;
+        }
+    }
+    std::vector<uint32_t> out;
+    for (uint32_t t = 0; t < nt; ++t)
+        if (parent[t] == t && best_area[t] > 0) out.push_back(best[t]);
+    return out;
+}
+
+struct Sample {
+    double distance_mm;
+    Vec3 at_mm;
+    uint32_t triangle;
+};
+
+Check thinnest(const char* id, const char* title, std::vector<Sample>& samples, double limit_mm, const char* what,
+               const PrintabilityOptions& o, double& min_out) {
+    Check c;
+    c.id = id;
+    c.title = title;
+    c.unit = "mm";
+    std::sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.distance_mm < b.distance_mm; });
+    min_out = samples.empty() ? std::numeric_limits<double>::quiet_NaN() : samples.front().distance_mm;
+    for (const Sample& s : samples) {
+        if (!(s.distance_mm < limit_mm)) break;
+        ++c.count;
+        if (c.worst.size() < o.max_offenders)
+            c.worst.push_back({s.at_mm, s.distance_mm,
+                               std::string(what) + " " + fmtMm(s.distance_mm) + " mm (triangle " +
+                                   std::to_string(s.triangle) + ")"});
+    }
+    c.status = c.count == 0 ? CheckStatus::Pass : (o.fail_on_warnings ? CheckStatus::Fail : CheckStatus::Warn);
+    c.note = samples.empty() ? std::string("nothing to measure")
+                             : "thinnest " + fmtMm(min_out) + " mm over " + std::to_string(samples.size()) +
+                                   " samples; limit " + fmtMm(limit_mm) + " mm";
+    return c;
+}
+
+}  // namespace
+
+PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const RayCaster& caster,
+                                     const PrintabilityOptions& o) {
+    PrintabilityResult r;
+    PrintabilityFigures& f = r.figures;
+    f.nozzle_mm = o.nozzle_mm;
+    f.layer_mm = o.layer_mm;
+    f.bed_mm = o.bed_mm;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    f.min_wall_mm = f.min_gap_mm = f.min_slab_mm = nan;
+
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<Check> ray_checks;
+    if (closed_oriented) {
+        // Inside is where the normals point away from; an inside-out mesh
+        // (negative volume) has it the other way round.
+        const double sign = signedVolume(mesh) < 0 ? -1.0 : 1.0;
+        const double gap_search_mm = kGapSearchNozzles * o.nozzle_mm;
+        std::vector<Sample> walls, gaps, slabs;
+        for (uint32_t t : planarRegionRepresentatives(mesh)) {
+            const auto& tri = mesh.triangles[t];
+            const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+            const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+            const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+            Vec3 n{uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+            const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+            if (!(len > 0)) continue;
+            n = {sign * n.x / len, sign * n.y / len, sign * n.z / len};
+            const Vec3 centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
+            const Vec3 inward{-n.x, -n.y, -n.z};
+            const bool steep = std::fabs(n.z) < kSteepNormalZ;
+            if (const auto hit = caster.firstHit(centroid, inward, int64_t(t)))
+                (steep ? walls : slabs).push_back({hit->distance_mm, centroid, t});
+            if (steep)
+                if (const auto hit = caster.firstHit(centroid, n, int64_t(t), gap_search_mm))
+                    gaps.push_back({hit->distance_mm, centroid, t});
+        }
+        ray_checks.push_back(thinnest("wall_thickness", "walls at least a nozzle wide", walls, o.nozzle_mm,
+                                      "material only", o, f.min_wall_mm));
+        ray_checks.push_back(thinnest("gap_width", "gaps at least a nozzle wide", gaps, o.nozzle_mm, "gap only", o,
+                                      f.min_gap_mm));
+        if (gaps.empty()) ray_checks.back().note = "no gap narrower than " + fmtMm(gap_search_mm) + " mm";
+        ray_checks.push_back(thinnest("base_thickness", "base at least two layers thick", slabs, 2 * o.layer_mm,
+                                      "slab only", o, f.min_slab_mm));
+    } else {
+        for (const char* id : {"wall_thickness", "gap_width", "base_thickness"}) {
+            Check c;
+            c.id = id;
+            c.title = id;
+            c.status = CheckStatus::Skipped;
+            c.note = "skipped: needs a closed, manifold, consistently oriented mesh";
+            ray_checks.push_back(std::move(c));
+        }
+        ray_checks[0].title = "walls at least a nozzle wide";
+        ray_checks[1].title = "gaps at least a nozzle wide";
+        ray_checks[2].title = "base at least two layers thick";
+    }
+    const Stage rays{"printability_rays", msSince(t0)};
+    r.stages.push_back(rays);
+    for (Check& c : ray_checks) {
+        c.stage = rays.name;
+        c.time_ms = rays.time_ms;
+        r.checks.push_back(std::move(c));
+    }
+
+    Check bed;
+    bed.id = "fits_bed";
+    bed.title = "fits the print bed";
+    bed.unit = "mm";
+    if (!o.bed_mm) {
+        bed.status = CheckStatus::Skipped;
+        bed.note = "no bed size given";
+    } else {
+        const Bounds bb = meshBounds(mesh);
+        const Vec3 size{bb.max.x - bb.min.x, bb.max.y - bb.min.y, bb.max.z - bb.min.z};
+        const Vec3& bs = *o.bed_mm;
+        const bool z_ok = size.z <= bs.z;
+        f.fits_bed = z_ok && size.x <= bs.x && size.y <= bs.y;
+        f.fits_bed_rotated = !f.fits_bed && z_ok && size.y <= bs.x && size.x <= bs.y;
+        const std::string dims = fmtMm(size.x) + " x " + fmtMm(size.y) + " x " + fmtMm(size.z) + " mm on a " +
+                                 fmtMm(bs.x) + " x " + fmtMm(bs.y) + " x " + fmtMm(bs.z) + " mm bed";
+        if (f.fits_bed || f.fits_bed_rotated) {
+            bed.status = CheckStatus::Pass;
+            bed.note = dims + (f.fits_bed_rotated ? " (turned by 90 degrees)" : "");
+        } else {
+            bed.count = 1;
+            bed.status = o.fail_on_warnings ? CheckStatus::Fail : CheckStatus::Warn;
+            bed.note = dims + ": too large";
+            bed.worst.push_back({bb.max, std::max({size.x - bs.x, size.y - bs.y, size.z - bs.z}), bed.note});
+        }
+    }
+    bed.stage = "bed";
+    r.checks.push_back(std::move(bed));
+    return r;
+}
+
+}  // namespace tsf

@@ -1,0 +1,188 @@
+// readBack: vertical rays at cell centres. See readback.h.
+#include "verify/readback.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "verify/detail/format.h"
+
+namespace tsf {
+namespace {
+
+using detail::fmtMm;
+using detail::fmtNum;
+
+// How far outside the mesh's bounding box the rays start (mm). Any positive
+// distance works; 1 mm keeps the origin clearly off every surface.
+constexpr double kRayStartClearanceMm = 1.0;
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Orders surfaces worst first: missed rays, then the largest |error|.
+bool worse(const CellReadback& a, const CellReadback& b) {
+    const bool am = std::isnan(a.measured_mm), bm = std::isnan(b.measured_mm);
+    if (am != bm) return am;
+    return std::fabs(a.error_mm) > std::fabs(b.error_mm);
+}
+
+std::string describe(const CellReadback& c) {
+    std::string s = "cell (col " + std::to_string(c.col) + ", row " + std::to_string(c.row) + ") " + c.surface + ": ";
+    if (std::isnan(c.measured_mm)) return s + "no surface found (expected at z = " + fmtMm(c.expected_mm) + " mm)";
+    s += "z = " + fmtMm(c.measured_mm) + " mm, expected " + fmtMm(c.expected_mm) + " mm (" +
+         (c.error_mm >= 0 ? "+" : "") + fmtNum(c.error_mm) + " mm)";
+    if (!std::isnan(c.value_error))
+        s += "; value " + fmtNum(c.value) + " reads as " + fmtNum(c.value_read);
+    return s;
+}
+
+}  // namespace
+
+ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& caster, const ReadbackOptions& options) {
+    ReadbackResult r;
+    ReadbackFigures& f = r.figures;
+    const auto t0 = std::chrono::steady_clock::now();
+
+    const Bounds b = meshBounds(mesh);
+    const bool have_mesh = std::isfinite(b.min.z) && std::isfinite(b.max.z);
+    const double z_above = (have_mesh ? b.max.z : 0.0) + kRayStartClearanceMm;
+    const double z_below = (have_mesh ? b.min.z : 0.0) - kRayStartClearanceMm;
+
+    const bool mirrored = scene.params.bottom == Bottom::Mirrored;
+    const double top_zero_mm = scene.zMm(mirrored ? scene.mirror_thickness_units : scene.floor_units);
+    const ValueMapping& map = scene.mapping;
+    const bool has_range = map.value_max > map.baseline;
+
+    double z_extent = 0;  // largest |z| a surface can have: the float32 rounding scales with it
+    for (size_t k = 0; k < scene.keptCount(); ++k)
+        z_extent = std::max({z_extent, std::fabs(scene.zMm(scene.top[k])), std::fabs(scene.zMm(scene.bottom[k]))});
+    f.height_step_tolerance_mm = options.height_tolerance_mm > 0 ? options.height_tolerance_mm : 0.5 * scene.z_snap_mm;
+    f.float32_rounding_mm = z_extent * kFloat32UnitRoundoff;
+    f.tolerance_mm = f.height_step_tolerance_mm + f.float32_rounding_mm;
+
+    std::vector<CellReadback> all;
+    all.reserve(2 * scene.keptCount());
+    double sum_err = 0, sum_verr = 0;
+    size_t n_err = 0, n_verr = 0;
+    f.max_error_mm = 0;
+    f.max_value_error = 0;
+
+    auto measure = [&](size_t k, bool top) {
+        CellReadback c;
+        c.col = scene.col[k];
+        c.row = scene.row[k];
+        const Vec3 centre = scene.point(hexCentre(scene.grid, c.col, c.row), 0);
+        c.x_mm = centre.x;
+        c.y_mm = centre.y;
+        c.surface = top ? "top" : "bottom";
+        c.expected_mm = scene.zMm(top ? scene.top[k] : scene.bottom[k]);
+        c.value = scene.value[k];
+        const auto hit = top ? caster.firstHit({c.x_mm, c.y_mm, z_above}, {0, 0, -1})
+                             : caster.firstHit({c.x_mm, c.y_mm, z_below}, {0, 0, 1});
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        c.measured_mm = hit ? hit->point_mm.z : nan;
+        c.error_mm = c.measured_mm - c.expected_mm;
+        c.value_read = nan;
+        c.value_error = nan;
+        const bool carries_data = top || mirrored;
+        if (hit && carries_data && has_range && !std::isnan(c.value)) {
+            const double h = top ? c.measured_mm - top_zero_mm : c.measured_mm;
+            c.value_read = map.valueAt(h);
+            c.value_error = c.value_read - std::clamp(c.value, map.baseline, map.value_max);
+        }
+        ++f.surfaces_checked;
+        if (!hit) {
+            ++f.missed;
+        } else {
+            const double e = std::fabs(c.error_mm);
+            f.max_error_mm = std::max(f.max_error_mm, e);
+            sum_err += e;
+            ++n_err;
+            if (e > f.tolerance_mm) ++f.over_tolerance;
+            if (!std::isnan(c.value_error)) {
+                f.max_value_error = std::max(f.max_value_error, std::fabs(c.value_error));
+                sum_verr += std::fabs(c.value_error);
+                ++n_verr;
+            }
+        }
+        all.push_back(std::move(c));
+    };
+    for (size_t k = 0; k < scene.keptCount(); ++k) {
+        measure(k, true);
+        measure(k, false);
+    }
+    f.cells_checked = scene.keptCount();
+    f.mean_error_mm = n_err ? sum_err / double(n_err) : 0.0;
+    f.mean_value_error = n_verr ? sum_verr / double(n_verr) : 0.0;
+    if (!n_verr) f.max_value_error = f.mean_value_error = std::numeric_limits<double>::quiet_NaN();
+
+    const size_t keep = std::min(all.size(), options.max_offenders);
+    std::partial_sort(all.begin(), all.begin() + std::ptrdiff_t(keep), all.end(), worse);
+    all.resize(keep);
+    f.worst = all;
+
+    const Stage values_stage{"readback", msSince(t0)};
+    r.stages.push_back(values_stage);
+    {
+        Check c;
+        c.id = "values_read_back";
+        c.title = "every cell at its height";
+        c.unit = "mm";
+        c.stage = values_stage.name;
+        c.time_ms = values_stage.time_ms;
+        c.count = int64_t(f.missed + f.over_tolerance);
+        c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
+        for (const CellReadback& w : f.worst) {
+            const bool bad = std::isnan(w.measured_mm) || std::fabs(w.error_mm) > f.tolerance_mm;
+            if (!bad) break;
+            c.worst.push_back({{w.x_mm, w.y_mm, std::isnan(w.measured_mm) ? w.expected_mm : w.measured_mm}, w.error_mm,
+                               describe(w)});
+        }
+        c.note = std::to_string(f.surfaces_checked) + " surfaces of " + std::to_string(f.cells_checked) +
+                 " cells; max error " + fmtNum(f.max_error_mm) + " mm, tolerance " + fmtNum(f.tolerance_mm) + " mm";
+        if (f.missed) c.note += "; " + std::to_string(f.missed) + " rays met no surface";
+        r.checks.push_back(std::move(c));
+    }
+
+    // Grid cells that are not kept must be empty.
+    const auto t1 = std::chrono::steady_clock::now();
+    Check out;
+    out.id = "outside_cells_empty";
+    out.title = "no material outside the kept cells";
+    out.status = CheckStatus::Pass;
+    if (options.check_outside_cells && int64_t(scene.kept_index.size()) == scene.grid.cellCount()) {
+        for (int32_t row = 0; row < scene.grid.rows; ++row) {
+            for (int32_t col = 0; col < scene.grid.cols; ++col) {
+                if (scene.keptAt(col, row) >= 0) continue;
+                ++f.outside_cells_checked;
+                const Vec3 centre = scene.point(hexCentre(scene.grid, col, row), 0);
+                const auto hit = caster.firstHit({centre.x, centre.y, z_above}, {0, 0, -1});
+                if (!hit) continue;
+                ++f.outside_cells_hit;
+                if (out.worst.size() < options.max_offenders)
+                    out.worst.push_back({hit->point_mm, hit->point_mm.z,
+                                         "cell (col " + std::to_string(col) + ", row " + std::to_string(row) +
+                                             ") is not part of the model but has a surface at z = " +
+                                             fmtMm(hit->point_mm.z) + " mm"});
+            }
+        }
+        out.count = int64_t(f.outside_cells_hit);
+        out.status = out.count ? CheckStatus::Fail : CheckStatus::Pass;
+        out.unit = "mm";
+        out.note = std::to_string(f.outside_cells_checked) + " cells outside the model checked";
+    } else {
+        out.status = CheckStatus::Skipped;
+        out.note = "skipped";
+    }
+    const Stage outside_stage{"outside_cells", msSince(t1)};
+    r.stages.push_back(outside_stage);
+    out.stage = outside_stage.name;
+    out.time_ms = outside_stage.time_ms;
+    r.checks.push_back(std::move(out));
+    return r;
+}
+
+}  // namespace tsf

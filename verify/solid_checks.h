@@ -1,0 +1,44 @@
+// Solid checks: is this mesh a printable solid?
+//
+// Runs, in order (check ids in brackets; docs/verifier.md has the details):
+//   topology from the indices alone (verify/mesh_topology.h):
+//     [valid_input]            finite coordinates, indices in range
+//     [closed]                 no border edges; offenders are the holes
+//     [manifold_edges]         no edge with three or more triangles
+//     [manifold_vertices]      no vertex where two fans of triangles touch
+//     [consistent_orientation] neighbours traverse their shared edge in opposite directions;
+//                              offenders are the triangles that disagree with their neighbours
+//     [single_piece]           exactly one edge-connected component (a model in several
+//                              pieces falls apart on the printer bed)
+//     [distinct_vertices]      no two vertices at exactly the same position (warning)
+//   geometry with CGAL (Epick by default; Epeck when exact):
+//     [degenerate_faces]       no triangle with a repeated index or three collinear points
+//     [self_intersections]     no two triangles meeting other than at a shared vertex or edge
+//     [outward_orientation]    every component has positive volume (needs a closed,
+//                              consistently oriented manifold; else skipped)
+// Positions are millimetres in the model frame; offenders carry mm positions.
+// Empty mesh: [single_piece] fails ("no triangles"); the others pass or skip.
+#pragma once
+
+#include <vector>
+
+#include "gen/mesh.h"
+#include "verify/report.h"
+
+namespace tsf {
+
+struct SolidOptions {
+    bool exact = false;        ///< use the exact-construction kernel (slower; see docs/verifier.md)
+    size_t max_offenders = 10; ///< per check
+};
+
+struct SolidResult {
+    MeshSummary mesh;          ///< name and read_notes left empty
+    std::vector<Check> checks;
+    std::vector<Stage> stages;
+    bool closed_oriented_manifold = false;  ///< closed, manifold, consistently oriented, finite
+};
+
+SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options);
+
+}  // namespace tsf

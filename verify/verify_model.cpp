@@ -1,0 +1,77 @@
+// verifyModel: runs the check families in order. See verify_model.h.
+#include "verify/verify_model.h"
+
+#include <chrono>
+#include <memory>
+
+#include "verify/ray_caster.h"
+#include "verify/readback.h"
+#include "verify/solid_checks.h"
+
+namespace tsf {
+namespace {
+
+template <class Result>
+void append(VerifyReport& report, Result&& r) {
+    for (Check& c : r.checks) report.checks.push_back(std::move(c));
+    for (Stage& s : r.stages) report.stages.push_back(std::move(s));
+}
+
+}  // namespace
+
+VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptions& options) {
+    const auto t0 = std::chrono::steady_clock::now();
+    VerifyReport report;
+    report.exact = options.exact;
+
+    SolidOptions so;
+    so.exact = options.exact;
+    so.max_offenders = options.max_offenders;
+    SolidResult solid = checkSolid(mesh, so);
+    report.mesh = std::move(solid.mesh);
+    report.mesh.name = options.name.empty() ? "(in memory)" : options.name;
+    report.mesh.read_notes = options.read_notes;
+    const bool closed_oriented = solid.closed_oriented_manifold;
+    append(report, std::move(solid));
+
+    std::unique_ptr<RayCaster> caster;
+    if (scene || options.printability) {
+        caster = std::make_unique<RayCaster>(mesh);
+        report.stages.push_back({"ray_tree", caster->buildMs()});
+    }
+
+    if (scene) {
+        ReadbackOptions ro;
+        ro.height_tolerance_mm = options.height_tolerance_mm;
+        ro.max_offenders = options.max_offenders;
+        ReadbackResult rb = readBack(mesh, *scene, *caster, ro);
+        report.readback = std::move(rb.figures);
+        append(report, std::move(rb));
+    }
+
+    if (options.reference) {
+        AgreementOptions ao;
+        ao.distance_tolerance_mm = options.distance_tolerance_mm;
+        ao.max_offenders = options.max_offenders;
+        AgreementResult ag = compareMeshes(mesh, *options.reference, options.reference_name, ao);
+        report.agreement = std::move(ag.figures);
+        append(report, std::move(ag));
+    }
+
+    if (options.printability) {
+        PrintabilityOptions po;
+        po.nozzle_mm = options.nozzle_mm;
+        po.layer_mm = options.layer_mm;
+        po.bed_mm = options.bed_mm;
+        po.fail_on_warnings = options.fail_on_warnings;
+        po.max_offenders = options.max_offenders;
+        PrintabilityResult pr = checkPrintability(mesh, closed_oriented, *caster, po);
+        report.printability = std::move(pr.figures);
+        append(report, std::move(pr));
+    }
+
+    report.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return report;
+}
+
+}  // namespace tsf
