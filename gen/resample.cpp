@@ -44,19 +44,18 @@ double bilinearValue(const Raster& raster, PixelPoint p) {
     const double v = std::clamp(p.y - 0.5, 0.0, double(raster.rows - 1));
     const int32_t c0 = int32_t(std::floor(u));
     const int32_t r0 = int32_t(std::floor(v));
-    const int32_t c1 = std::min(c0 + 1, raster.cols - 1);
-    const int32_t r1 = std::min(r0 + 1, raster.rows - 1);
     const double fu = u - c0;
     const double fv = v - r0;
-    const double w[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
-    const double z[4] = {raster.at(c0, r0), raster.at(c1, r0), raster.at(c0, r1), raster.at(c1, r1)};
-    double sum = 0.0;
-    for (int k = 0; k < 4; ++k) {
-        if (w[k] == 0.0) continue;
-        if (std::isnan(z[k])) return NAN;
-        sum += w[k] * z[k];
-    }
-    return sum;
+    // A neighbour with zero weight is not read, so it cannot turn the result into NaN.
+    const int32_t c1 = fu > 0.0 ? std::min(c0 + 1, raster.cols - 1) : c0;
+    const int32_t r1 = fv > 0.0 ? std::min(r0 + 1, raster.rows - 1) : r0;
+    const double z00 = raster.at(c0, r0), z10 = raster.at(c1, r0);
+    const double z01 = raster.at(c0, r1), z11 = raster.at(c1, r1);
+    if (std::isnan(z00) || std::isnan(z10) || std::isnan(z01) || std::isnan(z11)) return NAN;
+    // Interpolation by differences: a constant neighbourhood gives the constant exactly.
+    const double top = z00 + fu * (z10 - z00);
+    const double bottom = z01 + fu * (z11 - z01);
+    return top + fv * (bottom - top);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "gen/io/csv_tokenizer.h"
 
 #include "gen/error.h"
+#include "gen/io/number_field.h"
 
 namespace tsf {
 namespace {
@@ -11,28 +12,68 @@ bool isContinuationByte(char c) { return (static_cast<unsigned char>(c) & 0xC0) 
 
 }  // namespace
 
+namespace {
+
+// The first line with any non-blank character (a quoted line break does not end it).
+std::string_view firstNonBlankLine(std::string_view text) {
+    size_t start = 0;
+    bool in_quotes = false;
+    bool content = false;
+    for (size_t k = 0; k < text.size(); ++k) {
+        const char c = text[k];
+        if (c == '"') in_quotes = !in_quotes;
+        if (!in_quotes && (c == '\n' || c == '\r')) {
+            if (content) return text.substr(start, k - start);
+            start = k + 1;
+            continue;
+        }
+        if (c != ' ' && c != '\t') content = true;
+    }
+    return content ? text.substr(start) : std::string_view();
+}
+
+// True if every blank-separated token of `line` is a number or a no-data spelling.
+bool allTokensNumeric(std::string_view line) {
+    size_t k = 0;
+    bool any = false;
+    while (k < line.size()) {
+        while (k < line.size() && (line[k] == ' ' || line[k] == '\t')) ++k;
+        const size_t start = k;
+        while (k < line.size() && line[k] != ' ' && line[k] != '\t') ++k;
+        if (k == start) break;
+        double v = 0.0;
+        if (parseNumberField(line.substr(start, k - start), v) == NumberField::NotNumber) return false;
+        any = true;
+    }
+    return any;
+}
+
+}  // namespace
+
 char detectCsvDelimiter(std::string_view text) {
     if (text.substr(0, kUtf8Bom.size()) == kUtf8Bom) text.remove_prefix(kUtf8Bom.size());
+    const std::string_view line = firstNonBlankLine(text);
     bool in_quotes = false;
-    bool seen_content = false;
-    bool has_tab = false, has_semicolon = false, has_comma = false;
-    for (char c : text) {
+    bool has_tab = false, has_semicolon = false, has_comma = false, space_inside_field = false;
+    for (size_t k = 0; k < line.size(); ++k) {
+        const char c = line[k];
         if (c == '"') in_quotes = !in_quotes;
-        if (in_quotes) {
-            seen_content = true;
-            continue;
-        }
-        if (c == '\n' || c == '\r') {
-            if (seen_content) break;  // end of the first non-blank line
-            has_tab = false;          // a blank line made only of tabs says nothing
-            continue;
-        }
+        if (in_quotes) continue;
         if (c == '\t') has_tab = true;
-        else if (c == ';') { has_semicolon = true; seen_content = true; }
-        else if (c == ',') { has_comma = true; seen_content = true; }
-        else if (c != ' ') seen_content = true;
+        else if (c == ';') has_semicolon = true;
+        else if (c == ',') has_comma = true;
+        else if (c == ' ' && k > 0 && k + 1 < line.size() && line[k - 1] != ' ' && line[k - 1] != '\t' &&
+                 line[k + 1] != ' ' && line[k + 1] != '\t')
+            space_inside_field = true;  // "1 2": a blank between two non-blanks
     }
-    if (has_tab && seen_content) return '\t';
+    if (has_tab) {
+        // Numbers separated by a mix of tabs and spaces ("1  2\t3") are a
+        // whitespace-separated grid; otherwise spaces belong to the fields
+        // ("mean temp\tmax temp").
+        const bool blank_runs = space_inside_field || line.find("  ") != std::string_view::npos;
+        if (blank_runs && !has_semicolon && !has_comma && allTokensNumeric(line)) return ' ';
+        return '\t';
+    }
     if (has_semicolon) return ';';
     if (has_comma) return ',';
     return ' ';

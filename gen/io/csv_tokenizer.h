@@ -32,8 +32,10 @@ struct CsvField {
 };
 
 /// Picks the delimiter of a delimited text from its first non-blank line
-/// (outside quotes): tab if it has one, else ';' (so "1,5;2,5" with decimal
-/// commas is read as two fields), else ',', else ' ' (whitespace-separated).
+/// (outside quotes): tab if it has one (but ' ' when that line is only
+/// numbers separated by a mix of tabs and blanks, "1  2\t3"), else ';' (so
+/// "1,5;2,5" with decimal commas is read as two fields), else ',', else ' '
+/// (whitespace-separated).
 char detectCsvDelimiter(std::string_view text);
 
 class CsvTokenizer {

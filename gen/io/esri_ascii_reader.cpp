@@ -184,7 +184,7 @@ Raster parseEsriAscii(std::string_view text, const std::string& path) {
     }
     if (on_line > 0) finishLine(line_now);
     if (int64_t(raster.values.size()) < cells)
-        throw InputError(path, line_now > 0 ? line_now : scanner.currentLine(), 0,
+        throw InputError(path, line_now > 0 ? line_now : scanner.line(), 0,
                          "too few values: expected ncols x nrows = " + std::to_string(cols) + " x " +
                              std::to_string(rows) + " = " + std::to_string(cells) + ", found " +
                              std::to_string(raster.values.size()));

@@ -17,7 +17,8 @@ constexpr int64_t kMaxHeaderNumber = int64_t(1) << 40;  // far above any valid s
 int64_t readHeaderNumber(TextScanner& scanner, const std::string& path, const char* what) {
     std::string_view token;
     if (!scanner.next(token))
-        throw InputError(path, scanner.currentLine(), 0, std::string("file ends before the PGM ") + what);
+        throw InputError(path, scanner.line() > 0 ? scanner.line() : 1, 0,
+                         std::string("file ends before the PGM ") + what);
     int64_t v = 0;
     if (!parseWholeNumber(token, kMaxHeaderNumber, v))
         throw InputError(path, scanner.line(), scanner.column(),
@@ -116,7 +117,7 @@ Raster parsePgm(std::string_view bytes, const std::string& path) {
     std::string_view token;
     while (int64_t(raster.values.size()) < cells) {
         if (!header.next(token))
-            throw InputError(path, header.currentLine(), 0,
+            throw InputError(path, header.line(), 0,
                              "truncated: expected " + std::to_string(cells) + " grey levels (" +
                                  std::to_string(width) + " x " + std::to_string(height) + "), found " +
                                  std::to_string(raster.values.size()));
