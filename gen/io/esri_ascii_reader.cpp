@@ -54,7 +54,8 @@ bool startsLikeNumber(std::string_view token) {
 }  // namespace
 
 Raster parseEsriAscii(std::string_view text, const std::string& path) {
-    TextScanner scanner(text);
+    const size_t bom = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;  // some editors write a UTF-8 BOM
+    TextScanner scanner(text, /*hash_comments=*/false, bom);
     EsriHeader h;
     std::string_view token;
     bool have_token = scanner.next(token);

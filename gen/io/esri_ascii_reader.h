@@ -8,7 +8,8 @@
 //   NODATA_value              optional; cells equal to it become NaN
 // then nrows x ncols values, the first line being the TOP (north) row and
 // each line running west to east. Values are decimal numbers; "nan" (as
-// written by GDAL for NaN) is also no data.
+// written by GDAL for NaN) is also no data. A UTF-8 byte-order mark at the
+// start is skipped.
 //
 // Raster fields: cell_size = cellsize; x_origin, y_origin = lower-left
 // corner of the lower-left cell (a *center value is moved by half a cell).

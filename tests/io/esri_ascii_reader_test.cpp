@@ -36,7 +36,7 @@ TEST(EsriAsciiReader, HeaderValuesAndNoData) {
 
 TEST(EsriAsciiReader, CentreKeysAnyOrderAnyCaseAndCrlf) {
     const Raster r = parseEsriAscii(
-        "NROWS 1\r\nCellSize 2\r\nYLLCENTER 11\r\nncols 2\r\nxllcenter 5\r\n7 8\r\n", "c.asc");
+        "\xEF\xBB\xBFNROWS 1\r\nCellSize 2\r\nYLLCENTER 11\r\nncols 2\r\nxllcenter 5\r\n7 8\r\n", "c.asc");
     EXPECT_EQ(r.cols, 2);
     EXPECT_EQ(r.rows, 1);
     EXPECT_EQ(r.cell_size, 2.0);
