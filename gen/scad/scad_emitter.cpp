@@ -1,0 +1,305 @@
+#include "gen/scad/scad_emitter.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <ostream>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/error.h"
+#include "gen/mesh_io/atomic_file.h"
+#include "gen/scad/scad_library.h"
+
+namespace tsf {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Shortest decimal text that OpenSCAD parses back to exactly `v` (OpenSCAD
+// 2021.01 reads decimals correctly rounded; checked in tests/scad).
+std::string number(double v) {
+    char buf[64];
+    const auto res = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, res.ptr);
+}
+
+// One line of text safe inside a // comment.
+std::string oneLine(const std::string& s) {
+    std::string out = s;
+    for (char& ch : out)
+        if (static_cast<unsigned char>(ch) < 0x20) ch = ' ';
+    return out;
+}
+
+// The largest of the usual slider steps that `v` is a whole multiple of, or
+// the finest one: the customizer then shows the value without rounding it.
+double sliderStep(double v, std::initializer_list<double> steps) {
+    for (double step : steps)
+        if (std::round(v / step) * step == v) return step;
+    return *(steps.end() - 1);
+}
+
+std::string range(double lo, double step, double hi) {
+    return "// [" + number(lo) + ":" + number(step) + ":" + number(hi) + "]";
+}
+
+// The customizer parameters with their values for a Scene, in file order.
+struct Parameters {
+    double cell_mm, max_height_mm, baseline, value_max, z_step_mm, base_mm;
+    std::string transfer;
+    bool mirrored;
+};
+
+Parameters parametersOf(const Scene& s) {
+    return {s.pitch_mm,       s.mapping.max_height_mm, s.mapping.baseline,
+            s.mapping.value_max, s.z_snap_mm,        s.params.base_mm,
+            toString(s.mapping.transfer), s.params.bottom == Bottom::Mirrored};
+}
+
+// Library parts a strategy needs, in the order they are pasted.
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy) {
+    if (strategy == ScadOptions::Strategy::Csg) return {"tsf_model.scad", "tsf_polyhedron.scad", "tsf_csg.scad"};
+    return {"tsf_model.scad", "tsf_polyhedron.scad"};
+}
+
+std::string stemOf(const std::string& file_name) { return fs::path(file_name).stem().string(); }
+
+void emitHeader(std::string& o, const Scene& s, const ScadOptions& opts, const std::string& file_name) {
+    const std::string name = fs::path(file_name).filename().string();
+    const std::string stem = stemOf(file_name);
+    const bool csg = opts.strategy == ScadOptions::Strategy::Csg;
+    o += "// " + oneLine(name) + " - a tactile model of hexagonal pillars, written by tsf " TSF_VERSION "\n//\n";
+    if (!opts.source.empty()) o += "// Source:    " + oneLine(opts.source) + "\n";
+    if (!opts.command.empty()) o += "// Command:   " + oneLine(opts.command) + "\n";
+    o += "// Grid:      " + std::to_string(s.grid.cols) + " columns x " + std::to_string(s.grid.rows) + " rows, " +
+         std::to_string(s.keptCount()) + " cells with a pillar";
+    if (s.cells_nodata_kept > 0) o += " (" + std::to_string(s.cells_nodata_kept) + " without data, at the floor)";
+    o += "\n";
+    o += std::string("// Bottom:    ") +
+         (s.params.bottom == Bottom::Mirrored ? "mirrored (the underside shows the data negated)" : "flat") + "\n";
+    o += std::string("// Strategy:  ") +
+         (csg ? "csg - a union of one prism per cell, done by CGAL: exact and editable per\n"
+                "//            pillar, but slow (minutes for a few thousand cells)\n"
+              : "polyhedron - the terrain is one closed polyhedron() built from the values;\n"
+                "//            renders in seconds\n");
+    for (const std::string& note : s.notes) o += "// Note:      " + oneLine(note) + "\n";
+    o += "//\n"
+         "// Render to STL with plain OpenSCAD (nothing else is needed):\n"
+         "//   openscad -o " + stem + ".stl --export-format binstl " + name + "\n"
+         "// The same through tsf (progress, timing, clear errors, a PNG preview):\n"
+         "//   tsf render " + name + " -o " + stem + ".stl --png " + stem + ".png\n"
+         "// Change a parameter for one render, or use a saved parameter set (" + stem + ".json):\n"
+         "//   tsf render " + name + " -o " + stem + ".stl -D max_height_mm=25\n"
+         "//   openscad -p " + stem + ".json -P \"mirrored bottom\" -o " + stem + ".stl --export-format binstl " + name + "\n"
+         "// Export binary STL (binstl) or 3MF: OpenSCAD's ASCII STL keeps only 6 significant digits.\n"
+         "//\n"
+         "// To edit: change a parameter below (in the OpenSCAD GUI: Window > Customizer), or\n"
+         "// a number in `values` further down, and render again (F6).\n\n";
+}
+
+void emitParameters(std::string& o, const Scene& s) {
+    const Parameters p = parametersOf(s);
+    o += "/* [Model size] */\n"
+         "// Distance between neighbouring hexagon centres = width across flats (mm)\n"
+         "cell_mm = " + number(p.cell_mm) + ";  " +
+         range(p.cell_mm < 1 ? 0.05 : 1, sliderStep(p.cell_mm, {0.5, 0.1, 0.01, 0.001}),
+               std::max(50.0, std::ceil(2 * p.cell_mm))) + "\n\n";
+
+    o += "/* [Heights] */\n"
+         "// Height of the pillar for value_max above the floor (mm)\n"
+         "max_height_mm = " + number(p.max_height_mm) + ";  " +
+         range(0, sliderStep(p.max_height_mm, {0.5, 0.1, 0.01, 0.001}), std::max(100.0, std::ceil(2 * p.max_height_mm))) +
+         "\n"
+         "// How a value becomes a height: linear, sqrt (counts, areas) or log (two decades)\n"
+         "transfer = \"" + p.transfer + "\";  // [linear, sqrt, log]\n"
+         "// Value at the floor, height 0 (data units); smaller values sit at the floor\n"
+         "baseline = " + number(p.baseline) + ";\n"
+         "// Value at max_height_mm (data units); larger values are capped\n"
+         "value_max = " + number(p.value_max) + ";\n"
+         "// Height grid (mm): every height is rounded to a multiple of it; your layer height gives crisp steps\n"
+         "z_step_mm = " + number(p.z_step_mm) + ";  " +
+         range(std::min(0.001, p.z_step_mm), sliderStep(p.z_step_mm, {0.001, 0.0001, 0.00001, 0.000001}), 1) + "\n\n";
+
+    o += "/* [Base] */\n"
+         "// Flat bottom: thickness under the floor. Mirrored bottom: thinnest point of the slab (mm, >= z_step_mm)\n"
+         "base_mm = " + number(p.base_mm) + ";  " +
+         range(std::min(0.1, p.base_mm), sliderStep(p.base_mm, {0.1, 0.01, 0.001, 0.0001, 0.00001, 0.000001}),
+               std::max(20.0, std::ceil(2 * p.base_mm))) + "\n\n";
+
+    o += "/* [Mirror] */\n"
+         "// The underside shows the data negated; every pillar has the same thickness\n"
+         "mirrored_bottom = " + std::string(p.mirrored ? "true" : "false") + ";\n\n";
+}
+
+void emitValues(std::string& o, const Scene& s) {
+    const HexGrid& g = s.grid;
+    std::vector<std::string> cells(size_t(g.cellCount()));
+    size_t width = 0;
+    for (int32_t r = 0; r < g.rows; ++r) {
+        for (int32_t c = 0; c < g.cols; ++c) {
+            const int32_t k = s.keptAt(c, r);
+            std::string& text = cells[size_t(g.index(c, r))];
+            text = k < 0 ? "undef" : std::isnan(s.value[size_t(k)]) ? "nodata" : number(s.value[size_t(k)]);
+            width = std::max(width, text.size());
+        }
+    }
+    o += "/* [Hidden] */\n\n"
+         "// ------------------------------------------------------------------ Data ---\n"
+         "// The cell values: one row of the hex grid per line, north row first, west to\n"
+         "// east; odd rows (1, 3, ...) are shifted half a cell east.\n"
+         "//   undef  = no pillar (outside the model)\n"
+         "//   nodata = a pillar at the floor (inside the model, no value)\n"
+         "// Change a number and render again; write a number over undef to add a pillar.\n"
+         "nodata = \"nodata\";\n"
+         "values = [\n";
+    for (int32_t r = 0; r < g.rows; ++r) {
+        std::string line = "    [";
+        for (int32_t c = 0; c < g.cols; ++c) {
+            const std::string& text = cells[size_t(g.index(c, r))];
+            if (c > 0) line += ", ";
+            line.append(width - text.size(), ' ');
+            line += text;
+        }
+        line += r + 1 < g.rows ? "]," : "] ";
+        line += "  // row " + std::to_string(r);
+        if (r == 0) line += " (north)";
+        if (r + 1 == g.rows && g.rows > 1) line += " (south)";
+        o += line + "\n";
+    }
+    o += "];\n\n";
+}
+
+void emitCall(std::string& o, const ScadOptions& opts) {
+    o += "// ----------------------------------------------------------------- Model ---\n";
+    if (!opts.inline_library) o += std::string("use <") + kScadLibraryCopyDir + "/" + kScadLibraryEntry + ">\n";
+    o += "model = tsf_model(values, cell_mm = cell_mm, max_height_mm = max_height_mm, base_mm = base_mm,\n"
+         "                  transfer = transfer, baseline = baseline, value_max = value_max,\n"
+         "                  z_step_mm = z_step_mm, mirrored = mirrored_bottom);\n";
+    o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
+}
+
+void emitInlineLibrary(std::string& o, const ScadOptions& opts) {
+    const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
+    const std::vector<std::string> parts = libraryParts(opts.strategy);
+    std::string list;
+    for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
+    o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
+         "// " + list + " from tsf " TSF_VERSION ", pasted here so that this\n"
+         "// file needs nothing else. The whole library, with the orientation marks, is\n"
+         "// scad_lib/ in the tsf sources (installed in share/tsf/scad_lib).\n\n";
+    for (const std::string& part : parts) {
+        std::string text = readScadLibraryFile(dir, part);
+        if (!text.empty() && text.back() != '\n') text += '\n';
+        o += text + "\n";
+    }
+}
+
+void requireScadPath(const std::string& path) {
+    if (fs::path(path).extension() != ".scad")
+        throw InputError(path, 0, 0, "an OpenSCAD file name must end in .scad");
+}
+
+}  // namespace
+
+const char* toString(ScadOptions::Strategy strategy) {
+    return strategy == ScadOptions::Strategy::Csg ? "csg" : "polyhedron";
+}
+
+bool parseScadStrategy(const std::string& text, ScadOptions::Strategy& strategy) {
+    if (text == "polyhedron") { strategy = ScadOptions::Strategy::Polyhedron; return true; }
+    if (text == "csg") { strategy = ScadOptions::Strategy::Csg; return true; }
+    return false;
+}
+
+std::vector<std::string> scadParameterNames() {
+    return {"cell_mm", "max_height_mm", "transfer", "baseline", "value_max", "z_step_mm", "base_mm", "mirrored_bottom"};
+}
+
+std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::string& file_name) {
+    if (scene.keptCount() == 0) throw InputError("the model has no cell to draw; nothing to write to " + file_name);
+    std::string o;
+    emitHeader(o, scene, opts, file_name);
+    emitParameters(o, scene);
+    emitValues(o, scene);
+    emitCall(o, opts);
+    if (opts.inline_library) emitInlineLibrary(o, opts);
+    return o;
+}
+
+std::string emitScadParameterSets(const Scene& scene) {
+    const Parameters p = parametersOf(scene);
+    nlohmann::ordered_json all;
+    all["cell_mm"] = number(p.cell_mm);
+    all["max_height_mm"] = number(p.max_height_mm);
+    all["transfer"] = p.transfer;
+    all["baseline"] = number(p.baseline);
+    all["value_max"] = number(p.value_max);
+    all["z_step_mm"] = number(p.z_step_mm);
+    all["base_mm"] = number(p.base_mm);
+    all["mirrored_bottom"] = p.mirrored ? "true" : "false";
+
+    // A coarse height grid must stay below the base (base_mm >= z_step_mm).
+    constexpr double kLayerMm = 0.2;  // a common FDM layer height
+    nlohmann::ordered_json layers;
+    layers["z_step_mm"] = number(kLayerMm);
+    if (p.base_mm < kLayerMm) layers["base_mm"] = number(kLayerMm);
+
+    nlohmann::ordered_json flip;
+    flip["mirrored_bottom"] = p.mirrored ? "false" : "true";
+
+    nlohmann::ordered_json half;
+    half["cell_mm"] = number(p.cell_mm / 2);
+    half["max_height_mm"] = number(p.max_height_mm / 2);
+    half["base_mm"] = number(std::max(p.base_mm / 2, p.z_step_mm));
+
+    nlohmann::ordered_json sets;
+    sets["as generated"] = all;
+    sets["layer steps 0.2 mm"] = layers;
+    sets[p.mirrored ? "flat bottom" : "mirrored bottom"] = flip;
+    sets["half size"] = half;
+    nlohmann::ordered_json doc;
+    doc["parameterSets"] = sets;
+    doc["fileFormatVersion"] = "1";
+    return doc.dump(4) + "\n";
+}
+
+std::vector<std::string> scadOutputPaths(const ScadOptions& opts, const std::string& path) {
+    const fs::path p(path);
+    std::vector<std::string> out{path};
+    if (opts.write_parameter_sets) out.push_back((p.parent_path() / (p.stem().string() + ".json")).string());
+    if (!opts.inline_library) {
+        const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
+        for (const std::string& name : scadLibraryFiles(dir))
+            out.push_back((p.parent_path() / kScadLibraryCopyDir / name).string());
+    }
+    return out;
+}
+
+void writeScad(const Scene& scene, const ScadOptions& opts, const std::string& path) {
+    requireScadPath(path);
+    ScadOptions resolved = opts;
+    if (resolved.library_dir.empty()) resolved.library_dir = scadLibraryDir();
+    // Everything is built in memory first, so a failure writes nothing.
+    const std::string text = emitScad(scene, resolved, path);
+    const std::string sets = resolved.write_parameter_sets ? emitScadParameterSets(scene) : std::string();
+    const std::vector<std::string> outputs = scadOutputPaths(resolved, path);
+
+    if (!resolved.inline_library) {
+        const fs::path lib_dir = fs::path(path).parent_path() / kScadLibraryCopyDir;
+        std::error_code ec;
+        fs::create_directories(lib_dir, ec);
+        if (ec) throw InputError(lib_dir.string(), 0, 0, "cannot create the library folder: " + ec.message());
+        for (const std::string& name : scadLibraryFiles(resolved.library_dir)) {
+            const std::string lib_text = readScadLibraryFile(resolved.library_dir, name);
+            writeFileAtomically((lib_dir / name).string(), [&](std::ostream& out) { out << lib_text; });
+        }
+    }
+    if (resolved.write_parameter_sets)
+        writeFileAtomically(outputs[1], [&](std::ostream& out) { out << sets; });
+    writeFileAtomically(path, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace tsf
