@@ -18,6 +18,9 @@ constexpr double kObserverMinSpeed_m_per_s = 1e-4;
 /// Longest time step the mode transitions integrate at once; a stalled loop
 /// must not make the level of detail jump when it resumes.
 constexpr double kMaxModeStep_s = 0.05;
+/// Below a nanometre the direction probe -> proxy is rounding noise; the
+/// proxy's surface normal is used instead (the force there is ~0 anyway).
+constexpr double kCoincident_m = 1e-9;
 
 bool isFinite(const Vec3& v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -92,6 +95,7 @@ ForceModel makeForceModel(const ScaleSpace& space, const FieldMapping& mapping, 
                 (k_guidance > 0.0 ? " plus the guidance spring " + std::to_string(k_guidance) + " N/m" : "") +
                 " is above the passive bound of " + std::to_string(k_bound) + " N/m for this device at " +
                 std::to_string(rate_Hz) + " Hz (b > K T / 2); lower it or raise --rate");
+    require(p.proxy_iterations >= 1 && p.proxy_iterations <= 16, "proxy iterations must be between 1 and 16");
     require(p.entry_depth_m >= 0.0 && p.entry_depth_m <= 0.01, "the entry depth must be between 0 and 10 mm");
     require(p.mu_static >= 0.0 && p.mu_static <= 1.0 && p.mu_kinetic >= 0.0 && p.mu_kinetic <= p.mu_static,
             "friction coefficients must satisfy 0 <= --mu-k <= --mu-s <= 1");
@@ -130,6 +134,65 @@ SurfacePoint surfaceAt(const ForceModel& model, const Vec3& p_m, double level) n
     return {map.floor_y_m + map.relief_m * h.height, k * h.d_di, -k * h.d_dj};
 }
 
+Contact updateProxy(const ForceModel& model, const Vec3& p_m, double level, int iterations,
+                    const Vec3& start_m) noexcept {
+    Contact c;
+    const SurfacePoint at_probe = surfaceAt(model, p_m, level);
+    if (!(p_m.y < at_probe.height_y_m)) {  // in the air: the proxy is the probe
+        c.proxy_m = p_m;
+        c.normal = glm::normalize(Vec3(-at_probe.slope_x, 1.0, -at_probe.slope_z));
+        return c;
+    }
+    // Descend |q(u) - p|^2 over the surface points q(u) = (u_x, H(u), u_z),
+    // from where the proxy was. Gauss-Newton direction
+    // -(I + g g^T)^-1 r with r = (u - p) + (H - p_y) g; a step is taken only
+    // if it brings the proxy closer to the probe (halving it up to three
+    // times otherwise), and is at most half a cell long so the proxy follows
+    // the surface instead of jumping across it.
+    const double max_step = 0.5 * model.mapping.cell_m;
+    double ux = start_m.x, uz = start_m.z;
+    SurfacePoint q = surfaceAt(model, Vec3(ux, 0.0, uz), level);
+    auto dist2 = [&](double x, double h, double z) {
+        return (x - p_m.x) * (x - p_m.x) + (h - p_m.y) * (h - p_m.y) + (z - p_m.z) * (z - p_m.z);
+    };
+    double j = dist2(ux, q.height_y_m, uz);
+    for (int it = 0; it < iterations; ++it) {
+        const double gx = q.slope_x, gz = q.slope_z;
+        const double dy = q.height_y_m - p_m.y;
+        const double rx = (ux - p_m.x) + dy * gx, rz = (uz - p_m.z) + dy * gz;
+        const double gr = (gx * rx + gz * rz) / (1.0 + gx * gx + gz * gz);
+        double sx = -(rx - gx * gr), sz = -(rz - gz * gr);
+        const double len = std::hypot(sx, sz);
+        if (!(len > 0.0)) break;
+        if (len > max_step) {
+            sx *= max_step / len;
+            sz *= max_step / len;
+        }
+        bool moved = false;
+        for (int half = 0; half < 4 && !moved; ++half, sx *= 0.5, sz *= 0.5) {
+            const SurfacePoint t = surfaceAt(model, Vec3(ux + sx, 0.0, uz + sz), level);
+            const double jt = dist2(ux + sx, t.height_y_m, uz + sz);
+            if (jt < j) {
+                ux += sx;
+                uz += sz;
+                q = t;
+                j = jt;
+                moved = true;
+            }
+        }
+        if (!moved) break;
+    }
+    c.touching = true;
+    c.proxy_m = Vec3(ux, q.height_y_m, uz);
+    const Vec3 normal = glm::normalize(Vec3(-q.slope_x, 1.0, -q.slope_z));
+    const Vec3 to_proxy = c.proxy_m - p_m;
+    c.depth_m = glm::length(to_proxy);
+    // Direction: from the probe to the proxy (the gradient of the proxy
+    // spring's energy); the proxy's normal when they nearly coincide.
+    c.normal = c.depth_m > kCoincident_m ? to_proxy / c.depth_m : normal;
+    return c;
+}
+
 ForceOutput computeForce(const ForceModel& model, const ForceState& state, const ForceInput& in) noexcept {
     ForceOutput out;
     out.state = state;
@@ -152,19 +215,30 @@ ForceOutput computeForce(const ForceModel& model, const ForceState& state, const
     s.lod = std::clamp(approach(s.lod, lod_target, P.lod_rate_levels_per_s * mode_dt), 0.0, top_level);
     s.volume_weight = std::clamp(approach(s.volume_weight, in.volume ? 1.0 : 0.0, mode_dt / P.volume_fade_s), 0.0, 1.0);
 
-    // Normal force (eqs 4.3-4.6).
-    const SurfacePoint surf = surfaceAt(model, p, s.lod);
-    const double slope2 = surf.slope_x * surf.slope_x + surf.slope_z * surf.slope_z;
-    const double inv_len = 1.0 / std::sqrt(1.0 + slope2);
-    const Vec3 n = Vec3(-surf.slope_x, 1.0, -surf.slope_z) * inv_len;
-    const double depth = (surf.height_y_m - p.y) * inv_len;
+    // Normal force (eqs 4.3-4.6), from the probe's foot point on the surface.
+    // The proxy starts where it was if it was on the surface, else where the
+    // probe was last tick (the probe has just come through the surface there).
+    const Vec3 start = state.started ? (state.touching ? state.proxy_m : state.position_m) : p;
+    const Contact contact = updateProxy(model, p, s.lod, P.proxy_iterations, start);
+    s.proxy_m = contact.proxy_m;
+    s.touching = contact.touching;
+    const Vec3 n = contact.normal;
+    const double depth = contact.depth_m;
     out.penetration_m = depth;
-    const double fn = springForce_N(depth, P.stiffness_N_per_m, P.entry_depth_m);
+    // Zero-order-hold compensation: the device holds this force for a whole
+    // tick while the probe keeps moving, which makes a sampled spring give
+    // back (1/2) K dx^2 more than it took on every step. Evaluating the spring
+    // half a step ahead, d + (d - d_prev) / 2, cancels that to first order
+    // (it is the damping K T / 2 that the sampling removed).
+    double depth_eval = depth;
+    if (P.hold_compensation && state.started && depth > 0.0) depth_eval = depth + 0.5 * (depth - state.depth_m);
+    s.depth_m = depth;
+    const double fn = depth > 0.0 ? springForce_N(depth_eval, P.stiffness_N_per_m, P.entry_depth_m) : 0.0;
     Vec3 f_env = n * fn;
 
     // Friction (eq. 4.7 with a dimensionally sound switch).
     if (depth > 0.0 && P.friction) {
-        const Vec3 p_o = p + n * depth;  // the probe's point on the surface
+        const Vec3 p_o = contact.proxy_m;  // the probe's point on the surface
         if (!s.in_contact) {
             s.stick_point_m = p_o;
             s.sliding = false;
@@ -231,24 +305,35 @@ ForceOutput computeForce(const ForceModel& model, const ForceState& state, const
         s.energy_J -= glm::dot(state.observed_force_N, p - state.position_m);
         s.energy_J = std::min(s.energy_J, model.energy_reserve_J);
     }
+    // The controller damps along the last step's velocity, not the filtered
+    // one: the filter's lag would put part of the damping force in phase with
+    // the motion during a fast bounce, feeding energy instead of removing it.
+    // Encoder noise in the raw velocity only weakens it (|F_pc| = |E| / (|v| dt)).
     Vec3 f_pc(0.0);
-    const double v2 = glm::dot(v, v);
-    if (P.passivity_observer && s.energy_J < 0.0 && dt > 0.0 && v2 > kObserverMinSpeed_m_per_s * kObserverMinSpeed_m_per_s) {
+    const Vec3 v_step = dt > 0.0 ? (p - state.position_m) / dt : Vec3(0.0);
+    const double v2 = glm::dot(v_step, v_step);
+    if (P.passivity_observer && state.started && s.energy_J < 0.0 && dt > 0.0 &&
+        v2 > kObserverMinSpeed_m_per_s * kObserverMinSpeed_m_per_s) {
         const double alpha = std::min(-s.energy_J / (v2 * dt), P.max_damping_Ns_per_m);
-        f_pc = -alpha * v;
+        f_pc = -alpha * v_step;
         out.damping_Ns_per_m = alpha;
         if (alpha > 0.0) out.flags |= kFlagDamping;
     }
 
     // Gain, clamp, final check.
     const double gain = std::isfinite(in.output_gain) ? std::clamp(in.output_gain, 0.0, 1.0) : 0.0;
-    const Vec3 observed = gain * (f_env + f_pc);
-    const Vec3 total = observed + gain * f_cons;
-    const double mag = glm::length(total);
-    const double scale = mag > P.max_force_N ? P.max_force_N / mag : 1.0;
-    if (scale < 1.0) out.flags |= kFlagClamped;
-    out.force_N = total * scale;
-    s.observed_force_N = observed * scale;
+    // The observer's damping has priority: it is clamped first and the rest
+    // of the force gets what is left of the limit, so a saturated surface
+    // cannot crowd out the dissipation that keeps it passive.
+    bool clamped = false;
+    const Vec3 damping = clampMagnitude(gain * f_pc, P.max_force_N, &clamped);
+    const double room = std::max(0.0, P.max_force_N - glm::length(damping));
+    const Vec3 rest = gain * (f_env + f_cons);
+    const double rest_mag = glm::length(rest);
+    const double scale = rest_mag > room ? room / rest_mag : 1.0;
+    if (scale < 1.0 || clamped) out.flags |= kFlagClamped;
+    out.force_N = rest * scale + damping;
+    s.observed_force_N = gain * f_env * scale + damping;
     if (!isFinite(out.force_N) || !std::isfinite(s.energy_J) || !isFinite(s.stick_point_m)) {
         out.force_N = Vec3(0.0);
         out.flags = kFlagRejected;

@@ -3,23 +3,28 @@
 // exceptions - it is what the 1 kHz tick calls and what the tests call.
 //
 // Forces (device frame, newtons; see frames.h and docs/haptics.md):
-//   normal    (thesis 4.2-4.3, eqs 4.3-4.6) a spring along the surface normal.
-//             Penetration is measured along the normal, d = d_vertical /
-//             sqrt(1 + |grad H|^2) (first-order distance to the surface; the
-//             vertical depth would make steep slopes far stiffer than flat
-//             ones). Force magnitude f(d) = K d^2 / (2 delta) for d < delta
-//             (the stiffness ramps in from 0 over the entry depth delta, so
-//             touching the surface is smooth) and K (d - delta / 2) beyond:
+//   normal    (thesis 4.2-4.3, eqs 4.3-4.6) a spring from the probe to its
+//             proxy: a point kept on the surface that follows the probe by
+//             descending |proxy - probe| along the surface (updateProxy; a
+//             god-object for height fields). Inside means below the surface
+//             at the probe's own x, z (eq. 4.3's h < 0). The depth d is
+//             |proxy - probe|, the direction probe -> proxy, which is the
+//             surface normal (-dH/dx, 1, -dH/dz) at the proxy (eq. 4.5) once
+//             the proxy has converged. Force magnitude f(d) = K d^2 / (2 delta)
+//             for d < delta (the stiffness ramps in from 0 over the entry depth
+//             delta, so touching is smooth) and K (d - delta / 2) beyond:
 //             continuous, with a continuous slope, never stiffer than K.
-//             The normal is (-dH/dx, 1, -dH/dz) normalised (eq. 4.5).
+//             The spring is evaluated half a tick ahead (d + (d - d_prev) / 2)
+//             to cancel the energy a zero-order hold adds on every step.
 //   friction  (eq. 4.7, after Fritz & Barner) a spring of stiffness K from the
-//             probe's surface point p_o to a sticktion point p_s, tangential.
-//             Static while K |p_s - p_o| <= mu_s |F_n|: a force compared with
-//             a force. Beyond that it slides: p_s is dragged behind p_o so the
-//             spring force is mu_k |F_n|. It sticks again when the filtered
-//             tangential speed falls below stick_speed (a speed compared with a
-//             speed). The thesis compared the speed |v| in m/s with
-//             |F_n| mu_s in newtons, so the switch point depended on units.
+//             proxy p_o to a sticktion point p_s, kept tangential. Static
+//             while K |p_s - p_o| <= mu_s |F_n|: a force compared with a
+//             force. Beyond that it slides: p_s is dragged behind p_o (toward
+//             where it was, like a pulled string) so the spring force is
+//             mu_k |F_n|. It sticks again when the filtered tangential speed
+//             falls below stick_speed (a speed compared with a speed). The
+//             thesis compared the speed |v| in m/s with |F_n| mu_s in newtons,
+//             so its switch point depended on the units chosen.
 //   gravity   (eq. 4.8) optional constant -gravity_N along y.
 //   volume    (section 4.5, eqs 4.9-4.12) in the slab above the surface: a
 //             soft force F_v (-dD/dx, 1 - s, -dD/dz), magnitude capped at F_v,
@@ -37,11 +42,14 @@
 //   - passivity observer (Hannaford & Ryu): E += -F_prev . (p - p_prev) is
 //     the energy the environment has absorbed (force held over the tick, as
 //     the device does). When E < 0 the surface has produced energy (sampling,
-//     sharp features, mode changes); a damping -alpha v with
-//     alpha = min(-E / (|v|^2 dt), max_damping) dissipates it on the next
-//     tick. Gravity and guidance are conservative and not observed.
+//     the volume field, mode changes); a damping -alpha v, v = the last
+//     step's velocity, alpha = min(-E / (|v|^2 dt), max_damping), dissipates
+//     it on the next tick. E is capped at twice the spring energy at the
+//     force limit so a long run of friction cannot pay for a later burst.
+//     Gravity and guidance are conservative and not observed.
 //   - the output gain (start/stop ramp, from the loop) multiplies the force.
-//   - magnitude clamp to max_force_N, keeping the direction.
+//   - magnitude clamp to max_force_N, keeping the direction; the observer's
+//     damping is clamped first and the rest shares what is left.
 //   - any non-finite value gives zero force and the `rejected` flag; a
 //     non-finite input leaves the state untouched.
 // Mode changes (level of detail, volume on/off) are never instantaneous: the
@@ -69,6 +77,7 @@ struct ForceParams {
     double stiffness_N_per_m = 1000.0;  ///< K; at most passiveStiffnessBound()
     double entry_depth_m = 0.001;       ///< delta: depth over which the stiffness ramps in
     SamplingParams sampling;            ///< interpolation and gradient method
+    int proxy_iterations = 4;           ///< proxy descent steps per tick (each at most half a cell)
     EdgeMode edge = EdgeMode::kClamp;
     // Friction
     bool friction = true;
@@ -87,6 +96,7 @@ struct ForceParams {
     // Safety
     double max_force_N = 6.0;            ///< <= DeviceLimits::max_force_N
     bool passivity_observer = true;
+    bool hold_compensation = true;       ///< evaluate the surface spring half a tick ahead
     double max_damping_Ns_per_m = 20.0;  ///< cap of the observer's damping, <= DeviceLimits
 };
 
@@ -130,6 +140,9 @@ struct ForceState {
     Vec3 position_m{0.0};
     double lod = 0.0;              ///< current continuous level of detail
     double volume_weight = 0.0;    ///< 0 = surface mode, 1 = volume mode, between = fading
+    double depth_m = 0.0;          ///< penetration along the normal last tick
+    bool touching = false;         ///< the probe was below the surface last tick
+    Vec3 proxy_m{0.0};             ///< the proxy (god-object) last tick
     bool in_contact = false;
     bool sliding = false;
     Vec3 stick_point_m{0.0};
@@ -149,7 +162,7 @@ struct ForceOutput {
     Vec3 force_N{0.0};        ///< finite, |force_N| <= max_force_N
     ForceState state;
     uint32_t flags = 0;
-    double penetration_m = 0.0;   ///< along the normal, > 0 inside the surface
+    double penetration_m = 0.0;   ///< distance from the probe to its proxy, > 0 inside the surface, 0 in the air
     double damping_Ns_per_m = 0.0;
 };
 
@@ -168,5 +181,23 @@ struct SurfacePoint {
     double slope_z = 0.0;  ///< dH/dz, m/m
 };
 SurfacePoint surfaceAt(const ForceModel& model, const Vec3& p_m, double level) noexcept;
+
+/// The proxy (god-object) of the probe: a point kept on the surface that
+/// moves from start_m toward the probe, by `iterations` descent steps on
+/// |proxy - probe| along the surface, never jumping (steps of at most half a
+/// cell, each accepted only if it brings the proxy closer). In the air the
+/// proxy is the probe. Because the proxy only moves to shorten the spring
+/// between it and the probe, the spring can only lose energy through proxy
+/// motion: contact with any surface shape, even cliffs and narrow valleys, is
+/// passive in continuous time, and the proxy stays on the face it touched
+/// instead of flipping between the walls of a valley.
+struct Contact {
+    bool touching = false;       ///< the probe is below the surface
+    Vec3 proxy_m{0.0};
+    Vec3 normal{0.0, 1.0, 0.0};  ///< unit, from the probe toward the proxy
+    double depth_m = 0.0;        ///< |proxy - probe| when touching, else 0
+};
+Contact updateProxy(const ForceModel& model, const Vec3& p_m, double level, int iterations,
+                    const Vec3& start_m) noexcept;
 
 }  // namespace tsf::haptics

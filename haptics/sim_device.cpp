@@ -18,6 +18,10 @@ constexpr double kSweepSpeed_m_per_s = 0.03;
 constexpr int kSweepLines = 6;
 constexpr int kTapsPerSide = 4;
 constexpr double kLiftClearance_m = 0.005;
+/// Every script starts with the finger held still above the surface for this
+/// long: the loop ramps the force in over its first second (haptic_loop.h),
+/// and a user is told to rest the grip before touching anything.
+constexpr double kLeadIn_s = 1.0;
 
 double lerp(double a, double b, double f) { return a + (b - a) * f; }
 
@@ -35,15 +39,21 @@ SimScript makeSimScript(SimTrajectory kind, const FieldMapping& m, double press_
     const double margin = 0.05 * std::min(m.eastX() - m.west_x_m, m.south_z_m - m.northZ());
     const double x0 = m.west_x_m + margin, x1 = m.eastX() - margin;
     const double z0 = m.northZ() + margin, z1 = m.south_z_m - margin;
-    const double lift_y = m.volume_bottom_y_m + kLiftClearance_m;
+    // Sweeps and the finger lift just clear of the highest surface; taps and
+    // the lead-in lift above the volume slab, so volume-mode taps go through
+    // every level and nothing touches the finger while forces ramp in.
+    const double near_y = m.volume_bottom_y_m + kLiftClearance_m;
+    const double high_y = m.volume_top_y_m + kLiftClearance_m;
+    double lift_y = kind == SimTrajectory::kTaps ? high_y : near_y;
     auto key = [&](double t, double x, double z, double press, double lift) {
         s.keys.push_back({t, x, z, press, lift, lift_y, 0u});
     };
-    double t = 0.0;
+    double t = kLeadIn_s;
     switch (kind) {
     case SimTrajectory::kSweep: {
         s.name = "sweep";
         key(t, x0, z0, press_N, 1.0);
+        lift_y = near_y;
         t += 0.5;
         key(t, x0, z0, press_N, 0.0);
         for (int line = 0; line < kSweepLines; ++line) {
@@ -89,6 +99,7 @@ SimScript makeSimScript(SimTrajectory kind, const FieldMapping& m, double press_
         const double r = 0.25 * std::min(x1 - x0, z1 - z0);
         const double peak = 2.0 * press_N;
         key(t, cx, cz, 0.0, 1.0);
+        lift_y = near_y;
         t += 0.5;
         key(t, cx, cz, 0.0, 0.0);
         t += 2.0;
@@ -111,7 +122,11 @@ SimScript makeSimScript(SimTrajectory kind, const FieldMapping& m, double press_
         break;
     }
     }
-    const SimKeyframe& first = s.keys.front();
+    SimKeyframe first = s.keys.front();
+    first.t_s = 0.0;
+    first.lift = 1.0;
+    first.lift_y_m = high_y;
+    s.keys.insert(s.keys.begin(), first);
     s.start_m = Vec3(first.x_m, first.lift_y_m, first.z_m);
     return s;
 }

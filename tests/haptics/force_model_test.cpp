@@ -231,7 +231,10 @@ TEST(ModeChange, LevelOfDetailSwitchFadesInsteadOfJumping) {
     ForceParams params;
     params.friction = false;
     auto s = makeScene(makeHeightGrid(16, 16, h), params, 3, ScaleSpaceKind::kMipmap);
-    const Vec3 p = gridToDevice(s->mapping, 0.5, 2.5, 0.45);  // middle of a high block
+    // Over the middle of a low block (height 0 at level 0), 2 mm into the
+    // level-2 surface (a uniform 0.5 there): in the air at level 0, pressed
+    // at level 2.
+    const Vec3 p = gridToDevice(s->mapping, 2.5, 2.5, 0.5) - Vec3(0, 0.002, 0);
     double t = 0.0;
     ForceState st = settle(s->model, {}, p, t, 0.1, 0, false);
     ForceState jump = st;
