@@ -230,12 +230,15 @@ RaySetup setup(const V3& o, const V3& d) {
     return r;
 }
 
-// Ray parameter of the hit, or a negative number for no hit.
-double hitTriangle(const RaySetup& r, const Tri& t, double t_max) {
-    const double ax0 = t.a[0] - r.o[0], ay0 = t.a[1] - r.o[1], az0 = t.a[2] - r.o[2];
-    const double bx0 = t.b[0] - r.o[0], by0 = t.b[1] - r.o[1], bz0 = t.b[2] - r.o[2];
-    const double cx0 = t.c[0] - r.o[0], cy0 = t.c[1] - r.o[1], cz0 = t.c[2] - r.o[2];
-    const V3 A{ax0, ay0, az0}, B{bx0, by0, bz0}, C{cx0, cy0, cz0};
+// Ray parameter of the hit, or a negative number for no hit; on a hit, the
+// hit point from the triangle's own corners (barycentric), kept inside the
+// triangle's bounding box so that a hit on a face parallel to an axis plane
+// has exactly that face's coordinate (a top at z = 12.4 reads 12.4, not
+// 12.4 plus the rounding of origin + t * direction).
+double hitTriangle(const RaySetup& r, const Tri& t, double t_max, V3& point) {
+    const V3 A{t.a[0] - r.o[0], t.a[1] - r.o[1], t.a[2] - r.o[2]};
+    const V3 B{t.b[0] - r.o[0], t.b[1] - r.o[1], t.b[2] - r.o[2]};
+    const V3 C{t.c[0] - r.o[0], t.c[1] - r.o[1], t.c[2] - r.o[2]};
     const double Ax = A[r.kx] - r.sx * A[r.kz], Ay = A[r.ky] - r.sy * A[r.kz];
     const double Bx = B[r.kx] - r.sx * B[r.kz], By = B[r.ky] - r.sy * B[r.kz];
     const double Cx = C[r.kx] - r.sx * C[r.kz], Cy = C[r.ky] - r.sy * C[r.kz];
@@ -248,6 +251,11 @@ double hitTriangle(const RaySetup& r, const Tri& t, double t_max) {
     const double T = U * (r.sz * A[r.kz]) + V * (r.sz * B[r.kz]) + W * (r.sz * C[r.kz]);
     const double tt = T / det;
     if (!(tt >= 0.0) || tt > t_max) return -1.0;
+    for (int k = 0; k < 3; ++k) {
+        const double p = (U * t.a[k] + V * t.b[k] + W * t.c[k]) / det;
+        const double lo = std::min({t.a[k], t.b[k], t.c[k]}), hi = std::max({t.a[k], t.b[k], t.c[k]});
+        point[k] = std::clamp(p, lo, hi);
+    }
     return tt;
 }
 
@@ -288,6 +296,7 @@ std::optional<RayHit> RayCaster::firstHit(const Vec3& origin, const Vec3& direct
     // Ray parameter limit; a hit exactly at the limit still counts.
     double best_t = max_distance_mm / len;
     int64_t best_slot = -1;
+    V3 best_point{};
     // Depth-first, nearer child first; a 64-entry stack holds any tree of a
     // median split (depth ~ log2(triangles / kLeafSize)).
     uint32_t stack[64];
@@ -301,10 +310,12 @@ std::optional<RayHit> RayCaster::firstHit(const Vec3& origin, const Vec3& direct
         if (n.count > 0) {
             for (uint32_t s = n.first; s < n.first + n.count; ++s) {
                 if (int64_t(s) == skip_slot) continue;
-                const double t = hitTriangle(r, im.tris[s], best_t);
+                V3 p;
+                const double t = hitTriangle(r, im.tris[s], best_t, p);
                 if (t >= 0 && (t < best_t || (t == best_t && (best_slot < 0 || s < uint64_t(best_slot))))) {
                     best_t = t;
                     best_slot = int64_t(s);
+                    best_point = p;
                 }
             }
             continue;
@@ -329,7 +340,7 @@ std::optional<RayHit> RayCaster::firstHit(const Vec3& origin, const Vec3& direct
     }
     if (best_slot < 0) return std::nullopt;
     RayHit h;
-    h.point_mm = {o[0] + best_t * d[0], o[1] + best_t * d[1], o[2] + best_t * d[2]};
+    h.point_mm = {best_point[0], best_point[1], best_point[2]};
     h.distance_mm = best_t * len;
     h.triangle = im.tris[size_t(best_slot)].mesh_index;
     return h;

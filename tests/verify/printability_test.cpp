@@ -1,0 +1,103 @@
+// Printability warnings measured on boxes whose thicknesses are known.
+#include <gtest/gtest.h>
+
+#include "tests/verify/verify_test_support.h"
+#include "verify/printability.h"
+#include "verify/ray_caster.h"
+
+namespace tsf {
+namespace {
+
+PrintabilityResult run(const Mesh& m, PrintabilityOptions o = {}, bool closed = true) {
+    const RayCaster caster(m);
+    return checkPrintability(m, closed, caster, o);
+}
+
+const Check& findCheck(const PrintabilityResult& r, const std::string& id) {
+    for (const Check& c : r.checks)
+        if (c.id == id) return c;
+    ADD_FAILURE() << "no check " << id;
+    return r.checks.front();
+}
+
+TEST(Printability, ThinWallIsWarnedWithItsThickness) {
+    const PrintabilityResult r = run(vtest::box({0, 0, 0}, {0.25, 10, 5}));
+    EXPECT_DOUBLE_EQ(r.figures.min_wall_mm, 0.25);
+    const Check& c = findCheck(r, "wall_thickness");
+    EXPECT_EQ(c.status, CheckStatus::Warn);
+    EXPECT_EQ(c.count, 2);  // the two large faces, one region each
+    EXPECT_DOUBLE_EQ(c.worst.at(0).amount, 0.25);
+    EXPECT_DOUBLE_EQ(r.figures.min_slab_mm, 5.0);
+    EXPECT_EQ(findCheck(r, "base_thickness").status, CheckStatus::Pass);
+}
+
+TEST(Printability, NarrowGapBetweenTwoBlocksIsWarned) {
+    const Mesh m = vtest::append(vtest::box({0, 0, 0}, {5, 5, 5}), vtest::box({5.3, 0, 0}, {10, 5, 5}));
+    const PrintabilityResult r = run(m);
+    EXPECT_NEAR(r.figures.min_gap_mm, 0.3, 1e-12);
+    const Check& c = findCheck(r, "gap_width");
+    EXPECT_EQ(c.status, CheckStatus::Warn);
+    EXPECT_EQ(c.count, 2);  // each facing wall sees the other
+    EXPECT_NEAR(c.worst.at(0).at_mm.x, 5.15, 0.16);
+}
+
+TEST(Printability, ThinBaseIsWarnedAgainstTwoLayers) {
+    PrintabilityOptions o;
+    o.layer_mm = 0.2;
+    const PrintabilityResult r = run(vtest::box({0, 0, 0}, {20, 20, 0.3}), o);
+    EXPECT_DOUBLE_EQ(r.figures.min_slab_mm, 0.3);
+    EXPECT_EQ(findCheck(r, "base_thickness").status, CheckStatus::Warn);
+    o.layer_mm = 0.15;
+    EXPECT_EQ(findCheck(run(vtest::box({0, 0, 0}, {20, 20, 0.3}), o), "base_thickness").status, CheckStatus::Pass);
+}
+
+TEST(Printability, StrictTurnsWarningsIntoFailures) {
+    PrintabilityOptions o;
+    o.fail_on_warnings = true;
+    EXPECT_EQ(findCheck(run(vtest::box({0, 0, 0}, {0.25, 10, 5}), o), "wall_thickness").status, CheckStatus::Fail);
+}
+
+TEST(Printability, BedFitAsIsTurnedOrNot) {
+    const Mesh m = vtest::box({0, 0, 0}, {230, 200, 10});
+    PrintabilityOptions o;
+    EXPECT_EQ(findCheck(run(m, o), "fits_bed").status, CheckStatus::Skipped);
+    o.bed_mm = Vec3{250, 210, 200};
+    PrintabilityResult r = run(m, o);
+    EXPECT_EQ(findCheck(r, "fits_bed").status, CheckStatus::Pass);
+    EXPECT_TRUE(r.figures.fits_bed);
+    o.bed_mm = Vec3{210, 240, 200};
+    r = run(m, o);
+    EXPECT_EQ(findCheck(r, "fits_bed").status, CheckStatus::Pass);
+    EXPECT_TRUE(r.figures.fits_bed_rotated);
+    o.bed_mm = Vec3{220, 220, 250};
+    r = run(m, o);
+    EXPECT_EQ(findCheck(r, "fits_bed").status, CheckStatus::Warn);
+    o.bed_mm = Vec3{250, 250, 5};
+    EXPECT_EQ(findCheck(run(m, o), "fits_bed").status, CheckStatus::Warn);  // too tall
+}
+
+TEST(Printability, TsfModelHasPitchWideWallsAndGaps) {
+    const vtest::Model m = vtest::smallModel(Bottom::Flat);
+    PrintabilityOptions o;
+    o.nozzle_mm = 0.6;  // gaps are looked for up to 10 nozzle widths: 6 mm > the 5 mm pitch
+    const PrintabilityResult r = run(m.mesh, o);
+    // A ray across one hexagon, flat to flat, is one pitch long.
+    EXPECT_NEAR(r.figures.min_wall_mm, m.scene.pitch_mm, 1e-3);
+    EXPECT_NEAR(r.figures.min_gap_mm, m.scene.pitch_mm, 1e-3);
+    // The thinnest vertical slab is the base under the lowest kept cell.
+    int64_t lowest = m.scene.top[0];
+    for (int64_t t : m.scene.top) lowest = std::min(lowest, t);
+    EXPECT_NEAR(r.figures.min_slab_mm, m.scene.zMm(lowest), 1e-9);
+    for (const Check& c : r.checks) EXPECT_NE(c.status, CheckStatus::Warn) << c.id;
+}
+
+TEST(Printability, OpenMeshSkipsTheRayChecks) {
+    Mesh m = vtest::box({0, 0, 0}, {0.25, 10, 5});
+    m.triangles.pop_back();
+    const PrintabilityResult r = run(m, {}, /*closed=*/false);
+    EXPECT_EQ(findCheck(r, "wall_thickness").status, CheckStatus::Skipped);
+    EXPECT_TRUE(std::isnan(r.figures.min_wall_mm));
+}
+
+}  // namespace
+}  // namespace tsf
