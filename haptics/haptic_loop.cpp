@@ -4,6 +4,7 @@
 #include <sched.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <thread>
@@ -63,11 +64,14 @@ void runHapticLoop(HapticDevice& device, TickHandler& handler, LoopClock& clock,
         const double deadline = t0 + double(k) * period;
         clock.sleepUntil(deadline);
         const double wake = clock.now();
+        const auto work_start = std::chrono::steady_clock::now();
         const double late = wake - deadline;
         stats.lateness.add(late);
         if (late > period) {
             ++stats.overruns;
-            k += uint64_t(late / period);  // skip the deadlines already missed
+            // Skip the deadlines already missed (rounded so the next tick is
+            // at least half a period after this one: no burst of catch-up ticks).
+            k += uint64_t(std::floor(late / period + 0.5));
         }
         const double t = wake - t0;
         last_t = t;
@@ -109,7 +113,7 @@ void runHapticLoop(HapticDevice& device, TickHandler& handler, LoopClock& clock,
                 break;
             }
         }
-        stats.compute.add(clock.now() - wake);
+        stats.compute.add(std::chrono::duration<double>(std::chrono::steady_clock::now() - work_start).count());
         if (log) log->push(record);
         ++stats.ticks;
         ++k;

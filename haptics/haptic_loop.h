@@ -84,7 +84,7 @@ struct LoopStats {
     double rate_Hz = 0.0;          ///< ticks / elapsed
     double target_rate_Hz = 0.0;
     MicrosHistogram lateness;      ///< wake-up time minus deadline
-    MicrosHistogram compute;       ///< read + force + write
+    MicrosHistogram compute;       ///< read + force + write, on the steady clock (real CPU time)
     uint64_t overruns = 0;         ///< ticks that woke more than a period late
     uint64_t failed_writes = 0;
     bool zero_force_sent = false;  ///< the final zero write happened
