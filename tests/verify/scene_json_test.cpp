@@ -1,0 +1,192 @@
+// Scene sidecar: every field round-trips bit for bit; malformed input is an
+// InputError that names the JSON path (and line/column for bad JSON); writes
+// are atomic.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+#include "gen/error.h"
+#include "gen/scene_json.h"
+#include "tests/verify/verify_test_support.h"
+
+namespace tsf {
+namespace {
+
+// Bitwise equality for doubles (NaN == NaN, -0 != +0).
+bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void expectSameScene(const Scene& a, const Scene& b) {
+    EXPECT_EQ(a.grid.cols, b.grid.cols);
+    EXPECT_EQ(a.grid.rows, b.grid.rows);
+    EXPECT_TRUE(same(a.pitch_mm, b.pitch_mm));
+    EXPECT_TRUE(same(a.z_snap_mm, b.z_snap_mm));
+    const SceneParams &p = a.params, &q = b.params;
+    EXPECT_TRUE(same(p.pitch_mm, q.pitch_mm));
+    EXPECT_TRUE(same(p.fit_width_mm, q.fit_width_mm));
+    EXPECT_TRUE(same(p.fit_depth_mm, q.fit_depth_mm));
+    EXPECT_TRUE(same(p.max_height_mm, q.max_height_mm));
+    EXPECT_TRUE(same(p.base_mm, q.base_mm));
+    EXPECT_EQ(p.transfer, q.transfer);
+    EXPECT_EQ(p.baseline_mode, q.baseline_mode);
+    EXPECT_TRUE(same(p.baseline_value, q.baseline_value));
+    EXPECT_EQ(p.value_max.has_value(), q.value_max.has_value());
+    if (p.value_max && q.value_max) EXPECT_TRUE(same(*p.value_max, *q.value_max));
+    EXPECT_TRUE(same(p.z_snap_mm, q.z_snap_mm));
+    EXPECT_EQ(p.cull, q.cull);
+    EXPECT_EQ(p.bottom, q.bottom);
+    EXPECT_EQ(a.mapping.transfer, b.mapping.transfer);
+    EXPECT_TRUE(same(a.mapping.baseline, b.mapping.baseline));
+    EXPECT_TRUE(same(a.mapping.value_max, b.mapping.value_max));
+    EXPECT_TRUE(same(a.mapping.max_height_mm, b.mapping.max_height_mm));
+    EXPECT_EQ(a.floor_units, b.floor_units);
+    EXPECT_EQ(a.col, b.col);
+    EXPECT_EQ(a.row, b.row);
+    ASSERT_EQ(a.value.size(), b.value.size());
+    for (size_t k = 0; k < a.value.size(); ++k) EXPECT_TRUE(same(a.value[k], b.value[k])) << k;
+    EXPECT_EQ(a.top, b.top);
+    EXPECT_EQ(a.bottom, b.bottom);
+    EXPECT_EQ(a.kept_index, b.kept_index);
+    EXPECT_EQ(a.hull, b.hull);
+    EXPECT_EQ(a.cells_with_data, b.cells_with_data);
+    EXPECT_EQ(a.cells_nonempty, b.cells_nonempty);
+    EXPECT_EQ(a.cells_nodata_kept, b.cells_nodata_kept);
+    EXPECT_EQ(a.mirror_thickness_units, b.mirror_thickness_units);
+    EXPECT_EQ(a.notes, b.notes);
+}
+
+Scene awkwardScene() {
+    // Values that do not print exactly in decimal, a set value_max, a
+    // log transfer, a mirrored bottom and a cell without data.
+    HexField f = vtest::smallField();
+    f.values[5] = 1.0 / 3.0;
+    f.values[9] = 2.0e-17;
+    SceneParams p = vtest::smallParams(Bottom::Mirrored, 0.01);
+    p.transfer = Transfer::Log;
+    p.value_max = 4.7;
+    p.baseline_mode = BaselineMode::Value;
+    p.baseline_value = 0.1;
+    return buildScene(f, p);
+}
+
+TEST(SceneJson, RoundTripsEveryField) {
+    for (const Scene& s : {awkwardScene(), vtest::smallModel(Bottom::Flat).scene}) {
+        const Scene back = sceneFromJson(sceneToJson(s));
+        expectSameScene(s, back);
+        // Through text too (the file path).
+        expectSameScene(s, sceneFromJson(nlohmann::json::parse(sceneToJson(s).dump())));
+    }
+}
+
+TEST(SceneJson, FileRoundTripOneCellPerLineAndNoTemporaryLeft) {
+    const auto dir = vtest::scratch("scene_json_file");
+    const Scene s = awkwardScene();
+    const auto path = dir / "model.stl.scene.json";
+    writeSceneJson(s, path.string());
+    expectSameScene(s, readSceneJson(path.string()));
+    const std::string text = vtest::readText(path);
+    EXPECT_NE(text.find("\"format\": \"tsf-scene\""), std::string::npos);
+    EXPECT_NE(text.find("\n    {\"bottom\":"), std::string::npos) << "one cell per line";
+    size_t files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++files;
+    EXPECT_EQ(files, 1u);
+}
+
+void expectError(nlohmann::json j, const std::string& starts_with) {
+    try {
+        sceneFromJson(j);
+        ADD_FAILURE() << "no error for " << starts_with;
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(starts_with, 0), 0u) << e.what();
+    }
+}
+
+TEST(SceneJson, MalformedMembersNameTheirPath) {
+    const nlohmann::json good = sceneToJson(vtest::smallModel(Bottom::Flat).scene);
+    {
+        auto j = good;
+        j["cells"][12]["top"] = "high";
+        expectError(j, "cells[12].top: expected an integer, found string");
+    }
+    {
+        auto j = good;
+        j["cells"][3].erase("bottom");
+        expectError(j, "cells[3].bottom: missing");
+    }
+    {
+        auto j = good;
+        j["cells"][4]["top"] = j["cells"][4]["bottom"];
+        expectError(j, "cells[4].top: must be above bottom");
+    }
+    {
+        auto j = good;
+        j["cells"][2]["col"] = 99;
+        expectError(j, "cells[2].col: must be between 0 and 6");
+    }
+    {
+        auto j = good;
+        std::swap(j["cells"][5], j["cells"][6]);
+        expectError(j, "cells[6]: cells must be listed once each");
+    }
+    {
+        auto j = good;
+        j["params"]["transfer"] = "cubic";
+        expectError(j, "params.transfer: unknown value \"cubic\" (expected one of: linear, sqrt, log)");
+    }
+    {
+        auto j = good;
+        j["mapping"]["baseline"] = nullptr;
+        expectError(j, "mapping.baseline: expected a number, found null");
+    }
+    {
+        auto j = good;
+        j["version"] = 2;
+        expectError(j, "version: unsupported version 2");
+    }
+    {
+        auto j = good;
+        j["format"] = "something-else";
+        expectError(j, "format: expected \"tsf-scene\"");
+    }
+    {
+        auto j = good;
+        j["grid"]["cols"] = 100000;
+        j["grid"]["rows"] = 100000;
+        expectError(j, "grid: a grid of 10000000000 cells is larger");
+    }
+    {
+        auto j = good;
+        j["hull"][0] = 7;
+        expectError(j, "hull[0]: expected [i, j]");
+    }
+    expectError(nlohmann::json::array(), "(top level): expected an object");
+}
+
+TEST(SceneJson, BadJsonTextHasLineAndColumn) {
+    const auto dir = vtest::scratch("scene_json_bad");
+    const auto path = dir / "bad.scene.json";
+    vtest::writeText(path, "{\n  \"format\": \"tsf-scene\",\n  \"version\": 1,\n  \"grid\": {\"cols\": 2,, }\n}\n");
+    try {
+        readSceneJson(path.string());
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.path(), path.string());
+        EXPECT_EQ(e.line(), 4);
+        EXPECT_EQ(e.column(), 22);  // the second comma
+        EXPECT_NE(std::string(e.what()).find("not valid JSON"), std::string::npos) << e.what();
+    }
+    // A semantic error in a file names the file and the JSON path.
+    vtest::writeText(path, "{\"format\": \"tsf-scene\", \"version\": 1}");
+    try {
+        readSceneJson(path.string());
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.path(), path.string());
+        EXPECT_EQ(e.detail(), "grid: missing");
+    }
+    EXPECT_THROW(readSceneJson((dir / "absent.json").string()), InputError);
+}
+
+}  // namespace
+}  // namespace tsf
