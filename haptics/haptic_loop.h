@@ -4,7 +4,7 @@
 // Scheduling: deadline k is t0 + k / rate on the LoopClock (absolute
 // deadlines, so lateness never accumulates). A tick that wakes more than one
 // period late counts as an overrun and the missed deadlines are skipped
-// rather than run in a burst.
+// rather than run in a burst (the next tick comes 0.5 to 1.5 periods later).
 //
 // Inside a tick: no allocation, locks, logging, I/O or exceptions. The
 // handler and device calls are noexcept; the log and the timing statistics

@@ -1,0 +1,160 @@
+// `tsf feel` end to end: the binary on small fields, as a user runs it.
+#include <cstdio>
+#include <cmath>
+#include <cstdlib>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <png.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kScratch = fs::path(TSF_TEST_SCRATCH) / "feel";
+
+struct CliResult {
+    int code = -1;
+    std::string out;
+};
+
+/// Runs `tsf ARGS`, capturing stdout+stderr and the exit code.
+CliResult tsf(const std::string& args) {
+    fs::create_directories(kScratch);
+    const fs::path out = kScratch / "stdout.txt";
+    const std::string cmd = std::string(TSF_BINARY) + " " + args + " > " + out.string() + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    CliResult r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream f(out);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    r.out = ss.str();
+    return r;
+}
+
+/// A 12 x 9 field with one hill and a no-data corner, written once.
+std::string hillField() {
+    const fs::path p = kScratch / "hill.csv";
+    fs::create_directories(kScratch);
+    std::ofstream f(p);
+    for (int r = 0; r < 9; ++r) {
+        for (int c = 0; c < 12; ++c) {
+            if (c) f << ",";
+            if (r == 0 && c == 0) f << "NaN";
+            else f << 10.0 * std::max(0, 16 - (c - 6) * (c - 6) - (r - 4) * (r - 4));
+        }
+        f << "\n";
+    }
+    return p.string();
+}
+
+std::vector<std::vector<std::string>> readCsv(const fs::path& p) {
+    std::ifstream f(p);
+    std::vector<std::vector<std::string>> rows;
+    std::string line;
+    while (std::getline(f, line)) {
+        std::vector<std::string> cells;
+        std::stringstream ss(line);
+        std::string cell;
+        while (std::getline(ss, cell, ',')) cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+}  // namespace
+
+TEST(FeelCli, SimSweepWritesAForceLogAndAPlot) {
+    const fs::path log = kScratch / "forces.csv", plot = kScratch / "forces.png";
+    fs::remove(log);
+    fs::remove(plot);
+    const CliResult r = tsf("feel " + hillField() + " --device sim --trajectory sweep --max-force 5 --log " + log.string() +
+                      " --plot " + plot.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("zero force sent"), std::string::npos) << r.out;
+    const auto rows = readCsv(log);
+    ASSERT_GT(rows.size(), 1000u);
+    ASSERT_EQ(rows[0][0], "t_s");
+    ASSERT_EQ(rows[0][7], "force_N");
+    size_t contact = 0;
+    double prev_t = -1.0;
+    for (size_t i = 1; i < rows.size(); ++i) {
+        const double t = std::stod(rows[i][0]), f = std::stod(rows[i][7]);
+        ASSERT_GT(t, prev_t);
+        prev_t = t;
+        ASSERT_LE(f, 5.0 + 1e-4) << "row " << i;  // the limit asked for, never more
+        if (rows[i][11] == "1") ++contact;
+    }
+    EXPECT_GT(contact, rows.size() / 4) << "the sweep must press on the surface";
+    // The plot is a real PNG with the field's aspect ratio (12 x 9 cells).
+    FILE* fp = std::fopen(plot.c_str(), "rb");
+    ASSERT_NE(fp, nullptr);
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    ASSERT_EQ(setjmp(png_jmpbuf(png)), 0);
+    png_init_io(png, fp);
+    png_read_info(png, info);
+    const auto w = png_get_image_width(png, info), h = png_get_image_height(png, info);
+    png_destroy_read_struct(&png, &info, nullptr);
+    std::fclose(fp);
+    EXPECT_GT(w, 700u);
+    EXPECT_GT(h, 500u);
+}
+
+TEST(FeelCli, ALogReplaysThroughTheSameFieldWithTheSameForces) {
+    const fs::path log = kScratch / "taps.csv", again = kScratch / "taps-again.csv";
+    ASSERT_EQ(tsf("feel " + hillField() + " --trajectory taps --friction off --log " + log.string()).code, 0);
+    const CliResult r = tsf("feel " + hillField() + " --friction off --device replay:" + log.string() + " --log " +
+                      again.string() + " --json");
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["loop"]["end"], "device-ended");
+    EXPECT_TRUE(j["loop"]["zero_force_sent"].get<bool>());
+    // Positions come back exactly at the recorded ticks, so the forces are
+    // the same (the loop ticks on the same 1 ms grid).
+    const auto a = readCsv(log), b = readCsv(again);
+    ASSERT_GT(b.size(), a.size() - 3);
+    double worst = 0.0;
+    for (size_t i = 1; i + 1 < b.size(); ++i) worst = std::max(worst, std::abs(std::stod(a[i][7]) - std::stod(b[i][7])));
+    EXPECT_LT(worst, 1e-3);
+}
+
+TEST(FeelCli, FalconIsNotSupportedYetAndSaysSo) {
+    const CliResult r = tsf("feel " + hillField() + " --device falcon");
+    EXPECT_EQ(r.code, 4);
+    EXPECT_NE(r.out.find("not yet supported"), std::string::npos) << r.out;
+}
+
+TEST(FeelCli, UnsafeOrBadOptionsAreRejectedWithExitTwo) {
+    const std::string f = hillField();
+    for (const std::string& args :
+         {std::string("--stiffness 5000"), std::string("--max-force 20"), std::string("--mu-s 0.1 --mu-k 0.3"),
+          std::string("--rate 200 --stiffness 2000"), std::string("--device replay:/nonexistent.csv"),
+          std::string("--device usb"), std::string("--levels 0")}) {
+        const CliResult r = tsf("feel " + f + " " + args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.out;
+        EXPECT_NE(r.out.find("error"), std::string::npos) << args;
+    }
+    EXPECT_EQ(tsf("feel " + (kScratch / "missing.csv").string()).code, 2);
+}
+
+TEST(FeelCli, JsonStatisticsForVolumeModeAndMipmaps) {
+    const CliResult r = tsf("feel " + hillField() +
+                      " --trajectory taps --volume --scale-space mipmap --levels 3 --sampling bilinear --json");
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["field"]["cols"], 12);
+    EXPECT_EQ(j["field"]["nodata_cells"], 1);
+    EXPECT_EQ(j["scale_space"]["levels"], 3);
+    EXPECT_LE(j["forces"]["max_N"].get<double>(), 6.0);
+    EXPECT_EQ(j["forces"]["rejected_ticks"], 0);
+    EXPECT_GT(j["loop"]["ticks"].get<int>(), 1000);
+}
