@@ -56,7 +56,7 @@ struct FeelOptions {
     std::string edge = "clamp";
     double press_N = 1.5;
     double start_ramp_s = 1.0;
-    double spin_us = 0.0;
+    double spin_us = 100.0;
     std::string log;
     std::string plot;
     bool json = false;
