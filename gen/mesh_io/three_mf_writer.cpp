@@ -27,6 +27,9 @@ void check3mfLimits(const Mesh& mesh, const std::string& path) {
     if (mesh.positions.size() > dword_max || mesh.triangles.size() > dword_max) {
         throw InputError(path, 0, 0, "cannot write: lib3mf holds at most 4294967295 vertices and triangles");
     }
+    if (mesh.triangles.empty()) {
+        throw InputError(path, 0, 0, "cannot write 3MF: the mesh has no triangles (a 3MF object needs at least one)");
+    }
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {

@@ -26,9 +26,9 @@
 namespace tsf {
 
 /// Writes mesh to path atomically as a 3MF package. Throws tsf::InputError
-/// for an unusable path or a mesh 3MF cannot hold (non-finite or beyond
-/// float32, a triangle repeating a vertex, more than 2^32-1 vertices or
-/// triangles), std::invalid_argument for out-of-range indices, and
+/// for an unusable path or a mesh 3MF cannot hold (no triangles, non-finite
+/// or beyond float32, a triangle repeating a vertex, more than 2^32-1
+/// vertices or triangles), std::invalid_argument for out-of-range indices, and
 /// std::runtime_error carrying lib3mf's message if lib3mf fails.
 void write3mf(const Mesh& mesh, const std::string& path, const MeshWriteOptions& opts = {});
 
