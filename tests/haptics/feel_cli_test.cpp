@@ -9,7 +9,11 @@
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
 #include <png.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -20,6 +24,11 @@ namespace {
 
 const fs::path kScratch = fs::path(TSF_TEST_SCRATCH) / "feel";
 
+/// A file name unique to the running test (ctest may run tests in parallel).
+fs::path scratchFile(const std::string& suffix) {
+    return kScratch / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" + suffix);
+}
+
 struct CliResult {
     int code = -1;
     std::string out;
@@ -28,7 +37,7 @@ struct CliResult {
 /// Runs `tsf ARGS`, capturing stdout+stderr and the exit code.
 CliResult tsf(const std::string& args) {
     fs::create_directories(kScratch);
-    const fs::path out = kScratch / "stdout.txt";
+    const fs::path out = scratchFile("stdout.txt");
     const std::string cmd = std::string(TSF_BINARY) + " " + args + " > " + out.string() + " 2>&1";
     const int status = std::system(cmd.c_str());
     CliResult r;
@@ -42,8 +51,8 @@ CliResult tsf(const std::string& args) {
 
 /// A 12 x 9 field with one hill and a no-data corner, written once.
 std::string hillField() {
-    const fs::path p = kScratch / "hill.csv";
     fs::create_directories(kScratch);
+    const fs::path p = scratchFile("hill.csv");
     std::ofstream f(p);
     for (int r = 0; r < 9; ++r) {
         for (int c = 0; c < 12; ++c) {
@@ -157,4 +166,32 @@ TEST(FeelCli, JsonStatisticsForVolumeModeAndMipmaps) {
     EXPECT_LE(j["forces"]["max_N"].get<double>(), 6.0);
     EXPECT_EQ(j["forces"]["rejected_ticks"], 0);
     EXPECT_GT(j["loop"]["ticks"].get<int>(), 1000);
+}
+
+TEST(FeelCli, CtrlCRampsDownZeroesAndExitsWith130) {
+    const fs::path log = kScratch / "interrupted.csv";
+    fs::remove(log);
+    const std::string field = hillField();
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        const int null = open("/dev/null", O_WRONLY);
+        dup2(null, 1);
+        dup2(null, 2);
+        execl(TSF_BINARY, TSF_BINARY, "feel", field.c_str(), "--trajectory", "sweep", "--realtime", "--log",
+              log.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    usleep(1200 * 1000);  // into the session, past the 1 s start ramp
+    kill(pid, SIGINT);
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    // The log was still written; the session stopped well before the sweep's
+    // end, and the last force logged is already ramped down to almost nothing.
+    const auto rows = readCsv(log);
+    ASSERT_GT(rows.size(), 100u);
+    EXPECT_LT(std::stod(rows.back()[0]), 5.0);
+    EXPECT_LT(std::stod(rows.back()[7]), 0.05);
 }
