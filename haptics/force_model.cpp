@@ -223,7 +223,7 @@ ForceOutput computeForce(const ForceModel& model, const ForceState& state, const
     s.lod = std::clamp(approach(s.lod, lod_target, P.lod_rate_levels_per_s * mode_dt), 0.0, top_level);
     s.volume_weight = std::clamp(approach(s.volume_weight, in.volume ? 1.0 : 0.0, mode_dt / P.volume_fade_s), 0.0, 1.0);
 
-    // Normal force (eqs 4.3-4.6), from the probe's foot point on the surface.
+    // Normal force (eqs 4.3-4.6), from the probe to its proxy on the surface.
     // The proxy starts where it was if it was on the surface, else where the
     // probe was last tick (the probe has just come through the surface there).
     const Vec3 start = state.started ? (state.touching ? state.proxy_m : state.position_m) : p;
