@@ -300,7 +300,7 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
             int64_t inward = 0;
             for (size_t i = 0; i < topo.components.size(); ++i) {
                 const double v = g.component_volume_mm3[i];
-                if (v > 0) continue;
+                if (g.component_volume_sign[i] > 0) continue;
                 ++inward;
                 if (c.worst.size() < max_off)
                     c.worst.push_back({detail::boundsCentre(topo.components[i].bounds), v,

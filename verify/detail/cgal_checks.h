@@ -33,6 +33,7 @@ struct GeometricFindings {
     bool volumes_computed = false;          ///< only for a closed oriented manifold
     double volume_mm3 = 0;                  ///< sum of component volumes, in the kernel's arithmetic
     std::vector<double> component_volume_mm3;  ///< same order as MeshTopology::components
+    std::vector<int> component_volume_sign;    ///< -1, 0, +1, decided in the kernel's arithmetic
 
     double degenerate_ms = 0, build_ms = 0, self_intersection_ms = 0, volume_ms = 0;
 };

@@ -150,17 +150,35 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     if (topo.isClosedOrientedManifold()) {
         t0 = std::chrono::steady_clock::now();
         typename K::Compute_volume_3 tetra = K().compute_volume_3_object();
-        typename K::FT total = 0;
+        using FT = typename K::FT;
+        // Summed pairwise: a lazy exact number records every operation, and a
+        // million-term running sum is a million-deep chain that overflows the
+        // stack when evaluated or freed; pairwise the depth is log2(terms).
+        auto pairwiseSum = [](std::vector<FT>& terms) {
+            if (terms.empty()) return FT(0);
+            while (terms.size() > 1) {
+                const size_t half = terms.size() / 2;
+                for (size_t i = 0; i < half; ++i) terms[i] = terms[2 * i] + terms[2 * i + 1];
+                if (terms.size() % 2) terms[half] = terms.back();
+                terms.resize(half + terms.size() % 2);
+            }
+            return terms[0];
+        };
+        std::vector<FT> per_component;
+        std::vector<FT> terms;
         for (const MeshComponent& c : topo.components) {
             const P o = points[mesh.triangles[c.triangles.front()][0]];
-            typename K::FT v = 0;
+            terms.clear();
             for (uint32_t t : c.triangles) {
                 const auto& tri = mesh.triangles[t];
-                v += tetra(o, points[tri[0]], points[tri[1]], points[tri[2]]);
+                terms.push_back(tetra(o, points[tri[0]], points[tri[1]], points[tri[2]]));
             }
+            const FT v = pairwiseSum(terms);
             out.component_volume_mm3.push_back(CGAL::to_double(v));
-            total += v;
+            out.component_volume_sign.push_back(int(CGAL::sign(v)));  // exact with Epeck
+            per_component.push_back(v);
         }
+        const FT total = pairwiseSum(per_component);
         out.volume_mm3 = CGAL::to_double(total);
         out.volumes_computed = true;
         out.volume_ms = msSince(t0);
