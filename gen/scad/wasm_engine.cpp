@@ -111,7 +111,13 @@ public:
         std::ostringstream why;
         switch (pr.end) {
             case ProcessResult::End::Exited:
-                if (pr.exit_code == 0) {
+                if (pr.exit_code == 0 && !r.errors().empty()) {
+                    // OpenSCAD 2025 goes on after an ERROR (a failed assert()
+                    // drops only the module it is in) and exports what is
+                    // left with exit status 0; 2021.01 stops. Same rule for both.
+                    why << kEngineName << " reported an error but exported the rest of the model anyway: "
+                        << formatScadMessage(r.errors().front()) << "; treated as a failure";
+                } else if (pr.exit_code == 0) {
                     r.status = ScadRenderResult::Status::Ok;
                     why << "rendered in " << pr.elapsed_s << " s";
                 } else if (pr.exit_code == kWasmExitCrashed) {

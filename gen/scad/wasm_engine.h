@@ -20,8 +20,14 @@
 // Formats: STL (binary), OFF, AMF. Not 3MF: this build of OpenSCAD crashes
 // in its 3MF exporter (measured, even for 100 cells); not PNG (no OpenGL).
 //
-// Never trust the engine's verdict: this build has reported "NoError" for
-// broken unions. Check its output (gen/scad/engine_output_check.h).
+// Errors: OpenSCAD 2025 goes on after an ERROR line (a failed assert() drops
+// only the module it is in) and exports the rest with exit status 0, where
+// 2021.01 stops with status 1. This engine reports any ERROR as a failed
+// render, so both versions fail on the same inputs.
+//
+// Never trust the engine's verdict on the mesh: this build has reported
+// "NoError" for broken unions. Check its output
+// (gen/scad/engine_output_check.h).
 #pragma once
 
 #include <memory>

@@ -1,0 +1,51 @@
+// Choosing the OpenSCAD engine for `tsf render --engine auto|openscad|wasm`.
+//
+//   openscad  the desktop binary (makeOpenScadEngine): Debian's OpenSCAD
+//             2021.01 by default, or the one given with --openscad PATH;
+//   wasm      OpenSCAD 2025.01.19 with Manifold, compiled to WebAssembly and
+//             run under Node.js (makeWasmOpenScadEngine, gen/scad/wasm_engine.h);
+//   auto      the fastest engine that is installed for the model's strategy,
+//             from the measurements in docs/engines.md:
+//               polyhedron (one polyhedron(), no boolean work): the desktop
+//                 binary first (it starts in 0.1 s; the WebAssembly engine
+//                 needs about 1 s to start and is 2-4x slower at every size);
+//               csg and anything else (unions of prisms, a hand-edited file):
+//                 a Manifold-capable engine first - the desktop binary when it
+//                 accepts --backend=manifold, else the WebAssembly engine
+//                 (40x faster than CGAL at 1 600 cells) - then CGAL;
+//             and falls back to the other engine when the first is missing.
+// The choice and the reason are returned as one line for people.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "gen/scad/openscad_runner.h"
+
+namespace tsf {
+
+enum class EngineChoice { Auto, OpenScad, Wasm };
+
+const char* toString(EngineChoice choice);  ///< "auto", "openscad", "wasm" (the CLI spellings)
+/// Parses "auto", "openscad" or "wasm"; false for anything else.
+bool parseEngineChoice(const std::string& text, EngineChoice& choice);
+
+/// Does this OpenSCAD binary have the Manifold backend, i.e. does
+/// `executable --help` list --backend with a Manifold option? (OpenSCAD
+/// 2021.01 rejects --backend=manifold; nightlies since late 2024 and the 2025
+/// builds accept it.) False when it cannot be run. Runs the binary once.
+bool openScadHasManifoldBackend(const std::string& executable);
+
+/// The engine for `choice`:
+///   strategy: "polyhedron", "csg", or "" when unknown (a file not written
+///             by tsf); only Auto looks at it;
+///   openscad_path: the desktop binary (a path or a name in PATH; "" = "openscad");
+///   why (may be null): receives one line saying which engine was chosen and
+///             why, e.g. "wasm: OpenSCAD version 2025.01.19 (...): csg needs
+///             boolean unions, and Manifold does them 40x faster than CGAL".
+/// Throws ScadEngineMissing, with the install command, when the engine asked
+/// for is missing, or (Auto) when neither engine is available.
+std::unique_ptr<ScadEngine> selectEngine(EngineChoice choice, const std::string& strategy,
+                                         const std::string& openscad_path, std::string* why);
+
+}  // namespace tsf
