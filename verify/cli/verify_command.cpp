@@ -38,9 +38,9 @@ struct VerifyCommandOptions {
 // The reader's findings as lines for the report.
 std::vector<std::string> readNotes(const MeshReadReport& r, const std::string& prefix) {
     std::vector<std::string> notes;
-    notes.push_back(prefix + r.format + ", " + std::to_string(r.input_triangles) + " triangles, " +
-                    std::to_string(r.input_vertices) + " vertices in the file, " + std::to_string(r.merged_vertices) +
-                    " merged as exactly equal");
+    // The reader's notes say what was merged; this line says what was read.
+    notes.push_back(prefix + r.format + ": " + std::to_string(r.input_triangles) + " triangles, " +
+                    std::to_string(r.input_vertices) + " vertices in the file");
     if (r.degenerate_index_triangles)
         notes.push_back(prefix + std::to_string(r.degenerate_index_triangles) + " triangles repeat a vertex (kept)");
     for (const std::string& n : r.notes) notes.push_back(prefix + n);
