@@ -86,7 +86,8 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
     f.reference = reference_name;
     f.reference_triangles = reference.triangleCount();
     f.distance_tolerance_mm = options.distance_tolerance_mm;
-    f.hausdorff_error_bound_mm = options.error_bound_mm > 0 ? options.error_bound_mm : options.distance_tolerance_mm / 10;
+    f.hausdorff_error_bound_mm = options.error_bound_mm > 0 ? options.error_bound_mm
+                                                           : options.distance_tolerance_mm * kHausdorffBoundFraction;
     f.volume_mm3 = signedVolume(model);
     f.reference_volume_mm3 = signedVolume(reference);
     f.volume_difference_mm3 = f.volume_mm3 - f.reference_volume_mm3;

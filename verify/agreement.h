@@ -26,10 +26,13 @@ namespace tsf {
 /// Default distance within which two meshes count as the same solid: the xy
 /// grid step of every tsf model (1 um).
 inline constexpr double kDefaultAgreementToleranceMm = 0.001;
+/// Default Hausdorff error bound as a fraction of the tolerance: small enough
+/// that a pass is decided by the distance, not by the bound.
+inline constexpr double kHausdorffBoundFraction = 0.1;
 
 struct AgreementOptions {
     double distance_tolerance_mm = kDefaultAgreementToleranceMm;
-    double error_bound_mm = 0;  ///< 0 = distance_tolerance_mm / 10
+    double error_bound_mm = 0;  ///< 0 = distance_tolerance_mm * kHausdorffBoundFraction
     size_t max_offenders = 10;
 };
 

@@ -215,7 +215,8 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
             bed.count = 1;
             bed.status = o.fail_on_warnings ? CheckStatus::Fail : CheckStatus::Warn;
             bed.note = dims + ": too large";
-            bed.worst.push_back({bb.max, std::max({size.x - bs.x, size.y - bs.y, size.z - bs.z}), bed.note});
+            const double excess = std::max({size.x - bs.x, size.y - bs.y, size.z - bs.z});
+            bed.worst.push_back({bb.max, excess, "the far corner of the model; " + fmtMm(excess) + " mm over the bed"});
         }
     }
     bed.stage = "bed";

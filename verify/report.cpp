@@ -48,7 +48,7 @@ const char* label(CheckStatus s) {
 
 std::string fmtMs(double ms) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%8.1f ms", ms);
+    std::snprintf(buf, sizeof buf, ms < 10 ? "%.1f ms" : "%.0f ms", ms);
     return buf;
 }
 
@@ -80,7 +80,7 @@ std::string formatReport(const VerifyReport& r) {
         o << label(c.status) << "  " << c.title;
         if (c.status == CheckStatus::Fail || c.status == CheckStatus::Warn) o << ": " << c.count;
         if (!c.note.empty()) o << " - " << c.note;
-        o << "  [" << fmtMs(c.time_ms) << "]\n";
+        o << "\n";
         for (const Offender& w : c.worst) {
             o << "        ";
             if (std::isfinite(w.at_mm.x)) o << "at " << fmtPoint(w.at_mm) << ": ";
@@ -110,12 +110,18 @@ std::string formatReport(const VerifyReport& r) {
           << fmtMm(p.min_slab_mm) << " mm\n";
     }
 
+    o << "\ntime:";
+    for (const Stage& st : r.stages) o << " " << st.name << " " << fmtMs(st.time_ms);
+    o << "\n";
+
     const size_t fails = r.countStatus(CheckStatus::Fail), warns = r.countStatus(CheckStatus::Warn);
-    o << "\nresult: " << (fails ? "FAIL" : "PASS") << " (" << (r.checks.size() - fails) << " of " << r.checks.size()
-      << " checks did not fail";
-    if (fails) o << ", " << fails << " failed";
+    const size_t passes = r.countStatus(CheckStatus::Pass), skips = r.countStatus(CheckStatus::Skipped);
+    o << "\nresult: " << (fails ? "FAIL" : "PASS") << " - ";
+    if (fails) o << fails << " failed, ";
+    o << passes << " passed";
     if (warns) o << ", " << warns << (warns == 1 ? " warning" : " warnings");
-    o << ") in " << fmtNum(r.total_ms) << " ms\n";
+    if (skips) o << ", " << skips << " skipped";
+    o << " (" << fmtMs(r.total_ms) << ")\n";
     return o.str();
 }
 

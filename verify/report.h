@@ -141,7 +141,8 @@ struct VerifyReport {
 };
 
 /// A few lines for people: mesh facts, one line per check (status, count,
-/// time), the worst offenders with coordinates, and a verdict.
+/// note), the worst offenders with coordinates, the time of each stage, and a
+/// verdict.
 std::string formatReport(const VerifyReport& report);
 
 /// Every figure of the report; schema in docs/verifier.md ("format": "tsf-verify-report", "version": 1).
