@@ -113,6 +113,15 @@ void lineColumn(const std::string& text, size_t byte, int& line, int& column) {
     }
 }
 
+// nlohmann's messages start "[json.exception.parse_error.101] parse error at
+// line L, column C: "; keep what follows the last such prefix.
+std::string withoutPrefix(const std::string& what) {
+    const auto colon = what.find(": ");
+    if (what.rfind("[json.exception.", 0) == 0 && colon != std::string::npos) return what.substr(colon + 2);
+    const auto bracket = what.find("] ");
+    return bracket != std::string::npos ? what.substr(bracket + 2) : what;
+}
+
 }  // namespace
 
 json sceneToJson(const Scene& s) {
@@ -267,28 +276,31 @@ void writeSceneJson(const Scene& scene, const std::string& path) {
     });
 }
 
-Scene readSceneJson(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, 0, 0, "cannot open the scene file");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw InputError(path, 0, 0, "cannot read the scene file");
+Scene parseSceneJson(const std::string& text, const std::string& path) {
     json j;
     try {
         j = json::parse(text);
     } catch (const json::parse_error& e) {
         int line = 0, column = 0;
         lineColumn(text, e.byte > 0 ? e.byte - 1 : 0, line, column);
-        std::string what = e.what();
-        // nlohmann prefixes "[json.exception.parse_error.101] parse error at line L, column C: "
-        const auto colon = what.find(": ");
-        if (colon != std::string::npos) what = what.substr(colon + 2);
-        throw InputError(path, line, column, "not valid JSON: " + what);
+        throw InputError(path, line, column, "not valid JSON: " + withoutPrefix(e.what()));
+    } catch (const json::exception& e) {
+        // e.g. a number too large for a double: no position is known.
+        throw InputError(path, 0, 0, "not valid JSON: " + withoutPrefix(e.what()));
     }
     try {
         return sceneFromJson(j);
     } catch (const InputError& e) {
         throw InputError(path, 0, 0, e.detail());
     }
+}
+
+Scene readSceneJson(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, 0, 0, "cannot open the scene file");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError(path, 0, 0, "cannot read the scene file");
+    return parseSceneJson(text, path);
 }
 
 }  // namespace tsf

@@ -50,4 +50,7 @@ void writeSceneJson(const Scene& scene, const std::string& path);
 /// malformed JSON, with the JSON path (as sceneFromJson) for a bad Scene.
 Scene readSceneJson(const std::string& path);
 
+/// The same for text already in memory; `path` names the source in errors.
+Scene parseSceneJson(const std::string& text, const std::string& path);
+
 }  // namespace tsf

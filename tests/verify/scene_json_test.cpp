@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <random>
 
 #include "gen/error.h"
 #include "gen/scene_json.h"
@@ -186,6 +187,55 @@ TEST(SceneJson, BadJsonTextHasLineAndColumn) {
         EXPECT_EQ(e.detail(), "grid: missing");
     }
     EXPECT_THROW(readSceneJson((dir / "absent.json").string()), InputError);
+}
+
+// Fuzz: mutated sidecars either read or throw InputError; nothing else.
+TEST(SceneJson, MutatedInputReadsOrThrowsInputError) {
+    const Scene s = vtest::smallModel(Bottom::Mirrored).scene;
+    const std::string text = sceneToJson(s).dump();
+    const nlohmann::json tree = sceneToJson(s);
+    std::mt19937 rng(2024);
+    const std::string alphabet = "{}[]\":,.-+eE0123456789 truenullfasx\n";
+    size_t read = 0, rejected = 0;
+    auto attempt = [&](const std::string& t) {
+        try {
+            const Scene back = parseSceneJson(t, "fuzz.json");
+            EXPECT_EQ(int64_t(back.kept_index.size()), back.grid.cellCount());
+            ++read;
+        } catch (const InputError&) {
+            ++rejected;
+        }
+    };
+    for (int i = 0; i < 1500; ++i) {
+        std::string t = text;
+        const int edits = 1 + int(rng() % 4);
+        for (int e = 0; e < edits; ++e) {
+            const size_t at = rng() % t.size();
+            switch (rng() % 4) {
+                case 0: t[at] = alphabet[rng() % alphabet.size()]; break;
+                case 1: t.erase(at, 1 + rng() % 8); break;
+                case 2: t.insert(at, 1, alphabet[rng() % alphabet.size()]); break;
+                default: t.resize(at); break;
+            }
+            if (t.empty()) t = "{";
+        }
+        attempt(t);
+    }
+    // Structured: one member of the tree replaced by a value of another type.
+    const std::vector<nlohmann::json> odd{nullptr, true, -1, 0, 1e300, -1e300, "x", nlohmann::json::array(),
+                                          nlohmann::json::object(), 4294967296LL, -9223372036854775807LL};
+    std::vector<nlohmann::json::json_pointer> paths;
+    const nlohmann::json flat = tree.flatten();
+    for (auto it = flat.begin(); it != flat.end(); ++it) paths.emplace_back(it.key());
+    for (const auto& path : paths) {
+        for (const auto& v : odd) {
+            nlohmann::json j = tree;
+            j[path] = v;
+            attempt(j.dump());
+        }
+    }
+    EXPECT_GT(read, 0u);
+    EXPECT_GT(rejected, 1000u);
 }
 
 }  // namespace
