@@ -38,8 +38,12 @@ int main(int argc, char** argv) {
     tsf::cli::addFeelCommand(app);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::RuntimeError& e) {
+        return e.get_exit_code();  // a command's own exit code (kExit*)
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // Help and version are successes; every other parse error is bad input.
+        const int code = app.exit(e);
+        return code == 0 ? 0 : tsf::cli::kExitBadInput;
     } catch (const tsf::InputError& e) {
         std::fprintf(stderr, "tsf: error: %s\n", e.what());
         return tsf::cli::kExitBadInput;
