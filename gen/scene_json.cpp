@@ -124,14 +124,17 @@ std::string withoutPrefix(const std::string& what) {
 
 }  // namespace
 
-json sceneToJson(const Scene& s) {
+namespace {
+json cellJson(const Scene& s, size_t k) {
+    return {{"col", s.col[k]}, {"row", s.row[k]}, {"value", numberOrNull(s.value[k])}, {"top", s.top[k]},
+            {"bottom", s.bottom[k]}};
+}
+
+// Everything but the cells.
+json sceneHeadJson(const Scene& s) {
     const SceneParams& p = s.params;
     json hull = json::array();
     for (const LatticePoint& q : s.hull) hull.push_back({q.i, q.j});
-    json cells = json::array();
-    for (size_t k = 0; k < s.keptCount(); ++k)
-        cells.push_back({{"col", s.col[k]}, {"row", s.row[k]}, {"value", numberOrNull(s.value[k])}, {"top", s.top[k]},
-                         {"bottom", s.bottom[k]}});
     return {
         {"format", kSceneJsonFormat},
         {"version", kSceneJsonVersion},
@@ -163,8 +166,16 @@ json sceneToJson(const Scene& s) {
         {"cells_nodata_kept", s.cells_nodata_kept},
         {"hull", hull},
         {"notes", s.notes},
-        {"cells", cells},
     };
+}
+}  // namespace
+
+json sceneToJson(const Scene& s) {
+    json j = sceneHeadJson(s);
+    json cells = json::array();
+    for (size_t k = 0; k < s.keptCount(); ++k) cells.push_back(cellJson(s, k));
+    j["cells"] = std::move(cells);
+    return j;
 }
 
 Scene sceneFromJson(const json& j) {
@@ -261,18 +272,17 @@ Scene sceneFromJson(const json& j) {
 }
 
 void writeSceneJson(const Scene& scene, const std::string& path) {
-    json j = sceneToJson(scene);
-    json cells = std::move(j["cells"]);
-    j.erase("cells");
     // Everything but the cells indented; then one cell per line, so a person
-    // can find a cell with a text editor and the file stays compact.
-    std::string head = j.dump(2);
+    // can find a cell with a text editor and the file stays compact. Cells are
+    // streamed one at a time: a million-cell scene never exists as a JSON tree.
+    std::string head = sceneHeadJson(scene).dump(2);
     head.pop_back();  // the closing brace
     while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
     writeFileAtomically(path, [&](std::ostream& out) {
         out << head << ",\n  \"cells\": [";
-        for (size_t k = 0; k < cells.size(); ++k) out << (k ? ",\n    " : "\n    ") << cells[k].dump();
-        out << (cells.empty() ? "]\n}\n" : "\n  ]\n}\n");
+        const size_t n = scene.keptCount();
+        for (size_t k = 0; k < n; ++k) out << (k ? ",\n    " : "\n    ") << cellJson(scene, k).dump();
+        out << (n == 0 ? "]\n}\n" : "\n  ]\n}\n");
     });
 }
 
