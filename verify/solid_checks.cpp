@@ -235,8 +235,8 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
     const bool finite = topo.nonfinite_vertices.empty();
     detail::GeometricFindings g;
     if (finite) {
-        g = options.exact ? detail::geometricChecksEpeck(mesh, topo, max_off)
-                          : detail::geometricChecksEpick(mesh, topo, max_off);
+        g = options.exact ? detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections)
+                          : detail::geometricChecksEpick(mesh, topo, max_off, options.self_intersections);
         r.stages.push_back({"degenerate", g.degenerate_ms});
         r.stages.push_back({"cgal_mesh", g.build_ms});
         if (g.mesh_built) r.stages.push_back({"self_intersections", g.self_intersection_ms});
@@ -272,6 +272,9 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
         Check c = makeCheck("self_intersections", "no self-intersections", stage("self_intersections"));
         if (!finite) {
             c.note = "skipped: non-finite coordinates";
+        } else if (!g.self_intersections_requested) {
+            c.note = "skipped on request (" + plural(int64_t(mesh.triangles.size()), "triangle", "triangles") +
+                     "); run tsf verify to test them";
         } else if (!g.mesh_built) {
             c.note = "skipped: CGAL could not build a polygon mesh from the triangles";
         } else {

@@ -30,6 +30,9 @@ namespace tsf {
 struct SolidOptions {
     bool exact = false;        ///< use the exact-construction kernel (slower; see docs/verifier.md)
     size_t max_offenders = 10; ///< per check
+    /// Test for self-intersections (CGAL; about 4 us per triangle). Skipping
+    /// it is reported as a skipped check, never as a pass.
+    bool self_intersections = true;
 };
 
 struct SolidResult {

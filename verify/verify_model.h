@@ -28,6 +28,7 @@ struct VerifyOptions {
     std::string name;                     ///< shown in the report (file path); "" = "(in memory)"
     std::vector<std::string> read_notes;  ///< what reading the file needed (from MeshReadReport), shown as is
     bool exact = false;                   ///< exact-construction kernel for the solid checks
+    bool self_intersections = true;       ///< false: skip the (slowest) self-intersection test, reported as skipped
     size_t max_offenders = 10;            ///< worst offenders listed per check
 
     // Values read back (used when a Scene is given).

@@ -22,6 +22,7 @@ struct GeometricFindings {
     bool soup_repaired = false;
     size_t points_duplicated = 0;  ///< by orient_polygon_soup, to split non-manifold places
     bool mesh_built = false;       ///< a CGAL Surface_mesh was built (else self-intersections not tested)
+    bool self_intersections_requested = true;  ///< false: the caller skipped the test on purpose
 
     std::vector<uint32_t> zero_area_triangles;  ///< three collinear points (exact predicate); ascending
     size_t intersecting_pair_count = 0;
@@ -41,7 +42,11 @@ struct GeometricFindings {
 /// Runs the geometric checks on the usable triangles of `mesh` (those not in
 /// topo's out-of-range or index-degenerate lists). Requires every position to
 /// be finite (topo.nonfinite_vertices empty).
-GeometricFindings geometricChecksEpick(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs);
-GeometricFindings geometricChecksEpeck(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs);
+/// self_intersections = false skips building the CGAL mesh and the
+/// self-intersection test (the slowest part); mesh_built stays false.
+GeometricFindings geometricChecksEpick(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
+                                       bool self_intersections = true);
+GeometricFindings geometricChecksEpeck(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
+                                       bool self_intersections = true);
 
 }  // namespace tsf::detail

@@ -5,8 +5,9 @@
 
 namespace tsf::detail {
 
-GeometricFindings geometricChecksEpick(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs) {
-    return geometricChecks<CGAL::Exact_predicates_inexact_constructions_kernel>(mesh, topo, max_pairs);
+GeometricFindings geometricChecksEpick(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
+                                        bool self_intersections) {
+    return geometricChecks<CGAL::Exact_predicates_inexact_constructions_kernel>(mesh, topo, max_pairs, self_intersections);
 }
 
 }  // namespace tsf::detail

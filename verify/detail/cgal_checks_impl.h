@@ -51,7 +51,7 @@ Vec3 intersectionPoint(const typename K::Triangle_3& a, const typename K::Triang
 }
 
 template <class K>
-GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs) {
+GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs, bool self_intersections) {
     using P = typename K::Point_3;
     using SM = CGAL::Surface_mesh<P>;
     namespace PMP = CGAL::Polygon_mesh_processing;
@@ -87,62 +87,66 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     }
     out.degenerate_ms = msSince(t0);
 
-    // Build the Surface_mesh. A soup our own edge analysis found valid is
-    // added as is; anything else goes through orient_polygon_soup, which
-    // flips triangles and duplicates points at non-manifold places (the
-    // repair is reported, never used for the verdict of the topology checks).
-    t0 = std::chrono::steady_clock::now();
-    const bool valid_soup =
-        topo.nonmanifold_edges.empty() && topo.misoriented_edges.empty() && topo.nonmanifold_vertices.empty();
-    if (!valid_soup) {
-        const size_t before = points.size();
-        PMP::orient_polygon_soup(points, polygons);
-        out.soup_repaired = true;
-        out.points_duplicated = points.size() - before;
-    }
-    SM sm;
-    sm.reserve(typename SM::size_type(points.size()), typename SM::size_type(3 * polygons.size()),
-               typename SM::size_type(polygons.size()));
-    std::vector<typename SM::Vertex_index> vid;
-    vid.reserve(points.size());
-    for (const P& p : points) vid.push_back(sm.add_vertex(p));
-    bool all_added = true;
-    for (const auto& q : polygons) {
-        if (sm.add_face(vid[q[0]], vid[q[1]], vid[q[2]]) == SM::null_face()) {
-            all_added = false;
-            break;
-        }
-    }
-    out.mesh_built = all_added;
-    out.build_ms = msSince(t0);
-
-    // Self-intersections: pairs of triangles that meet other than in a shared
-    // vertex or edge. CGAL lists a degenerate face f as (f, f); those are
-    // already counted as zero-area triangles and are dropped here.
-    if (out.mesh_built) {
+    out.self_intersections_requested = self_intersections;
+    if (self_intersections) {
+        // Build the Surface_mesh. A soup our own edge analysis found valid is
+        // added as is; anything else goes through orient_polygon_soup, which
+        // flips triangles and duplicates points at non-manifold places (the
+        // repair is reported, never used for the verdict of the topology checks).
         t0 = std::chrono::steady_clock::now();
-        std::vector<std::pair<typename SM::Face_index, typename SM::Face_index>> pairs;
-        PMP::self_intersections(sm, std::back_inserter(pairs));
-        std::vector<std::pair<uint32_t, uint32_t>> ids;
-        ids.reserve(pairs.size());
-        for (const auto& [f, g] : pairs) {
-            if (f == g) continue;
-            uint32_t a = original[size_t(f)], b = original[size_t(g)];
-            if (a > b) std::swap(a, b);
-            ids.emplace_back(a, b);
+        const bool valid_soup =
+            topo.nonmanifold_edges.empty() && topo.misoriented_edges.empty() && topo.nonmanifold_vertices.empty();
+        if (!valid_soup) {
+            const size_t before = points.size();
+            PMP::orient_polygon_soup(points, polygons);
+            out.soup_repaired = true;
+            out.points_duplicated = points.size() - before;
         }
-        std::sort(ids.begin(), ids.end());
-        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-        out.intersecting_pair_count = ids.size();
-        if (ids.size() > max_pairs) ids.resize(max_pairs);
-        auto triangle = [&](uint32_t t) {
-            const auto& tri = mesh.triangles[t];
-            const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
-            return typename K::Triangle_3(P(a.x, a.y, a.z), P(b.x, b.y, b.z), P(c.x, c.y, c.z));
-        };
-        for (const auto& [a, b] : ids) out.intersection_points.push_back(intersectionPoint<K>(triangle(a), triangle(b)));
-        out.intersecting_pairs = std::move(ids);
-        out.self_intersection_ms = msSince(t0);
+        SM sm;
+        sm.reserve(typename SM::size_type(points.size()), typename SM::size_type(3 * polygons.size()),
+                   typename SM::size_type(polygons.size()));
+        std::vector<typename SM::Vertex_index> vid;
+        vid.reserve(points.size());
+        for (const P& p : points) vid.push_back(sm.add_vertex(p));
+        bool all_added = true;
+        for (const auto& q : polygons) {
+            if (sm.add_face(vid[q[0]], vid[q[1]], vid[q[2]]) == SM::null_face()) {
+                all_added = false;
+                break;
+            }
+        }
+        out.mesh_built = all_added;
+        out.build_ms = msSince(t0);
+
+        // Self-intersections: pairs of triangles that meet other than in a shared
+        // vertex or edge. CGAL lists a degenerate face f as (f, f); those are
+        // already counted as zero-area triangles and are dropped here.
+        if (out.mesh_built) {
+            t0 = std::chrono::steady_clock::now();
+            std::vector<std::pair<typename SM::Face_index, typename SM::Face_index>> pairs;
+            PMP::self_intersections(sm, std::back_inserter(pairs));
+            std::vector<std::pair<uint32_t, uint32_t>> ids;
+            ids.reserve(pairs.size());
+            for (const auto& [f, g] : pairs) {
+                if (f == g) continue;
+                uint32_t a = original[size_t(f)], b = original[size_t(g)];
+                if (a > b) std::swap(a, b);
+                ids.emplace_back(a, b);
+            }
+            std::sort(ids.begin(), ids.end());
+            ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+            out.intersecting_pair_count = ids.size();
+            if (ids.size() > max_pairs) ids.resize(max_pairs);
+            auto triangle = [&](uint32_t t) {
+                const auto& tri = mesh.triangles[t];
+                const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+                return typename K::Triangle_3(P(a.x, a.y, a.z), P(b.x, b.y, b.z), P(c.x, c.y, c.z));
+            };
+            for (const auto& [a, b] : ids) out.intersection_points.push_back(intersectionPoint<K>(triangle(a), triangle(b)));
+            out.intersecting_pairs = std::move(ids);
+            out.self_intersection_ms = msSince(t0);
+        }
+
     }
 
     // Volumes: per component, as a sum of signed tetrahedra against a point of
