@@ -32,6 +32,21 @@ if ((${#missing[@]})); then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+# Node.js runs the second OpenSCAD engine (OpenSCAD 2025 compiled to
+# WebAssembly, `tsf render --engine wasm`). Debian's nodejs and npm unless a
+# Node.js with npm is already installed.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends nodejs npm
+fi
+# The engine's npm package, pinned by package-lock.json, into the project
+# (never global; nothing is fetched when tsf runs).
+wasm=gen/scad/wasm
+if [ ! -f "$wasm/node_modules/.package-lock.json" ] || [ "$wasm/package-lock.json" -nt "$wasm/node_modules/.package-lock.json" ]; then
+  (cd "$wasm" && npm ci --no-audit --no-fund --loglevel=error)
+fi
 [ "$mode" = "--deps-only" ] && exit 0
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
