@@ -74,10 +74,13 @@ int failureExitCode(const ScadRenderResult& r) {
     return kExitToolFailed;
 }
 
-ScadRenderResult renderOnce(const ScadEngine& engine, const ScadRenderRequest& rq, const RenderOptions& o) {
+// source_name: what to call the input in messages (the model, or the mesh a
+// preview is drawn from).
+ScadRenderResult renderOnce(const ScadEngine& engine, const ScadRenderRequest& rq, const RenderOptions& o,
+                            const std::string& source_name) {
     const std::string what = fs::path(rq.output_path).filename().string();
     if (!o.quiet)
-        std::fprintf(stderr, "tsf: rendering %s -> %s with %s\n", rq.scad_path.c_str(), what.c_str(),
+        std::fprintf(stderr, "tsf: rendering %s -> %s with %s\n", source_name.c_str(), what.c_str(),
                      engine.version().c_str());
     ScadProgress progress;
     if (!o.quiet) {
@@ -89,7 +92,7 @@ ScadRenderResult renderOnce(const ScadEngine& engine, const ScadRenderRequest& r
     }
     const ScadRenderResult r = renderScad(engine, rq, progress);
     if (!r.ok()) {
-        std::fprintf(stderr, "tsf: error: %s: %s\n", rq.scad_path.c_str(), r.summary.c_str());
+        std::fprintf(stderr, "tsf: error: %s: %s\n", source_name.c_str(), r.summary.c_str());
         printMessages(r, o.verbose);
         throw CLI::RuntimeError(failureExitCode(r));
     }
@@ -143,7 +146,8 @@ public:
         close(fd);
         path_ = buf.data();
         std::ofstream out(path_);
-        out << "import(" << scadString(fs::absolute(mesh_path).string()) << ", convexity = 10);\n";
+        // The same warm colour as tsf gen --preview: steps between pillars show clearly.
+        out << "color(\"#e8a33d\") import(" << scadString(fs::absolute(mesh_path).string()) << ", convexity = 10);\n";
         if (!out) throw std::runtime_error("cannot write " + path_);
     }
     ~ImportWrapper() {
@@ -195,7 +199,7 @@ void runRender(const RenderOptions& o) {
         ScadRenderRequest rq = base;
         rq.output_path = o.output;
         rq.format = format;
-        const ScadRenderResult r = renderOnce(*engine, rq, o);
+        const ScadRenderResult r = renderOnce(*engine, rq, o, o.scad);
         if (!o.quiet)
             std::fprintf(stderr, "tsf: wrote %s (%s) in %s, peak memory %s\n", o.output.c_str(),
                          format == ScadExportFormat::Stl ? "binary STL" : toString(format), seconds(r.elapsed_s).c_str(),
@@ -208,6 +212,7 @@ void runRender(const RenderOptions& o) {
         rq.output_path = o.png;
         rq.format = ScadExportFormat::Png;
         std::unique_ptr<ImportWrapper> wrapper;
+        std::string source_name = o.scad;
         if (!o.output.empty() && format != ScadExportFormat::Png) {
             // Picture the exported file itself; parameters are already applied.
             wrapper = std::make_unique<ImportWrapper>(o.output);
@@ -215,8 +220,9 @@ void runRender(const RenderOptions& o) {
             rq.defines.clear();
             rq.parameter_file.clear();
             rq.parameter_set.clear();
+            source_name = "a picture of " + o.output;
         }
-        const ScadRenderResult r = renderOnce(*engine, rq, o);
+        const ScadRenderResult r = renderOnce(*engine, rq, o, source_name);
         if (!o.quiet) std::fprintf(stderr, "tsf: wrote %s in %s\n", o.png.c_str(), seconds(r.elapsed_s).c_str());
     }
     if (!solid_ok) throw CLI::RuntimeError(kExitCheckFailed);

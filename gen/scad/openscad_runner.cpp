@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -99,7 +100,7 @@ public:
             case ProcessResult::End::Exited:
                 if (pr.exit_code == 0) {
                     r.status = ScadRenderResult::Status::Ok;
-                    why << "rendered in " << pr.elapsed_s << " s";
+                    why << "rendered in " << std::fixed << std::setprecision(2) << pr.elapsed_s << " s";
                 } else {
                     why << "openscad failed (exit code " << pr.exit_code << ")";
                     if (pr.output.find("Current top level object is empty") != std::string::npos)

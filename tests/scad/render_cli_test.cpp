@@ -1,0 +1,111 @@
+// `tsf render` end to end: the tsf binary, the real openscad, files on disk.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "gen/cli/commands.h"
+#include "gen/scad/process_runner.h"
+#include "gen/scad/scad_emitter.h"
+#include "scad_test_support.h"
+#include "verify/mesh_topology.h"
+
+namespace tsf {
+namespace {
+namespace fs = std::filesystem;
+using namespace test;
+
+struct CliRun {
+    int exit_code = -1;
+    std::string output;
+};
+
+CliRun runTsf(std::vector<std::string> args) {
+    args.insert(args.begin(), TSF_BINARY);
+    ProcessOptions o;
+    o.timeout_s = 300;
+    const ProcessResult r = runProcess(args, o);
+    EXPECT_EQ(r.end, ProcessResult::End::Exited) << r.output;
+    return {r.exit_code, r.output};
+}
+
+std::string writeModel(const std::string& name) {
+    const std::string dir = scratchDir(name);
+    const std::string path = dir + "/model.scad";
+    writeScad(buildScene(bumpyField(7, 6), smallParams()), ScadOptions{}, path);
+    return path;
+}
+
+bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+TEST(RenderCli, RendersBinaryStlChecksItAndReportsTime) {
+    const std::string scad = writeModel("cli_ok");
+    const std::string stl = fs::path(scad).replace_extension(".stl").string();
+    const CliRun r = runTsf({"render", scad, "-o", stl});
+    ASSERT_EQ(r.exit_code, cli::kExitOk) << r.output;
+    EXPECT_TRUE(contains(r.output, "with OpenSCAD version")) << r.output;
+    EXPECT_TRUE(contains(r.output, "wrote " + stl + " (binary STL) in ")) << r.output;
+    EXPECT_TRUE(contains(r.output, "closed, manifold, outward")) << r.output;
+    EXPECT_NE(readText(stl).substr(0, 5), "solid");
+    EXPECT_TRUE(analyzeTopology(readMesh(stl)).isClosedOrientedManifold());
+}
+
+TEST(RenderCli, OverridesAndParameterSetsReachOpenScad) {
+    const std::string scad = writeModel("cli_params");
+    const std::string dir = fs::path(scad).parent_path().string();
+    ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/a.stl", "-q"}).exit_code, 0);
+    ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/b.stl", "-q", "-D", "max_height_mm=20"}).exit_code, 0);
+    ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/c.stl", "-q", "-p", dir + "/model.json", "-P", "half size"}).exit_code, 0);
+    const double a = signedVolume(readMesh(dir + "/a.stl"));
+    const double b = signedVolume(readMesh(dir + "/b.stl"));
+    const double c = signedVolume(readMesh(dir + "/c.stl"));
+    EXPECT_GT(b, a * 1.3);  // twice the relief on a 2 mm base
+    EXPECT_LT(c, a / 6);    // half in every direction: an eighth
+}
+
+TEST(RenderCli, AMalformedParameterIsBadInputWithTheAssertMessage) {
+    const std::string scad = writeModel("cli_bad");
+    const std::string stl = fs::path(scad).replace_extension(".stl").string();
+    const CliRun r = runTsf({"render", scad, "-o", stl, "-D", "cell_mm=-2"});
+    EXPECT_EQ(r.exit_code, cli::kExitBadInput) << r.output;
+    EXPECT_TRUE(contains(r.output, "tsf_model: cell_mm must be a number > 0 (mm), got -2")) << r.output;
+    EXPECT_FALSE(fs::exists(stl));
+    const CliRun bad_define = runTsf({"render", scad, "-o", stl, "-D", "max_height_mm"});
+    EXPECT_EQ(bad_define.exit_code, cli::kExitBadInput) << bad_define.output;
+    const CliRun bad_set = runTsf({"render", scad, "-o", stl, "-p", fs::path(scad).replace_extension(".json").string(),
+                             "-P", "tiny"});
+    EXPECT_EQ(bad_set.exit_code, cli::kExitBadInput) << bad_set.output;
+    EXPECT_TRUE(contains(bad_set.output, "no parameter set \"tiny\"")) << bad_set.output;
+}
+
+TEST(RenderCli, MissingOpenScadIsAToolFailureWithAnInstallHint) {
+    const std::string scad = writeModel("cli_missing");
+    const CliRun r = runTsf({"render", scad, "-o", "x.stl", "--openscad", "/nonexistent/openscad"});
+    EXPECT_EQ(r.exit_code, cli::kExitToolFailed) << r.output;
+    EXPECT_TRUE(contains(r.output, "apt install openscad")) << r.output;
+}
+
+TEST(RenderCli, WritesAPngPreviewOfTheExportedModel) {
+    const std::string scad = writeModel("cli_png");
+    const std::string dir = fs::path(scad).parent_path().string();
+    const CliRun r = runTsf({"render", scad, "-o", dir + "/m.stl", "--png", dir + "/m.png", "--imgsize", "320,240"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const std::string png = readText(dir + "/m.png");
+    ASSERT_GT(png.size(), 24u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+    // IHDR: width and height, big-endian, at bytes 16..23.
+    auto be32 = [&](size_t at) {
+        return (uint32_t(uint8_t(png[at])) << 24) | (uint32_t(uint8_t(png[at + 1])) << 16) |
+               (uint32_t(uint8_t(png[at + 2])) << 8) | uint32_t(uint8_t(png[at + 3]));
+    };
+    EXPECT_EQ(be32(16), 320u);
+    EXPECT_EQ(be32(20), 240u);
+}
+
+TEST(RenderCli, NothingToWriteIsBadInput) {
+    const std::string scad = writeModel("cli_nothing");
+    EXPECT_EQ(runTsf({"render", scad}).exit_code, cli::kExitBadInput);
+    EXPECT_EQ(runTsf({"render", scad, "-o", "model.obj"}).exit_code, cli::kExitBadInput);
+}
+
+}  // namespace
+}  // namespace tsf

@@ -1,0 +1,190 @@
+// Shared helpers for the OpenSCAD tests: small fields, scratch files, the
+// real openscad binary, and an independent reference for a Scene's solid.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gen/hex_field.h"
+#include "gen/mesh.h"
+#include "gen/mesh_io/mesh_reader.h"
+#include "gen/scad/openscad_runner.h"
+#include "gen/scene.h"
+
+namespace tsf::test {
+
+inline constexpr double kNaN = NAN;
+
+/// Rows listed north to south, as in a file.
+inline HexField fieldFromRows(const std::vector<std::vector<double>>& rows) {
+    HexField f;
+    f.grid.rows = int32_t(rows.size());
+    f.grid.cols = rows.empty() ? 0 : int32_t(rows[0].size());
+    for (const auto& r : rows) f.values.insert(f.values.end(), r.begin(), r.end());
+    f.source = "test";
+    return f;
+}
+
+inline HexField fieldFromFunction(int cols, int rows, const std::function<double(int, int)>& value) {
+    HexField f;
+    f.grid = {cols, rows};
+    f.values.resize(size_t(cols) * size_t(rows));
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) f.values[size_t(r) * size_t(cols) + size_t(c)] = value(c, r);
+    f.source = "test";
+    return f;
+}
+
+/// A bumpy field with a few holes (NaN) and an empty rim on two sides, so
+/// that hull culling drops cells and keeps some no-data cells inside.
+inline HexField bumpyField(int cols, int rows) {
+    return fieldFromFunction(cols, rows, [=](int c, int r) {
+        if (c == 0 && r < rows / 2) return 0.0;           // empty corner: culled
+        if ((c * 7 + r * 3) % 11 == 5) return kNaN;       // no data, inside the hull
+        return 0.5 + 9.5 * std::fabs(std::sin(0.9 * c + 0.4 * r * r)) + (c + r) % 3;
+    });
+}
+
+inline SceneParams smallParams(Bottom bottom = Bottom::Flat) {
+    SceneParams p;
+    p.pitch_mm = 5.0;
+    p.max_height_mm = 10.0;
+    p.base_mm = 2.0;
+    p.bottom = bottom;
+    return p;
+}
+
+/// A fresh folder under the test scratch area.
+inline std::string scratchDir(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::path(TSF_TEST_SCRATCH) / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+inline std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+inline void writeText(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    ASSERT_TRUE(bool(out)) << path;
+}
+
+/// The real openscad binary (tests fail, not skip, when it is missing: the
+/// project's setup installs it).
+inline const ScadEngine& openscad() {
+    static const std::unique_ptr<ScadEngine> engine = makeOpenScadEngine();
+    return *engine;
+}
+
+/// Renders scad_path to a binary STL next to it and returns the result.
+inline ScadRenderResult renderStl(const std::string& scad_path, const std::string& stl_path,
+                                  const std::vector<ScadDefine>& defines = {}, const std::string& param_file = "",
+                                  const std::string& param_set = "") {
+    ScadRenderRequest rq;
+    rq.scad_path = scad_path;
+    rq.output_path = stl_path;
+    rq.format = ScadExportFormat::Stl;
+    rq.defines = defines;
+    rq.parameter_file = param_file;
+    rq.parameter_set = param_set;
+    rq.timeout_s = 120;
+    return renderScad(openscad(), rq);
+}
+
+/// Every ERROR / TRACE line of a result, for failure messages.
+inline std::string errorText(const ScadRenderResult& r) {
+    std::string out = r.summary;
+    for (const ScadMessage& m : r.errors()) out += "\n  " + formatScadMessage(m);
+    return out;
+}
+
+/// Volume of the union of a Scene's pillars from the Scene alone: each kept
+/// cell's snapped footprint (shoelace) times its z extent. Shares no code
+/// with the direct mesher or the OpenSCAD library.
+inline double sceneVolume(const Scene& s) {
+    auto snap = [](double v) { return std::round(v / 0.001) * 0.001; };
+    double volume = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        double area2 = 0;
+        for (int e = 0; e < 6; ++e) {
+            const LatticePoint a = hexCorner(s.grid, s.col[k], s.row[k], e);
+            const LatticePoint b = hexCorner(s.grid, s.col[k], s.row[k], (e + 1) % 6);
+            const double ax = snap(double(a.i) * s.pitch_mm / 2), ay = snap(double(a.j) * s.pitch_mm / (2 * std::sqrt(3.0)));
+            const double bx = snap(double(b.i) * s.pitch_mm / 2), by = snap(double(b.j) * s.pitch_mm / (2 * std::sqrt(3.0)));
+            area2 += ax * by - bx * ay;
+        }
+        volume += area2 / 2 * double(s.top[k] - s.bottom[k]) * s.z_snap_mm;
+    }
+    return volume;
+}
+
+/// The `values` rows of a generated file: [line index, entries] per grid row.
+struct ValuesBlock {
+    std::vector<size_t> line_index;               ///< index into the file's lines
+    std::vector<std::vector<std::string>> cells;  ///< trimmed entry texts
+};
+
+inline std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+inline std::string joinLines(const std::vector<std::string>& lines) {
+    std::string out;
+    for (const std::string& l : lines) out += l + "\n";
+    return out;
+}
+
+inline std::string trim(const std::string& s) {
+    const size_t a = s.find_first_not_of(' ');
+    const size_t b = s.find_last_not_of(' ');
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+/// Finds `values = [` and reads one "[a, b, ...]" row per line until "];".
+inline ValuesBlock readValuesBlock(const std::vector<std::string>& lines) {
+    ValuesBlock block;
+    size_t i = 0;
+    while (i < lines.size() && lines[i].rfind("values = [", 0) != 0) ++i;
+    for (++i; i < lines.size() && lines[i] != "];"; ++i) {
+        const size_t open = lines[i].find('['), close = lines[i].find(']');
+        if (open == std::string::npos || close == std::string::npos) break;
+        std::vector<std::string> row;
+        std::stringstream entries(lines[i].substr(open + 1, close - open - 1));
+        for (std::string e; std::getline(entries, e, ',');) row.push_back(trim(e));
+        block.line_index.push_back(i);
+        block.cells.push_back(row);
+    }
+    return block;
+}
+
+/// The generated text with entry (col, row) of `values` replaced by `text`.
+inline std::string withValue(const std::string& scad, int32_t col, int32_t row, const std::string& text) {
+    std::vector<std::string> lines = splitLines(scad);
+    const ValuesBlock block = readValuesBlock(lines);
+    std::string& line = lines[block.line_index.at(size_t(row))];
+    std::vector<std::string> cells = block.cells.at(size_t(row));
+    cells.at(size_t(col)) = text;
+    std::string joined;
+    for (size_t c = 0; c < cells.size(); ++c) joined += (c ? ", " : "") + cells[c];
+    line = line.substr(0, line.find('[') + 1) + joined + line.substr(line.find(']'));
+    return joinLines(lines);
+}
+
+}  // namespace tsf::test
