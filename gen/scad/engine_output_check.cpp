@@ -111,6 +111,7 @@ EngineOutputCheck checkEngineMesh(const Mesh& mesh, const EngineOutputExpectatio
             << " mm^3 (more than the coordinates' rounding, " << c.volume_tolerance_mm3 << " mm^3, apart)";
     }
     c.problem = why.str();
+    if (c.problem.empty() && expect.solid_check) c.problem = expect.solid_check(mesh);
     c.ok = c.problem.empty();
     return c;
 }

@@ -13,13 +13,15 @@
 //   [pieces]       one connected piece (triangles linked through shared vertices);
 //   [volume]       positive signed volume (outward normals), and, when the
 //                  expected volume is known, equal to it within the rounding
-//                  of the file's coordinates (see kStlCoordinateRoundoff).
+//                  of the file's coordinates (see kStlCoordinateRoundoff);
+//   [solid_check]  the caller's own check, if any (EngineOutputExpectation).
 // renderScadChecked puts the rule "a bad mesh is an engine failure" in one
 // place: the output file appears only when the engine succeeded and its mesh
 // passes.
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -38,6 +40,11 @@ struct EngineOutputExpectation {
     /// mesher's volume of the same Scene; unknown for an edited file or one
     /// rendered with -D / -p overrides.
     std::optional<double> volume_mm3;
+    /// A further check of the mesh, run last and only when every check above
+    /// passed: e.g. the verifier's self-intersection test (verify/solid_checks.h),
+    /// which this library cannot call itself. Returns "" for a good mesh, else
+    /// one line saying what is wrong. Empty function = none.
+    std::function<std::string(const Mesh&)> solid_check;
 };
 
 struct EngineOutputCheck {

