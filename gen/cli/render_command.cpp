@@ -5,7 +5,9 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -17,6 +19,7 @@
 #include "gen/mesh.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/scad/openscad_runner.h"
+#include "gen/scad/scad_variables.h"
 #include "verify/mesh_topology.h"
 
 namespace tsf::cli {
@@ -162,6 +165,31 @@ private:
     std::string path_;
 };
 
+// A -D for a variable the file does not assign would be added silently and
+// change nothing; refuse it (only warn when the file includes others, whose
+// variables we do not read).
+void checkDefineNames(const std::string& scad_path, const std::vector<ScadDefine>& defines) {
+    if (defines.empty()) return;
+    std::ifstream in(scad_path, std::ios::binary);
+    if (!in) return;  // renderScad reports an unreadable file
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<std::string> names = scadTopLevelVariables(text);
+    const bool includes = scadHasInclude(text);
+    for (const ScadDefine& d : defines) {
+        if (std::find(names.begin(), names.end(), d.name) != names.end()) continue;
+        std::string known;
+        for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+        const std::string what = "-D " + d.name + ": the file assigns no variable named '" + d.name +
+                                 "'; its variables are: " + (known.empty() ? "none" : known);
+        if (includes) {
+            std::fprintf(stderr, "tsf: warning: %s: %s (it may come from an included file)\n", scad_path.c_str(),
+                         what.c_str());
+            continue;
+        }
+        throw InputError(scad_path, 0, 0, what);
+    }
+}
+
 void runRender(const RenderOptions& o) {
     if (o.output.empty() && o.png.empty())
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.amf and/or --png PREVIEW.png");
@@ -176,6 +204,8 @@ void runRender(const RenderOptions& o) {
     base.png.width_px = o.imgsize[0];
     base.png.height_px = o.imgsize[1];
     base.png.camera = o.camera;
+
+    checkDefineNames(o.scad, base.defines);
 
     ScadExportFormat format = ScadExportFormat::Stl;
     if (!o.output.empty() && !scadFormatForPath(o.output, format))
@@ -236,7 +266,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->footer(
         "Examples:\n"
         "  tsf render model.scad -o model.stl\n"
-        "  tsf render model.scad -o model.stl -D max_height_mm=25 -D transfer=sqrt --png model.png\n"
+        "  tsf render model.scad -o model.stl -D height=25 -D transfer=sqrt --png model.png\n"
         "  tsf render model.scad -o model.3mf -p model.json -P \"mirrored bottom\"\n"
         "STL is always binary (OpenSCAD's ASCII STL keeps only 6 significant digits). The exported\n"
         "mesh is read back and checked: a mesh that is not a closed, outward solid fails (exit 1).\n"
@@ -247,8 +277,8 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("-o,--output", o->output, "Output: .stl (binary), .3mf, .off, .amf or .png");
     cmd->add_option("--png", o->png, "Also write a preview picture of the result (.png)");
     cmd->add_option("-D", o->defines,
-                    "Override a parameter: NAME=VALUE, e.g. -D max_height_mm=25 (repeatable; a bare word is a "
-                    "string: -D transfer=log)");
+                    "Override a parameter: NAME=VALUE, e.g. -D height=25 (repeatable; a bare word is a "
+                    "string: -D transfer=log; NAME must be a variable the file assigns)");
     cmd->add_option("-p,--params", o->params, "OpenSCAD parameter-set file (.json, e.g. written by tsf gen --scad)");
     cmd->add_option("-P,--param-set", o->param_set, "Name of the parameter set to apply from --params");
     cmd->add_option("--openscad", o->openscad, "Path of the openscad program (default: openscad in PATH)");

@@ -205,7 +205,7 @@ ScadDefine parseScadDefine(const std::string& text) {
     trim(d.name);
     trim(d.value);
     if (eq == std::string::npos || !isIdentifier(d.name) || d.value.empty())
-        throw InputError("-D expects NAME=VALUE with an OpenSCAD variable name and a value, e.g. -D max_height_mm=25 "
+        throw InputError("-D expects NAME=VALUE with an OpenSCAD variable name and a value, e.g. -D height=25 "
                          "or -D 'transfer=\"log\"' (got '" + text + "')");
     if (isIdentifier(d.value) && d.value != "true" && d.value != "false" && d.value != "undef")
         d.value = "\"" + d.value + "\"";

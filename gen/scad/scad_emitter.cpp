@@ -92,7 +92,7 @@ void emitHeader(std::string& o, const Scene& s, const ScadOptions& opts, const s
          "// The same through tsf (progress, timing, clear errors, a PNG preview):\n"
          "//   tsf render " + name + " -o " + stem + ".stl --png " + stem + ".png\n"
          "// Change a parameter for one render, or use a saved parameter set (" + stem + ".json):\n"
-         "//   tsf render " + name + " -o " + stem + ".stl -D max_height_mm=25\n"
+         "//   tsf render " + name + " -o " + stem + ".stl -D height=25\n"
          "//   openscad -p " + stem + ".json -P \"mirrored bottom\" -o " + stem + ".stl --export-format binstl " + name + "\n"
          "// Export binary STL (binstl) or 3MF: OpenSCAD's ASCII STL keeps only 6 significant digits.\n"
          "//\n"
@@ -104,34 +104,34 @@ void emitParameters(std::string& o, const Scene& s) {
     const Parameters p = parametersOf(s);
     o += "/* [Model size] */\n"
          "// Distance between neighbouring hexagon centres = width across flats (mm)\n"
-         "cell_mm = " + number(p.cell_mm) + ";  " +
+         "cell = " + number(p.cell_mm) + ";  " +
          range(p.cell_mm < 1 ? 0.05 : 1, sliderStep(p.cell_mm, {0.5, 0.1, 0.01, 0.001}),
                std::max(50.0, std::ceil(2 * p.cell_mm))) + "\n\n";
 
     o += "/* [Heights] */\n"
          "// Height of the pillar for value_max above the floor (mm)\n"
-         "max_height_mm = " + number(p.max_height_mm) + ";  " +
+         "height = " + number(p.max_height_mm) + ";  " +
          range(0, sliderStep(p.max_height_mm, {0.5, 0.1, 0.01, 0.001}), std::max(100.0, std::ceil(2 * p.max_height_mm))) +
          "\n"
          "// How a value becomes a height: linear, sqrt (counts, areas) or log (two decades)\n"
          "transfer = \"" + p.transfer + "\";  // [linear, sqrt, log]\n"
          "// Value at the floor, height 0 (data units); smaller values sit at the floor\n"
          "baseline = " + number(p.baseline) + ";\n"
-         "// Value at max_height_mm (data units); larger values are capped\n"
+         "// Value at full height (data units); larger values are capped\n"
          "value_max = " + number(p.value_max) + ";\n"
          "// Height grid (mm): every height is rounded to a multiple of it; your layer height gives crisp steps\n"
-         "z_step_mm = " + number(p.z_step_mm) + ";  " +
+         "snap = " + number(p.z_step_mm) + ";  " +
          range(std::min(0.001, p.z_step_mm), sliderStep(p.z_step_mm, {0.001, 0.0001, 0.00001, 0.000001}), 1) + "\n\n";
 
     o += "/* [Base] */\n"
-         "// Flat bottom: thickness under the floor. Mirrored bottom: thinnest point of the slab (mm, >= z_step_mm)\n"
-         "base_mm = " + number(p.base_mm) + ";  " +
+         "// Flat bottom: thickness under the floor. Mirrored bottom: thinnest point of the slab (mm, >= snap)\n"
+         "base = " + number(p.base_mm) + ";  " +
          range(std::min(0.1, p.base_mm), sliderStep(p.base_mm, {0.1, 0.01, 0.001, 0.0001, 0.00001, 0.000001}),
                std::max(20.0, std::ceil(2 * p.base_mm))) + "\n\n";
 
     o += "/* [Mirror] */\n"
          "// The underside shows the data negated; every pillar has the same thickness\n"
-         "mirrored_bottom = " + std::string(p.mirrored ? "true" : "false") + ";\n\n";
+         "mirror = " + std::string(p.mirrored ? "true" : "false") + ";\n\n";
 }
 
 void emitValues(std::string& o, const Scene& s) {
@@ -175,9 +175,9 @@ void emitValues(std::string& o, const Scene& s) {
 void emitCall(std::string& o, const ScadOptions& opts) {
     o += "// ----------------------------------------------------------------- Model ---\n";
     if (!opts.inline_library) o += std::string("use <") + kScadLibraryCopyDir + "/" + kScadLibraryEntry + ">\n";
-    o += "model = tsf_model(values, cell_mm = cell_mm, max_height_mm = max_height_mm, base_mm = base_mm,\n"
+    o += "model = tsf_model(values, cell_mm = cell, max_height_mm = height, base_mm = base,\n"
          "                  transfer = transfer, baseline = baseline, value_max = value_max,\n"
-         "                  z_step_mm = z_step_mm, mirrored = mirrored_bottom);\n";
+         "                  z_step_mm = snap, mirrored = mirror);\n";
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
@@ -215,7 +215,7 @@ bool parseScadStrategy(const std::string& text, ScadOptions::Strategy& strategy)
 }
 
 std::vector<std::string> scadParameterNames() {
-    return {"cell_mm", "max_height_mm", "transfer", "baseline", "value_max", "z_step_mm", "base_mm", "mirrored_bottom"};
+    return {"cell", "height", "transfer", "baseline", "value_max", "snap", "base", "mirror"};
 }
 
 std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::string& file_name) {
@@ -232,28 +232,28 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
 std::string emitScadParameterSets(const Scene& scene) {
     const Parameters p = parametersOf(scene);
     nlohmann::ordered_json all;
-    all["cell_mm"] = number(p.cell_mm);
-    all["max_height_mm"] = number(p.max_height_mm);
+    all["cell"] = number(p.cell_mm);
+    all["height"] = number(p.max_height_mm);
     all["transfer"] = p.transfer;
     all["baseline"] = number(p.baseline);
     all["value_max"] = number(p.value_max);
-    all["z_step_mm"] = number(p.z_step_mm);
-    all["base_mm"] = number(p.base_mm);
-    all["mirrored_bottom"] = p.mirrored ? "true" : "false";
+    all["snap"] = number(p.z_step_mm);
+    all["base"] = number(p.base_mm);
+    all["mirror"] = p.mirrored ? "true" : "false";
 
-    // A coarse height grid must stay below the base (base_mm >= z_step_mm).
+    // A coarse height grid must stay below the base (base >= snap).
     constexpr double kLayerMm = 0.2;  // a common FDM layer height
     nlohmann::ordered_json layers;
-    layers["z_step_mm"] = number(kLayerMm);
-    if (p.base_mm < kLayerMm) layers["base_mm"] = number(kLayerMm);
+    layers["snap"] = number(kLayerMm);
+    if (p.base_mm < kLayerMm) layers["base"] = number(kLayerMm);
 
     nlohmann::ordered_json flip;
-    flip["mirrored_bottom"] = p.mirrored ? "false" : "true";
+    flip["mirror"] = p.mirrored ? "false" : "true";
 
     nlohmann::ordered_json half;
-    half["cell_mm"] = number(p.cell_mm / 2);
-    half["max_height_mm"] = number(p.max_height_mm / 2);
-    half["base_mm"] = number(std::max(p.base_mm / 2, p.z_step_mm));
+    half["cell"] = number(p.cell_mm / 2);
+    half["height"] = number(p.max_height_mm / 2);
+    half["base"] = number(std::max(p.base_mm / 2, p.z_step_mm));
 
     nlohmann::ordered_json sets;
     sets["as generated"] = all;

@@ -66,7 +66,9 @@ void writeScad(const Scene& scene, const ScadOptions& opts, const std::string& p
 /// The paths writeScad(scene, opts, path) writes, the .scad first.
 std::vector<std::string> scadOutputPaths(const ScadOptions& opts, const std::string& path);
 
-/// Names of the parameters in the customizer, in file order.
+/// Names of the parameters in the customizer, in file order. They are the
+/// names of tsf gen's options (cell, height, transfer, baseline, value_max,
+/// snap, base, mirror), so `tsf gen --height 25` and `-D height=25` mean the same.
 std::vector<std::string> scadParameterNames();
 
 /// "polyhedron" / "csg" (also the CLI spellings).

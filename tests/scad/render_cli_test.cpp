@@ -53,7 +53,7 @@ TEST(RenderCli, OverridesAndParameterSetsReachOpenScad) {
     const std::string scad = writeModel("cli_params");
     const std::string dir = fs::path(scad).parent_path().string();
     ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/a.stl", "-q"}).exit_code, 0);
-    ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/b.stl", "-q", "-D", "max_height_mm=20"}).exit_code, 0);
+    ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/b.stl", "-q", "-D", "height=20"}).exit_code, 0);
     ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/c.stl", "-q", "-p", dir + "/model.json", "-P", "half size"}).exit_code, 0);
     const double a = signedVolume(readMesh(dir + "/a.stl"));
     const double b = signedVolume(readMesh(dir + "/b.stl"));
@@ -65,12 +65,15 @@ TEST(RenderCli, OverridesAndParameterSetsReachOpenScad) {
 TEST(RenderCli, AMalformedParameterIsBadInputWithTheAssertMessage) {
     const std::string scad = writeModel("cli_bad");
     const std::string stl = fs::path(scad).replace_extension(".stl").string();
-    const CliRun r = runTsf({"render", scad, "-o", stl, "-D", "cell_mm=-2"});
+    const CliRun r = runTsf({"render", scad, "-o", stl, "-D", "cell=-2"});
     EXPECT_EQ(r.exit_code, cli::kExitBadInput) << r.output;
     EXPECT_TRUE(contains(r.output, "tsf_model: cell_mm must be a number > 0 (mm), got -2")) << r.output;
     EXPECT_FALSE(fs::exists(stl));
     const CliRun bad_define = runTsf({"render", scad, "-o", stl, "-D", "max_height_mm"});
     EXPECT_EQ(bad_define.exit_code, cli::kExitBadInput) << bad_define.output;
+    const CliRun typo = runTsf({"render", scad, "-o", stl, "-D", "heigth=25"});
+    EXPECT_EQ(typo.exit_code, cli::kExitBadInput) << typo.output;
+    EXPECT_TRUE(contains(typo.output, "assigns no variable named 'heigth'; its variables are: cell, height,")) << typo.output;
     const CliRun bad_set = runTsf({"render", scad, "-o", stl, "-p", fs::path(scad).replace_extension(".json").string(),
                              "-P", "tiny"});
     EXPECT_EQ(bad_set.exit_code, cli::kExitBadInput) << bad_set.output;

@@ -77,14 +77,14 @@ TEST(ScadEmitter, ParametersAreInCustomizerSectionsWithRangesHoldingTheirValues)
         names.push_back(n);
     }
     EXPECT_EQ(value_of.size(), names.size());
-    EXPECT_EQ(std::stod(value_of["cell_mm"]), scene.pitch_mm);
-    EXPECT_EQ(std::stod(value_of["max_height_mm"]), scene.mapping.max_height_mm);
+    EXPECT_EQ(std::stod(value_of["cell"]), scene.pitch_mm);
+    EXPECT_EQ(std::stod(value_of["height"]), scene.mapping.max_height_mm);
     EXPECT_EQ(std::stod(value_of["value_max"]), scene.mapping.value_max);
     EXPECT_EQ(std::stod(value_of["baseline"]), scene.mapping.baseline);
-    EXPECT_EQ(std::stod(value_of["z_step_mm"]), scene.z_snap_mm);
-    EXPECT_EQ(std::stod(value_of["base_mm"]), scene.params.base_mm);
+    EXPECT_EQ(std::stod(value_of["snap"]), scene.z_snap_mm);
+    EXPECT_EQ(std::stod(value_of["base"]), scene.params.base_mm);
     EXPECT_EQ(value_of["transfer"], "\"linear\"");
-    EXPECT_EQ(value_of["mirrored_bottom"], "false");
+    EXPECT_EQ(value_of["mirror"], "false");
 }
 
 // One grid row per line; culled cells undef, kept cells without data nodata,
@@ -175,11 +175,11 @@ TEST(ScadEmitter, ParameterSetsAreOpenScadJsonWithStringValues) {
     for (const auto& [name, set] : sets.items())
         for (const auto& [param, value] : set.items()) EXPECT_TRUE(value.is_string()) << name << " " << param;
     for (const std::string& n : scadParameterNames()) EXPECT_TRUE(sets["as generated"].contains(n)) << n;
-    EXPECT_EQ(std::stod(sets["half size"]["cell_mm"].get<std::string>()), scene.pitch_mm / 2);
+    EXPECT_EQ(std::stod(sets["half size"]["cell"].get<std::string>()), scene.pitch_mm / 2);
     // A mirrored model offers the way back instead.
     const nlohmann::json mirrored = nlohmann::json::parse(emitScadParameterSets(bumpyScene(Bottom::Mirrored)));
     EXPECT_TRUE(mirrored["parameterSets"].contains("flat bottom"));
-    EXPECT_EQ(mirrored["parameterSets"]["flat bottom"]["mirrored_bottom"], "false");
+    EXPECT_EQ(mirrored["parameterSets"]["flat bottom"]["mirror"], "false");
 }
 
 TEST(ScadEmitter, WritesTheFileAndItsParameterSetsAtomically) {

@@ -240,7 +240,7 @@ TEST(ScadRender, ParameterOverridesAndSetsChangeTheModel) {
     const Rendered base = generateAndRender(scene, Strategy::Polyhedron, "params");
 
     const std::string taller = base.stl_path + ".taller.stl";
-    ScadRenderResult r = renderStl(base.scad_path, taller, {parseScadDefine("max_height_mm=15"), parseScadDefine("transfer=sqrt")});
+    ScadRenderResult r = renderStl(base.scad_path, taller, {parseScadDefine("height=15"), parseScadDefine("transfer=sqrt")});
     ASSERT_TRUE(r.ok()) << errorText(r);
     SceneParams p = smallParams();
     p.max_height_mm = 15;
@@ -273,13 +273,13 @@ TEST(ScadRender, MalformedParametersGiveAssertMessages) {
         std::string expect;       ///< part of the assert message
     };
     const std::vector<Bad> cases = {
-        {{parseScadDefine("cell_mm=-1")}, "", "cell_mm must be a number > 0"},
-        {{parseScadDefine("cell_mm=\"wide\"")}, "", "cell_mm must be a number > 0"},
+        {{parseScadDefine("cell=-1")}, "", "cell_mm must be a number > 0"},
+        {{parseScadDefine("cell=\"wide\"")}, "", "cell_mm must be a number > 0"},
         {{parseScadDefine("transfer=cubic")}, "", "transfer must be \"linear\", \"sqrt\" or \"log\""},
-        {{parseScadDefine("z_step_mm=0")}, "", "z_step_mm must be a number between"},
-        {{parseScadDefine("base_mm=0.0001"), parseScadDefine("z_step_mm=0.2")}, "", "base_mm must be a number >= z_step_mm"},
-        {{parseScadDefine("max_height_mm=-3")}, "", "max_height_mm must be a number >= 0"},
-        {{parseScadDefine("mirrored_bottom=1")}, "", "mirrored must be true or false"},
+        {{parseScadDefine("snap=0")}, "", "z_step_mm must be a number between"},
+        {{parseScadDefine("base=0.0001"), parseScadDefine("snap=0.2")}, "", "base_mm must be a number >= z_step_mm"},
+        {{parseScadDefine("height=-3")}, "", "max_height_mm must be a number >= 0"},
+        {{parseScadDefine("mirror=1")}, "", "mirrored must be true or false"},
         {{parseScadDefine("value_max=undef")}, "", "value_max must be a finite number"},
         {{}, withValue(text, 2, 1, "\"abc\""), "values[1][2] (row 1, column 2) must be a finite number"},
         {{}, withValue(text, 4, 3, "1/0"), "values[3][4] (row 3, column 4) must be a finite number"},
