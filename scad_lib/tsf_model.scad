@@ -113,6 +113,8 @@ function tsf_cell_corners(col, row, rows, cell_mm) =
 //   echo(tsf_flat_spans([[3, undef], [0, 5]], 2));
 //   // ECHO: [[[0, 5], undef], [[0, 2], [0, 7]]]
 function tsf_flat_spans(heights, base_units) =
+    assert(_tsf_is_height_grid(heights),
+           "tsf_flat_spans: heights must be a list of rows, each a list of whole numbers >= 0 or undef")
     assert(_tsf_is_count(base_units) && base_units >= 1,
            str("tsf_flat_spans: base_units must be a whole number >= 1, got ", base_units))
     [for (row = heights) [for (h = row) is_undef(h) ? undef : [0, base_units + h]]];
@@ -134,6 +136,8 @@ function tsf_flat_spans(heights, base_units) =
 //   echo(tsf_mirrored_spans([[3, undef], [0, 5]], 2));
 //   // ECHO: [[[3, 10], undef], [[0, 7], [5, 12]]]
 function tsf_mirrored_spans(heights, base_units) =
+    assert(_tsf_is_height_grid(heights),
+           "tsf_mirrored_spans: heights must be a list of rows, each a list of whole numbers >= 0 or undef")
     assert(_tsf_is_count(base_units) && base_units >= 1,
            str("tsf_mirrored_spans: base_units must be a whole number >= 1, got ", base_units))
     let(t = _tsf_max_step(heights) + base_units)
@@ -297,6 +301,9 @@ function _tsf_max_step(heights) =
                          let(h = heights[r][c]) if (!is_undef(h)) for (k = [0:2])
                              let(n = _tsf_neighbour(c, r, k), hn = _tsf_at(heights, n[0], n[1]))
                              if (!is_undef(hn)) abs(h - hn)]));
+
+function _tsf_is_height_grid(h) =
+    is_list(h) && len([for (row = h) if (!is_list(row) || len([for (v = row) if (!is_undef(v) && !_tsf_is_count(v)) 1]) > 0) 1]) == 0;
 
 function _tsf_check_model(m, who) =
     assert(is_list(m) && len(m) == 8 && m[0] == "tsf_model", str(who, ": expected a model made by tsf_model()"))

@@ -169,15 +169,18 @@ TEST(ScadRender, PolyhedronAgreesForEveryTransferBaselineAndSnap) {
 }
 
 // Change one number in the generated file: exactly that cell moves, to the
-// height the new value asks for.
-TEST(ScadRender, EditingOneValueChangesExactlyThatCell) {
+// height the new value asks for, with either strategy.
+class EditOneValue : public ::testing::TestWithParam<Strategy> {};
+
+TEST_P(EditOneValue, ChangesExactlyThatCell) {
+    const Strategy strategy = GetParam();
     HexField field = bumpyField(9, 8);
     const SceneParams params = smallParams();
     const Scene scene = buildScene(field, params);
     const int32_t col = 5, row = 3;
     ASSERT_GE(scene.keptAt(col, row), 0);
     ASSERT_FALSE(std::isnan(field.at(col, row)));
-    const Rendered before = generateAndRender(scene, Strategy::Polyhedron, "edit_value");
+    const Rendered before = generateAndRender(scene, strategy, std::string("edit_value_") + toString(strategy));
 
     const bool lower = field.at(col, row) > 5;
     const double new_value = lower ? 1.25 : 9.75;
@@ -207,6 +210,9 @@ TEST(ScadRender, EditingOneValueChangesExactlyThatCell) {
     ASSERT_EQ(edited_scene.keptCount(), scene.keptCount());
     expectSameSolidAsDirectMesh(after, edited_scene);
 }
+
+INSTANTIATE_TEST_SUITE_P(BothStrategies, EditOneValue, ::testing::Values(Strategy::Polyhedron, Strategy::Csg),
+                         [](const auto& info) { return std::string(toString(info.param)); });
 
 // Writing a number over undef adds a pillar there; the library does not re-run the hull.
 TEST(ScadRender, WritingANumberOverUndefAddsAPillar) {
