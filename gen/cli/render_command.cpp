@@ -16,11 +16,10 @@
 
 #include "gen/cli/commands.h"
 #include "gen/error.h"
-#include "gen/mesh.h"
-#include "gen/mesh_io/mesh_reader.h"
+#include "gen/scad/engine_output_check.h"
+#include "gen/scad/engine_select.h"
 #include "gen/scad/openscad_runner.h"
 #include "gen/scad/scad_variables.h"
-#include "verify/mesh_topology.h"
 
 namespace tsf::cli {
 namespace {
@@ -35,7 +34,7 @@ struct RenderOptions {
     std::string params;
     std::string param_set;
     std::string openscad;
-    std::string engine = "openscad";
+    std::string engine = "auto";
     double timeout_s = 3600;
     std::vector<int> imgsize{1024, 768};
     std::string camera = kDefaultPngCamera;
@@ -77,10 +76,12 @@ int failureExitCode(const ScadRenderResult& r) {
     return kExitToolFailed;
 }
 
-// source_name: what to call the input in messages (the model, or the mesh a
-// preview is drawn from).
+// One render. source_name: what to call the input in messages (the model, or
+// the mesh a preview is drawn from). check (may be null): read the output
+// back and refuse a mesh that is not a solid (renderScadChecked). Prints the
+// failure and returns the result; the caller decides what a failure means.
 ScadRenderResult renderOnce(const ScadEngine& engine, const ScadRenderRequest& rq, const RenderOptions& o,
-                            const std::string& source_name) {
+                            const std::string& source_name, EngineOutputCheck* check) {
     const std::string what = fs::path(rq.output_path).filename().string();
     if (!o.quiet)
         std::fprintf(stderr, "tsf: rendering %s -> %s with %s\n", source_name.c_str(), what.c_str(),
@@ -93,36 +94,23 @@ ScadRenderResult renderOnce(const ScadEngine& engine, const ScadRenderRequest& r
                          last.empty() ? "" : " - openscad: ", last.c_str());
         };
     }
-    const ScadRenderResult r = renderScad(engine, rq, progress);
+    const ScadRenderResult r =
+        check ? renderScadChecked(engine, rq, progress, {}, check) : renderScad(engine, rq, progress);
     if (!r.ok()) {
         std::fprintf(stderr, "tsf: error: %s: %s\n", source_name.c_str(), r.summary.c_str());
         printMessages(r, o.verbose);
-        throw CLI::RuntimeError(failureExitCode(r));
+    } else if (o.verbose) {
+        printMessages(r, true);
+    } else if (!o.quiet) {
+        printMessages(r, false);
     }
-    if (o.verbose) printMessages(r, true);
-    else if (!o.quiet) printMessages(r, false);
     return r;
 }
 
-// Reads the exported mesh back and says whether it is a closed, oriented
-// solid. Returns false when it is not.
-bool checkExport(const std::string& path, bool quiet) {
-    MeshReadReport report;
-    const Mesh mesh = readMesh(path, &report);
-    const MeshTopology topo = analyzeTopology(mesh);
-    const double volume = signedVolume(mesh);
-    if (topo.isClosedOrientedManifold() && volume > 0) {
-        if (!quiet)
-            std::fprintf(stderr, "tsf: %s: %zu triangles, closed, manifold, outward; volume %.6g mm^3\n",
-                         path.c_str(), mesh.triangleCount(), volume);
-        return true;
-    }
-    std::fprintf(stderr,
-                 "tsf: error: %s is not a closed solid: %zu open edges, %zu non-manifold edges, %zu flipped edges, "
-                 "signed volume %.6g mm^3. Do not print it; run 'tsf verify %s' for details.\n",
-                 path.c_str(), topo.border_edges.size(), topo.nonmanifold_edges.size(), topo.misoriented_edges.size(),
-                 volume, path.c_str());
-    return false;
+// A failure another engine might not have: the engine crashed, failed
+// without saying why in an assert or a syntax error, or wrote a broken mesh.
+bool worthAnotherEngine(const ScadRenderResult& r) {
+    return r.status == ScadRenderResult::Status::Failed && failureExitCode(r) == kExitToolFailed;
 }
 
 // An OpenSCAD string literal for a path.
@@ -165,14 +153,17 @@ private:
     std::string path_;
 };
 
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 // A -D for a variable the file does not assign would be added silently and
 // change nothing; refuse it (only warn when the file includes others, whose
 // variables we do not read).
 void checkDefineNames(const std::string& scad_path, const std::vector<ScadDefine>& defines) {
     if (defines.empty()) return;
-    std::ifstream in(scad_path, std::ios::binary);
-    if (!in) return;  // renderScad reports an unreadable file
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text = readText(scad_path);  // unreadable: renderScad reports it
     const std::vector<std::string> names = scadTopLevelVariables(text);
     const bool includes = scadHasInclude(text);
     for (const ScadDefine& d : defines) {
@@ -216,28 +207,65 @@ void runRender(const RenderOptions& o) {
             throw InputError(o.png, 0, 0, "--png needs a file name ending in .png");
     }
 
-    std::unique_ptr<ScadEngine> engine;
-    try {
-        engine = makeOpenScadEngine(o.openscad);
-    } catch (const ScadEngineMissing& e) {
-        std::fprintf(stderr, "tsf: error: %s\n", e.what());
-        throw CLI::RuntimeError(kExitToolFailed);
-    }
-
-    bool solid_ok = true;
     if (!o.output.empty()) {
+        EngineChoice choice = EngineChoice::Auto;
+        parseEngineChoice(o.engine, choice);
+        const ScadFileFacts facts = scadFileFacts(readText(o.scad));
+        std::string why;
+        std::unique_ptr<ScadEngine> engine;
+        try {
+            engine = selectEngine(choice, facts.strategy, o.openscad, &why, facts.cells);
+        } catch (const ScadEngineMissing& e) {
+            std::fprintf(stderr, "tsf: error: %s\n", e.what());
+            throw CLI::RuntimeError(kExitToolFailed);
+        }
+        if (!o.quiet && choice == EngineChoice::Auto) std::fprintf(stderr, "tsf: engine %s\n", why.c_str());
+        if (!engine->supports(format)) {
+            // The WebAssembly engine cannot write 3MF or PNG; the desktop one can.
+            std::unique_ptr<ScadEngine> other =
+                choice == EngineChoice::Auto ? otherEngine(*engine, o.openscad, &why) : nullptr;
+            if (!other || !other->supports(format))
+                throw InputError(o.output, 0, 0, engine->name() + " cannot export " + toString(format) + " files");
+            engine = std::move(other);
+        }
         ScadRenderRequest rq = base;
         rq.output_path = o.output;
         rq.format = format;
-        const ScadRenderResult r = renderOnce(*engine, rq, o, o.scad);
-        if (!o.quiet)
+        EngineOutputCheck check;
+        EngineOutputCheck* checking = o.no_check ? nullptr : &check;
+        ScadRenderResult r = renderOnce(*engine, rq, o, o.scad, checking);
+        if (!r.ok() && worthAnotherEngine(r) && choice == EngineChoice::Auto) {
+            if (std::unique_ptr<ScadEngine> other = otherEngine(*engine, o.openscad, &why);
+                other && other->supports(format)) {
+                if (!o.quiet) std::fprintf(stderr, "tsf: trying the other engine: %s\n", why.c_str());
+                engine = std::move(other);
+                r = renderOnce(*engine, rq, o, o.scad, checking);
+            }
+        }
+        if (!r.ok()) {
+            if (!o.no_check && check.checked && !check.ok)
+                std::fprintf(stderr, "tsf: nothing was written to %s; render with --no-check to keep the mesh for "
+                                     "'tsf verify'\n", o.output.c_str());
+            throw CLI::RuntimeError(failureExitCode(r));
+        }
+        if (!o.quiet) {
             std::fprintf(stderr, "tsf: wrote %s (%s) in %s, peak memory %s\n", o.output.c_str(),
                          format == ScadExportFormat::Stl ? "binary STL" : toString(format), seconds(r.elapsed_s).c_str(),
                          megabytes(r.peak_memory_kb).c_str());
-        if (!o.no_check && format != ScadExportFormat::Png && format != ScadExportFormat::Amf)
-            solid_ok = checkExport(o.output, o.quiet);
+            if (check.checked)
+                std::fprintf(stderr, "tsf: %s: %zu triangles, closed, manifold, outward, one piece; volume %.6g mm^3\n",
+                             o.output.c_str(), check.triangles, check.volume_mm3);
+        }
     }
     if (!o.png.empty()) {
+        // Pictures need OpenGL: only the desktop OpenSCAD draws them.
+        std::unique_ptr<ScadEngine> engine;
+        try {
+            engine = makeOpenScadEngine(o.openscad);
+        } catch (const ScadEngineMissing& e) {
+            std::fprintf(stderr, "tsf: error: %s\n", e.what());
+            throw CLI::RuntimeError(kExitToolFailed);
+        }
         ScadRenderRequest rq = base;
         rq.output_path = o.png;
         rq.format = ScadExportFormat::Png;
@@ -252,10 +280,10 @@ void runRender(const RenderOptions& o) {
             rq.parameter_set.clear();
             source_name = "a picture of " + o.output;
         }
-        const ScadRenderResult r = renderOnce(*engine, rq, o, source_name);
+        const ScadRenderResult r = renderOnce(*engine, rq, o, source_name, nullptr);
+        if (!r.ok()) throw CLI::RuntimeError(failureExitCode(r));
         if (!o.quiet) std::fprintf(stderr, "tsf: wrote %s in %s\n", o.png.c_str(), seconds(r.elapsed_s).c_str());
     }
-    if (!solid_ok) throw CLI::RuntimeError(kExitCheckFailed);
 }
 
 }  // namespace
@@ -269,10 +297,10 @@ void addRenderCommand(CLI::App& app) {
         "  tsf render model.scad -o model.stl -D height=25 -D transfer=sqrt --png model.png\n"
         "  tsf render model.scad -o model.3mf -p model.json -P \"mirrored bottom\"\n"
         "STL is always binary (OpenSCAD's ASCII STL keeps only 6 significant digits). The exported\n"
-        "mesh is read back and checked: a mesh that is not a closed, outward solid fails (exit 1).\n"
+        "mesh is read back and checked: a mesh that is not a closed, outward solid is not written.\n"
         "A PNG preview needs an X display; without one tsf runs OpenSCAD under xvfb-run.\n"
-        "Exit codes: 0 ok, 1 the exported mesh is not a closed solid, 2 bad input (a parameter\n"
-        "the model's asserts reject, a bad -D), 3 OpenSCAD missing, failed or timed out, 130 interrupted.");
+        "Exit codes: 0 ok, 2 bad input (a parameter the model's asserts reject, a bad -D),\n"
+        "3 OpenSCAD missing, failed, timed out or wrote a broken mesh, 130 interrupted.");
     cmd->add_option("model", o->scad, "OpenSCAD file to render")->required();
     cmd->add_option("-o,--output", o->output, "Output: .stl (binary), .3mf, .off, .amf or .png");
     cmd->add_option("--png", o->png, "Also write a preview picture of the result (.png)");
@@ -282,7 +310,11 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("-p,--params", o->params, "OpenSCAD parameter-set file (.json, e.g. written by tsf gen --scad)");
     cmd->add_option("-P,--param-set", o->param_set, "Name of the parameter set to apply from --params");
     cmd->add_option("--openscad", o->openscad, "Path of the openscad program (default: openscad in PATH)");
-    cmd->add_option("--engine", o->engine, "Rendering engine")->check(CLI::IsMember({"openscad"}))->capture_default_str();
+    cmd->add_option("--engine", o->engine,
+                    "auto: the fastest installed engine for the model (see docs/engines.md) | openscad: the desktop "
+                    "OpenSCAD | wasm: OpenSCAD 2025 (Manifold) under Node.js; PNG previews always use the desktop one")
+        ->check(CLI::IsMember({"auto", "openscad", "wasm"}))
+        ->capture_default_str();
     cmd->add_option("--timeout", o->timeout_s, "Stop OpenSCAD after this many seconds (0 = no limit)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
@@ -290,7 +322,8 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--camera", o->camera,
                     "PNG camera as OpenSCAD --camera: translate x,y,z, rotate x,y,z (degrees), distance")
         ->capture_default_str();
-    cmd->add_flag("--no-check", o->no_check, "Do not read the exported mesh back to check it is a closed solid");
+    cmd->add_flag("--no-check", o->no_check,
+                  "Do not read the exported mesh back to check it is a closed solid (keeps a broken mesh for tsf verify)");
     cmd->add_flag("-q,--quiet", o->quiet, "Print only errors");
     cmd->add_flag("-v,--verbose", o->verbose, "Print everything OpenSCAD prints");
     cmd->callback([o] { runRender(*o); });

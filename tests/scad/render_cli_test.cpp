@@ -82,7 +82,8 @@ TEST(RenderCli, AMalformedParameterIsBadInputWithTheAssertMessage) {
 
 TEST(RenderCli, MissingOpenScadIsAToolFailureWithAnInstallHint) {
     const std::string scad = writeModel("cli_missing");
-    const CliRun r = runTsf({"render", scad, "-o", "x.stl", "--openscad", "/nonexistent/openscad"});
+    const std::string stl = fs::path(scad).replace_extension(".stl").string();
+    const CliRun r = runTsf({"render", scad, "-o", stl, "--engine", "openscad", "--openscad", "/nonexistent/openscad"});
     EXPECT_EQ(r.exit_code, cli::kExitToolFailed) << r.output;
     EXPECT_TRUE(contains(r.output, "apt install openscad")) << r.output;
 }
@@ -102,6 +103,20 @@ TEST(RenderCli, WritesAPngPreviewOfTheExportedModel) {
     };
     EXPECT_EQ(be32(16), 320u);
     EXPECT_EQ(be32(20), 240u);
+}
+
+// OpenSCAD calls this fine ("may not be a valid 2-manifold" is only a
+// warning); tsf reads the STL back and refuses it.
+TEST(RenderCli, ABrokenMeshIsNotWritten) {
+    const std::string dir = scratchDir("cli_broken");
+    writeText(dir + "/edge.scad", "cube(1);\ntranslate([1, 1, 0]) cube(1);\n");  // two cubes sharing one edge
+    const CliRun r = runTsf({"render", dir + "/edge.scad", "-o", dir + "/edge.stl", "--engine", "openscad"});
+    EXPECT_EQ(r.exit_code, cli::kExitToolFailed) << r.output;
+    EXPECT_TRUE(contains(r.output, "broken mesh")) << r.output;
+    EXPECT_FALSE(fs::exists(dir + "/edge.stl"));
+    const CliRun kept = runTsf({"render", dir + "/edge.scad", "-o", dir + "/edge.stl", "--engine", "openscad", "--no-check"});
+    EXPECT_EQ(kept.exit_code, cli::kExitOk) << kept.output;
+    EXPECT_TRUE(fs::exists(dir + "/edge.stl"));
 }
 
 TEST(RenderCli, NothingToWriteIsBadInput) {
