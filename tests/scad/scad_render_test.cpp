@@ -132,6 +132,19 @@ INSTANTIATE_TEST_SUITE_P(StrategyAndBottom, Agreement,
                                            Case{"csg_mirrored", Strategy::Csg, Bottom::Mirrored}),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// The library copied beside the file (use <tsf_lib/tsf.scad>) renders the same solid.
+TEST(ScadRender, LibraryBesideRendersTheSameSolid) {
+    const Scene scene = buildScene(bumpyField(9, 8), smallParams(Bottom::Mirrored));
+    const std::string dir = scratchDir("beside");
+    ScadOptions o;
+    o.inline_library = false;
+    writeScad(scene, o, dir + "/model.scad");
+    const ScadRenderResult r = renderStl(dir + "/model.scad", dir + "/model.stl");
+    ASSERT_TRUE(r.ok()) << errorText(r);
+    EXPECT_TRUE(r.warnings().empty());
+    expectSameSolidAsDirectMesh(readMesh(dir + "/model.stl"), scene);
+}
+
 // The other value -> height rules, negative data, a coarse z step, a fitted
 // (irrational-looking) pitch and no culling, on a larger polyhedron model.
 TEST(ScadRender, PolyhedronAgreesForEveryTransferBaselineAndSnap) {
