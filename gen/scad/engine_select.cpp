@@ -14,8 +14,8 @@ namespace {
 constexpr double kHelpTimeoutS = 30.0;
 
 // Unions of more cells than this take minutes on every engine (docs/engines.md:
-// 1 600 cells took 10 s with Manifold and 146 s with CGAL; 10 000 took minutes
-// with Manifold).
+// 1 600 cells took 7 s with Manifold and 100 s with CGAL; 10 000 cells 104 s
+// with Manifold, more than 15 minutes with CGAL).
 constexpr size_t kCsgMinutesCells = 1600;
 
 // A cell count in a header longer than this is not one tsf wrote.
@@ -61,8 +61,8 @@ std::unique_ptr<ScadEngine> tryWasm(std::string& missing) {
 std::string slowCsgNote(const std::string& strategy, size_t cells) {
     if (strategy == "polyhedron" || cells <= kCsgMinutesCells) return "";
     return ". Note: the csg strategy with " + std::to_string(cells) +
-           " cells takes minutes (10 000 cells: minutes with Manifold, hours with CGAL); the polyhedron strategy "
-           "renders the same solid in seconds";
+           " cells takes minutes (10 000 cells: 2 minutes with Manifold, more than 15 with CGAL); the polyhedron "
+           "strategy renders the same solid in seconds";
 }
 
 std::string backendNote(bool manifold) {
@@ -156,7 +156,7 @@ std::unique_ptr<ScadEngine> selectEngine(EngineChoice choice, const std::string&
     if (n.engine && (polyhedron || n.manifold)) {
         say("openscad: " + describe(*n.engine) + ", " + backendNote(n.manifold) + "; " +
             (polyhedron ? "a single polyhedron needs no boolean work, and the desktop binary renders it fastest "
-                          "(5-9x faster than the WebAssembly engine)"
+                          "(6-11x faster than the WebAssembly engine)"
                         : "its Manifold backend does the unions of " + what + " fastest"));
         return std::move(n.engine);
     }
@@ -166,7 +166,7 @@ std::unique_ptr<ScadEngine> selectEngine(EngineChoice choice, const std::string&
         if (polyhedron)
             reason = "the desktop openscad is not available (" + n.missing + ")";
         else
-            reason = what + " needs boolean unions, which Manifold does 3-14x faster than the CGAL backend of " +
+            reason = what + " needs boolean unions, which Manifold does 2-15x faster than the CGAL backend of " +
                      (n.engine ? n.engine->version() : std::string("the desktop openscad")) +
                      " (its output is checked: Manifold can leave a self-touching corner)";
         say("wasm: " + describe(*wasm) + "; " + reason);

@@ -8,12 +8,15 @@
 //             from the measurements in docs/engines.md:
 //               polyhedron (one polyhedron(), no boolean work): the desktop
 //                 binary first (it starts in 0.1 s; the WebAssembly engine
-//                 needs about 1 s to start and is 2-4x slower at every size);
+//                 needs about 1 s to start and was 6-11x slower at every size);
 //               csg and anything else (unions of prisms, a hand-edited file):
 //                 a Manifold-capable engine first - the desktop binary when it
 //                 accepts --backend=manifold, else the WebAssembly engine
-//                 (40x faster than CGAL at 1 600 cells) - then CGAL;
+//                 (2-15x faster than CGAL; 10 000 cells in 104 s, where CGAL
+//                 did not finish in 15 minutes) - then CGAL;
 //             and falls back to the other engine when the first is missing.
+//             Manifold's csg output can fail the self-intersection check
+//             (docs/engines.md); otherEngine() gives the engine to retry with.
 // The choice and the reason are returned as one line for people.
 #pragma once
 
