@@ -1,80 +1,193 @@
-// compareMeshes: CGAL bounded-error Hausdorff distance and volumes. See agreement.h.
-//
-// CGAL 5.5's bounded_error_Hausdorff_distance asserts that every subdivided
-// triangle found a face realising its lower bound, which does not hold when
-// that bound ties the parent triangle's upper bound (common between
-// axis-aligned faces); the distance it returns is right, the debug assertion
-// is not (later CGAL versions initialise the bound differently). Assertions
-// are off in this file only, and its meshes use a kernel (Simple_cartesian)
-// no other file of the verifier instantiates, so no checked template is
-// shared with it.
-#define CGAL_NO_ASSERTIONS
-
+// compareMeshes: exact surface comparison, then sampled distances where it
+// could not prove 0, then volumes. See agreement.h.
 #include "verify/agreement.h"
 
-#include <array>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iterator>
-#include <vector>
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Surface_mesh.h>
-
+#include "verify/closest_point_tree.h"
 #include "verify/detail/format.h"
+#include "verify/surface_chains.h"
+#include "verify/triangle_samples.h"
 
 namespace tsf {
 namespace {
 
-using K = CGAL::Simple_cartesian<double>;
-using SM = CGAL::Surface_mesh<K::Point_3>;
-namespace PMP = CGAL::Polygon_mesh_processing;
 using detail::fmtNum;
 using detail::fmtPoint;
+
+// Samples per unit area for radius r, to first order: rows sqrt(3)/2 r apart,
+// points r apart along them (triangle_samples.h): 2 / (sqrt(3) r^2).
+constexpr double kSamplesPerAreaTimesR2 = 1.1547005383792515;
+// How far the radius search overshoots the budget's estimate on each step;
+// the count is close to its estimate, so a few steps suffice.
+constexpr double kRadiusGrowth = 1.05;
+constexpr int kMaxRadiusSteps = 60;
 
 double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Surface_mesh of the mesh's usable triangles; `repaired` tells whether
-// orient_polygon_soup had to change the soup first.
-SM toSurfaceMesh(const Mesh& mesh, bool& repaired) {
-    std::vector<K::Point_3> points;
-    points.reserve(mesh.positions.size());
-    for (const Vec3& p : mesh.positions) points.emplace_back(p.x, p.y, p.z);
-    std::vector<std::array<size_t, 3>> polygons;
-    polygons.reserve(mesh.triangles.size());
-    const size_t n = mesh.positions.size();
-    for (const auto& t : mesh.triangles) {
-        if (t[0] >= n || t[1] >= n || t[2] >= n || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
-        polygons.push_back({t[0], t[1], t[2]});
-    }
-    repaired = !PMP::is_polygon_soup_a_polygon_mesh(polygons);
-    if (repaired) PMP::orient_polygon_soup(points, polygons);
-    SM sm;
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
-    return sm;
-}
-
-Vec3 faceCentroid(const SM& sm, SM::Face_index f) {
-    Vec3 c;
-    int n = 0;
-    for (SM::Vertex_index v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
-        const K::Point_3& p = sm.point(v);
-        c = {c.x + p.x(), c.y + p.y(), c.z + p.z()};
-        ++n;
-    }
-    return n ? Vec3{c.x / n, c.y / n, c.z / n} : c;
+bool usable(const Mesh& m, const std::array<uint32_t, 3>& t) {
+    const size_t n = m.positions.size();
+    return t[0] < n && t[1] < n && t[2] < n && t[0] != t[1] && t[1] != t[2] && t[0] != t[2];
 }
 
 bool finiteMesh(const Mesh& m) {
     for (const Vec3& p : m.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
     return true;
+}
+
+size_t usableCount(const Mesh& m) {
+    size_t n = 0;
+    for (const auto& t : m.triangles) n += usable(m, t);
+    return n;
+}
+
+double triangleArea(const Mesh& m, const std::array<uint32_t, 3>& t) {
+    const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+    const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    return 0.5 * std::hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
+}
+
+// One direction of the distance: from the triangles of `from` (those flagged)
+// to the surface in `to_tree`.
+struct Direction {
+    const Mesh* from = nullptr;
+    std::vector<uint8_t>* flags = nullptr;  // triangles to sample
+    double max_mm = 0;                      // largest sampled distance
+    double area_mm2 = 0;                    // flagged area
+    struct Place {
+        double distance_mm;
+        Vec3 at_mm;
+    };
+    std::vector<Place> places;  // per sampled triangle: its farthest sample
+    bool premise_broken = false;
+    double premise_off_mm = 0;
+    Vec3 premise_at_mm;
+};
+
+// Measures every vertex of the unflagged triangles of `d.from`: each must lie
+// on the other surface (the exact comparison says so). One that does not
+// breaks the comparison's premise (overlapping triangles), and then every
+// triangle is flagged for sampling.
+void checkPremise(Direction& d, const ClosestPointTree& to, double allowance_mm) {
+    const Mesh& m = *d.from;
+    std::vector<uint8_t> seen(m.positions.size(), 0);
+    int64_t hint = -1;
+    for (size_t t = 0; t < m.triangles.size(); ++t) {
+        if ((*d.flags)[t] || !usable(m, m.triangles[t])) continue;
+        for (uint32_t v : m.triangles[t]) {
+            if (seen[v]) continue;
+            seen[v] = 1;
+            const ClosestPoint c = to.closest(m.positions[v], hint, allowance_mm);
+            hint = c.triangle;
+            if (c.distance_mm > allowance_mm && c.distance_mm > d.premise_off_mm) {
+                d.premise_broken = true;
+                d.premise_off_mm = c.distance_mm;
+                d.premise_at_mm = m.positions[v];
+            }
+        }
+    }
+    if (d.premise_broken)
+        for (size_t t = 0; t < m.triangles.size(); ++t) (*d.flags)[t] = usable(m, m.triangles[t]);
+}
+
+// The vertices of the flagged triangles, each once.
+std::vector<uint32_t> flaggedVertices(const Direction& d) {
+    const Mesh& m = *d.from;
+    std::vector<uint8_t> seen(m.positions.size(), 0);
+    std::vector<uint32_t> out;
+    for (size_t t = 0; t < m.triangles.size(); ++t) {
+        if (!(*d.flags)[t]) continue;
+        for (uint32_t v : m.triangles[t])
+            if (!seen[v]) {
+                seen[v] = 1;
+                out.push_back(v);
+            }
+    }
+    return out;
+}
+
+// Samples at radius r: every vertex of a flagged triangle once, and each
+// flagged triangle's samples without its corners.
+size_t sampleCount(const Direction& d, size_t vertices, double r) {
+    const Mesh& m = *d.from;
+    size_t n = vertices;
+    for (size_t t = 0; t < m.triangles.size(); ++t) {
+        if (!(*d.flags)[t]) continue;
+        const auto& tri = m.triangles[t];
+        n += triangleSampleCount(m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]], r, Corners::Omit);
+    }
+    return n;
+}
+
+// Longest edge of the flagged triangles: at a radius this long every triangle
+// is covered by its corners alone (triangle_samples.h).
+double longestFlaggedEdge(const Direction& d) {
+    const Mesh& m = *d.from;
+    double longest = 0;
+    for (size_t t = 0; t < m.triangles.size(); ++t) {
+        if (!(*d.flags)[t]) continue;
+        const auto& tri = m.triangles[t];
+        for (int e = 0; e < 3; ++e) {
+            const Vec3 &p = m.positions[tri[size_t(e)]], &q = m.positions[tri[size_t((e + 1) % 3)]];
+            longest = std::max(longest, std::hypot(q.x - p.x, q.y - p.y, q.z - p.z));
+        }
+    }
+    return longest;
+}
+
+// The smallest radius (not below `finest`) whose samples fit in `budget`, or
+// the radius that samples the vertices only when even that does not fit.
+double chooseRadius(const Direction& a, size_t a_vertices, const Direction& b, size_t b_vertices, double finest,
+                    size_t budget) {
+    const double area = a.area_mm2 + b.area_mm2;
+    double r = std::max(finest, std::sqrt(kSamplesPerAreaTimesR2 * area / double(std::max<size_t>(budget, 1))));
+    const double coarsest = std::max({longestFlaggedEdge(a), longestFlaggedEdge(b), finest});
+    for (int step = 0; step < kMaxRadiusSteps && r < coarsest; ++step) {
+        const size_t n = sampleCount(a, a_vertices, r) + sampleCount(b, b_vertices, r);
+        if (n <= budget) return r;
+        r *= std::max(kRadiusGrowth, std::sqrt(double(n) / double(budget)));
+    }
+    return std::min(r, coarsest);
+}
+
+// Measures the samples of `d` against `to`. A search stops early at the
+// first triangle nearer than the largest distance so far, or than the
+// tolerance (below which no place is listed): such a sample cannot change
+// the figures, and the places above the tolerance stay exact.
+void sampleDirection(Direction& d, const std::vector<uint32_t>& vertices, const ClosestPointTree& to, double r,
+                     double tolerance_mm, size_t& samples) {
+    const Mesh& m = *d.from;
+    std::vector<double> vertex_mm(m.positions.size(), 0.0);
+    int64_t hint = -1;
+    auto measure = [&](const Vec3& p) {
+        const ClosestPoint c = to.closest(p, hint, std::min(d.max_mm, tolerance_mm));
+        hint = c.triangle;
+        d.max_mm = std::max(d.max_mm, c.distance_mm);
+        ++samples;
+        return c.distance_mm;
+    };
+    for (uint32_t v : vertices) vertex_mm[v] = measure(m.positions[v]);
+    std::vector<Vec3> points;
+    for (size_t t = 0; t < m.triangles.size(); ++t) {
+        if (!(*d.flags)[t]) continue;
+        const auto& tri = m.triangles[t];
+        Direction::Place worst{-1, {}};
+        for (uint32_t v : tri)
+            if (vertex_mm[v] > worst.distance_mm) worst = {vertex_mm[v], m.positions[v]};
+        points.clear();
+        sampleTriangle(m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]], r, points, Corners::Omit);
+        for (const Vec3& p : points) {
+            const double dist_mm = measure(p);
+            if (dist_mm > worst.distance_mm) worst = {dist_mm, p};
+        }
+        d.places.push_back(worst);
+    }
 }
 
 }  // namespace
@@ -86,12 +199,11 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
     f.reference = reference_name;
     f.reference_triangles = reference.triangleCount();
     f.distance_tolerance_mm = options.distance_tolerance_mm;
-    f.hausdorff_error_bound_mm = options.error_bound_mm > 0 ? options.error_bound_mm
-                                                           : options.distance_tolerance_mm * kHausdorffBoundFraction;
+    f.sample_budget = options.sample_budget;
     f.volume_mm3 = signedVolume(model);
     f.reference_volume_mm3 = signedVolume(reference);
     f.volume_difference_mm3 = f.volume_mm3 - f.reference_volume_mm3;
-    f.hausdorff_to_reference_mm = f.hausdorff_from_reference_mm = NAN;
+    f.hausdorff_to_reference_mm = f.hausdorff_from_reference_mm = f.hausdorff_error_bound_mm = NAN;
 
     Check dist;
     dist.id = "reference_distance";
@@ -102,66 +214,141 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
     vol.title = "same volume as the reference";
     vol.unit = "mm^3";
 
-    auto t0 = std::chrono::steady_clock::now();
-    SM a, b;
-    bool a_repaired = false, b_repaired = false;
-    const bool usable = finiteMesh(model) && finiteMesh(reference);
-    if (usable) {
-        a = toSurfaceMesh(model, a_repaired);
-        b = toSurfaceMesh(reference, b_repaired);
-    }
-    if (!usable || a.number_of_faces() == 0 || b.number_of_faces() == 0) {
+    const bool finite = finiteMesh(model) && finiteMesh(reference);
+    if (!finite || usableCount(model) == 0 || usableCount(reference) == 0) {
         dist.status = vol.status = CheckStatus::Fail;
         dist.count = vol.count = 1;
-        dist.note = vol.note = usable ? "one of the meshes has no triangles" : "non-finite coordinates";
+        dist.note = vol.note = finite ? "one of the meshes has no triangles" : "non-finite coordinates";
         r.checks = {dist, vol};
         return r;
     }
 
-    // Area of the model, for the volume tolerance.
+    // 1. Exact comparison.
+    auto t0 = std::chrono::steady_clock::now();
+    ChainComparison chains = compareSurfaceChains(model, reference, options.max_offenders);
+    f.surfaces_compared = chains.compared;
+    f.planes = chains.planes;
+    f.differing_planes = chains.differing_planes;
+    f.opposite_planes = chains.opposite_planes;
+    const Stage exact{"reference_exact", msSince(t0)};
+    r.stages.push_back(exact);
 
-    const double area = CGAL::to_double(PMP::area(a));
-    f.volume_tolerance_mm3 = area * options.distance_tolerance_mm;
-    const Stage build{"reference_mesh", msSince(t0)};
-    r.stages.push_back(build);
-
+    // 2. Distances where the exact comparison could not prove 0.
     t0 = std::chrono::steady_clock::now();
-    std::vector<std::pair<SM::Face_index, SM::Face_index>> realizing_ab, realizing_ba;
-    f.hausdorff_to_reference_mm = PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(
-        a, b, f.hausdorff_error_bound_mm,
-        CGAL::parameters::output_iterator(std::back_inserter(realizing_ab)));
-    f.hausdorff_from_reference_mm = PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(
-        b, a, f.hausdorff_error_bound_mm,
-        CGAL::parameters::output_iterator(std::back_inserter(realizing_ba)));
-    const Stage haus{"hausdorff", msSince(t0)};
-    r.stages.push_back(haus);
+    const ClosestPointTree model_tree(model), reference_tree(reference);
+    Direction to, from;
+    to.from = &model;
+    to.flags = &chains.model_differs;
+    from.from = &reference;
+    from.flags = &chains.reference_differs;
+    const double finest = options.error_bound_mm > 0 ? options.error_bound_mm
+                                                     : options.distance_tolerance_mm * kHausdorffBoundFraction;
+    // A vertex lying exactly on the other surface measures a little off it:
+    // the closest point is rounded, by up to ~1e-10 mm next to the long
+    // slivers of a fan-triangulated face. The finest sampling radius is far
+    // above that and is as close as the sampling ever tells points apart.
+    checkPremise(to, reference_tree, finest);
+    checkPremise(from, model_tree, finest);
+    for (Direction* d : {&to, &from})
+        for (size_t t = 0; t < d->from->triangles.size(); ++t)
+            if ((*d->flags)[t]) d->area_mm2 += triangleArea(*d->from, d->from->triangles[t]);
+    f.differing_area_mm2 = to.area_mm2;
+    f.reference_differing_area_mm2 = from.area_mm2;
 
-    dist.stage = haus.name;
-    dist.time_ms = haus.time_ms;
-    const double bound = f.hausdorff_error_bound_mm;
-    const bool to_ok = f.hausdorff_to_reference_mm + bound <= f.distance_tolerance_mm;
-    const bool from_ok = f.hausdorff_from_reference_mm + bound <= f.distance_tolerance_mm;
-    dist.count = int64_t(!to_ok) + int64_t(!from_ok);
-    dist.status = dist.count ? CheckStatus::Fail : CheckStatus::Pass;
-    if (!to_ok && !realizing_ab.empty())
-        dist.worst.push_back({faceCentroid(a, realizing_ab.front().first), f.hausdorff_to_reference_mm,
-                              "this model is " + fmtNum(f.hausdorff_to_reference_mm) +
-                                  " mm from the reference near its triangle centred at " +
-                                  fmtPoint(faceCentroid(a, realizing_ab.front().first))});
-    if (!from_ok && !realizing_ba.empty())
-        dist.worst.push_back({faceCentroid(b, realizing_ba.front().first), f.hausdorff_from_reference_mm,
-                              "the reference is " + fmtNum(f.hausdorff_from_reference_mm) +
-                                  " mm from this model near its triangle centred at " +
-                                  fmtPoint(faceCentroid(b, realizing_ba.front().first))});
-    dist.note = "to reference " + fmtNum(f.hausdorff_to_reference_mm) + " mm, from reference " +
-                fmtNum(f.hausdorff_from_reference_mm) + " mm (+-" + fmtNum(bound) + "), tolerance " +
-                fmtNum(f.distance_tolerance_mm) + " mm";
-    if (a_repaired || b_repaired)
-        dist.note += std::string("; ") + (a_repaired ? "this model" : "the reference") +
-                     (a_repaired && b_repaired ? " and the reference" : "") + " re-oriented on a copy first";
+    const bool any_flagged = std::count(to.flags->begin(), to.flags->end(), 1) +
+                                 std::count(from.flags->begin(), from.flags->end(), 1) >
+                             0;
+    f.surfaces_identical = chains.identical() && !to.premise_broken && !from.premise_broken;
+    const std::vector<uint32_t> to_vertices = flaggedVertices(to), from_vertices = flaggedVertices(from);
+    const double radius =
+        any_flagged ? chooseRadius(to, to_vertices.size(), from, from_vertices.size(), finest, options.sample_budget)
+                    : 0.0;
+    if (any_flagged) {
+        sampleDirection(to, to_vertices, reference_tree, radius, options.distance_tolerance_mm, f.samples);
+        sampleDirection(from, from_vertices, model_tree, radius, options.distance_tolerance_mm, f.samples);
+    }
+    f.hausdorff_to_reference_mm = to.max_mm;
+    f.hausdorff_from_reference_mm = from.max_mm;
+    f.hausdorff_error_bound_mm = radius;
+    const Stage distances{"reference_distances", msSince(t0)};
+    r.stages.push_back(distances);
 
-    vol.stage = build.name;
-    vol.time_ms = build.time_ms;
+    // Verdict on the distance.
+    const double tol = options.distance_tolerance_mm;
+    const bool to_proven = to.max_mm + radius <= tol, from_proven = from.max_mm + radius <= tol;
+    const bool to_over = to.max_mm > tol, from_over = from.max_mm > tol;
+    dist.stage = distances.name;
+    dist.time_ms = exact.time_ms + distances.time_ms;
+    if (to_proven && from_proven) {
+        dist.status = CheckStatus::Pass;
+    } else if (to_over || from_over) {
+        dist.status = CheckStatus::Fail;
+        dist.count = int64_t(to_over) + int64_t(from_over);
+        // The farthest places, each direction's in turn, worst first.
+        std::vector<std::pair<Direction::Place, bool>> worst;  // (place, from the model)
+        for (const Direction::Place& p : to.places)
+            if (p.distance_mm > tol) worst.push_back({p, true});
+        for (const Direction::Place& p : from.places)
+            if (p.distance_mm > tol) worst.push_back({p, false});
+        std::sort(worst.begin(), worst.end(),
+                  [](const auto& x, const auto& y) { return x.first.distance_mm > y.first.distance_mm; });
+        for (const auto& [p, model_side] : worst) {
+            if (dist.worst.size() >= options.max_offenders) break;
+            // Neighbouring triangles share their farthest corner: list a
+            // place once (places closer than two sampling radii are one).
+            const bool listed = std::any_of(dist.worst.begin(), dist.worst.end(), [&](const Offender& o) {
+                return std::hypot(o.at_mm.x - p.at_mm.x, o.at_mm.y - p.at_mm.y, o.at_mm.z - p.at_mm.z) <= 2 * radius;
+            });
+            if (listed) continue;
+            dist.worst.push_back({p.at_mm, p.distance_mm,
+                                  model_side ? "this model is " + fmtNum(p.distance_mm) + " mm from the reference here"
+                                             : "the reference is " + fmtNum(p.distance_mm) +
+                                                   " mm from this model here"});
+        }
+    } else {
+        dist.status = CheckStatus::Warn;
+        dist.count = int64_t(!to_proven) + int64_t(!from_proven);
+        for (const Vec3& p : chains.difference_points)
+            dist.worst.push_back({p, NAN, "the two surfaces differ here (exact comparison)"});
+    }
+
+    const std::string opposite =
+        chains.opposite_planes ? " (facing the other way in " + std::to_string(chains.opposite_planes) + " of them)"
+                               : "";
+    if (chains.samePointSet() && !to.premise_broken && !from.premise_broken && !any_flagged) {
+        dist.note = "identical surfaces: proven by exact comparison of " + std::to_string(chains.planes) + " planes" +
+                    opposite + ", distance 0, tolerance " + fmtNum(tol) + " mm";
+    } else {
+        std::string what = !chains.compared ? "no exact comparison (" + chains.note + "); "
+                           : chains.differing_planes
+                               ? "the surfaces differ in " + std::to_string(chains.differing_planes) + " of " +
+                                     std::to_string(chains.planes) + " planes" + opposite + "; "
+                               : "";
+        dist.note = what + "to reference " + fmtNum(to.max_mm) + " mm, from reference " + fmtNum(from.max_mm) +
+                    " mm (sampled " + fmtNum(to.area_mm2) + " + " + fmtNum(from.area_mm2) + " mm^2 at radius " +
+                    fmtNum(radius) + " mm: true distance at most " + fmtNum(radius) + " mm more, " +
+                    std::to_string(f.samples) + " samples), tolerance " + fmtNum(tol) + " mm";
+        if (dist.status == CheckStatus::Warn)
+            dist.note += "; not proven within the tolerance: the sampling budget (" +
+                         std::to_string(options.sample_budget) + ") allows radius " + fmtNum(radius) + " mm only";
+    }
+    for (const Direction* d : {&to, &from})
+        if (d->premise_broken)
+            dist.note += std::string("; ") + (d == &to ? "this model" : "the reference") +
+                         " has a vertex " + fmtNum(d->premise_off_mm) + " mm off the other surface at " +
+                         fmtPoint(d->premise_at_mm) +
+                         " although its plane matches (overlapping triangles?): sampled everywhere";
+
+    // 3. Volumes.
+    const double area = [&] {
+        double a = 0;
+        for (const auto& t : model.triangles)
+            if (usable(model, t)) a += triangleArea(model, t);
+        return a;
+    }();
+    f.volume_tolerance_mm3 = area * options.distance_tolerance_mm;
+    vol.stage = exact.name;
+    vol.time_ms = exact.time_ms;
     vol.count = std::fabs(f.volume_difference_mm3) <= f.volume_tolerance_mm3 ? 0 : 1;
     vol.status = vol.count ? CheckStatus::Fail : CheckStatus::Pass;
     vol.note = "volume " + fmtNum(f.volume_mm3) + " vs " + fmtNum(f.reference_volume_mm3) + " mm^3 (difference " +

@@ -99,8 +99,16 @@ std::string formatReport(const VerifyReport& r) {
     }
     if (r.agreement) {
         const AgreementFigures& a = *r.agreement;
-        o << "\nagreement with " << a.reference << ": Hausdorff " << fmtNum(a.hausdorff_to_reference_mm) << " mm (to) / "
-          << fmtNum(a.hausdorff_from_reference_mm) << " mm (from), tolerance " << fmtNum(a.distance_tolerance_mm)
+        o << "\nagreement with " << a.reference << ": "
+          << (!a.surfaces_compared   ? std::string("surfaces not compared exactly")
+              : a.surfaces_identical ? "surfaces identical (exact, " + std::to_string(a.planes) + " planes)"
+              : a.differing_planes   ? "surfaces differ in " + std::to_string(a.differing_planes) + " of " +
+                                         std::to_string(a.planes) + " planes"
+                                     : "same surface, facing the other way in " + std::to_string(a.opposite_planes) +
+                                         " of " + std::to_string(a.planes) + " planes")
+          << "; Hausdorff " << fmtNum(a.hausdorff_to_reference_mm) << " mm (to) / "
+          << fmtNum(a.hausdorff_from_reference_mm) << " mm (from), +" << fmtNum(a.hausdorff_error_bound_mm)
+          << " mm at most, " << a.samples << " samples; tolerance " << fmtNum(a.distance_tolerance_mm)
           << " mm; volume " << fmtNum(a.volume_mm3) << " vs " << fmtNum(a.reference_volume_mm3) << " mm^3\n";
     }
     if (r.printability) {
@@ -210,6 +218,15 @@ nlohmann::json toJson(const VerifyReport& r) {
             {"hausdorff_from_reference_mm", num(a.hausdorff_from_reference_mm)},
             {"hausdorff_error_bound_mm", num(a.hausdorff_error_bound_mm)},
             {"distance_tolerance_mm", num(a.distance_tolerance_mm)},
+            {"surfaces_compared", a.surfaces_compared},
+            {"surfaces_identical", a.surfaces_identical},
+            {"planes", a.planes},
+            {"differing_planes", a.differing_planes},
+            {"opposite_planes", a.opposite_planes},
+            {"differing_area_mm2", num(a.differing_area_mm2)},
+            {"reference_differing_area_mm2", num(a.reference_differing_area_mm2)},
+            {"samples", a.samples},
+            {"sample_budget", a.sample_budget},
         };
     }
     if (r.printability) {

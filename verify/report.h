@@ -107,10 +107,24 @@ struct AgreementFigures {
     double reference_volume_mm3 = 0;
     double volume_difference_mm3 = 0;  ///< this - reference
     double volume_tolerance_mm3 = 0;   ///< area * distance tolerance (a shell of that thickness)
-    double hausdorff_to_reference_mm = 0;    ///< max over this mesh of the distance to the reference
-    double hausdorff_from_reference_mm = 0;  ///< max over the reference of the distance to this mesh
-    double hausdorff_error_bound_mm = 0;     ///< each Hausdorff figure is within this of the true value
+    /// Largest distance found from this mesh to the reference: sampled on the
+    /// triangles not proven to lie on the reference, 0 when all are. A lower
+    /// bound of the true Hausdorff distance.
+    double hausdorff_to_reference_mm = 0;
+    double hausdorff_from_reference_mm = 0;  ///< the same from the reference to this mesh
+    /// Sampling radius: each true Hausdorff distance lies in [figure, figure +
+    /// this]. 0 when the exact comparison left nothing to sample.
+    double hausdorff_error_bound_mm = 0;
     double distance_tolerance_mm = 0;
+    bool surfaces_compared = false;    ///< the exact surface comparison ran (coordinates on one integer grid)
+    bool surfaces_identical = false;   ///< ... and proved the two surfaces the same
+    size_t planes = 0;                 ///< distinct planes holding triangles of either mesh
+    size_t differing_planes = 0;       ///< planes where the two surfaces differ
+    size_t opposite_planes = 0;        ///< planes where they coincide but face opposite ways (inside out)
+    double differing_area_mm2 = 0;            ///< this model's area in differing planes (sampled)
+    double reference_differing_area_mm2 = 0;  ///< the reference's area in differing planes (sampled)
+    size_t samples = 0;                ///< distance samples taken on those areas, both directions
+    size_t sample_budget = 0;          ///< the budget the sampling radius was chosen for
 };
 
 struct PrintabilityFigures {

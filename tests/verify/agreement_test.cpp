@@ -1,9 +1,17 @@
 // Agreement with a reference mesh: the same solid passes however it is
-// triangulated; a shift or a changed pillar fails, with the distance measured.
+// triangulated, proven exactly and without sampling; a raised or missing
+// pillar, a shifted copy and an inside-out copy fail, with the distance (or
+// volume) measured against values known from how the difference was planted.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <map>
+#include <utility>
 
+#include <nlohmann/json.hpp>
+
+#include "gen/hex_grid.h"
 #include "tests/verify/verify_test_support.h"
 #include "verify/agreement.h"
 
@@ -17,68 +25,296 @@ const Check& findCheck(const AgreementResult& r, const std::string& id) {
     return r.checks.front();
 }
 
-TEST(Agreement, SameSolidDifferentlyListedAndTriangulatedAgrees) {
+CheckStatus distanceStatus(const AgreementResult& r) { return findCheck(r, "reference_distance").status; }
+CheckStatus volumeStatus(const AgreementResult& r) { return findCheck(r, "reference_volume").status; }
+
+double area(const Mesh& m) {
+    double a = 0;
+    for (const auto& t : m.triangles) {
+        const Vec3 &p = m.positions[t[0]], &q = m.positions[t[1]], &r = m.positions[t[2]];
+        const Vec3 u{q.x - p.x, q.y - p.y, q.z - p.z}, v{r.x - p.x, r.y - p.y, r.z - p.z};
+        a += 0.5 * std::hypot(u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x);
+    }
+    return a;
+}
+
+// xy of a vertex, for recognising wall triangles (their corners stand on the
+// two vertical lines through the ends of one hexagon edge).
+std::pair<double, double> xy(const Vec3& p) { return {p.x, p.y}; }
+
+// The same surface, triangulated differently without moving a point off it:
+//  - every wall rectangle (two triangles whose corners stand on the same two
+//    vertical lines) gets its other diagonal;
+//  - every vertical edge of a remaining wall triangle gets a vertex halfway up
+//    (exactly on the edge: x and y are copied), splitting that triangle only,
+//    so the neighbour across the edge keeps it whole (a T-junction, as
+//    OpenSCAD leaves them).
+Mesh retriangulated(const Mesh& m) {
+    Mesh out = m;
+    std::map<std::pair<uint32_t, uint32_t>, size_t> edge_owner;  // directed edge -> triangle
+    for (size_t t = 0; t < out.triangles.size(); ++t)
+        for (int e = 0; e < 3; ++e) edge_owner[{out.triangles[t][size_t(e)], out.triangles[t][size_t((e + 1) % 3)]}] = t;
+    auto onTwoLines = [&](const std::array<uint32_t, 3>& t) {
+        std::vector<std::pair<double, double>> lines;
+        for (uint32_t v : t)
+            if (std::find(lines.begin(), lines.end(), xy(out.positions[v])) == lines.end())
+                lines.push_back(xy(out.positions[v]));
+        return lines.size() == 2 ? lines : std::vector<std::pair<double, double>>{};
+    };
+    std::vector<uint8_t> done(out.triangles.size(), 0);
+    size_t flips = 0;
+    for (size_t t1 = 0; t1 < out.triangles.size(); ++t1) {
+        if (done[t1]) continue;
+        const auto lines1 = onTwoLines(out.triangles[t1]);
+        if (lines1.empty()) continue;
+        for (int e = 0; e < 3; ++e) {
+            const uint32_t p = out.triangles[t1][size_t(e)], q = out.triangles[t1][size_t((e + 1) % 3)];
+            const uint32_t r = out.triangles[t1][size_t((e + 2) % 3)];
+            if (xy(out.positions[p]) == xy(out.positions[q])) continue;  // a vertical edge is no diagonal
+            const auto it = edge_owner.find({q, p});
+            if (it == edge_owner.end() || done[it->second]) continue;
+            const size_t t2 = it->second;
+            auto lines2 = onTwoLines(out.triangles[t2]);
+            std::sort(lines2.begin(), lines2.end());
+            auto sorted1 = lines1;
+            std::sort(sorted1.begin(), sorted1.end());
+            if (lines2 != sorted1) continue;  // not the same wall plane
+            uint32_t s = 0;
+            for (uint32_t v : out.triangles[t2])
+                if (v != p && v != q) s = v;
+            // A trapezoid with vertical sides (r and s on different lines) is
+            // convex, so its other diagonal r-s is inside it.
+            if (xy(out.positions[r]) == xy(out.positions[s])) continue;
+            out.triangles[t1] = {s, q, r};
+            out.triangles[t2] = {r, p, s};
+            done[t1] = done[t2] = 1;
+            ++flips;
+            break;
+        }
+    }
+    EXPECT_GT(flips, 20u) << "the wall rectangles were not found";
+    const size_t n = out.triangles.size();
+    size_t splits = 0;
+    for (size_t t = 0; t < n; ++t) {
+        if (done[t] || onTwoLines(out.triangles[t]).empty()) continue;
+        const auto tri = out.triangles[t];
+        for (int e = 0; e < 3; ++e) {
+            const uint32_t p = tri[size_t(e)], q = tri[size_t((e + 1) % 3)], r = tri[size_t((e + 2) % 3)];
+            const Vec3 &a = out.positions[p], &b = out.positions[q];
+            if (xy(a) != xy(b)) continue;
+            out.positions.push_back({a.x, a.y, a.z + (b.z - a.z) / 2});  // between a.z and b.z, on the edge
+            const uint32_t mid = uint32_t(out.positions.size() - 1);
+            out.triangles[t] = {p, mid, r};
+            out.triangles.push_back({mid, q, r});
+            ++splits;
+            break;
+        }
+    }
+    EXPECT_GT(splits, 20u);
+    return out;
+}
+
+TEST(Agreement, ReListedCopyIsProvenIdenticalWithoutSampling) {
     const vtest::Model m = vtest::smallModel(Bottom::Flat);
     Mesh other = m.mesh;
     std::reverse(other.triangles.begin(), other.triangles.end());
     for (auto& t : other.triangles) std::rotate(t.begin(), t.begin() + 1, t.end());
-    // Re-triangulate the first triangle around an extra centre vertex: the
-    // surface is the same, its triangles are not.
-    const auto t0 = other.triangles[0];
-    const Vec3 c = vtest::centroid(other, 0);
-    other.positions.push_back(c);
-    const uint32_t ci = uint32_t(other.positions.size() - 1);
-    other.triangles[0] = {t0[0], t0[1], ci};
-    other.triangles.push_back({t0[1], t0[2], ci});
-    other.triangles.push_back({t0[2], t0[0], ci});
-
-    const AgreementResult r = compareMeshes(m.mesh, other, "retriangulated", {});
-    EXPECT_EQ(findCheck(r, "reference_distance").status, CheckStatus::Pass) << findCheck(r, "reference_distance").note;
-    EXPECT_EQ(findCheck(r, "reference_volume").status, CheckStatus::Pass);
-    // Zero, up to the error bound CGAL guarantees.
-    EXPECT_LE(r.figures.hausdorff_to_reference_mm, r.figures.hausdorff_error_bound_mm);
-    EXPECT_LE(r.figures.hausdorff_from_reference_mm, r.figures.hausdorff_error_bound_mm);
-    EXPECT_NEAR(r.figures.volume_difference_mm3, 0.0, 1e-9 * r.figures.volume_mm3);
+    const AgreementResult r = compareMeshes(m.mesh, other, "re-listed", {});
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Pass) << findCheck(r, "reference_distance").note;
+    EXPECT_EQ(volumeStatus(r), CheckStatus::Pass);
+    EXPECT_TRUE(r.figures.surfaces_compared);
+    EXPECT_TRUE(r.figures.surfaces_identical);
+    EXPECT_EQ(r.figures.differing_planes, 0u);
+    EXPECT_EQ(r.figures.samples, 0u);
+    EXPECT_EQ(r.figures.hausdorff_to_reference_mm, 0.0);
+    EXPECT_EQ(r.figures.hausdorff_from_reference_mm, 0.0);
+    EXPECT_EQ(r.figures.hausdorff_error_bound_mm, 0.0);
 }
 
-TEST(Agreement, ShiftedCopyIsAsFarAsItWasMoved) {
-    const Mesh a = vtest::box({0, 0, 0}, {10, 10, 10});
-    const Mesh b = vtest::box({0.05, 0, 0}, {10.05, 10, 10});
-    AgreementOptions o;
-    o.distance_tolerance_mm = 0.01;
-    const AgreementResult r = compareMeshes(a, b, "shifted", o);
-    const double bound = r.figures.hausdorff_error_bound_mm;
-    EXPECT_DOUBLE_EQ(bound, 0.001);
-    EXPECT_NEAR(r.figures.hausdorff_to_reference_mm, 0.05, bound);
-    EXPECT_NEAR(r.figures.hausdorff_from_reference_mm, 0.05, bound);
-    EXPECT_EQ(findCheck(r, "reference_distance").status, CheckStatus::Fail);
-    EXPECT_EQ(findCheck(r, "reference_distance").count, 2);  // both directions
-    // Same volume: the volume check alone cannot tell a shifted copy.
-    EXPECT_EQ(findCheck(r, "reference_volume").status, CheckStatus::Pass);
+TEST(Agreement, RetriangulatedSurfaceWithTJunctionsIsProvenIdentical) {
+    for (Bottom bottom : {Bottom::Flat, Bottom::Mirrored}) {
+        const vtest::Model m = vtest::smallModel(bottom);
+        const Mesh other = retriangulated(m.mesh);
+        ASSERT_GT(other.triangles.size(), m.mesh.triangles.size());
+        const AgreementResult r = compareMeshes(other, m.mesh, "direct", {});
+        EXPECT_EQ(distanceStatus(r), CheckStatus::Pass) << findCheck(r, "reference_distance").note;
+        EXPECT_EQ(volumeStatus(r), CheckStatus::Pass);
+        EXPECT_TRUE(r.figures.surfaces_identical);
+        EXPECT_EQ(r.figures.samples, 0u);
+        EXPECT_EQ(r.figures.hausdorff_error_bound_mm, 0.0);
+        // The volumes agree to rounding: an independent sum over other triangles.
+        EXPECT_NEAR(r.figures.volume_difference_mm3, 0.0, 1e-9 * r.figures.volume_mm3);
+    }
 }
 
-TEST(Agreement, ChangedPillarDiffersInDistanceAndVolumeNearIt) {
+TEST(Agreement, PillarRaisedByTenMicronsFailsThereWithTheRaiseMeasured) {
     const vtest::Model m = vtest::smallModel(Bottom::Flat);
     Scene s = m.scene;
     const size_t k = vtest::keptIndex(s, 2, 4);
-    s.top[k] += 500;  // 0.5 mm
-    const Mesh changed = meshScene(s);
-    const AgreementResult r = compareMeshes(changed, m.mesh, "original", {});
-    EXPECT_NEAR(r.figures.hausdorff_to_reference_mm, 0.5, r.figures.hausdorff_error_bound_mm);
+    s.top[k] += 10;  // 10 snap steps of 1 um = 0.01 mm
+    const Mesh raised = meshScene(s);
+    const AgreementResult r = compareMeshes(raised, m.mesh, "original", {});
     const Check& d = findCheck(r, "reference_distance");
-    EXPECT_EQ(d.status, CheckStatus::Fail);
+    ASSERT_EQ(d.status, CheckStatus::Fail) << d.note;
+    // Only the planes of the raised cell's top and walls differ (with the
+    // other cells' faces in those planes): a small part of the model is sampled.
+    EXPECT_TRUE(r.figures.surfaces_compared);
+    EXPECT_FALSE(r.figures.surfaces_identical);
+    EXPECT_LE(r.figures.differing_planes, 2u + 6u);  // the old and new top, the six wall planes around the cell
+    EXPECT_LT(r.figures.differing_area_mm2, 0.1 * area(raised));
+    // The raised top is 0.01 mm above where the reference's top is.
+    EXPECT_NEAR(r.figures.hausdorff_to_reference_mm, 0.01, 1e-9);
+    EXPECT_LE(r.figures.hausdorff_from_reference_mm, 0.01 + 1e-9);
     ASSERT_FALSE(d.worst.empty());
     const Vec3 centre = vtest::cellCentre(s, k, 0);
-    EXPECT_LT(std::hypot(d.worst[0].at_mm.x - centre.x, d.worst[0].at_mm.y - centre.y), s.pitch_mm);
-    // Independent volume: the hexagon's area times 0.5 mm.
-    EXPECT_NEAR(r.figures.volume_difference_mm3, hexArea(s.pitch_mm) * 0.5, 1e-3);
-    EXPECT_EQ(findCheck(r, "reference_volume").status, CheckStatus::Fail);
+    for (const Offender& o : d.worst)
+        EXPECT_LT(std::hypot(o.at_mm.x - centre.x, o.at_mm.y - centre.y), s.pitch_mm) << o.detail;
+    // 0.01 mm times a hexagon is far inside the volume tolerance: only the
+    // distance can see this difference.
+    // (Corners are snapped to 1 um, so the hexagon's area is right to ~1e-3.)
+    EXPECT_NEAR(r.figures.volume_difference_mm3, hexArea(s.pitch_mm) * 0.01, 1e-3 * hexArea(s.pitch_mm) * 0.01);
+    EXPECT_EQ(volumeStatus(r), CheckStatus::Pass);
+}
+
+TEST(Agreement, MissingPillarFailsByItsHeight) {
+    const vtest::Model m = vtest::smallModel(Bottom::Flat);
+    Scene s = m.scene;
+    const size_t k = vtest::keptIndex(s, 4, 3);
+    const double height_mm = s.zMm(s.top[k] - s.floor_units);
+    ASSERT_GT(height_mm, 1.0);
+    s.top[k] = s.floor_units;  // the pillar is gone; its cell is bare base
+    const AgreementResult r = compareMeshes(meshScene(s), m.mesh, "original", {});
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Fail);
+    EXPECT_EQ(volumeStatus(r), CheckStatus::Fail);
+    // From the reference: the missing pillar's top centre is `height` above
+    // the bare cell, and farther than that from the neighbouring pillars'
+    // walls only when they are lower; it is at least half a pitch from any
+    // wall, so the distance lies between min(height, pitch / 2) and height.
+    EXPECT_LE(r.figures.hausdorff_from_reference_mm, height_mm + 1e-9);
+    EXPECT_GE(r.figures.hausdorff_from_reference_mm, std::min(height_mm, s.pitch_mm / 2) - r.figures.hausdorff_error_bound_mm);
+    EXPECT_NEAR(r.figures.volume_difference_mm3, -hexArea(s.pitch_mm) * height_mm, 1e-3 * hexArea(s.pitch_mm) * height_mm);
+}
+
+TEST(Agreement, CopyShiftedByTenMicronsFailsByTheShift) {
+    const vtest::Model m = vtest::smallModel(Bottom::Flat);
+    Mesh shifted = m.mesh;
+    for (Vec3& p : shifted.positions) p.x += 0.01;
+    const AgreementResult r = compareMeshes(shifted, m.mesh, "original", {});
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Fail);
+    EXPECT_EQ(findCheck(r, "reference_distance").count, 2);  // both directions
+    // No point moved farther than the shift, and the walls facing east and
+    // west (pointy-top hexagons) moved straight off themselves by all of it.
+    EXPECT_NEAR(r.figures.hausdorff_to_reference_mm, 0.01, 1e-9);
+    EXPECT_NEAR(r.figures.hausdorff_from_reference_mm, 0.01, 1e-9);
+    // The volume check alone cannot tell a shifted copy.
+    EXPECT_EQ(volumeStatus(r), CheckStatus::Pass);
+}
+
+TEST(Agreement, ShiftBelowTheToleranceIsMeasuredButNotClaimedAsProven) {
+    // Half the tolerance everywhere: every plane differs, and no affordable
+    // sampling radius is below the remaining half micron.
+    const vtest::Model m = vtest::smallModel(Bottom::Flat);
+    Mesh shifted = m.mesh;
+    for (Vec3& p : shifted.positions) p.x += 0.0005;
+    AgreementOptions o;
+    o.sample_budget = 100'000;
+    const AgreementResult r = compareMeshes(shifted, m.mesh, "original", o);
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Warn) << findCheck(r, "reference_distance").note;
+    EXPECT_NEAR(r.figures.hausdorff_to_reference_mm, 0.0005, 1e-9);
+    EXPECT_GT(r.figures.hausdorff_error_bound_mm, 0.0005);
+    EXPECT_LE(r.figures.samples, o.sample_budget);
+    EXPECT_NE(findCheck(r, "reference_distance").note.find("not proven"), std::string::npos);
+}
+
+TEST(Agreement, InsideOutCopyIsTheSameSurfaceWithTheOppositeVolume) {
+    const vtest::Model m = vtest::smallModel(Bottom::Mirrored);
+    Mesh flipped = m.mesh;
+    for (auto& t : flipped.triangles) std::swap(t[1], t[2]);
+    const AgreementResult r = compareMeshes(flipped, m.mesh, "original", {});
+    // Same point set: distance 0, proven; every plane faces the other way.
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Pass);
+    EXPECT_FALSE(r.figures.surfaces_identical);
+    EXPECT_EQ(r.figures.differing_planes, 0u);
+    EXPECT_EQ(r.figures.opposite_planes, r.figures.planes);
+    EXPECT_EQ(volumeStatus(r), CheckStatus::Fail);
+    EXPECT_NEAR(r.figures.volume_difference_mm3, -2 * r.figures.reference_volume_mm3, 1e-9 * r.figures.reference_volume_mm3);
+}
+
+TEST(Agreement, OverlappingSheetInTheReferenceIsFoundBySampling) {
+    // A fin of two coincident triangles facing opposite ways, standing 5 mm
+    // up from a box's top: as an oriented surface it cancels out, so the
+    // exact comparison sees the box alone. Its vertices are off the box,
+    // which breaks the comparison's premise: the reference is sampled
+    // everywhere and the fin's tip is found.
+    const Mesh box = vtest::box({0, 0, 0}, {10, 10, 10});
+    Mesh fin = box;
+    fin.positions.push_back({2, 5, 10});
+    fin.positions.push_back({8, 5, 10});
+    fin.positions.push_back({5, 5, 15});
+    const uint32_t a = 8, b = 9, c = 10;
+    fin.triangles.push_back({a, b, c});
+    fin.triangles.push_back({a, c, b});
+    const AgreementResult r = compareMeshes(box, fin, "box with a fin", {});
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Fail);
+    EXPECT_NEAR(r.figures.hausdorff_from_reference_mm, 5.0, 1e-9);
+    EXPECT_EQ(r.figures.hausdorff_to_reference_mm, 0.0);
+    EXPECT_NE(findCheck(r, "reference_distance").note.find("sampled everywhere"), std::string::npos);
+}
+
+TEST(Agreement, SamplingStaysWithinTheBudget) {
+    const vtest::Model m = vtest::smallModel(Bottom::Flat);
+    Mesh shifted = m.mesh;
+    for (Vec3& p : shifted.positions) p.z += 0.02;
+    for (size_t budget : {size_t(5'000), size_t(50'000)}) {
+        AgreementOptions o;
+        o.sample_budget = budget;
+        const AgreementResult r = compareMeshes(shifted, m.mesh, "original", o);
+        // Every vertex is measured whatever the budget.
+        const size_t floor = shifted.positions.size() + m.mesh.positions.size();
+        EXPECT_LE(r.figures.samples, std::max(budget, floor)) << budget;
+        EXPECT_EQ(distanceStatus(r), CheckStatus::Fail);
+        EXPECT_NEAR(r.figures.hausdorff_to_reference_mm, 0.02, 1e-9);
+    }
 }
 
 TEST(Agreement, EmptyReferenceFails) {
     const AgreementResult r = compareMeshes(vtest::box({0, 0, 0}, {1, 1, 1}), Mesh{}, "nothing", {});
-    EXPECT_EQ(findCheck(r, "reference_distance").status, CheckStatus::Fail);
-    EXPECT_EQ(findCheck(r, "reference_volume").status, CheckStatus::Fail);
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Fail);
+    EXPECT_EQ(volumeStatus(r), CheckStatus::Fail);
+}
+
+// The use the check exists for: OpenSCAD's render of the generated .scad
+// against the direct mesh, through the command line.
+TEST(Agreement, OpenScadRenderIsProvenTheSameSolidQuickly) {
+    if (!std::filesystem::exists("/usr/bin/openscad")) GTEST_SKIP() << "no /usr/bin/openscad";
+    const auto dir = vtest::scratch("agreement_openscad");
+    std::string csv;
+    const HexField f = vtest::smallField();
+    for (int r = 0; r < f.grid.rows; ++r) {
+        for (int c = 0; c < f.grid.cols; ++c) {
+            const double v = f.values[size_t(r * f.grid.cols + c)];
+            csv += (c ? "," : "") + (std::isnan(v) ? std::string("NA") : std::to_string(v));
+        }
+        csv += "\n";
+    }
+    vtest::writeText(dir / "field.csv", csv);
+    const auto gen = vtest::runTsf("gen " + (dir / "field.csv").string() + " --mirror -o " + (dir / "direct.stl").string() +
+                                       " --scad " + (dir / "m.scad").string(),
+                                   dir);
+    ASSERT_EQ(gen.exit_code, 0) << gen.err;
+    const auto render = vtest::runTsf("render " + (dir / "m.scad").string() + " -o " + (dir / "openscad.stl").string(), dir);
+    if (render.exit_code != 0) GTEST_SKIP() << "OpenSCAD could not render here: " << render.err;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto verify = vtest::runTsf("verify " + (dir / "openscad.stl").string() + " --reference " +
+                                          (dir / "direct.stl").string() + " --json --no-printability",
+                                      dir);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_EQ(verify.exit_code, 0) << verify.out << verify.err;
+    const nlohmann::json j = nlohmann::json::parse(verify.out);
+    EXPECT_TRUE(j["agreement"]["surfaces_identical"].get<bool>());
+    EXPECT_EQ(j["agreement"]["samples"].get<size_t>(), 0u);
+    EXPECT_EQ(j["agreement"]["hausdorff_to_reference_mm"].get<double>(), 0.0);
+    EXPECT_LT(seconds, 10.0);
 }
 
 }  // namespace
