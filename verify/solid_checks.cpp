@@ -234,9 +234,23 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
     // Geometry with CGAL.
     const bool finite = topo.nonfinite_vertices.empty();
     detail::GeometricFindings g;
+    std::string exact_fallback_reason;  // non-empty: the filtered kernel failed and the exact one was used
     if (finite) {
-        g = options.exact ? detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections)
-                          : detail::geometricChecksEpick(mesh, topo, max_off, options.self_intersections);
+        if (options.exact) {
+            g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections);
+        } else {
+            try {
+                g = detail::geometricChecksEpick(mesh, topo, max_off, options.self_intersections);
+            } catch (const std::exception& e) {
+                // The filtered kernel constructs intersection points in doubles;
+                // on near-degenerate contacts (a corner touching a face) CGAL's
+                // own preconditions can fail there. The exact kernel decides
+                // those cases, so the check is redone with it rather than lost.
+                g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections);
+                exact_fallback_reason = e.what();
+                exact_fallback_reason = exact_fallback_reason.substr(0, exact_fallback_reason.find('\n'));
+            }
+        }
         r.stages.push_back({"degenerate", g.degenerate_ms});
         r.stages.push_back({"cgal_mesh", g.build_ms});
         if (g.mesh_built) r.stages.push_back({"self_intersections", g.self_intersection_ms});
@@ -288,6 +302,9 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
             if (g.soup_repaired)
                 c.note += std::string(c.note.empty() ? "" : "; ") + "tested on a re-oriented copy (" +
                           plural(int64_t(g.points_duplicated), "vertex", "vertices") + " split at non-manifold places)";
+            if (!exact_fallback_reason.empty())
+                c.note += std::string(c.note.empty() ? "" : "; ") + "decided with the exact kernel (the filtered one stopped: " +
+                          exact_fallback_reason + ")";
         }
         r.checks.push_back(std::move(c));
     }
