@@ -51,6 +51,11 @@ const char* exportFormatArg(ScadExportFormat f) {
 
 std::string firstLine(const std::string& s) { return s.substr(0, s.find('\n')); }
 
+bool hasError(const std::vector<ScadMessage>& messages) {
+    return std::any_of(messages.begin(), messages.end(),
+                       [](const ScadMessage& m) { return m.kind == ScadMessage::Kind::Error; });
+}
+
 class OpenScadEngine : public ScadEngine {
 public:
     OpenScadEngine(std::string exe, std::string version) : exe_(std::move(exe)), version_(std::move(version)) {}
@@ -98,7 +103,11 @@ public:
         std::ostringstream why;
         switch (pr.end) {
             case ProcessResult::End::Exited:
-                if (pr.exit_code == 0) {
+                if (pr.exit_code == 0 && hasError(r.messages)) {
+                    // OpenSCAD 2025 exports what is left after an ERROR (a failed
+                    // assert drops only its module) with status 0; 2021.01 stops.
+                    why << "openscad printed an error (the output would be a partial model)";
+                } else if (pr.exit_code == 0) {
                     r.status = ScadRenderResult::Status::Ok;
                     why << "rendered in " << std::fixed << std::setprecision(2) << pr.elapsed_s << " s";
                 } else {

@@ -9,8 +9,12 @@
 // what every engine needs (checks on the inputs, an atomic output file, an
 // output that is not empty).
 //
+// A run that prints an ERROR line is a failure even when OpenSCAD exits with
+// status 0 (OpenSCAD 2025 exports what is left after a failed assert()).
+//
 // Never trust the engine's verdict on the mesh: OpenSCAD may report success
-// for a broken union. Check the STL (tsf verify) before printing.
+// for a broken union. Check the STL (gen/scad/engine_output_check.h, tsf
+// verify) before printing.
 #pragma once
 
 #include <functional>
