@@ -175,6 +175,34 @@ TEST(OpenScadRunner, BadInputsAreRefusedBeforeOpenScadRuns) {
     EXPECT_FALSE(fs::exists(dir + "/out.stl"));
 }
 
+// OpenSCAD 2025 goes on after a failed assert() and exports the rest with
+// exit status 0; an ERROR line must still fail the render. A stand-in
+// program that behaves that way plays the 2025 binary.
+TEST(OpenScadRunner, AnErrorLineFailsTheRenderEvenWithExitStatusZero) {
+    const std::string dir = scratchDir("runner_error_status0");
+    const std::string fake = dir + "/openscad-2025";
+    writeText(fake,
+              "#!/bin/sh\n"
+              "if [ \"$1\" = \"--version\" ]; then echo 'OpenSCAD version 2025.01.19'; exit 0; fi\n"
+              "out=''\n"
+              "while [ $# -gt 0 ]; do if [ \"$1\" = -o ]; then out=\"$2\"; shift; fi; shift; done\n"
+              "printf 'partial' > \"$out\"\n"
+              "echo \"ERROR: Assertion 'false' failed: \\\"dropped a module\\\" in file m.scad, line 1\"\n"
+              "exit 0\n");
+    fs::permissions(fake, fs::perms::owner_all);
+    writeText(dir + "/m.scad", "assert(false, \"dropped a module\");\ncube(1);\n");
+    const auto engine = makeOpenScadEngine(fake);
+    EXPECT_EQ(engine->version(), "OpenSCAD version 2025.01.19");
+    ScadRenderRequest rq;
+    rq.scad_path = dir + "/m.scad";
+    rq.output_path = dir + "/out.stl";
+    const ScadRenderResult r = renderScad(*engine, rq);
+    EXPECT_FALSE(r.ok());
+    ASSERT_FALSE(r.errors().empty());
+    EXPECT_EQ(r.errors().front().assert_message, "dropped a module");
+    EXPECT_FALSE(fs::exists(rq.output_path));
+}
+
 TEST(OpenScadRunner, TimeLimitStopsALongRender) {
     const std::string dir = scratchDir("runner_timeout");
     // Several seconds of recursion before any geometry.
