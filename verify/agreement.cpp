@@ -3,8 +3,12 @@
 #include "verify/agreement.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <unordered_set>
 
 #include "verify/closest_point_tree.h"
 #include "verify/detail/format.h"
@@ -70,11 +74,58 @@ struct Direction {
     Vec3 premise_at_mm;
 };
 
+// The closest-point tree of a mesh, built on first use: the common case (two
+// surfaces with the same vertices, proven identical) needs none.
+class LazyTree {
+public:
+    explicit LazyTree(const Mesh& mesh) : mesh_(mesh) {}
+    const ClosestPointTree& get() {
+        if (!tree_) tree_ = std::make_unique<ClosestPointTree>(mesh_);
+        return *tree_;
+    }
+
+private:
+    const Mesh& mesh_;
+    std::unique_ptr<ClosestPointTree> tree_;
+};
+
+// The exact positions of the corners of a mesh's usable triangles (a corner
+// of a triangle lies on the mesh's surface).
+class CornerSet {
+public:
+    explicit CornerSet(const Mesh& m) {
+        keys_.reserve(m.positions.size());
+        std::vector<uint8_t> used(m.positions.size(), 0);
+        for (const auto& t : m.triangles)
+            if (usable(m, t)) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+        for (size_t i = 0; i < m.positions.size(); ++i)
+            if (used[i]) keys_.insert(key(m.positions[i]));
+    }
+    bool contains(const Vec3& p) const { return keys_.count(key(p)) > 0; }
+
+private:
+    using Key = std::array<uint64_t, 3>;
+    struct Hash {
+        size_t operator()(const Key& k) const {
+            uint64_t h = 0;
+            for (uint64_t w : k) {
+                h ^= w + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+                h = (h ^ (h >> 31)) * 0xbf58476d1ce4e5b9ULL;
+            }
+            return size_t(h);
+        }
+    };
+    static uint64_t bits(double v) { return std::bit_cast<uint64_t>(v == 0 ? 0.0 : v); }  // -0 == +0
+    static Key key(const Vec3& p) { return {bits(p.x), bits(p.y), bits(p.z)}; }
+    std::unordered_set<Key, Hash> keys_;
+};
+
 // Measures every vertex of the unflagged triangles of `d.from`: each must lie
-// on the other surface (the exact comparison says so). One that does not
-// breaks the comparison's premise (overlapping triangles), and then every
-// triangle is flagged for sampling.
-void checkPremise(Direction& d, const ClosestPointTree& to, double allowance_mm) {
+// on the other surface (the exact comparison says so). A vertex at exactly
+// the position of one of the other mesh's corners does; the others are
+// measured. One that is off breaks the comparison's premise (overlapping
+// triangles), and then every triangle is flagged for sampling.
+void checkPremise(Direction& d, const CornerSet& other_corners, LazyTree& to, double allowance_mm) {
     const Mesh& m = *d.from;
     std::vector<uint8_t> seen(m.positions.size(), 0);
     int64_t hint = -1;
@@ -83,7 +134,8 @@ void checkPremise(Direction& d, const ClosestPointTree& to, double allowance_mm)
         for (uint32_t v : m.triangles[t]) {
             if (seen[v]) continue;
             seen[v] = 1;
-            const ClosestPoint c = to.closest(m.positions[v], hint, allowance_mm);
+            if (other_corners.contains(m.positions[v])) continue;
+            const ClosestPoint c = to.get().closest(m.positions[v], hint, allowance_mm);
             hint = c.triangle;
             if (c.distance_mm > allowance_mm && c.distance_mm > d.premise_off_mm) {
                 d.premise_broken = true;
@@ -235,7 +287,7 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
 
     // 2. Distances where the exact comparison could not prove 0.
     t0 = std::chrono::steady_clock::now();
-    const ClosestPointTree model_tree(model), reference_tree(reference);
+    LazyTree model_tree(model), reference_tree(reference);
     Direction to, from;
     to.from = &model;
     to.flags = &chains.model_differs;
@@ -247,8 +299,8 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
     // the closest point is rounded, by up to ~1e-10 mm next to the long
     // slivers of a fan-triangulated face. The finest sampling radius is far
     // above that and is as close as the sampling ever tells points apart.
-    checkPremise(to, reference_tree, finest);
-    checkPremise(from, model_tree, finest);
+    checkPremise(to, CornerSet(reference), reference_tree, finest);
+    checkPremise(from, CornerSet(model), model_tree, finest);
     for (Direction* d : {&to, &from})
         for (size_t t = 0; t < d->from->triangles.size(); ++t)
             if ((*d->flags)[t]) d->area_mm2 += triangleArea(*d->from, d->from->triangles[t]);
@@ -264,8 +316,8 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
         any_flagged ? chooseRadius(to, to_vertices.size(), from, from_vertices.size(), finest, options.sample_budget)
                     : 0.0;
     if (any_flagged) {
-        sampleDirection(to, to_vertices, reference_tree, radius, options.distance_tolerance_mm, f.samples);
-        sampleDirection(from, from_vertices, model_tree, radius, options.distance_tolerance_mm, f.samples);
+        sampleDirection(to, to_vertices, reference_tree.get(), radius, options.distance_tolerance_mm, f.samples);
+        sampleDirection(from, from_vertices, model_tree.get(), radius, options.distance_tolerance_mm, f.samples);
     }
     f.hausdorff_to_reference_mm = to.max_mm;
     f.hausdorff_from_reference_mm = from.max_mm;
@@ -306,7 +358,7 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
                                                    " mm from this model here"});
         }
     } else {
-        dist.status = CheckStatus::Warn;
+        dist.status = options.fail_on_warnings ? CheckStatus::Fail : CheckStatus::Warn;
         dist.count = int64_t(!to_proven) + int64_t(!from_proven);
         for (const Vec3& p : chains.difference_points)
             dist.worst.push_back({p, NAN, "the two surfaces differ here (exact comparison)"});
@@ -328,7 +380,7 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
                     " mm (sampled " + fmtNum(to.area_mm2) + " + " + fmtNum(from.area_mm2) + " mm^2 at radius " +
                     fmtNum(radius) + " mm: true distance at most " + fmtNum(radius) + " mm more, " +
                     std::to_string(f.samples) + " samples), tolerance " + fmtNum(tol) + " mm";
-        if (dist.status == CheckStatus::Warn)
+        if (!(to_proven && from_proven) && !(to_over || from_over))
             dist.note += "; not proven within the tolerance: the sampling budget (" +
                          std::to_string(options.sample_budget) + ") allows radius " + fmtNum(radius) + " mm only";
     }

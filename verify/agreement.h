@@ -71,6 +71,7 @@ struct AgreementOptions {
     double error_bound_mm = 0;
     size_t sample_budget = kDefaultAgreementSampleBudget;
     size_t max_offenders = 10;
+    bool fail_on_warnings = false;  ///< an unproven distance fails instead of warning (for --strict)
 };
 
 struct AgreementResult {

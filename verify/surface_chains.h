@@ -36,9 +36,11 @@
 //
 // Triangles with an out-of-range index or a repeated index are ignored. The
 // comparison needs the coordinates of both meshes on one integer grid of at
-// most 125 bits (any binary STL, and double coordinates spanning less than
-// about 2^70 between the largest and the finest); otherwise, or with a
-// non-finite coordinate, `compared` is false.
+// most 125 bits (practically any binary STL; double coordinates spanning less
+// than about 2^70 between the largest and the finest bit); otherwise, or with
+// a non-finite coordinate, `compared` is false. Up to 61 bits (a binary STL
+// whose smallest non-zero coordinate is above ~1e-10 of its largest) it runs
+// in 64/128/256-bit arithmetic, beyond in 128/256/512-bit.
 //
 // Cost: O(n log n) in the triangles of both meshes; on the 100 x 100 model
 // (135 k + 180 k triangles) about 0.2 s (docs/verifier.md).
