@@ -43,7 +43,7 @@
 //   tsf_terrain_polyhedron(m);
 module tsf_terrain_polyhedron(m) {
     model = _tsf_check_model(m, "tsf_terrain_polyhedron");
-    _tsf_polyhedron(_tsf_span_triangles(model[1], model[2], model[3], model[4], model[5]));
+    _tsf_polyhedron(_tsf_span_points(model[1], model[2], model[3], model[4], model[5]));
 }
 
 // Module: tsf_hull_base()
@@ -64,25 +64,28 @@ module tsf_terrain_polyhedron(m) {
 module tsf_hull_base(m) {
     model = _tsf_check_model(m, "tsf_hull_base");
     slab = [for (row = model[5]) [for (s = row) is_undef(s) ? undef : [0, model[6]]]];
-    _tsf_polyhedron(_tsf_span_triangles(model[1], model[2], model[3], model[4], slab));
+    _tsf_polyhedron(_tsf_span_points(model[1], model[2], model[3], model[4], slab));
 }
 
 // ---------------------------------------------------------------------------
 // Private helpers.
 
-// Triangles (each 3 points, counter-clockwise from outside) handed to
-// polyhedron(), whose faces must be clockwise from outside: reversed here.
-module _tsf_polyhedron(tris) {
-    assert(len(tris) > 0, "tsf: the model has no present cell");
-    polyhedron(points = [for (t = tris) each t],
-               faces = [for (n = [0:len(tris) - 1]) [3 * n + 2, 3 * n + 1, 3 * n]],
+// Triangles as a flat list of points, three per triangle, counter-clockwise
+// from outside, handed to polyhedron(), whose faces must be clockwise from
+// outside: reversed here.
+module _tsf_polyhedron(points) {
+    assert(len(points) > 0, "tsf: the model has no present cell");
+    polyhedron(points = points,
+               faces = [for (n = [0:len(points) / 3 - 1]) [3 * n + 2, 3 * n + 1, 3 * n]],
                convexity = 10);
 }
 
 // The boundary of the union of the prisms spans[row][col] = [bottom, top]
-// (z steps) or undef, as a list of triangles [[x,y,z] x 3], counter-clockwise
-// from outside. Neighbouring spans must overlap by at least one step.
-function _tsf_span_triangles(rows, cols, cell_mm, step_mm, spans) =
+// (z steps) or undef, as triangles counter-clockwise from outside, in a flat
+// list of points [x, y, z], three per triangle (no list per triangle: a
+// 100 x 100 grid has 160 000 of them). Neighbouring spans must overlap by at
+// least one step.
+function _tsf_span_points(rows, cols, cell_mm, step_mm, spans) =
     let(xs = [for (i = [0:2 * cols + 1]) _tsf_snap_xy(_tsf_lattice_x(i, cell_mm))],
         ys = [for (j = [0:3 * rows + 1]) _tsf_snap_xy(_tsf_lattice_y(j, cell_mm))],
         offsets = _tsf_corner_offsets())
@@ -91,7 +94,7 @@ function _tsf_span_triangles(rows, cols, cell_mm, step_mm, spans) =
             let(ci = 2 * c + odd + 1,
                 xy = [for (d = offsets) [xs[ci + d[0]], ys[cj + d[1]]]],
                 nb = [for (k = [0:5]) let(n = _tsf_neighbour(c, r, k)) _tsf_at(spans, n[0], n[1])])
-            each _tsf_cell_triangles(xy, s, nb, step_mm)];
+            for (t = _tsf_cell_triangles(xy, s, nb, step_mm)) each t];
 
 // Faces owned by one cell: top, bottom and its outward walls.
 //   xy = its 6 corners [x, y] (mm); s = [bottom, top] (steps);
