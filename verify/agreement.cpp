@@ -7,6 +7,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <unordered_set>
 
@@ -28,6 +29,52 @@ constexpr double kSamplesPerAreaTimesR2 = 1.1547005383792515;
 // the count is close to its estimate, so a few steps suffice.
 constexpr double kRadiusGrowth = 1.05;
 constexpr int kMaxRadiusSteps = 60;
+// A rounded comparison is used only if the rounding moved the two meshes'
+// vertices by at most this share of the tolerance in all (the rest is left
+// for what sampling adds); the grid is chosen to meet it.
+constexpr double kRoundingShareOfTolerance = 0.5;
+// Safety factor on a distance computed with one rounding (hypot is accurate
+// to 1 ulp), so that a bound derived from it is a bound.
+constexpr double kNormRoundingPad = 1.0 + 4 * std::numeric_limits<double>::epsilon();
+
+// A rounding of coordinates applied to both meshes before comparing again.
+struct Rounding {
+    std::string name;
+    double (*round)(double v, double grid_mm);
+    double grid_mm;  // 0 for float32
+};
+double toFloat32(double v, double) { return double(float(v)); }
+double toGrid(double v, double grid_mm) { return std::nearbyint(v / grid_mm) * grid_mm; }  // grid: a power of 2, exact
+
+// float32 first (a binary STL of the other mesh is exactly that), then the
+// coarsest power-of-two grid whose rounding (at most grid * sqrt(3) / 2 per
+// vertex, two meshes) stays within kRoundingShareOfTolerance of the tolerance.
+std::vector<Rounding> roundings(double tolerance_mm) {
+    std::vector<Rounding> out{{"float32", &toFloat32, 0.0}};
+    if (tolerance_mm > 0 && std::isfinite(tolerance_mm)) {
+        const double grid = std::exp2(std::floor(std::log2(kRoundingShareOfTolerance * tolerance_mm / std::sqrt(3.0))));
+        out.push_back({"a " + detail::fmtNum(grid) + " mm grid", &toGrid, grid});
+    }
+    return out;
+}
+
+Mesh roundedCopy(const Mesh& m, const Rounding& r) {
+    Mesh out = m;
+    for (Vec3& p : out.positions) p = {r.round(p.x, r.grid_mm), r.round(p.y, r.grid_mm), r.round(p.z, r.grid_mm)};
+    return out;
+}
+
+// Largest distance a vertex moved (an upper bound: padded for the rounding of
+// the norm). Every point of a triangle moves by at most its corners' largest
+// move, so this bounds the distance between the two surfaces.
+double largestMove(const Mesh& m, const Mesh& moved) {
+    double worst = 0;
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+        const Vec3 &p = m.positions[i], &q = moved.positions[i];
+        worst = std::max(worst, std::hypot(q.x - p.x, q.y - p.y, q.z - p.z));  // differences exact (Sterbenz)
+    }
+    return worst * kNormRoundingPad;
+}
 
 double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -69,6 +116,8 @@ struct Direction {
         Vec3 at_mm;
     };
     std::vector<Place> places;  // per sampled triangle: its farthest sample
+    double rounded_bound_mm = 0;    // bound proven on triangles resolved by a rounded comparison
+    std::vector<uint8_t> rounded;   // per triangle: resolved by a rounded comparison
     bool premise_broken = false;
     double premise_off_mm = 0;
     Vec3 premise_at_mm;
@@ -123,25 +172,35 @@ private:
 // Measures every vertex of the unflagged triangles of `d.from`: each must lie
 // on the other surface (the exact comparison says so). A vertex at exactly
 // the position of one of the other mesh's corners does; the others are
-// measured. One that is off breaks the comparison's premise (overlapping
-// triangles), and then every triangle is flagged for sampling.
+// measured, and so is the centroid of each triangle matched only after
+// rounding (few, and where noise and overlapping sheets show up together).
+// One that is off breaks the comparison's premise (overlapping triangles),
+// and then every triangle is flagged for sampling.
 void checkPremise(Direction& d, const CornerSet& other_corners, LazyTree& to, double allowance_mm) {
     const Mesh& m = *d.from;
     std::vector<uint8_t> seen(m.positions.size(), 0);
     int64_t hint = -1;
+    auto check = [&](const Vec3& p) {
+        const ClosestPoint c = to.get().closest(p, hint, allowance_mm);
+        hint = c.triangle;
+        if (c.distance_mm > allowance_mm && c.distance_mm > d.premise_off_mm) {
+            d.premise_broken = true;
+            d.premise_off_mm = c.distance_mm;
+            d.premise_at_mm = p;
+        }
+    };
     for (size_t t = 0; t < m.triangles.size(); ++t) {
         if ((*d.flags)[t] || !usable(m, m.triangles[t])) continue;
         for (uint32_t v : m.triangles[t]) {
             if (seen[v]) continue;
             seen[v] = 1;
             if (other_corners.contains(m.positions[v])) continue;
-            const ClosestPoint c = to.get().closest(m.positions[v], hint, allowance_mm);
-            hint = c.triangle;
-            if (c.distance_mm > allowance_mm && c.distance_mm > d.premise_off_mm) {
-                d.premise_broken = true;
-                d.premise_off_mm = c.distance_mm;
-                d.premise_at_mm = m.positions[v];
-            }
+            check(m.positions[v]);
+        }
+        if (t < d.rounded.size() && d.rounded[t]) {
+            const auto& tri = m.triangles[t];
+            const Vec3 &a = m.positions[tri[0]], &b = m.positions[tri[1]], &c = m.positions[tri[2]];
+            check({(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3});
         }
     }
     if (d.premise_broken)
@@ -278,29 +337,70 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
     // 1. Exact comparison.
     auto t0 = std::chrono::steady_clock::now();
     ChainComparison chains = compareSurfaceChains(model, reference, options.max_offenders);
+    Direction to, from;
+    to.from = &model;
+    to.flags = &chains.model_differs;
+    from.from = &reference;
+    from.flags = &chains.reference_differs;
     f.surfaces_compared = chains.compared;
     f.planes = chains.planes;
     f.differing_planes = chains.differing_planes;
     f.opposite_planes = chains.opposite_planes;
+
+    // 1b. Where they differ, compare again after rounding both meshes: a
+    // triangle whose rounded copy lies on the other rounded surface is within
+    // the two roundings' moves of the other surface (rounding to float32 is
+    // what writing an STL does to the other mesh).
+    auto flaggedCount = [&] {
+        return size_t(std::count(chains.model_differs.begin(), chains.model_differs.end(), 1) +
+                      std::count(chains.reference_differs.begin(), chains.reference_differs.end(), 1));
+    };
+    size_t rounded_resolved = 0;
+    double rounded_bound_mm = 0;
+    std::string rounded_to;
+    if (flaggedCount() > 0) {  // also when the exact comparison could not run: a grid has few bits
+        for (const Rounding& level : roundings(options.distance_tolerance_mm)) {
+            const Mesh a = roundedCopy(model, level), b = roundedCopy(reference, level);
+            const double bound = largestMove(model, a) + largestMove(reference, b);
+            if (!(bound <= kRoundingShareOfTolerance * options.distance_tolerance_mm)) continue;
+            const ChainComparison c = compareSurfaceChains(a, b, 0);
+            if (!c.compared) continue;
+            size_t resolved = 0;
+            for (auto [mine, theirs, d] : {std::tuple{&chains.model_differs, &c.model_differs, &to},
+                                           std::tuple{&chains.reference_differs, &c.reference_differs, &from}})
+                for (size_t t = 0; t < mine->size(); ++t)
+                    if ((*mine)[t] && !(*theirs)[t]) {
+                        (*mine)[t] = 0;
+                        d->rounded.resize(mine->size(), 0);
+                        d->rounded[t] = 1;
+                        d->rounded_bound_mm = std::max(d->rounded_bound_mm, bound);
+                        ++resolved;
+                    }
+            if (resolved) {
+                rounded_resolved += resolved;
+                rounded_bound_mm = std::max(rounded_bound_mm, bound);
+                rounded_to += (rounded_to.empty() ? "" : ", then ") + level.name;
+            }
+            if (flaggedCount() == 0) break;
+        }
+    }
+    f.rounded_to = rounded_to;
+    f.rounding_bound_mm = rounded_bound_mm;
     const Stage exact{"reference_exact", msSince(t0)};
     r.stages.push_back(exact);
 
     // 2. Distances where the exact comparison could not prove 0.
     t0 = std::chrono::steady_clock::now();
     LazyTree model_tree(model), reference_tree(reference);
-    Direction to, from;
-    to.from = &model;
-    to.flags = &chains.model_differs;
-    from.from = &reference;
-    from.flags = &chains.reference_differs;
     const double finest = options.error_bound_mm > 0 ? options.error_bound_mm
                                                      : options.distance_tolerance_mm * kHausdorffBoundFraction;
     // A vertex lying exactly on the other surface measures a little off it:
     // the closest point is rounded, by up to ~1e-10 mm next to the long
     // slivers of a fan-triangulated face. The finest sampling radius is far
-    // above that and is as close as the sampling ever tells points apart.
-    checkPremise(to, CornerSet(reference), reference_tree, finest);
-    checkPremise(from, CornerSet(model), model_tree, finest);
+    // above that and is as close as the sampling ever tells points apart. A
+    // vertex of a triangle resolved after rounding may be off by the rounding.
+    checkPremise(to, CornerSet(reference), reference_tree, finest + rounded_bound_mm);
+    checkPremise(from, CornerSet(model), model_tree, finest + rounded_bound_mm);
     for (Direction* d : {&to, &from})
         for (size_t t = 0; t < d->from->triangles.size(); ++t)
             if ((*d->flags)[t]) d->area_mm2 += triangleArea(*d->from, d->from->triangles[t]);
@@ -321,13 +421,15 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
     }
     f.hausdorff_to_reference_mm = to.max_mm;
     f.hausdorff_from_reference_mm = from.max_mm;
-    f.hausdorff_error_bound_mm = radius;
+    // true <= max(rounded bound, figure + r) <= figure + max(rounded bound, r)
+    f.hausdorff_error_bound_mm = std::max(radius, rounded_bound_mm);
     const Stage distances{"reference_distances", msSince(t0)};
     r.stages.push_back(distances);
 
     // Verdict on the distance.
     const double tol = options.distance_tolerance_mm;
-    const bool to_proven = to.max_mm + radius <= tol, from_proven = from.max_mm + radius <= tol;
+    const bool to_proven = std::max(to.rounded_bound_mm, to.max_mm + radius) <= tol;
+    const bool from_proven = std::max(from.rounded_bound_mm, from.max_mm + radius) <= tol;
     const bool to_over = to.max_mm > tol, from_over = from.max_mm > tol;
     dist.stage = distances.name;
     dist.time_ms = exact.time_ms + distances.time_ms;
@@ -369,25 +471,29 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
                                : "";
     if (chains.samePointSet() && !to.premise_broken && !from.premise_broken && !any_flagged) {
         dist.note = "identical surfaces: proven by exact comparison of " + std::to_string(chains.planes) + " planes" +
-                    opposite + ", distance 0, tolerance " + fmtNum(tol) + " mm";
+                    opposite + ", distance 0";
     } else {
-        std::string what = !chains.compared ? "no exact comparison (" + chains.note + "); "
-                           : chains.differing_planes
-                               ? "the surfaces differ in " + std::to_string(chains.differing_planes) + " of " +
-                                     std::to_string(chains.planes) + " planes" + opposite + "; "
-                               : "";
-        dist.note = what + "to reference " + fmtNum(to.max_mm) + " mm, from reference " + fmtNum(from.max_mm) +
-                    " mm (sampled " + fmtNum(to.area_mm2) + " + " + fmtNum(from.area_mm2) + " mm^2 at radius " +
-                    fmtNum(radius) + " mm: true distance at most " + fmtNum(radius) + " mm more, " +
-                    std::to_string(f.samples) + " samples), tolerance " + fmtNum(tol) + " mm";
+        dist.note = !chains.compared         ? "no exact comparison (" + chains.note + ")"
+                    : chains.differing_planes ? "the surfaces differ in " + std::to_string(chains.differing_planes) +
+                                                    " of " + std::to_string(chains.planes) + " planes" + opposite
+                                              : "the surfaces are the same" + opposite;
+        if (rounded_resolved)
+            dist.note += "; rounded to " + rounded_to + ", " + std::to_string(rounded_resolved) +
+                         " triangles lie on the other surface: within " + fmtNum(rounded_bound_mm) + " mm";
+        if (any_flagged)
+            dist.note += "; sampled the rest (" + fmtNum(to.area_mm2) + " + " + fmtNum(from.area_mm2) +
+                         " mm^2) at radius " + fmtNum(radius) + " mm: to reference " + fmtNum(to.max_mm) +
+                         " mm, from reference " + fmtNum(from.max_mm) + " mm, true distance at most " +
+                         fmtNum(radius) + " mm more, " + std::to_string(f.samples) + " samples";
         if (!(to_proven && from_proven) && !(to_over || from_over))
             dist.note += "; not proven within the tolerance: the sampling budget (" +
                          std::to_string(options.sample_budget) + ") allows radius " + fmtNum(radius) + " mm only";
     }
+    dist.note += "; tolerance " + fmtNum(tol) + " mm";
     for (const Direction* d : {&to, &from})
         if (d->premise_broken)
             dist.note += std::string("; ") + (d == &to ? "this model" : "the reference") +
-                         " has a vertex " + fmtNum(d->premise_off_mm) + " mm off the other surface at " +
+                         " has a point " + fmtNum(d->premise_off_mm) + " mm off the other surface at " +
                          fmtPoint(d->premise_at_mm) +
                          " although its plane matches (overlapping triangles?): sampled everywhere";
 

@@ -9,6 +9,11 @@
 //      other way: an inside-out copy). Otherwise it names the planes where the
 //      surfaces differ; every triangle in another plane lies on the other
 //      surface (distance 0).
+//      Where they differ, both meshes are rounded (to float32, then to the
+//      coarsest power-of-two grid moving them by at most half the tolerance)
+//      and compared again: a triangle whose rounded copy lies on the other
+//      rounded surface is within delta of the other surface, delta = the
+//      largest vertex move of both roundings, measured.
 //   2. Distances where step 1 could not prove 0: the triangles in differing
 //      planes (and zero-area ones) are sampled so that every point of them is
 //      within r of a sample (verify/triangle_samples.h), and each sample's
@@ -22,7 +27,7 @@
 //   3. The difference of the volumes (divergence theorem).
 //
 // [reference_distance] passes when both directions are proven within the
-// tolerance (figure + r <= tolerance), fails when a sampled point is farther
+// tolerance (max(delta, figure + r) <= tolerance), fails when a sampled point is farther
 // than the tolerance (a proven difference), and warns otherwise: within the
 // tolerance where sampled, but the sampling budget did not give a radius small
 // enough to prove it.
@@ -33,9 +38,10 @@
 //
 // Premise of step 1's "distance 0": neither mesh has triangles overlapping
 // each other (a self-intersection; the model's own is checked by the solid
-// checks). If a vertex of a triangle proven to lie on the other surface is
-// found off it by more than the finest sampling radius (rounding is ~1e-10
-// mm), the premise is broken, and that mesh is sampled everywhere (noted).
+// checks). If a vertex of a triangle proven to lie on the other surface (or
+// the centroid of one matched after rounding) is found off it by more than
+// the finest sampling radius plus delta (rounding is ~1e-10 mm), the premise
+// is broken, and that mesh is sampled everywhere (noted).
 //
 // Everything is bounded: step 1 is O(n log n); step 2 measures at most
 // max(sample_budget, the vertices of the sampled triangles) samples, plus

@@ -106,6 +106,8 @@ std::string formatReport(const VerifyReport& r) {
                                          std::to_string(a.planes) + " planes"
                                      : "same surface, facing the other way in " + std::to_string(a.opposite_planes) +
                                          " of " + std::to_string(a.planes) + " planes")
+          << (a.rounded_to.empty() ? std::string() : ", the same within " + fmtNum(a.rounding_bound_mm) +
+                                                          " mm rounded to " + a.rounded_to)
           << "; Hausdorff " << fmtNum(a.hausdorff_to_reference_mm) << " mm (to) / "
           << fmtNum(a.hausdorff_from_reference_mm) << " mm (from), +" << fmtNum(a.hausdorff_error_bound_mm)
           << " mm at most, " << a.samples << " samples; tolerance " << fmtNum(a.distance_tolerance_mm)
@@ -225,6 +227,8 @@ nlohmann::json toJson(const VerifyReport& r) {
             {"opposite_planes", a.opposite_planes},
             {"differing_area_mm2", num(a.differing_area_mm2)},
             {"reference_differing_area_mm2", num(a.reference_differing_area_mm2)},
+            {"rounded_to", a.rounded_to.empty() ? json(nullptr) : json(a.rounded_to)},
+            {"rounding_bound_mm", num(a.rounding_bound_mm)},
             {"samples", a.samples},
             {"sample_budget", a.sample_budget},
         };

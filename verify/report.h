@@ -112,8 +112,9 @@ struct AgreementFigures {
     /// bound of the true Hausdorff distance.
     double hausdorff_to_reference_mm = 0;
     double hausdorff_from_reference_mm = 0;  ///< the same from the reference to this mesh
-    /// Sampling radius: each true Hausdorff distance lies in [figure, figure +
-    /// this]. 0 when the exact comparison left nothing to sample.
+    /// Each true Hausdorff distance lies in [figure, figure + this]: the
+    /// sampling radius, or rounding_bound_mm if larger. 0 when the exact
+    /// comparison proved the surfaces the same.
     double hausdorff_error_bound_mm = 0;
     double distance_tolerance_mm = 0;
     bool surfaces_compared = false;    ///< the exact surface comparison ran (coordinates on one integer grid)
@@ -121,8 +122,10 @@ struct AgreementFigures {
     size_t planes = 0;                 ///< distinct planes holding triangles of either mesh
     size_t differing_planes = 0;       ///< planes where the two surfaces differ
     size_t opposite_planes = 0;        ///< planes where they coincide but face opposite ways (inside out)
-    double differing_area_mm2 = 0;            ///< this model's area in differing planes (sampled)
-    double reference_differing_area_mm2 = 0;  ///< the reference's area in differing planes (sampled)
+    double differing_area_mm2 = 0;            ///< this model's area left to sampling
+    double reference_differing_area_mm2 = 0;  ///< the reference's area left to sampling
+    std::string rounded_to;            ///< roundings under which more triangles matched ("float32", a grid); "" none
+    double rounding_bound_mm = 0;      ///< distance proven on the triangles those roundings matched (0 if none)
     size_t samples = 0;                ///< distance samples taken on those areas, both directions
     size_t sample_budget = 0;          ///< the budget the sampling radius was chosen for
 };

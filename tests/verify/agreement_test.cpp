@@ -147,6 +147,72 @@ TEST(Agreement, RetriangulatedSurfaceWithTJunctionsIsProvenIdentical) {
     }
 }
 
+Mesh roundedToFloat32(Mesh m) {
+    for (Vec3& p : m.positions) p = {double(float(p.x)), double(float(p.y)), double(float(p.z))};
+    return m;
+}
+
+TEST(Agreement, Float32CopyIsProvenWithinItsRounding) {
+    // The direct mesh in doubles against the same mesh as a binary STL
+    // stores it: every coordinate rounded to float32. Exactly, nearly every
+    // plane differs; rounded to float32 the two are identical, so the
+    // distance is at most how far the rounding moved a vertex.
+    const vtest::Model m = vtest::smallModel(Bottom::Mirrored);
+    const Mesh stl = roundedToFloat32(m.mesh);
+    const AgreementResult r = compareMeshes(m.mesh, stl, "float32 copy", {});
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Pass) << findCheck(r, "reference_distance").note;
+    EXPECT_FALSE(r.figures.surfaces_identical);
+    EXPECT_GT(r.figures.differing_planes, 0u);
+    EXPECT_EQ(r.figures.rounded_to, "float32");
+    EXPECT_EQ(r.figures.samples, 0u);
+    // Independent bound: half a float32 ulp per coordinate, |coordinate| < 64 mm.
+    const Bounds b = meshBounds(m.mesh);
+    ASSERT_LT(std::max({b.max.x, b.max.y, b.max.z}), 64.0);
+    const double half_ulp_at_64 = std::ldexp(1.0, 6 - 24);
+    EXPECT_GT(r.figures.rounding_bound_mm, 0.0);
+    EXPECT_LE(r.figures.rounding_bound_mm, std::sqrt(3.0) * half_ulp_at_64 * 1.000001);
+    EXPECT_EQ(r.figures.hausdorff_error_bound_mm, r.figures.rounding_bound_mm);
+}
+
+TEST(Agreement, NoiseBelowTheGridIsProvenWithinTheGridRounding) {
+    // Every x moved by 2^-18 mm (3.8e-6 mm, one float32 unit in the last place
+    // at 32-64 mm): float32 rounding keeps the difference, a power-of-two grid
+    // of 2^-12 mm merges it; the distance is proven within what the grid
+    // rounding moved the vertices (at most 0.5 um in all).
+    const vtest::Model m = vtest::smallModel(Bottom::Flat);
+    const Mesh a = roundedToFloat32(m.mesh);
+    Mesh noisy = a;
+    for (Vec3& p : noisy.positions) p.x = double(float(p.x + std::ldexp(1.0, -18)));
+    const AgreementResult r = compareMeshes(noisy, a, "float32 mesh", {});
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Pass) << findCheck(r, "reference_distance").note;
+    EXPECT_TRUE(r.figures.surfaces_compared);
+    EXPECT_GT(r.figures.differing_planes, 0u);
+    EXPECT_NE(r.figures.rounded_to.find("grid"), std::string::npos) << r.figures.rounded_to;
+    EXPECT_LE(r.figures.rounding_bound_mm, 0.5 * kDefaultAgreementToleranceMm);
+    EXPECT_LE(r.figures.hausdorff_to_reference_mm, 4e-6);
+}
+
+TEST(Agreement, CoordinatesTooFineForTheExactComparisonAreProvenOnTheGrid) {
+    // The x = 0 corner lines moved to the smallest float (2^-149): no common
+    // integer grid of 125 bits holds 2^-149 and 64, so the exact comparison
+    // cannot run; on a 2^-12 mm grid the two meshes are the same.
+    const vtest::Model m = vtest::smallModel(Bottom::Flat);
+    const Mesh a = roundedToFloat32(m.mesh);
+    Mesh tiny = a;
+    size_t moved = 0;
+    for (Vec3& p : tiny.positions)
+        if (p.x == 0) {
+            p.x = std::ldexp(1.0, -149);
+            ++moved;
+        }
+    ASSERT_GT(moved, 0u);
+    const AgreementResult r = compareMeshes(tiny, a, "float32 mesh", {});
+    EXPECT_FALSE(r.figures.surfaces_compared);
+    EXPECT_EQ(distanceStatus(r), CheckStatus::Pass) << findCheck(r, "reference_distance").note;
+    EXPECT_NE(r.figures.rounded_to.find("grid"), std::string::npos);
+    EXPECT_EQ(r.figures.samples, 0u);
+}
+
 TEST(Agreement, PillarRaisedByTenMicronsFailsThereWithTheRaiseMeasured) {
     const vtest::Model m = vtest::smallModel(Bottom::Flat);
     Scene s = m.scene;
@@ -224,6 +290,9 @@ TEST(Agreement, ShiftBelowTheToleranceIsMeasuredButNotClaimedAsProven) {
     EXPECT_GT(r.figures.hausdorff_error_bound_mm, 0.0005);
     EXPECT_LE(r.figures.samples, o.sample_budget);
     EXPECT_NE(findCheck(r, "reference_distance").note.find("not proven"), std::string::npos);
+    // For --strict: not proven is a failure.
+    o.fail_on_warnings = true;
+    EXPECT_EQ(distanceStatus(compareMeshes(shifted, m.mesh, "original", o)), CheckStatus::Fail);
 }
 
 TEST(Agreement, InsideOutCopyIsTheSameSurfaceWithTheOppositeVolume) {
