@@ -253,9 +253,9 @@ TEST(Agreement, MissingPillarFailsByItsHeight) {
     EXPECT_EQ(distanceStatus(r), CheckStatus::Fail);
     EXPECT_EQ(volumeStatus(r), CheckStatus::Fail);
     // From the reference: the missing pillar's top centre is `height` above
-    // the bare cell, and farther than that from the neighbouring pillars'
-    // walls only when they are lower; it is at least half a pitch from any
-    // wall, so the distance lies between min(height, pitch / 2) and height.
+    // the bare cell's floor and at least half a pitch from any wall, so its
+    // distance is at least min(height, pitch / 2); no point of the missing
+    // pillar is farther than `height` from the floor straight below it.
     EXPECT_LE(r.figures.hausdorff_from_reference_mm, height_mm + 1e-9);
     EXPECT_GE(r.figures.hausdorff_from_reference_mm, std::min(height_mm, s.pitch_mm / 2) - r.figures.hausdorff_error_bound_mm);
     EXPECT_NEAR(r.figures.volume_difference_mm3, -hexArea(s.pitch_mm) * height_mm, 1e-3 * hexArea(s.pitch_mm) * height_mm);
