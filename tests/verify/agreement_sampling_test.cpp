@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <array>
 #include <random>
 
 #include "tests/verify/verify_test_support.h"
@@ -55,15 +56,21 @@ TEST(TriangleSamples, EveryPointIsWithinTheRadiusOfASample) {
         {"equilateral", {0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.0) / 2, 0}, 0.1},
         {"right angle", {0, 0, 0}, {2, 0, 0}, {0, 1, 0}, 0.07},
         {"obtuse", {0, 0, 0}, {3, 0, 0}, {0.3, 0.4, 0}, 0.05},
+        {"very obtuse", {0, 0, 0}, {0.3, 0.4, 0}, {4, 0.1, 0}, 0.05},
         {"sliver", {0, 0, 0}, {150, 0, 0}, {75, 0.01, 0}, 0.2},
         {"tilted", {1, 2, 3}, {4, -1, 5}, {0, 0, 7}, 0.3},
         {"radius larger than the triangle", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 5.0},
     };
     for (const Case& k : cases) {
-        std::vector<Vec3> s;
-        sampleTriangle(k.a, k.b, k.c, k.r, s);
-        EXPECT_EQ(s.size(), triangleSampleCount(k.a, k.b, k.c, k.r)) << k.name;
-        EXPECT_LE(coveringRadius(k.a, k.b, k.c, s, rng), k.r) << k.name;
+        // Each corner order, so that the longest edge is not always a-b.
+        const std::array<Vec3, 3> v{k.a, k.b, k.c};
+        for (int rot = 0; rot < 3; ++rot) {
+            const Vec3 &a = v[size_t(rot)], &b = v[size_t((rot + 1) % 3)], &c = v[size_t((rot + 2) % 3)];
+            std::vector<Vec3> s;
+            sampleTriangle(a, b, c, k.r, s);
+            EXPECT_EQ(s.size(), triangleSampleCount(a, b, c, k.r)) << k.name << " rotation " << rot;
+            EXPECT_LE(coveringRadius(a, b, c, s, rng), k.r) << k.name << " rotation " << rot;
+        }
     }
 }
 
