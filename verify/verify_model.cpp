@@ -54,6 +54,7 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
         AgreementOptions ao;
         ao.distance_tolerance_mm = options.distance_tolerance_mm;
         ao.max_offenders = options.max_offenders;
+        ao.fail_on_warnings = options.fail_on_warnings;
         AgreementResult ag = compareMeshes(mesh, *options.reference, options.reference_name, ao);
         report.agreement = std::move(ag.figures);
         append(report, std::move(ag));
