@@ -282,6 +282,8 @@ function tsf_cell_corners(col, row, rows, cell_mm) =
 //   echo(tsf_flat_spans([[3, undef], [0, 5]], 2));
 //   // ECHO: [[[0, 5], undef], [[0, 2], [0, 7]]]
 function tsf_flat_spans(heights, base_units) =
+    assert(_tsf_is_height_grid(heights),
+           "tsf_flat_spans: heights must be a list of rows, each a list of whole numbers >= 0 or undef")
     assert(_tsf_is_count(base_units) && base_units >= 1,
            str("tsf_flat_spans: base_units must be a whole number >= 1, got ", base_units))
     [for (row = heights) [for (h = row) is_undef(h) ? undef : [0, base_units + h]]];
@@ -303,6 +305,8 @@ function tsf_flat_spans(heights, base_units) =
 //   echo(tsf_mirrored_spans([[3, undef], [0, 5]], 2));
 //   // ECHO: [[[3, 10], undef], [[0, 7], [5, 12]]]
 function tsf_mirrored_spans(heights, base_units) =
+    assert(_tsf_is_height_grid(heights),
+           "tsf_mirrored_spans: heights must be a list of rows, each a list of whole numbers >= 0 or undef")
     assert(_tsf_is_count(base_units) && base_units >= 1,
            str("tsf_mirrored_spans: base_units must be a whole number >= 1, got ", base_units))
     let(t = _tsf_max_step(heights) + base_units)
@@ -467,6 +471,9 @@ function _tsf_max_step(heights) =
                              let(n = _tsf_neighbour(c, r, k), hn = _tsf_at(heights, n[0], n[1]))
                              if (!is_undef(hn)) abs(h - hn)]));
 
+function _tsf_is_height_grid(h) =
+    is_list(h) && len([for (row = h) if (!is_list(row) || len([for (v = row) if (!is_undef(v) && !_tsf_is_count(v)) 1]) > 0) 1]) == 0;
+
 function _tsf_check_model(m, who) =
     assert(is_list(m) && len(m) == 8 && m[0] == "tsf_model", str(who, ": expected a model made by tsf_model()"))
     m;
@@ -516,7 +523,7 @@ function _tsf_check_model(m, who) =
 //   tsf_terrain_polyhedron(m);
 module tsf_terrain_polyhedron(m) {
     model = _tsf_check_model(m, "tsf_terrain_polyhedron");
-    _tsf_polyhedron(_tsf_span_triangles(model[1], model[2], model[3], model[4], model[5]));
+    _tsf_polyhedron(_tsf_span_points(model[1], model[2], model[3], model[4], model[5]));
 }
 
 // Module: tsf_hull_base()
@@ -537,25 +544,28 @@ module tsf_terrain_polyhedron(m) {
 module tsf_hull_base(m) {
     model = _tsf_check_model(m, "tsf_hull_base");
     slab = [for (row = model[5]) [for (s = row) is_undef(s) ? undef : [0, model[6]]]];
-    _tsf_polyhedron(_tsf_span_triangles(model[1], model[2], model[3], model[4], slab));
+    _tsf_polyhedron(_tsf_span_points(model[1], model[2], model[3], model[4], slab));
 }
 
 // ---------------------------------------------------------------------------
 // Private helpers.
 
-// Triangles (each 3 points, counter-clockwise from outside) handed to
-// polyhedron(), whose faces must be clockwise from outside: reversed here.
-module _tsf_polyhedron(tris) {
-    assert(len(tris) > 0, "tsf: the model has no present cell");
-    polyhedron(points = [for (t = tris) each t],
-               faces = [for (n = [0:len(tris) - 1]) [3 * n + 2, 3 * n + 1, 3 * n]],
+// Triangles as a flat list of points, three per triangle, counter-clockwise
+// from outside, handed to polyhedron(), whose faces must be clockwise from
+// outside: reversed here.
+module _tsf_polyhedron(points) {
+    assert(len(points) > 0, "tsf: the model has no present cell");
+    polyhedron(points = points,
+               faces = [for (n = [0:len(points) / 3 - 1]) [3 * n + 2, 3 * n + 1, 3 * n]],
                convexity = 10);
 }
 
 // The boundary of the union of the prisms spans[row][col] = [bottom, top]
-// (z steps) or undef, as a list of triangles [[x,y,z] x 3], counter-clockwise
-// from outside. Neighbouring spans must overlap by at least one step.
-function _tsf_span_triangles(rows, cols, cell_mm, step_mm, spans) =
+// (z steps) or undef, as triangles counter-clockwise from outside, in a flat
+// list of points [x, y, z], three per triangle (no list per triangle: a
+// 100 x 100 grid has 160 000 of them). Neighbouring spans must overlap by at
+// least one step.
+function _tsf_span_points(rows, cols, cell_mm, step_mm, spans) =
     let(xs = [for (i = [0:2 * cols + 1]) _tsf_snap_xy(_tsf_lattice_x(i, cell_mm))],
         ys = [for (j = [0:3 * rows + 1]) _tsf_snap_xy(_tsf_lattice_y(j, cell_mm))],
         offsets = _tsf_corner_offsets())
@@ -564,7 +574,7 @@ function _tsf_span_triangles(rows, cols, cell_mm, step_mm, spans) =
             let(ci = 2 * c + odd + 1,
                 xy = [for (d = offsets) [xs[ci + d[0]], ys[cj + d[1]]]],
                 nb = [for (k = [0:5]) let(n = _tsf_neighbour(c, r, k)) _tsf_at(spans, n[0], n[1])])
-            each _tsf_cell_triangles(xy, s, nb, step_mm)];
+            for (t = _tsf_cell_triangles(xy, s, nb, step_mm)) each t];
 
 // Faces owned by one cell: top, bottom and its outward walls.
 //   xy = its 6 corners [x, y] (mm); s = [bottom, top] (steps);
