@@ -77,11 +77,12 @@ void expectCornerRaysMatch(const Mesh& mesh, const Scene& scene) {
     }
 }
 
-// The OpenSCAD mesh and the direct mesher's are the same solid: both closed
-// and outward, equal volume (and equal to the Scene's own sum), every cell's
-// top and bottom at its height at its centre and near each corner, and no
-// material outside the kept cells. (The verifier's Hausdorff agreement check
-// would say the same but takes minutes even for 72 cells; docs/openscad.md.)
+// The OpenSCAD mesh and the direct mesher's are the same solid: the
+// verifier's agreement check passes (verify/agreement.h: the surfaces cover
+// the same planes, Hausdorff distance within 1 um), both are closed and
+// outward with equal volume (and equal to the Scene's own sum), every cell's
+// top and bottom is at its height at its centre and near each corner, and
+// there is no material outside the kept cells.
 void expectSameSolidAsDirectMesh(const Mesh& scad_mesh, const Scene& scene) {
     const Mesh direct = meshScene(scene);
     const MeshTopology topo = analyzeTopology(scad_mesh);
@@ -95,8 +96,13 @@ void expectSameSolidAsDirectMesh(const Mesh& scad_mesh, const Scene& scene) {
 
     VerifyOptions vo;
     vo.printability = false;
+    vo.reference = &direct;
+    vo.reference_name = "direct mesher";
     const VerifyReport report = verifyModel(scad_mesh, &scene, vo);
     EXPECT_TRUE(report.passed()) << formatReport(report);
+    ASSERT_TRUE(report.agreement.has_value());
+    EXPECT_LE(report.agreement->hausdorff_to_reference_mm, kDefaultAgreementToleranceMm);
+    EXPECT_LE(report.agreement->hausdorff_from_reference_mm, kDefaultAgreementToleranceMm);
     ASSERT_TRUE(report.readback.has_value());
     EXPECT_EQ(report.readback->cells_checked, scene.keptCount());
     EXPECT_EQ(report.readback->over_tolerance, 0u);
