@@ -88,18 +88,8 @@ public:
         }
         argv.push_back(rq.scad_path);
 
-        ProcessOptions po;
-        po.timeout_s = rq.timeout_s;
-        po.progress_interval_s = rq.progress_interval_s;
-        po.on_progress = progress;
-        const ProcessResult pr = runProcess(argv, po);
-
-        ScadRenderResult r;
-        r.command = argv;
-        r.elapsed_s = pr.elapsed_s;
-        r.peak_memory_kb = pr.peak_memory_kb;
-        r.output = pr.output;
-        r.messages = parseOpenScadOutput(pr.output);
+        ProcessResult pr;
+        ScadRenderResult r = runEngineProcess(argv, rq, progress, pr);
         std::ostringstream why;
         switch (pr.end) {
             case ProcessResult::End::Exited:
@@ -237,6 +227,22 @@ std::vector<ScadMessage> ScadRenderResult::warnings() const {
     for (const ScadMessage& m : messages)
         if (m.kind == ScadMessage::Kind::Warning || m.kind == ScadMessage::Kind::Deprecated) out.push_back(m);
     return out;
+}
+
+ScadRenderResult runEngineProcess(const std::vector<std::string>& argv, const ScadRenderRequest& rq,
+                                  const ScadProgress& progress, ProcessResult& process) {
+    ProcessOptions po;
+    po.timeout_s = rq.timeout_s;
+    po.progress_interval_s = rq.progress_interval_s;
+    po.on_progress = progress;
+    process = runProcess(argv, po);
+    ScadRenderResult r;
+    r.command = argv;
+    r.elapsed_s = process.elapsed_s;
+    r.peak_memory_kb = process.peak_memory_kb;
+    r.output = process.output;
+    r.messages = parseOpenScadOutput(process.output);
+    return r;
 }
 
 std::unique_ptr<ScadEngine> makeOpenScadEngine(const std::string& binary) {

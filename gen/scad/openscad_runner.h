@@ -112,6 +112,16 @@ public:
 /// with an install hint when it is not there or does not run.
 std::unique_ptr<ScadEngine> makeOpenScadEngine(const std::string& binary = "");
 
+struct ProcessResult;
+
+/// For ScadEngine implementations: runs an engine's command line with the
+/// request's timeout and progress reporting, and fills what every engine's
+/// result shares (command, elapsed time, peak memory, output, parsed
+/// messages). `process` receives how the process ended, which each engine
+/// interprets itself (its own exit codes).
+ScadRenderResult runEngineProcess(const std::vector<std::string>& argv, const ScadRenderRequest& request,
+                                  const ScadProgress& progress, ProcessResult& process);
+
 /// Renders request through engine:
 ///   - throws InputError when the .scad file cannot be read, the format is
 ///     not supported, or parameter_set is not a set in parameter_file (OpenSCAD

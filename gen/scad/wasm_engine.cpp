@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gen/scad/openscad_runner.h"
 #include "gen/scad/process_runner.h"
 
 namespace tsf {
@@ -96,18 +97,8 @@ public:
         if (!rq.parameter_set.empty()) argv.insert(argv.end(), {"-P", rq.parameter_set});
         argv.push_back(rq.scad_path);
 
-        ProcessOptions po;
-        po.timeout_s = rq.timeout_s;
-        po.progress_interval_s = rq.progress_interval_s;
-        po.on_progress = progress;
-        const ProcessResult pr = runProcess(argv, po);
-
-        ScadRenderResult r;
-        r.command = argv;
-        r.elapsed_s = pr.elapsed_s;
-        r.peak_memory_kb = pr.peak_memory_kb;
-        r.output = pr.output;
-        r.messages = parseOpenScadOutput(pr.output);
+        ProcessResult pr;
+        ScadRenderResult r = runEngineProcess(argv, rq, progress, pr);
         std::ostringstream why;
         switch (pr.end) {
             case ProcessResult::End::Exited:
