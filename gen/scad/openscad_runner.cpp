@@ -53,11 +53,6 @@ const char* exportFormatArg(ScadExportFormat f) {
 
 std::string firstLine(const std::string& s) { return s.substr(0, s.find('\n')); }
 
-bool hasError(const std::vector<ScadMessage>& messages) {
-    return std::any_of(messages.begin(), messages.end(),
-                       [](const ScadMessage& m) { return m.kind == ScadMessage::Kind::Error; });
-}
-
 class OpenScadEngine : public ScadEngine {
 public:
     OpenScadEngine(std::string exe, std::string version, bool manifold)
@@ -96,34 +91,7 @@ public:
 
         ProcessResult pr;
         ScadRenderResult r = runEngineProcess(argv, rq, progress, pr);
-        std::ostringstream why;
-        switch (pr.end) {
-            case ProcessResult::End::Exited:
-                if (pr.exit_code == 0 && hasError(r.messages)) {
-                    // OpenSCAD 2025 exports what is left after an ERROR (a failed
-                    // assert drops only its module) with status 0; 2021.01 stops.
-                    why << "openscad printed an error (the output would be a partial model)";
-                } else if (pr.exit_code == 0) {
-                    r.status = ScadRenderResult::Status::Ok;
-                    why << "rendered in " << std::fixed << std::setprecision(2) << pr.elapsed_s << " s";
-                } else {
-                    why << "openscad failed (exit code " << pr.exit_code << ")";
-                    if (pr.output.find("Current top level object is empty") != std::string::npos)
-                        why << ": the model is empty, nothing to export";
-                }
-                break;
-            case ProcessResult::End::Signalled: why << "openscad crashed (signal " << pr.signal << ")"; break;
-            case ProcessResult::End::TimedOut:
-                r.status = ScadRenderResult::Status::TimedOut;
-                why << "openscad was stopped after the time limit of " << rq.timeout_s << " s";
-                break;
-            case ProcessResult::End::Interrupted:
-                r.status = ScadRenderResult::Status::Interrupted;
-                why << "interrupted; openscad was stopped";
-                break;
-            case ProcessResult::End::NotStarted: why << pr.start_error; break;
-        }
-        r.summary = why.str();
+        finishEngineResult(r, pr, rq, "openscad");
         return r;
     }
 
@@ -250,6 +218,42 @@ ScadRenderResult runEngineProcess(const std::vector<std::string>& argv, const Sc
     r.output = process.output;
     r.messages = parseOpenScadOutput(process.output);
     return r;
+}
+
+void finishEngineResult(ScadRenderResult& r, const ProcessResult& pr, const ScadRenderRequest& rq,
+                        const std::string& engine, const std::function<std::string(int)>& explain_exit) {
+    std::ostringstream why;
+    switch (pr.end) {
+        case ProcessResult::End::Exited:
+            if (pr.exit_code == 0 && !r.errors().empty()) {
+                // OpenSCAD 2025 goes on after an ERROR (a failed assert() drops
+                // only the module it is in) and exports what is left with exit
+                // status 0; 2021.01 stops. Same rule for every engine.
+                why << engine << " reported an error but exported the rest of the model anyway: "
+                    << formatScadMessage(r.errors().front()) << "; treated as a failure";
+            } else if (pr.exit_code == 0) {
+                r.status = ScadRenderResult::Status::Ok;
+                why << "rendered in " << std::fixed << std::setprecision(2) << pr.elapsed_s << " s";
+            } else if (const std::string special = explain_exit ? explain_exit(pr.exit_code) : ""; !special.empty()) {
+                why << special;
+            } else {
+                why << engine << " failed (exit code " << pr.exit_code << ")";
+                if (pr.output.find("Current top level object is empty") != std::string::npos)
+                    why << ": the model is empty, nothing to export";
+            }
+            break;
+        case ProcessResult::End::Signalled: why << engine << " crashed (signal " << pr.signal << ")"; break;
+        case ProcessResult::End::TimedOut:
+            r.status = ScadRenderResult::Status::TimedOut;
+            why << engine << " was stopped after the time limit of " << rq.timeout_s << " s";
+            break;
+        case ProcessResult::End::Interrupted:
+            r.status = ScadRenderResult::Status::Interrupted;
+            why << "interrupted; " << engine << " was stopped";
+            break;
+        case ProcessResult::End::NotStarted: why << pr.start_error; break;
+    }
+    r.summary = why.str();
 }
 
 std::unique_ptr<ScadEngine> makeOpenScadEngine(const std::string& binary) {

@@ -122,6 +122,14 @@ struct ProcessResult;
 ScadRenderResult runEngineProcess(const std::vector<std::string>& argv, const ScadRenderRequest& request,
                                   const ScadProgress& progress, ProcessResult& process);
 
+/// For ScadEngine implementations: sets r.status and r.summary (one line for
+/// people) from how the engine process ended. An ERROR line fails the render
+/// even with exit status 0 (OpenSCAD 2025 exports partial models). `engine`
+/// names the engine in the summary; `explain_exit` may describe an
+/// engine-specific non-zero exit code ("" = the generic message).
+void finishEngineResult(ScadRenderResult& r, const ProcessResult& process, const ScadRenderRequest& request,
+                        const std::string& engine, const std::function<std::string(int exit_code)>& explain_exit = {});
+
 /// Renders request through engine:
 ///   - throws InputError when the .scad file cannot be read, the format is
 ///     not supported, or parameter_set is not a set in parameter_file (OpenSCAD

@@ -99,44 +99,14 @@ public:
 
         ProcessResult pr;
         ScadRenderResult r = runEngineProcess(argv, rq, progress, pr);
-        std::ostringstream why;
-        switch (pr.end) {
-            case ProcessResult::End::Exited:
-                if (pr.exit_code == 0 && !r.errors().empty()) {
-                    // OpenSCAD 2025 goes on after an ERROR (a failed assert()
-                    // drops only the module it is in) and exports what is
-                    // left with exit status 0; 2021.01 stops. Same rule for both.
-                    why << kEngineName << " reported an error but exported the rest of the model anyway: "
-                        << formatScadMessage(r.errors().front()) << "; treated as a failure";
-                } else if (pr.exit_code == 0) {
-                    r.status = ScadRenderResult::Status::Ok;
-                    why << "rendered in " << pr.elapsed_s << " s";
-                } else if (pr.exit_code == kWasmExitCrashed) {
-                    why << kEngineName << " crashed: " << launcherLine(pr.output);
-                } else if (pr.exit_code == kWasmExitUnavailable) {
-                    why << kEngineName << " is not installed: " << launcherLine(pr.output);
-                } else if (pr.exit_code == kWasmExitIo) {
-                    why << kEngineName << " failed: " << launcherLine(pr.output);
-                } else {
-                    why << kEngineName << " failed (exit code " << pr.exit_code << ")";
-                    if (pr.output.find("Current top level object is empty") != std::string::npos)
-                        why << ": the model is empty, nothing to export";
-                }
-                break;
-            case ProcessResult::End::Signalled:
-                why << kEngineName << " crashed (node ended by signal " << pr.signal << ")";
-                break;
-            case ProcessResult::End::TimedOut:
-                r.status = ScadRenderResult::Status::TimedOut;
-                why << kEngineName << " was stopped after the time limit of " << rq.timeout_s << " s";
-                break;
-            case ProcessResult::End::Interrupted:
-                r.status = ScadRenderResult::Status::Interrupted;
-                why << "interrupted; " << kEngineName << " was stopped";
-                break;
-            case ProcessResult::End::NotStarted: why << pr.start_error; break;
-        }
-        r.summary = why.str();
+        finishEngineResult(r, pr, rq, kEngineName, [&](int exit_code) -> std::string {
+            // The launcher's own exit codes (openscad-wasm.mjs).
+            if (exit_code == kWasmExitCrashed) return std::string(kEngineName) + " crashed: " + launcherLine(pr.output);
+            if (exit_code == kWasmExitUnavailable)
+                return std::string(kEngineName) + " is not installed: " + launcherLine(pr.output);
+            if (exit_code == kWasmExitIo) return std::string(kEngineName) + " failed: " + launcherLine(pr.output);
+            return "";
+        });
         return r;
     }
 
