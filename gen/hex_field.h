@@ -22,6 +22,9 @@ struct HexField {
     /// Centre spacing of the lattice in data units (1 = one raster pixel), so a
     /// reader of the model can relate millimetres back to data coordinates.
     double pitch_data = 1.0;
+    /// True when every cell holds one input value as read (no averaging,
+    /// no interpolation, no cell repeated): one pillar per value.
+    bool one_to_one = false;
 
     double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }
     double& at(int32_t col, int32_t row) { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }

@@ -153,6 +153,50 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
     return field;
 }
 
+HexField rasterOneToOne(const Raster& raster) {
+    if (raster.empty()) throw InputError(raster.source, 0, 0, "the raster is empty");
+    HexField field;
+    field.grid = {raster.cols, raster.rows};
+    field.source = raster.source;
+    field.values = raster.values;
+    field.pitch_data = raster.cell_size;
+    field.one_to_one = true;
+    field.how = "one pillar per value: " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
+                " values -> " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
+                " hexagons (odd rows shifted half a cell east; rows are 0.866 of a cell apart, so the model is "
+                "13% shallower north-south than the grid)";
+    return field;
+}
+
+HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
+    if (raster.empty()) throw InputError(raster.source, 0, 0, "the raster is empty");
+    ResampleOptions rs;
+    rs.method = pl.method;
+    if (pl.hex_cols > 0) {
+        rs.hex_cols = pl.hex_cols;
+        return resampleRaster(raster, rs);
+    }
+    const HexGrid grid{raster.cols, raster.rows};
+    if (pl.pitch_mm > 0) return rasterOneToOne(raster);
+    const double pitch = std::min(pl.fit_width_mm / gridWidth(grid, 1.0), pl.fit_depth_mm / gridDepth(grid, 1.0));
+    if (pitch >= kMinTactileCellMm) return rasterOneToOne(raster);
+    // Too many values for pillars a finger can tell apart: the most columns
+    // whose cells are still kMinTactileCellMm wide, in both directions.
+    int cols = std::max(1, int(std::floor(pl.fit_width_mm / kMinTactileCellMm - 0.5)));
+    cols = std::min<int>(cols, raster.cols);
+    for (; cols > 1; --cols) {
+        const ResampleLayout l = resampleLayout(raster.cols, raster.rows, cols);
+        const double p = std::min(pl.fit_width_mm / gridWidth(l.grid, 1.0), pl.fit_depth_mm / gridDepth(l.grid, 1.0));
+        if (p >= kMinTactileCellMm) break;
+    }
+    rs.hex_cols = cols;
+    HexField f = resampleRaster(raster, rs);
+    f.how += "; resampled because one pillar per value would be " + formatNumber(pitch) +
+             " mm across, below the " + formatNumber(kMinTactileCellMm) +
+             " mm a fingertip tells apart (--bins N or --cell MM to choose)";
+    return f;
+}
+
 const char* resampleMethodName(ResampleOptions::Method method) {
     switch (method) {
         case ResampleOptions::Method::Nearest: return "nearest";

@@ -72,6 +72,33 @@ struct ResampleLayout {
 };
 ResampleLayout resampleLayout(int32_t raster_cols, int32_t raster_rows, int hex_cols);
 
+/// Smallest hexagon (width across flats, mm) tsf chooses by default: about the
+/// two-point threshold of a fingertip (2-4 mm, Weinstein 1968); smaller
+/// pillars are felt as texture, not as separate values. docs/model.md.
+inline constexpr double kMinTactileCellMm = 3.0;
+
+/// One hexagon per raster cell: cell (col, row) of the raster becomes hex
+/// (col, row) of the lattice (row 0 north, odd rows shifted east by half a
+/// cell), with the raster's own value. Rows of hexagons are sqrt(3)/2 of a
+/// pitch apart, so the model is that much shallower (north-south) than the
+/// grid's aspect; `how` says so. HexField::one_to_one is set.
+HexField rasterOneToOne(const Raster& raster);
+
+/// How a raster becomes hexagons by default (tsf gen without --bins).
+struct RasterPlacement {
+    int hex_cols = 0;           ///< --bins; 0 = decide here
+    ResampleOptions::Method method = ResampleOptions::Method::Mean;
+    double pitch_mm = 0;        ///< --cell; 0 = fit the box
+    double fit_width_mm = 150;  ///< the box the model must fit (printer bed)
+    double fit_depth_mm = 150;
+};
+
+/// One pillar per value when the grid fits the box at kMinTactileCellMm or
+/// more (or a cell size was given); otherwise resampled to the most columns
+/// that keep cells at least kMinTactileCellMm, and `how` says from what to
+/// what and why. hex_cols > 0 always resamples to that many columns.
+HexField placeRaster(const Raster& raster, const RasterPlacement& placement);
+
 /// "mean", "nearest", "bilinear"; and the inverse (InputError otherwise).
 const char* resampleMethodName(ResampleOptions::Method method);
 ResampleOptions::Method parseResampleMethod(const std::string& name);

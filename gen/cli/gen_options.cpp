@@ -5,6 +5,7 @@
 
 #include "gen/error.h"
 #include "gen/io/point_binning.h"
+#include "gen/io/point_projection.h"
 #include "gen/io/point_reader.h"
 #include "gen/io/raster_reader.h"
 #include "gen/resample.h"
@@ -50,15 +51,27 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--sample", o.sample, "Raster -> hexagons: mean (of the pixels in a hexagon) | nearest | bilinear")
         ->check(CLI::IsMember({"mean", "nearest", "bilinear"}))->capture_default_str()->group(in);
     cmd->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; tab space (default: detect)")->group(in);
+    cmd->add_option_function<double>(
+           "--nodata", [&o](double v) { o.nodata = v; },
+           "This value means 'no data' (e.g. -9999): such cells become pits, never heights")
+        ->group(in);
+    cmd->add_option("--project", o.project,
+                    "Points: auto (equirectangular when the columns are named lon/lat), none, equirect "
+                    "(x = longitude x cos(mean latitude))")
+        ->check(CLI::IsMember({"auto", "none", "equirect"}))->capture_default_str()->group(in);
 
     auto* model = "Model (millimetres)";
     SceneParams& p = o.scene;
     cmd->add_option("--cell", p.pitch_mm, "Hexagon width across flats = centre spacing, mm (default: fit --width/--depth)")
         ->check(CLI::PositiveNumber)->group(model);
-    cmd->add_option("--width", p.fit_width_mm, "Fit the grid into this width, mm (printer bed)")
-        ->check(CLI::PositiveNumber)->capture_default_str()->group(model);
-    cmd->add_option("--depth", p.fit_depth_mm, "Fit the grid into this depth, mm")
-        ->check(CLI::PositiveNumber)->capture_default_str()->group(model);
+    cmd->add_option_function<double>(
+           "--width", [&p](double v) { p.fit_width_mm = v; p.fit_box_given = true; },
+           "Fit the grid into this width, mm (printer bed; default 150). With --cell: the model must fit it")
+        ->check(CLI::PositiveNumber)->group(model);
+    cmd->add_option_function<double>(
+           "--depth", [&p](double v) { p.fit_depth_mm = v; p.fit_box_given = true; },
+           "Fit the grid into this depth, mm (default 150). With --cell: the model must fit it")
+        ->check(CLI::PositiveNumber)->group(model);
     cmd->add_option("--height", p.max_height_mm, "Height of the largest value above the floor, mm")
         ->check(CLI::NonNegativeNumber)->capture_default_str()->group(model);
     cmd->add_option("--base", p.base_mm, "Flat: base under the floor; mirrored: thinnest slab, mm")
@@ -88,6 +101,15 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "Mirrored bottom: the underside shows the negated data, so cells hidden between tall neighbours "
            "can be felt from below")
         ->group(model);
+    auto* marks = "Orientation marks (docs/model.md)";
+    cmd->add_flag_callback("--no-notch", [&p] { p.marks.notch = false; },
+                           "Leave out the V notch at the origin (south-west) corner")->group(marks);
+    cmd->add_flag_callback("--no-triangle", [&p] { p.marks.triangle = false; },
+                           "Leave out the raised right triangle (x leg east, the longer; y leg north)")->group(marks);
+    cmd->add_option("--notch-depth", p.marks.notch_depth_mm, "How far the notch reaches into the corner, mm")
+        ->check(CLI::Range(0.5, 100.0))->capture_default_str()->group(marks);
+    cmd->add_option("--triangle-leg", p.marks.triangle_leg_mm, "Preferred east leg of the triangle, mm (north leg 0.6 of it)")
+        ->check(CLI::Range(5.0, 200.0))->capture_default_str()->group(marks);
 }
 
 HexField loadField(const GenOptions& o) {
@@ -106,18 +128,33 @@ HexField loadField(const GenOptions& o) {
         b.aggregate = parseAggregate(o.aggregate);
         b.bin_size = o.bin_size;
         b.hex_cols = o.bins;
-        HexField f = binPoints(table, b);
+        PointTable points = table;
+        const std::string projected = projectPoints(points, parseProjection(o.project));
+        HexField f = binPoints(points, b);
         f.source = o.input;
+        if (!projected.empty()) f.how += "; " + projected;
         return f;
     }
     RasterReadOptions ro;
     ro.delimiter = delimiter;
-    const Raster raster = readRaster(o.input, ro);
-    ResampleOptions rs;
-    rs.hex_cols = o.bins;
-    rs.method = parseResampleMethod(o.sample);
-    HexField f = resampleRaster(raster, rs);
+    Raster raster = readRaster(o.input, ro);
+    int64_t nodata_cells = 0;
+    if (o.nodata)
+        for (double& v : raster.values)
+            if (v == *o.nodata) { v = NAN; ++nodata_cells; }
+    RasterPlacement pl;
+    pl.hex_cols = o.bins;
+    pl.method = parseResampleMethod(o.sample);
+    pl.pitch_mm = o.scene.pitch_mm;
+    pl.fit_width_mm = o.scene.fit_width_mm;
+    pl.fit_depth_mm = o.scene.fit_depth_mm;
+    HexField f = placeRaster(raster, pl);
     f.source = o.input;
+    if (o.nodata) {
+        std::ostringstream s;
+        s << "; " << nodata_cells << " values equal to --nodata " << *o.nodata << " are no data";
+        f.how += s.str();
+    }
     return f;
 }
 

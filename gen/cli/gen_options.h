@@ -2,6 +2,7 @@
 // that need a Scene: `tsf gen`, `tsf info` and `tsf verify --against`.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +21,8 @@ struct GenOptions {
     int bins = 0;               ///< target number of hex columns (points and rasters); 0 = default
     std::string sample = "mean";  ///< raster -> hexes: mean | nearest | bilinear
     std::string delimiter;      ///< CSV delimiter; empty = detect
+    std::optional<double> nodata;  ///< --nodata: this value means "no data" (rasters and grids)
+    std::string project = "auto";  ///< points: auto | none | equirect
     // model
     SceneParams scene;
     std::string cell_arg, width_arg, depth_arg;  ///< raw, for validation messages
