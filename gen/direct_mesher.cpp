@@ -17,11 +17,18 @@
 // culling rules keep the region simply connected: docs/model.md). It is
 // triangulated as a whole by a constrained Delaunay triangulation with exact
 // predicates, without interior vertices.
+//
+// Faces. Cells touched by an orientation mark are drawn through the Scene's
+// planar faces (gen/marks.h) instead of as hexagons: the same rules with the
+// face's own triangulation, rings and what lies across each ring edge. Their
+// extra vertices (where a mark's edge crosses a hex edge) have planar ids after
+// the lattice's, so everything above holds for them unchanged.
 #include "gen/direct_mesher.h"
 
 #include <algorithm>
 #include <cassert>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -31,73 +38,80 @@
 namespace tsf {
 namespace {
 
-constexpr int kMaxHeightsPerVertex = 6;  // 3 incident cells x (top, bottom)
-
-struct VertexRef {
-    int32_t col, row;
-    int type;  // 0 = top corner of (col, row), 1 = bottom corner
-};
-
-VertexRef decodeVertexId(const HexGrid& g, int64_t id) {
-    const int type = int(id & 1);
-    const int64_t cell = id >> 1;
-    return {int32_t(cell % (int64_t(g.cols) + 2)) - 1, int32_t(cell / (int64_t(g.cols) + 2)) - 1, type};
-}
+constexpr int kMaxHeightsPerVertex = 8;  // 3 incident cells x (top, bottom), or faces at a mark vertex
 
 class MeshBuilder {
 public:
-    explicit MeshBuilder(const Scene& scene) : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat) {
-        first_index_.assign(size_t(latticeVertexIdCount(g_)) + 1, 0);
+    explicit MeshBuilder(const Scene& scene)
+        : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat), lattice_ids_(latticeVertexIdCount(g_)) {
+        const int64_t ids = lattice_ids_ + int64_t(s_.faces.extra.size());
+        first_index_.assign(size_t(ids) + 1, 0);
+        const auto& faces = s_.faces.faces;
+        for (size_t f = 0; f < faces.size(); ++f)
+            for (const auto& ring : faces[f].rings)
+                for (int64_t id : ring) {
+                    auto& at = faces_at_[id];
+                    if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
+                }
     }
 
     Mesh build() {
+        if (flat_) collectRim();
         assignVertices();
-        for (size_t k = 0; k < s_.keptCount(); ++k) addCell(k);
+        for (size_t k = 0; k < s_.keptCount(); ++k)
+            if (s_.drawn_by_face.empty() || !s_.drawn_by_face[k]) addCell(k);
+        for (const PlanarFace& f : s_.faces.faces) addFace(f);
         if (flat_) addFlatBottom();
         return std::move(mesh_);
     }
 
 private:
-    // The (up to three) cells meeting at a lattice vertex; -1 = not kept.
-    int incidentCells(int64_t id, int32_t out[3]) const {
-        const VertexRef v = decodeVertexId(g_, id);
-        // N(h) is corner 2 of h, corner 0 of NW(h), corner 4 of NE(h);
-        // S(h) is corner 5 of h, corner 1 of SW(h), corner 3 of SE(h).
-        int32_t c1, r1, c2, r2;
-        hexNeighbour(v.col, v.row, v.type == 0 ? 2 : 4, c1, r1);
-        hexNeighbour(v.col, v.row, v.type == 0 ? 1 : 5, c2, r2);
-        out[0] = s_.keptAt(v.col, v.row);
-        out[1] = s_.keptAt(c1, r1);
-        out[2] = s_.keptAt(c2, r2);
-        return 3;
+    bool drawnByFace(int32_t kept) const { return !s_.drawn_by_face.empty() && s_.drawn_by_face[size_t(kept)]; }
+
+    // The three cells meeting at a lattice vertex (kept indices; -1 = not kept).
+    void incidentCells(int64_t id, int32_t out[3]) const {
+        int32_t col[3], row[3];
+        latticeVertexCells(g_, id, col, row);
+        for (int n = 0; n < 3; ++n) out[n] = s_.keptAt(col[n], row[n]);
     }
 
-    // Sorted distinct heights (snap units) of the mesh vertices at lattice vertex id.
+    // Sorted distinct heights (snap units) of the mesh vertices at planar vertex id.
     int usedHeights(int64_t id, int64_t out[kMaxHeightsPerVertex]) const {
-        int32_t cells[3];
-        incidentCells(id, cells);
         int n = 0;
-        const bool rim = cells[0] < 0 || cells[1] < 0 || cells[2] < 0;
-        for (int32_t c : cells) {
-            if (c < 0) continue;
-            out[n++] = s_.top[size_t(c)];
-            if (!flat_ || rim) out[n++] = s_.bottom[size_t(c)];
+        const auto faces = faces_at_.find(id);
+        const bool touched = faces != faces_at_.end();
+        bool rim = false;
+        if (id < lattice_ids_) {
+            int32_t cells[3];
+            incidentCells(id, cells);
+            rim = touched ? rim_.count(id) > 0 : (cells[0] < 0 || cells[1] < 0 || cells[2] < 0);
+            for (int32_t c : cells) {
+                if (c < 0 || drawnByFace(c)) continue;
+                out[n++] = s_.top[size_t(c)];
+                if (!flat_ || rim) out[n++] = s_.bottom[size_t(c)];
+            }
+        } else {
+            rim = rim_.count(id) > 0;
         }
+        if (touched)
+            for (int32_t f : faces->second) {
+                const PlanarFace& face = s_.faces.faces[size_t(f)];
+                assert(n + 2 <= kMaxHeightsPerVertex && "too many faces meet at a vertex");
+                out[n++] = s_.faceTop(face);
+                if (!flat_ || rim) out[n++] = s_.faceBottom(face);
+            }
         std::sort(out, out + n);
         return int(std::unique(out, out + n) - out);
     }
 
     void assignVertices() {
-        const int64_t ids = latticeVertexIdCount(g_);
+        const int64_t ids = int64_t(first_index_.size()) - 1;
         uint32_t next = 0;
         int64_t z[kMaxHeightsPerVertex];
         for (int64_t id = 0; id < ids; ++id) {
             first_index_[size_t(id)] = next;
             const int n = usedHeights(id, z);
-            if (n == 0) continue;
-            const VertexRef v = decodeVertexId(g_, id);
-            const LatticePoint p = hexCorner(g_, v.col, v.row, v.type == 0 ? 2 : 5);
-            for (int h = 0; h < n; ++h) mesh_.positions.push_back(s_.point(p, z[h]));
+            for (int h = 0; h < n; ++h) mesh_.positions.push_back(s_.planarPoint(id, z[h]));
             next += uint32_t(n);
         }
         first_index_[size_t(ids)] = next;
@@ -107,11 +121,23 @@ private:
         int64_t zs[kMaxHeightsPerVertex];
         const int n = usedHeights(id, zs);
         const int64_t* at = std::lower_bound(zs, zs + n, z);
-        assert(at != zs + n && *at == z && "height not used at this lattice vertex");
+        assert(at != zs + n && *at == z && "height not used at this vertex");
         return first_index_[size_t(id)] + uint32_t(at - zs);
     }
 
     void tri(uint32_t a, uint32_t b, uint32_t c) { mesh_.triangles.push_back({a, b, c}); }
+
+    // Walls along edge v -> w of a cell or face spanning [bottom, top], where
+    // the neighbour's span [obot, otop] does not cover it (no neighbour: all of it).
+    void addWalls(int64_t v, int64_t w, int64_t bottom, int64_t top, bool has_neighbour, int64_t obot, int64_t otop) {
+        if (!has_neighbour) {
+            addWall(v, w, bottom, top);
+            return;
+        }
+        assert(obot < top && bottom < otop && "neighbouring pillars must overlap in z");
+        if (otop < top) addWall(v, w, otop, top);
+        if (bottom < obot) addWall(v, w, bottom, obot);
+    }
 
     void addCell(size_t k) {
         const int32_t c = s_.col[k], r = s_.row[k];
@@ -130,15 +156,32 @@ private:
             int32_t nc, nr;
             hexNeighbour(c, r, e, nc, nr);
             const int32_t other = s_.keptAt(nc, nr);
-            const int64_t v = id[e], w = id[(e + 1) % kHexCorners];
-            if (other < 0) {
-                addWall(v, w, bottom, top);
-                continue;
+            const bool has = other >= 0;
+            addWalls(id[e], id[(e + 1) % kHexCorners], bottom, top, has, has ? s_.bottom[size_t(other)] : 0,
+                     has ? s_.top[size_t(other)] : 0);
+        }
+    }
+
+    void addFace(const PlanarFace& f) {
+        const int64_t top = s_.faceTop(f), bottom = s_.faceBottom(f);
+        for (const auto& t : f.triangles) {
+            tri(vertexIndex(t[0], top), vertexIndex(t[1], top), vertexIndex(t[2], top));
+            if (!flat_) tri(vertexIndex(t[0], bottom), vertexIndex(t[2], bottom), vertexIndex(t[1], bottom));
+        }
+        for (size_t r = 0; r < f.rings.size(); ++r) {
+            const auto& ring = f.rings[r];
+            for (size_t n = 0; n < ring.size(); ++n) {
+                const Across& a = f.across[r][n];
+                int64_t obot = 0, otop = 0;
+                if (a.kind == Across::Kind::Face) {
+                    obot = s_.faceBottom(s_.faces.faces[size_t(a.index)]);
+                    otop = s_.faceTop(s_.faces.faces[size_t(a.index)]);
+                } else if (a.kind == Across::Kind::Cell) {
+                    obot = s_.bottom[size_t(a.index)];
+                    otop = s_.top[size_t(a.index)];
+                }
+                addWalls(ring[n], ring[(n + 1) % ring.size()], bottom, top, a.kind != Across::Kind::Outside, obot, otop);
             }
-            const int64_t obot = s_.bottom[size_t(other)], otop = s_.top[size_t(other)];
-            assert(obot < top && bottom < otop && "neighbouring pillars must overlap in z");
-            if (otop < top) addWall(v, w, otop, top);
-            if (bottom < obot) addWall(v, w, bottom, obot);
         }
     }
 
@@ -168,31 +211,44 @@ private:
         }
     }
 
-    void addFlatBottom() {
-        // Rim edges, directed counter-clockwise around the kept region.
-        std::unordered_map<int64_t, int64_t> next_on_rim;
+    // Rim edges, directed counter-clockwise around the kept region: hex edges
+    // of plain cells with no kept neighbour, and face edges with nothing across.
+    void collectRim() {
         for (size_t k = 0; k < s_.keptCount(); ++k) {
+            if (drawnByFace(int32_t(k))) continue;
             for (int e = 0; e < kHexCorners; ++e) {
                 int32_t nc, nr;
                 hexNeighbour(s_.col[k], s_.row[k], e, nc, nr);
                 if (s_.keptAt(nc, nr) >= 0) continue;
-                const int64_t v = hexCornerId(g_, s_.col[k], s_.row[k], e);
-                const int64_t w = hexCornerId(g_, s_.col[k], s_.row[k], (e + 1) % kHexCorners);
-                [[maybe_unused]] const bool fresh = next_on_rim.emplace(v, w).second;
-                assert(fresh && "the rim passes a vertex twice");
+                addRimEdge(hexCornerId(g_, s_.col[k], s_.row[k], e), hexCornerId(g_, s_.col[k], s_.row[k], (e + 1) % kHexCorners));
             }
         }
-        if (next_on_rim.empty()) return;
+        for (const PlanarFace& f : s_.faces.faces)
+            for (size_t r = 0; r < f.rings.size(); ++r)
+                for (size_t n = 0; n < f.rings[r].size(); ++n)
+                    if (f.across[r][n].kind == Across::Kind::Outside)
+                        addRimEdge(f.rings[r][n], f.rings[r][(n + 1) % f.rings[r].size()]);
+    }
+
+    void addRimEdge(int64_t v, int64_t w) {
+        [[maybe_unused]] const bool fresh = next_on_rim_.emplace(v, w).second;
+        assert(fresh && "the rim passes a vertex twice");
+        rim_.insert(v);
+        rim_.insert(w);
+    }
+
+    void addFlatBottom() {
+        if (next_on_rim_.empty()) return;
         std::vector<int64_t> loop;
-        loop.reserve(next_on_rim.size());
-        const int64_t start = next_on_rim.begin()->first;
+        loop.reserve(next_on_rim_.size());
+        const int64_t start = next_on_rim_.begin()->first;
         for (int64_t v = start;;) {
             loop.push_back(v);
-            v = next_on_rim.at(v);
+            v = next_on_rim_.at(v);
             if (v == start) break;
-            assert(loop.size() <= next_on_rim.size());
+            assert(loop.size() <= next_on_rim_.size());
         }
-        assert(loop.size() == next_on_rim.size() && "the kept region must have one rim");
+        assert(loop.size() == next_on_rim_.size() && "the kept region must have one rim");
 
         using K = CGAL::Exact_predicates_inexact_constructions_kernel;
         using Vb = CGAL::Triangulation_vertex_base_with_info_2<uint32_t, K>;
@@ -234,7 +290,11 @@ private:
     const Scene& s_;
     const HexGrid& g_;
     const bool flat_;
-    std::vector<uint32_t> first_index_;  // lattice vertex id -> first mesh vertex index
+    const int64_t lattice_ids_;
+    std::vector<uint32_t> first_index_;  // planar vertex id -> first mesh vertex index
+    std::unordered_map<int64_t, std::vector<int32_t>> faces_at_;  // planar vertex id -> faces with it on a ring
+    std::unordered_map<int64_t, int64_t> next_on_rim_;            // flat: rim edges
+    std::unordered_set<int64_t> rim_;                             // flat: vertices on the rim
     Mesh mesh_;
 };
 

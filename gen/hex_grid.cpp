@@ -59,6 +59,25 @@ int64_t hexCornerId(const HexGrid& grid, int32_t col, int32_t row, int k) {
     }
 }
 
+LatticePoint latticeVertexPoint(const HexGrid& grid, int64_t id) {
+    const int type = int(id & 1);
+    const int64_t cell = id >> 1;
+    const int32_t col = int32_t(cell % (int64_t(grid.cols) + 2)) - 1;
+    const int32_t row = int32_t(cell / (int64_t(grid.cols) + 2)) - 1;
+    return hexCorner(grid, col, row, type == kTopVertex ? 2 : 5);
+}
+
+void latticeVertexCells(const HexGrid& grid, int64_t id, int32_t col[3], int32_t row[3]) {
+    const int type = int(id & 1);
+    const int64_t cell = id >> 1;
+    col[0] = int32_t(cell % (int64_t(grid.cols) + 2)) - 1;
+    row[0] = int32_t(cell / (int64_t(grid.cols) + 2)) - 1;
+    // The top corner of h is corner 0 of NW(h) and corner 4 of NE(h); the
+    // bottom corner of h is corner 1 of SW(h) and corner 3 of SE(h).
+    hexNeighbour(col[0], row[0], type == kTopVertex ? 2 : 4, col[1], row[1]);
+    hexNeighbour(col[0], row[0], type == kTopVertex ? 1 : 5, col[2], row[2]);
+}
+
 int64_t latticeVertexIdCount(const HexGrid& grid) {
     return (int64_t(grid.rows) + 2) * (int64_t(grid.cols) + 2) * 2;
 }

@@ -59,6 +59,11 @@ void hexNeighbour(int32_t col, int32_t row, int k, int32_t& ncol, int32_t& nrow)
 /// are the same point exactly when their ids are equal.
 int64_t hexCornerId(const HexGrid& grid, int32_t col, int32_t row, int k);
 int64_t latticeVertexIdCount(const HexGrid& grid);
+/// The lattice point of a vertex id from hexCornerId (0 <= id < latticeVertexIdCount).
+LatticePoint latticeVertexPoint(const HexGrid& grid, int64_t id);
+/// The three cells (col, row) that meet at a lattice vertex; some may lie
+/// outside the grid.
+void latticeVertexCells(const HexGrid& grid, int64_t id, int32_t col[3], int32_t row[3]);
 
 /// x, y (mm) of a lattice point for a given pitch (mm).
 inline double latticeX(const LatticePoint& p, double pitch) { return double(p.i) * pitch * 0.5; }

@@ -18,6 +18,7 @@
 
 #include "gen/convex_hull.h"
 #include "gen/error.h"
+#include "gen/resample.h"
 
 namespace tsf {
 
@@ -43,9 +44,19 @@ double ValueMapping::valueAt(double h) const {
     return baseline + t * (value_max - baseline);
 }
 
+namespace {
+double snapXy(double v) { return std::round(v / kXYSnapMm) * kXYSnapMm; }
+}  // namespace
+
 Vec3 Scene::point(const LatticePoint& p, int64_t z_units) const {
-    auto snap = [](double v) { return std::round(v / kXYSnapMm) * kXYSnapMm; };
-    return {snap(latticeX(p, pitch_mm)), snap(latticeY(p, pitch_mm)), zMm(z_units)};
+    return {snapXy(latticeX(p, pitch_mm)), snapXy(latticeY(p, pitch_mm)), zMm(z_units)};
+}
+
+Vec3 Scene::planarPoint(int64_t id, int64_t z_units) const {
+    const int64_t lattice = latticeVertexIdCount(grid);
+    if (id < lattice) return point(latticeVertexPoint(grid, id), z_units);
+    const PlanarPoint& p = faces.extra[size_t(id - lattice)];
+    return {snapXy(planarX(p, pitch_mm)), snapXy(planarY(p, pitch_mm)), zMm(z_units)};
 }
 
 const char* toString(Transfer t) {
@@ -159,6 +170,18 @@ double resolvePitch(const HexGrid& grid, const SceneParams& p) {
     }
     if (gridWidth(grid, pitch) > kMaxModelMm || gridDepth(grid, pitch) > kMaxModelMm)
         throw InputError("model would be larger than 100 m; check the cell size (mm)");
+    // A cell size and a box that disagree: say so rather than print a model
+    // that does not fit the bed the user named.
+    const double slack = 1e-9 * std::max(p.fit_width_mm, p.fit_depth_mm);
+    if (p.pitch_mm > 0 && p.fit_box_given &&
+        (gridWidth(grid, pitch) > p.fit_width_mm + slack || gridDepth(grid, pitch) > p.fit_depth_mm + slack)) {
+        std::ostringstream s;
+        s.precision(4);
+        s << "--cell " << pitch << " mm makes the model " << gridWidth(grid, pitch) << " x " << gridDepth(grid, pitch)
+          << " mm, larger than the " << p.fit_width_mm << " x " << p.fit_depth_mm
+          << " mm box (--width/--depth); give one of them, or a smaller cell";
+        throw InputError(s.str());
+    }
     return pitch;
 }
 
@@ -198,6 +221,14 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     s.z_snap_mm = params.z_snap_mm;
     s.mapping = resolveMapping(field, params, s.notes);
     s.pitch_mm = resolvePitch(field.grid, params);
+    s.one_to_one = field.one_to_one;
+    if (s.pitch_mm < kMinTactileCellMm) {
+        std::ostringstream w;
+        w.precision(3);
+        w << "cells are " << s.pitch_mm << " mm across, below the " << kMinTactileCellMm
+          << " mm a fingertip tells apart: neighbouring values will feel like texture (fewer --bins, or a larger --cell)";
+        s.notes.push_back(w.str());
+    }
     const HexGrid& g = s.grid;
     const size_t n = size_t(g.cellCount());
 
@@ -222,11 +253,16 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         std::fill(keep.begin(), keep.end(), 1);
         s.notes.push_back("no cell rises above the floor: the whole grid is kept as a flat slab");
     } else {
+        // The hull spans the non-empty cells; when every cell is one input
+        // value, it spans every cell with data: a typed 0 is a value, and
+        // only cells without data are left out.
         std::vector<LatticePoint> centres;
         centres.reserve(size_t(s.cells_nonempty));
         for (int32_t r = 0; r < g.rows; ++r)
-            for (int32_t c = 0; c < g.cols; ++c)
-                if (nonempty[size_t(g.index(c, r))]) centres.push_back(hexCentre(g, c, r));
+            for (int32_t c = 0; c < g.cols; ++c) {
+                const size_t idx = size_t(g.index(c, r));
+                if (nonempty[idx] || (field.one_to_one && !std::isnan(field.values[idx]))) centres.push_back(hexCentre(g, c, r));
+            }
         s.hull = convexHull(centres);
         for (int32_t r = 0; r < g.rows; ++r)
             for (int32_t c = 0; c < g.cols; ++c)
@@ -255,10 +291,16 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             s.col.push_back(c);
             s.row.push_back(r);
             s.value.push_back(field.values[idx]);
+            s.kind.push_back(std::isnan(field.values[idx]) ? CellKind::NoData : CellKind::Data);
             s.cells_nodata_kept += std::isnan(field.values[idx]);
         }
     }
     const size_t kept = s.col.size();
+    // A cell without data is a pit below the floor (half the base, at most
+    // 1 mm): a finger finds a hole, never the lowest value.
+    s.nodata_pit_units = std::min<int64_t>(base_units / 2, std::max<int64_t>(1, snapUnits(1.0, s.z_snap_mm)));
+    if (s.cells_nodata_kept > 0 && s.nodata_pit_units == 0)
+        s.notes.push_back("the base is one z step thick: cells without data sit at the floor, like the lowest value");
     s.top.resize(kept);
     s.bottom.resize(kept);
     if (params.bottom == Bottom::Flat) {
@@ -266,6 +308,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         for (size_t k = 0; k < kept; ++k) {
             s.bottom[k] = 0;
             s.top[k] = base_units + h_units[size_t(g.index(s.col[k], s.row[k]))];
+            if (s.kind[k] == CellKind::NoData) s.top[k] -= s.nodata_pit_units;
         }
     } else {
         int64_t max_step = 0;
@@ -283,8 +326,13 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         for (size_t k = 0; k < kept; ++k) {
             s.bottom[k] = h_units[size_t(g.index(s.col[k], s.row[k]))];
             s.top[k] = s.bottom[k] + s.mirror_thickness_units;
+            if (s.kind[k] == CellKind::NoData) {
+                s.bottom[k] += s.nodata_pit_units;
+                s.top[k] -= s.nodata_pit_units;
+            }
         }
     }
+    placeMarks(s);
     return s;
 }
 

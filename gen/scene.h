@@ -27,6 +27,7 @@
 
 #include "gen/hex_field.h"
 #include "gen/hex_grid.h"
+#include "gen/marks.h"
 #include "gen/mesh.h"
 
 namespace tsf {
@@ -66,6 +67,7 @@ struct SceneParams {
     double pitch_mm = 0.0;         ///< centre spacing (hex width across flats); 0 = fit to fit_*_mm
     double fit_width_mm = 150.0;   ///< used when pitch_mm == 0: the whole grid fits this box
     double fit_depth_mm = 150.0;
+    bool fit_box_given = false;    ///< the fit box was asked for: with pitch_mm > 0 the model must fit it
     double max_height_mm = 20.0;   ///< height of the largest value above the floor
     double base_mm = 2.0;          ///< flat: base under the floor; mirrored: thinnest point of the slab
     // --- value -> height ---
@@ -77,6 +79,14 @@ struct SceneParams {
     // --- shape ---
     Cull cull = Cull::Hull;
     Bottom bottom = Bottom::Flat;
+    // --- marks (gen/marks.h) ---
+    MarkParams marks;
+};
+
+/// What a kept cell stands for.
+enum class CellKind : uint8_t {
+    Data,    ///< a value from the input: a pillar at its height
+    NoData,  ///< inside the model but without a value: a pit below the floor, never a height
 };
 
 /// The value -> height mapping actually used (after resolving Auto etc.).
@@ -108,7 +118,18 @@ struct Scene {
     std::vector<int64_t> top;     ///< z of the top face, in z_snap_mm units
     std::vector<int64_t> bottom;  ///< z of the bottom face, in z_snap_mm units
 
+    std::vector<CellKind> kind;   ///< Data, or NoData (value NaN)
+
     std::vector<int32_t> kept_index;  ///< grid.cellCount() entries: kept index or -1
+
+    // Marks (gen/marks.h): decided once here, drawn by every mesher.
+    Marks marks;
+    /// Faces that replace the plain hexagon of some kept cells (cut by the
+    /// notch, or carrying the orientation triangle). Empty without marks.
+    PlanarFaces faces;
+    /// Per kept cell: 1 if its top/bottom/walls are drawn through `faces`
+    /// instead of as a plain hexagonal prism.
+    std::vector<uint8_t> drawn_by_face;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)
@@ -116,12 +137,19 @@ struct Scene {
     int64_t cells_nonempty = 0;      ///< grid cells whose snapped height is above the floor
     int64_t cells_nodata_kept = 0;   ///< kept cells without data (modelled at the floor)
     int64_t mirror_thickness_units = 0;  ///< mirrored: every pillar's top - bottom
+    int64_t nodata_pit_units = 0;    ///< how far a no-data cell sits below the floor (and, mirrored, above the underside)
     std::vector<std::string> notes;  ///< decisions a person should know about (constant field, ...)
+    bool one_to_one = false;         ///< every kept cell holds one input value as read (HexField::one_to_one)
 
     size_t keptCount() const { return col.size(); }
     double zMm(int64_t units) const { return double(units) * z_snap_mm; }
     /// Snapped position (mm) of a lattice point at height `units`.
     Vec3 point(const LatticePoint& p, int64_t z_units) const;
+    /// Snapped position (mm) of a planar vertex (gen/marks.h) at height `units`.
+    Vec3 planarPoint(int64_t planar_id, int64_t z_units) const;
+    /// The z span [bottom, top] of a face (its anchor cell's, top raised by the face's raise).
+    int64_t faceTop(const PlanarFace& f) const { return top[size_t(f.anchor)] + f.raise_units; }
+    int64_t faceBottom(const PlanarFace& f) const { return bottom[size_t(f.anchor)]; }
     /// Kept index of grid cell (c, r) or -1 (also -1 outside the grid).
     int32_t keptAt(int32_t c, int32_t r) const {
         return grid.contains(c, r) ? kept_index[size_t(grid.index(c, r))] : -1;
@@ -139,7 +167,12 @@ struct Scene {
 ///     degenerate; cells within one circumradius of it are kept so the model is
 ///     one piece, with a note;
 ///   - no non-empty cell at all (all at the floor): with Cull::Hull every cell
-///     with data is kept (a flat slab) and a note says so.
+///     with data is kept (a flat slab) and a note says so;
+///   - kept cells without data are pits nodata_pit_units below the floor
+///     (mirrored: also above the underside), so touch never reads them as the
+///     lowest value;
+///   - the orientation marks (notch, triangle) are placed as MarkParams asks,
+///     where they fit; a note says when one does not.
 Scene buildScene(const HexField& field, const SceneParams& params);
 
 /// Snap a millimetre value to the z grid (round half away from zero).

@@ -130,6 +130,66 @@ json cellJson(const Scene& s, size_t k) {
             {"bottom", s.bottom[k]}};
 }
 
+json pointJson(const PlanarPoint& p) { return json::array({p.i, p.j}); }
+
+json marksJson(const Marks& m) {
+    json j = json::object();
+    if (m.notch)
+        j["notch"] = {{"apex", pointJson(m.notch->apex)},         {"mouth_a", pointJson(m.notch->mouth_a)},
+                      {"mouth_b", pointJson(m.notch->mouth_b)},   {"depth_mm", m.notch->depth_mm},
+                      {"width_mm", m.notch->width_mm},            {"opening_deg", m.notch->opening_deg}};
+    else
+        j["notch"] = nullptr;
+    if (m.triangle)
+        j["triangle"] = {{"corner", pointJson(m.triangle->corner)}, {"east", pointJson(m.triangle->east)},
+                         {"north", pointJson(m.triangle->north)},   {"leg_x_mm", m.triangle->leg_x_mm},
+                         {"leg_y_mm", m.triangle->leg_y_mm},        {"raise_units", m.triangle->raise_units},
+                         {"anchor", m.triangle->anchor}};
+    else
+        j["triangle"] = nullptr;
+    return j;
+}
+
+PlanarPoint pointFrom(const json& obj, const std::string& path, const char* key) {
+    const json& v = member(obj, path, key);
+    const std::string p = join(path, key);
+    if (!v.is_array() || v.size() != 2) fail(p, "expected [i, j]");
+    const PlanarPoint q{toNumber(v[0], p + "[0]"), toNumber(v[1], p + "[1]")};
+    if (!std::isfinite(q.i) || !std::isfinite(q.j)) fail(p, "expected finite numbers");
+    return q;
+}
+
+Marks marksFrom(const json& j, const std::string& path) {
+    Marks m;
+    const json& notch = member(j, path, "notch");
+    if (!notch.is_null()) {
+        const std::string np = join(path, "notch");
+        Notch n;
+        n.apex = pointFrom(notch, np, "apex");
+        n.mouth_a = pointFrom(notch, np, "mouth_a");
+        n.mouth_b = pointFrom(notch, np, "mouth_b");
+        n.depth_mm = getNumber(notch, np, "depth_mm");
+        n.width_mm = getNumber(notch, np, "width_mm");
+        n.opening_deg = getNumber(notch, np, "opening_deg");
+        m.notch = n;
+    }
+    const json& tri = member(j, path, "triangle");
+    if (!tri.is_null()) {
+        const std::string tp = join(path, "triangle");
+        OrientationTriangle t;
+        t.corner = pointFrom(tri, tp, "corner");
+        t.east = pointFrom(tri, tp, "east");
+        t.north = pointFrom(tri, tp, "north");
+        t.leg_x_mm = getNumber(tri, tp, "leg_x_mm");
+        t.leg_y_mm = getNumber(tri, tp, "leg_y_mm");
+        t.raise_units = getInt(tri, tp, "raise_units");
+        if (t.raise_units < 1) fail(join(tp, "raise_units"), "must be at least 1");
+        t.anchor = getInt32(tri, tp, "anchor", 0, std::numeric_limits<int32_t>::max());
+        m.triangle = t;
+    }
+    return m;
+}
+
 // Everything but the cells.
 json sceneHeadJson(const Scene& s) {
     const SceneParams& p = s.params;
@@ -164,6 +224,9 @@ json sceneHeadJson(const Scene& s) {
         {"cells_with_data", s.cells_with_data},
         {"cells_nonempty", s.cells_nonempty},
         {"cells_nodata_kept", s.cells_nodata_kept},
+        {"nodata_pit_units", s.nodata_pit_units},
+        {"one_to_one", s.one_to_one},
+        {"marks", marksJson(s.marks)},
         {"hull", hull},
         {"notes", s.notes},
     };
@@ -183,7 +246,7 @@ Scene sceneFromJson(const json& j) {
     const std::string format = getString(j, "", "format");
     if (format != kSceneJsonFormat) fail("format", "expected \"" + std::string(kSceneJsonFormat) + "\", found \"" + format + "\"");
     const int64_t version = getInt(j, "", "version");
-    if (version != kSceneJsonVersion)
+    if (version != kSceneJsonVersion && version != 1)
         fail("version", "unsupported version " + std::to_string(version) + " (this tsf reads version " +
                             std::to_string(kSceneJsonVersion) + ")");
 
@@ -224,6 +287,13 @@ Scene sceneFromJson(const json& j) {
     s.cells_with_data = getInt(j, "", "cells_with_data");
     s.cells_nonempty = getInt(j, "", "cells_nonempty");
     s.cells_nodata_kept = getInt(j, "", "cells_nodata_kept");
+    if (version >= 2) {
+        s.nodata_pit_units = getInt(j, "", "nodata_pit_units");
+        const json& one = member(j, "", "one_to_one");
+        if (!one.is_boolean()) fail("one_to_one", std::string("expected true or false, found ") + typeName(one));
+        s.one_to_one = one.get<bool>();
+        s.marks = marksFrom(member(j, "", "marks"), "marks");
+    }
 
     const json& hull = getArray(j, "", "hull");
     for (size_t i = 0; i < hull.size(); ++i) {
@@ -267,7 +337,11 @@ Scene sceneFromJson(const json& j) {
         s.value.push_back(value);
         s.top.push_back(top);
         s.bottom.push_back(bottom);
+        s.kind.push_back(std::isnan(value) ? CellKind::NoData : CellKind::Data);
     }
+    if (s.marks.triangle && size_t(s.marks.triangle->anchor) >= s.keptCount())
+        fail("marks.triangle.anchor", "is not the index of a cell");
+    buildMarkFaces(s);
     return s;
 }
 

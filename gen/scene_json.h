@@ -9,12 +9,18 @@
 //           z_snap_mm, cull, bottom}           -- enums by their CLI names (scene.h toString)
 //   mapping {transfer, baseline, value_max, max_height_mm},
 //   floor_units, mirror_thickness_units, cells_with_data, cells_nonempty,
-//   cells_nodata_kept, hull [[i, j], ...], notes [...],
+//   cells_nodata_kept, nodata_pit_units, one_to_one,
+//   marks {notch: null | {apex, mouth_a, mouth_b: [i, j] lattice coordinates,
+//                         depth_mm, width_mm, opening_deg},
+//          triangle: null | {corner, east, north: [i, j], leg_x_mm, leg_y_mm,
+//                            raise_units, anchor (kept index)}},
+//   hull [[i, j], ...], notes [...],
 //   cells [{col, row, value (null = no data), top, bottom}, ...]   -- ordered by (row, col)
 // Heights (top, bottom, floor_units, ...) are integers in z_snap_mm units;
 // lengths are millimetres; doubles are written in their shortest form that
 // reads back to the same bits, so a Scene round-trips exactly.
-// Scene::kept_index is not stored: it follows from the cells and the grid.
+// Scene::kept_index, kind and faces are not stored: they follow from the
+// cells, the grid and the marks (buildMarkFaces, gen/marks.h).
 #pragma once
 
 #include <string>
@@ -26,7 +32,7 @@
 namespace tsf {
 
 inline constexpr const char* kSceneJsonFormat = "tsf-scene";
-inline constexpr int kSceneJsonVersion = 1;
+inline constexpr int kSceneJsonVersion = 2;  // 2: marks, nodata_pit_units, one_to_one (1 is still read)
 /// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
 /// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
 inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;

@@ -9,10 +9,10 @@
 // Contents (each module and public function has a doc block where it is defined):
 //   tsf_model.scad       tsf_model(), tsf_height_mm(), tsf_snap_units(), tsf_cell_corners(),
 //                        tsf_flat_spans(), tsf_mirrored_spans(), tsf_model_spans(),
-//                        tsf_model_z_step(), tsf_model_size()
+//                        tsf_model_z_step(), tsf_model_size(), tsf_marks_cells()
 //   tsf_polyhedron.scad  tsf_terrain_polyhedron(), tsf_hull_base()
 //   tsf_csg.scad         tsf_hex_pillar(), tsf_terrain_csg()
-//   tsf_marks.scad       tsf_orientation_notch(), tsf_orientation_triangle()
+//   tsf_marks.scad       drawing of the orientation marks (notch, triangle) that tsf places
 //
 // Names starting with _tsf are private. The library defines no variables, so
 // it adds nothing to the OpenSCAD customizer. See docs/openscad.md in the tsf

@@ -73,9 +73,12 @@ module tsf_terrain_csg(m) {
         if (!mirrored) tsf_hull_base(model);
         for (r = [0:rows - 1], c = [0:cols - 1]) {
             s = spans[r][c];
-            if (!is_undef(s) && (mirrored || s[1] > floor_units))
+            if (!is_undef(s) && !_tsf_is_marked(model[9], c, r) && (mirrored || s[1] > floor_units))
                 tsf_hex_pillar(cell_mm = model[3], top_mm = s[1] * step, bottom_mm = s[0] * step,
                                col = c, row = r, rows = rows);
         }
+        // The orientation marks: one closed prism per face (tsf_marks.scad).
+        for (f = [0:1:len(model[8]) - 1])
+            _tsf_polyhedron(_tsf_face_prism_points(model[8], f, spans, model[10], model[3], step));
     }
 }

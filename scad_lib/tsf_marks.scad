@@ -1,110 +1,78 @@
-// tsf_marks.scad - tactile orientation marks: a notch cut into a corner and
-// a raised triangle pointing north.
+// tsf_marks.scad - the orientation marks: pieces of the footprint ("faces")
+// that replace the plain hexagons of the cells a mark touches.
 //
 // Part of the tsf OpenSCAD library (use <tsf.scad> to get all of it).
 // Requires: tsf_model.scad.
 //
-// A reader who cannot see the model finds north by touch: the notch is a V
-// cut into the model's north-east corner (a cut corner, as on tactile maps and
-// heat maps), the triangle a small raised arrow. Files written by tsf do not
-// call these modules yet; add them by hand as in the examples. A mark changes
-// the solid, so a model with a mark no longer agrees with tsf's direct STL,
-// and adding or cutting a shape makes OpenSCAD run CGAL (slower).
+// tsf places two marks (docs/model.md, "Orientation marks"):
+//   - a V NOTCH cut through the whole height at the model's origin (south-
+//     west) corner: where x and y start;
+//   - a raised right TRIANGLE on the largest flat region: its right angle is
+//     its south-west corner, the longer leg runs east (+x), the shorter north
+//     (+y), so a reader can tell x from y and the model's handedness.
+// Where they go is decided once by tsf and written into the generated file as
+// `marks`, a list of faces. tsf_model() takes them (faces = marks), and
+// tsf_terrain_polyhedron() / tsf_terrain_csg() draw each face instead of the
+// hexagons it covers, with the heights of the current values and parameters.
+// So the marks follow the customizer (cell, height, snap, mirror, ...) and
+// the rendered solid is the same as tsf's own mesh. `marks = []` leaves them out.
+//
+// A face is
+//   [anchor, raised, points, triangles, rings, across, at, cells]
+//   anchor    = [col, row]: the cell whose z span the face has;
+//   raised    = true for the triangle: its top is raised by mark_height_mm;
+//   points    = [[i, j], ...] in lattice units (x = i * cell / 2,
+//               y = j * cell / (2 sqrt 3)), rounded to 1 um like every corner;
+//   triangles = [[a, b, c], ...] indices into points, counter-clockwise from above;
+//   rings     = boundary loops (indices into points), the face on the left;
+//   across    = per ring, per edge: what lies across it: undef (nothing),
+//               [col, row] (a plain cell) or [f] (face number f of the list);
+//   at        = per point: every cell [col, row] and face [f] that has that
+//               point as a corner (their heights split the walls there);
+//   cells     = the cells [col, row] this face replaces.
 
-// Function: tsf_model_corner()
-// Usage:
-//   p = tsf_model_corner(m, [which]);
-// Description:
-//   The outermost corner [x, y] (mm) of the present cells towards one
-//   diagonal: the corner of a present cell that lies furthest towards
-//   "ne" (north-east), "nw", "se" or "sw". This is where a corner notch bites.
-// Arguments:
-//   m = a model from tsf_model().
-//   which = "ne", "nw", "se" or "sw". Default: "ne".
-// Example(echo):
-//   m = tsf_model([[1, 1], [1, undef]], cell_mm=10, max_height_mm=2, base_mm=1, value_max=1);
-//   echo(tsf_model_corner(m, "ne"));
-//   // ECHO: [20, 17.321]
-function tsf_model_corner(m, which = "ne") =
-    let(model = _tsf_check_model(m, "tsf_model_corner"))
-    assert(which == "ne" || which == "nw" || which == "se" || which == "sw",
-           str("tsf_model_corner: which must be \"ne\", \"nw\", \"se\" or \"sw\", got ", which))
-    let(sx = (which == "ne" || which == "se") ? 1 : -1,
-        sy = (which == "ne" || which == "nw") ? 1 : -1,
-        rows = model[1], cols = model[2], spans = model[5],
-        pts = [for (r = [0:rows - 1]) for (c = [0:cols - 1]) if (!is_undef(spans[r][c]))
-                   each tsf_cell_corners(c, r, rows, model[3])],
-        score = [for (p = pts) sx * p[0] + sy * p[1]],
-        best = max(score))
-    [for (i = [0:len(pts) - 1]) if (score[i] == best) pts[i]][0];
+// ---------------------------------------------------------------------------
+// Private helpers.
 
-// Module: tsf_orientation_notch()
-// Usage:
-//   difference() { <model>; tsf_orientation_notch(at, [size_mm], [height_mm], [direction]); }
-// Description:
-//   The shape to cut away for a V-shaped notch: a vertical triangular prism
-//   whose apex points from `at` into the model along `direction`. With
-//   at = tsf_model_corner(m, "ne") and direction = 225 it cuts the
-//   north-east corner off, leaving a V that a finger finds at once.
-// Arguments:
-//   at = [x, y] of the notch's opening centre, mm (a corner of the model).
-//   size_mm = width of the notch's opening, mm (> 0). Default: 8.
-//   height_mm = how high the cut reaches from z = -1, mm (> 0); make it taller than the model. Default: 100.
-//   direction = direction from `at` into the model, degrees counter-clockwise from east. Default: 225 (towards the south-west).
-// Example:
-//   tsf_orientation_notch(at = [0, 0], size_mm = 8, height_mm = 5);
-// Example: Cut the north-east corner off a model
-//   m = tsf_model([[1, 2, 3], [2, 3, 1], [3, 1, 2]], cell_mm=10, max_height_mm=10, base_mm=3, value_max=3);
-//   difference() {
-//       tsf_terrain_polyhedron(m);
-//       tsf_orientation_notch(at = tsf_model_corner(m, "ne"), size_mm = 8);
-//   }
-module tsf_orientation_notch(at, size_mm = 8, height_mm = 100, direction = 225) {
-    assert(is_list(at) && len(at) == 2 && _tsf_is_finite(at[0]) && _tsf_is_finite(at[1]),
-           str("tsf_orientation_notch: at must be [x, y] in mm, got ", at));
-    assert(_tsf_is_finite(size_mm) && size_mm > 0, str("tsf_orientation_notch: size_mm must be a number > 0, got ", size_mm));
-    assert(_tsf_is_finite(height_mm) && height_mm > 0,
-           str("tsf_orientation_notch: height_mm must be a number > 0, got ", height_mm));
-    assert(_tsf_is_finite(direction), str("tsf_orientation_notch: direction must be a number (degrees), got ", direction));
-    // A right-angled V: apex size_mm / 2 inside, opening size_mm wide, plus
-    // a margin outside so the cut leaves no skin at the model's edge.
-    margin = size_mm / 2;
-    translate([at[0], at[1], -1]) rotate(direction) linear_extrude(height_mm + 1)
-        polygon([[size_mm / 2, 0], [-margin, size_mm / 2 + margin], [-margin, -size_mm / 2 - margin]]);
-}
+// z span [bottom, top] (steps) of face f of `faces` for the given spans.
+function _tsf_face_span(faces, f, spans, raise_units) =
+    let(face = faces[f], s = spans[face[0][1]][face[0][0]])
+    face[1] ? [s[0], s[1] + raise_units] : s;
 
-// Module: tsf_orientation_triangle()
-// Usage:
-//   union() { <model>; tsf_orientation_triangle(at, [size_mm], [height_mm], [direction]); }
-// Description:
-//   A raised equilateral triangle pointing `direction` (default north), to be
-//   placed on a flat part of the model, e.g. the base's floor next to the
-//   pillars. It starts 0.5 mm below `at` so that it sinks into the surface
-//   it stands on and unions cleanly.
-// Arguments:
-//   at = [x, y, z]: the triangle's centre on the surface, mm.
-//   size_mm = side length, mm (> 0). Default: 8.
-//   height_mm = how far it stands out of the surface, mm (> 0). Default: 1.5.
-//   direction = where it points, degrees counter-clockwise from east. Default: 90 (north).
-// Example:
-//   tsf_orientation_triangle(at = [0, 0, 0]);
-// Example: On the floor of a flat base, south of the pillars
-//   m = tsf_model([[1, 2, 3], [2, "nodata", 1], ["nodata", "nodata", "nodata"]], cell_mm=10,
-//                 max_height_mm=10, base_mm=3, value_max=3);
-//   union() {
-//       tsf_terrain_polyhedron(m);
-//       tsf_orientation_triangle(at = [15, 6, 3], size_mm = 6);
-//   }
-module tsf_orientation_triangle(at, size_mm = 8, height_mm = 1.5, direction = 90) {
-    assert(is_list(at) && len(at) == 3 && _tsf_is_finite(at[0]) && _tsf_is_finite(at[1]) && _tsf_is_finite(at[2]),
-           str("tsf_orientation_triangle: at must be [x, y, z] in mm, got ", at));
-    assert(_tsf_is_finite(size_mm) && size_mm > 0,
-           str("tsf_orientation_triangle: size_mm must be a number > 0, got ", size_mm));
-    assert(_tsf_is_finite(height_mm) && height_mm > 0,
-           str("tsf_orientation_triangle: height_mm must be a number > 0, got ", height_mm));
-    assert(_tsf_is_finite(direction), str("tsf_orientation_triangle: direction must be a number (degrees), got ", direction));
-    sink_mm = 0.5;  // below the surface, so the union has volume overlap, not a touching face
-    r = size_mm / sqrt(3);  // circumradius of the equilateral triangle
-    translate([at[0], at[1], at[2] - sink_mm]) rotate(direction) linear_extrude(height_mm + sink_mm)
-        polygon([for (a = [0, 120, 240]) [r * cos(a), r * sin(a)]]);
-}
+// The span of a reference: [col, row] = a cell, [f] = a face, undef = nothing.
+function _tsf_ref_span(ref, faces, spans, raise_units) =
+    is_undef(ref) ? undef : len(ref) == 1 ? _tsf_face_span(faces, ref[0], spans, raise_units) : spans[ref[1]][ref[0]];
+
+// [x, y] (mm, rounded to 1 um) of a point in lattice units.
+function _tsf_face_xy(p, cell_mm) = [_tsf_snap_xy(p[0] * cell_mm * 0.5), _tsf_snap_xy(p[1] * cell_mm / (2 * sqrt(3)))];
+
+// Every triangle of face f (top, bottom, walls), counter-clockwise from
+// outside, as a flat list of points (three per triangle).
+function _tsf_face_points(faces, f, spans, raise_units, cell_mm, step_mm) =
+    let(face = faces[f],
+        s = _tsf_face_span(faces, f, spans, raise_units),
+        zb = s[0] * step_mm, zt = s[1] * step_mm,
+        xy = [for (p = face[2]) _tsf_face_xy(p, cell_mm)],
+        heights = [for (refs = face[6]) [for (ref = refs) each _tsf_ref_span(ref, faces, spans, raise_units)]])
+    concat([for (t = face[3]) each [[xy[t[0]][0], xy[t[0]][1], zt], [xy[t[1]][0], xy[t[1]][1], zt],
+                                    [xy[t[2]][0], xy[t[2]][1], zt]]],
+           [for (t = face[3]) each [[xy[t[0]][0], xy[t[0]][1], zb], [xy[t[2]][0], xy[t[2]][1], zb],
+                                    [xy[t[1]][0], xy[t[1]][1], zb]]],
+           [for (r = [0:len(face[4]) - 1]) let(ring = face[4][r], n = len(ring))
+               for (k = [0:n - 1]) let(a = ring[k], b = ring[(k + 1) % n],
+                                       o = _tsf_ref_span(face[5][r][k], faces, spans, raise_units))
+                   for (piece = is_undef(o) ? [s] : concat(o[1] < s[1] ? [[o[1], s[1]]] : [],
+                                                           s[0] < o[0] ? [[s[0], o[0]]] : []))
+                       for (t = _tsf_wall_triangles_at(xy[a], xy[b], piece[0], piece[1], heights[a], heights[b], step_mm))
+                           each t]);
+
+// Face f as a closed prism on its own (for the CSG strategy): its top and
+// bottom triangles and one plain wall per ring edge over its whole span.
+function _tsf_face_prism_points(faces, f, spans, raise_units, cell_mm, step_mm) =
+    let(face = faces[f],
+        s = _tsf_face_span(faces, f, spans, raise_units),
+        xy = [for (p = face[2]) _tsf_face_xy(p, cell_mm)],
+        solo = [for (r = face[4]) [for (k = r) undef]])
+    _tsf_face_points([[face[0], face[1], face[2], face[3], face[4], solo, [for (p = face[2]) []], face[7]]], 0,
+                     [for (r = [0:len(spans) - 1]) [for (c = [0:len(spans[r]) - 1]) r == face[0][1] && c == face[0][0] ? s : undef]],
+                     0, cell_mm, step_mm);

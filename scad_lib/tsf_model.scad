@@ -145,7 +145,8 @@ function tsf_mirrored_spans(heights, base_units) =
 
 // Function: tsf_model()
 // Usage:
-//   m = tsf_model(values, cell_mm, max_height_mm, base_mm, transfer, baseline, value_max, z_step_mm, mirrored);
+//   m = tsf_model(values, cell_mm, max_height_mm, base_mm, transfer, baseline, value_max, z_step_mm, mirrored,
+//                 faces, mark_height_mm);
 // Description:
 //   Checks the data and the parameters and computes every pillar's z span.
 //   The result is what tsf_terrain_polyhedron(), tsf_terrain_csg() and
@@ -155,10 +156,14 @@ function tsf_mirrored_spans(heights, base_units) =
 //   values lists the grid row by row, NORTH row first, west to east; odd rows
 //   are shifted half a cell east. Each entry is
 //     a number  - a pillar whose height follows tsf_height_mm();
-//     "nodata"  - a pillar at the floor (a cell inside the model without data);
+//     "nodata"  - a cell inside the model without data: a pit, half the base
+//                 (at most 1 mm) below the floor (mirrored: also above the
+//                 underside), so a finger never takes it for the lowest value;
 //     undef     - no pillar (a cell outside the model).
 //   Heights: flat bottom: z from 0 to base_mm + height; mirrored: see
 //   tsf_mirrored_spans(). All heights are rounded to z_step_mm.
+//   faces are the orientation marks tsf wrote (tsf_marks.scad); each replaces
+//   the hexagons of the cells it covers, the triangle raised by mark_height_mm.
 // Arguments:
 //   values = rows x cols list of numbers, "nodata" or undef (at least one present cell).
 //   cell_mm = distance between neighbouring centres (width across flats), mm (> 0).
@@ -169,13 +174,15 @@ function tsf_mirrored_spans(heights, base_units) =
 //   value_max = value at max_height_mm (data units); larger values are capped.
 //   z_step_mm = height grid, mm (0.000001 .. 1); e.g. 0.001, or the printer's layer height.
 //   mirrored = false: flat bottom; true: the bottom shows the data negated.
+//   faces = the orientation marks written by tsf (`marks`), or [] for none. Default: [].
+//   mark_height_mm = how far the orientation triangle stands above its region, mm (> 0). Default: 1.
 // Example(echo):
 //   m = tsf_model([[1, 2], [undef, "nodata"]], cell_mm=10, max_height_mm=10, base_mm=2,
 //                 transfer="linear", baseline=0, value_max=2, z_step_mm=0.5, mirrored=false);
 //   echo(tsf_model_spans(m));
-//   // ECHO: [[[0, 14], [0, 24]], [undef, [0, 4]]]
+//   // ECHO: [[[0, 14], [0, 24]], [undef, [0, 2]]]
 function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear", baseline = 0, value_max,
-                   z_step_mm = 0.001, mirrored = false) =
+                   z_step_mm = 0.001, mirrored = false, faces = [], mark_height_mm = 1) =
     assert(is_list(values) && len(values) >= 1 && is_list(values[0]) && len(values[0]) >= 1,
            "tsf_model: values must be a list of rows (north row first), each a list of cell values")
     assert(_tsf_is_finite(cell_mm) && cell_mm > 0, str("tsf_model: cell_mm must be a number > 0 (mm), got ", cell_mm))
@@ -190,6 +197,9 @@ function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear",
     assert(_tsf_is_finite(baseline), str("tsf_model: baseline must be a finite number (data units), got ", baseline))
     assert(_tsf_is_finite(value_max), str("tsf_model: value_max must be a finite number (data units), got ", value_max))
     assert(is_bool(mirrored), str("tsf_model: mirrored must be true or false, got ", mirrored))
+    assert(is_list(faces), str("tsf_model: faces must be a list (the marks written by tsf), got ", faces))
+    assert(_tsf_is_finite(mark_height_mm) && mark_height_mm > 0,
+           str("tsf_model: mark_height_mm must be a number > 0 (mm), got ", mark_height_mm))
     let(rows = len(values), cols = len(values[0]),
         bad_row = [for (r = [0:rows - 1]) if (!is_list(values[r]) || len(values[r]) != cols) r])
     assert(len(bad_row) == 0,
@@ -206,8 +216,14 @@ function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear",
                        [for (v = row) is_undef(v) ? undef
                                       : round(_tsf_height_mm(v, transfer, baseline, value_max, max_height_mm) / z_step_mm)]],
         base_units = round(base_mm / z_step_mm),
-        spans = mirrored ? tsf_mirrored_spans(heights, base_units) : tsf_flat_spans(heights, base_units))
-    ["tsf_model", rows, cols, cell_mm, z_step_mm, spans, base_units, mirrored];
+        plain = mirrored ? tsf_mirrored_spans(heights, base_units) : tsf_flat_spans(heights, base_units),
+        // Same rule as tsf's Scene (nodata_pit_units): half the base, at most 1 mm, at least one step.
+        pit = min(floor(base_units / 2), max(1, round(1 / z_step_mm))),
+        spans = [for (r = [0:rows - 1]) [for (c = [0:cols - 1])
+                     values[r][c] == "nodata" ? [plain[r][c][0] + (mirrored ? pit : 0), plain[r][c][1] - pit]
+                                              : plain[r][c]]])
+    ["tsf_model", rows, cols, cell_mm, z_step_mm, spans, base_units, mirrored,
+     faces, tsf_marks_cells(faces, rows), max(1, round(mark_height_mm / z_step_mm))];
 
 // Function: tsf_model_spans()
 // Usage:
@@ -250,6 +266,22 @@ function tsf_model_z_step(m) = _tsf_check_model(m, "tsf_model_z_step") [4];
 function tsf_model_size(m) =
     let(m = _tsf_check_model(m, "tsf_model_size"), rows = m[1], cols = m[2], cell = m[3])
     [_tsf_snap_xy(_tsf_lattice_x(2 * cols + (rows > 1 ? 1 : 0), cell)), _tsf_snap_xy(_tsf_lattice_y(3 * rows + 1, cell))];
+
+// Function: tsf_marks_cells()
+// Usage:
+//   mask = tsf_marks_cells(faces, rows);
+// Description:
+//   The cells that faces replace, as a list with one entry per row: the
+//   columns of that row that are drawn by a face rather than as a hexagon.
+// Arguments:
+//   faces = the `marks` list written by tsf (or []).
+//   rows = number of rows of the grid.
+// Example(echo):
+//   echo(tsf_marks_cells([[[0, 1], false, [], [], [], [], [], [[0, 1], [1, 1]]]], 2));
+//   // ECHO: [[], [0, 1]]
+function tsf_marks_cells(faces, rows) =
+    assert(is_list(faces), str("tsf_marks_cells: faces must be a list (the marks written by tsf), got ", faces))
+    [for (r = [0:rows - 1]) [for (f = faces) for (c = f[7]) if (c[1] == r) c[0]]];
 
 // ---------------------------------------------------------------------------
 // Private helpers (names start with _tsf; not part of the interface).
@@ -305,6 +337,8 @@ function _tsf_max_step(heights) =
 function _tsf_is_height_grid(h) =
     is_list(h) && len([for (row = h) if (!is_list(row) || len([for (v = row) if (!is_undef(v) && !_tsf_is_count(v)) 1]) > 0) 1]) == 0;
 
+function _tsf_is_marked(mask, col, row) = len([for (c = mask[row]) if (c == col) 1]) > 0;
+
 function _tsf_check_model(m, who) =
-    assert(is_list(m) && len(m) == 8 && m[0] == "tsf_model", str(who, ": expected a model made by tsf_model()"))
+    assert(is_list(m) && len(m) == 11 && m[0] == "tsf_model", str(who, ": expected a model made by tsf_model()"))
     m;

@@ -43,7 +43,7 @@
 //   tsf_terrain_polyhedron(m);
 module tsf_terrain_polyhedron(m) {
     model = _tsf_check_model(m, "tsf_terrain_polyhedron");
-    _tsf_polyhedron(_tsf_span_points(model[1], model[2], model[3], model[4], model[5]));
+    _tsf_polyhedron(_tsf_model_points(model, model[5], model[10]));
 }
 
 // Module: tsf_hull_base()
@@ -51,7 +51,8 @@ module tsf_terrain_polyhedron(m) {
 //   tsf_hull_base(m);
 // Description:
 //   The slab under the model: every present cell from z = 0 up to the floor
-//   (base_mm of the model), as one closed polyhedron. Its outline is the
+//   (base_mm of the model), or to its top where that is lower (the pit of a
+//   cell without data), as one closed polyhedron. Its outline is the
 //   outline of the present cells, i.e. the hull that tsf kept. The CSG
 //   strategy stands its pillars in this slab; on its own it is a base plate
 //   to build on by hand.
@@ -63,8 +64,8 @@ module tsf_terrain_polyhedron(m) {
 //   tsf_hull_base(m);
 module tsf_hull_base(m) {
     model = _tsf_check_model(m, "tsf_hull_base");
-    slab = [for (row = model[5]) [for (s = row) is_undef(s) ? undef : [0, model[6]]]];
-    _tsf_polyhedron(_tsf_span_points(model[1], model[2], model[3], model[4], slab));
+    slab = [for (row = model[5]) [for (s = row) is_undef(s) ? undef : [0, min(s[1], model[6])]]];
+    _tsf_polyhedron(_tsf_model_points(model, slab, 0));
 }
 
 // ---------------------------------------------------------------------------
@@ -80,17 +81,25 @@ module _tsf_polyhedron(points) {
                convexity = 10);
 }
 
+// The boundary of a model whose cells have the given spans: plain cells as
+// hexagons, the cells of the marks' faces (model[8], tsf_marks.scad) through
+// those faces, the triangle raised by raise_units.
+function _tsf_model_points(model, spans, raise_units) =
+    concat(_tsf_span_points(model[1], model[2], model[3], model[4], spans, model[9]),
+           [for (f = [0:1:len(model[8]) - 1])
+               each _tsf_face_points(model[8], f, spans, raise_units, model[3], model[4])]);
+
 // The boundary of the union of the prisms spans[row][col] = [bottom, top]
 // (z steps) or undef, as triangles counter-clockwise from outside, in a flat
 // list of points [x, y, z], three per triangle (no list per triangle: a
 // 100 x 100 grid has 160 000 of them). Neighbouring spans must overlap by at
-// least one step.
-function _tsf_span_points(rows, cols, cell_mm, step_mm, spans) =
+// least one step. Cells listed in mask (tsf_marks_cells) are left to their faces.
+function _tsf_span_points(rows, cols, cell_mm, step_mm, spans, mask) =
     let(xs = [for (i = [0:2 * cols + 1]) _tsf_snap_xy(_tsf_lattice_x(i, cell_mm))],
         ys = [for (j = [0:3 * rows + 1]) _tsf_snap_xy(_tsf_lattice_y(j, cell_mm))],
         offsets = _tsf_corner_offsets())
     [for (r = [0:rows - 1]) let(cj = 3 * (rows - 1 - r) + 2, odd = r % 2)
-        for (c = [0:cols - 1]) let(s = spans[r][c]) if (!is_undef(s))
+        for (c = [0:cols - 1]) let(s = spans[r][c]) if (!is_undef(s) && !_tsf_is_marked(mask, c, r))
             let(ci = 2 * c + odd + 1,
                 xy = [for (d = offsets) [xs[ci + d[0]], ys[cj + d[1]]]],
                 nb = [for (k = [0:5]) let(n = _tsf_neighbour(c, r, k)) _tsf_at(spans, n[0], n[1])])
@@ -118,10 +127,21 @@ function _tsf_cell_triangles(xy, s, nb, step_mm) =
 // Two fans: from the lower-left point over the right side, then from the
 // upper-right point over the left side; no triangle has three collinear points.
 function _tsf_wall_triangles(pl, pr, z0, z1, left_third, right_third, step_mm) =
-    let(zl = concat([z0], [for (z = is_undef(left_third) ? [] : left_third) if (z > z0 && z < z1) z], [z1]),
-        zr = concat([z0], [for (z = is_undef(right_third) ? [] : right_third) if (z > z0 && z < z1) z], [z1]),
+    _tsf_wall_triangles_at(pl, pr, z0, z1, is_undef(left_third) ? [] : left_third,
+                           is_undef(right_third) ? [] : right_third, step_mm);
+
+// The same with every height that meets each corner line given as a list
+// (duplicates and heights outside (z0, z1) are ignored).
+function _tsf_wall_triangles_at(pl, pr, z0, z1, left_heights, right_heights, step_mm) =
+    let(zl = concat([z0], _tsf_sorted_unique([for (z = left_heights) if (z > z0 && z < z1) z]), [z1]),
+        zr = concat([z0], _tsf_sorted_unique([for (z = right_heights) if (z > z0 && z < z1) z]), [z1]),
         L = [for (z = zl) [pl[0], pl[1], z * step_mm]],
         R = [for (z = zr) [pr[0], pr[1], z * step_mm]],
         nl = len(L), nr = len(R))
     concat([for (i = [0:nr - 2]) [L[0], R[i], R[i + 1]]],
            [for (j = [0:nl - 2]) [R[nr - 1], L[j + 1], L[j]]]);
+
+// Ascending list of the distinct numbers of a short list.
+function _tsf_sorted_unique(v) =
+    len(v) == 0 ? []
+    : let(m = min(v)) concat([m], _tsf_sorted_unique([for (x = v) if (x > m) x]));

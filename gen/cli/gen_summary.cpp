@@ -39,6 +39,23 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     j["cull"] = toString(s.params.cull);
     j["bottom"] = toString(s.params.bottom);
     if (s.params.bottom == Bottom::Mirrored) j["mirror_thickness_mm"] = s.zMm(s.mirror_thickness_units);
+    j["one_pillar_per_value"] = s.one_to_one;
+    j["nodata_pit_mm"] = s.zMm(s.nodata_pit_units);
+    nlohmann::json marks = nlohmann::json::object();
+    if (s.marks.notch)
+        marks["notch"] = {{"depth_mm", s.marks.notch->depth_mm}, {"width_mm", s.marks.notch->width_mm},
+                          {"opening_deg", s.marks.notch->opening_deg},
+                          {"apex_mm", {planarX(s.marks.notch->apex, s.pitch_mm), planarY(s.marks.notch->apex, s.pitch_mm)}}};
+    else
+        marks["notch"] = nullptr;
+    if (s.marks.triangle)
+        marks["triangle"] = {{"leg_x_mm", s.marks.triangle->leg_x_mm}, {"leg_y_mm", s.marks.triangle->leg_y_mm},
+                             {"height_mm", s.zMm(s.marks.triangle->raise_units)},
+                             {"corner_mm", {planarX(s.marks.triangle->corner, s.pitch_mm),
+                                            planarY(s.marks.triangle->corner, s.pitch_mm)}}};
+    else
+        marks["triangle"] = nullptr;
+    j["marks"] = marks;
     j["notes"] = s.notes;
     return j;
 }
@@ -61,6 +78,17 @@ std::string formatSceneFacts(const Scene& s) {
         o << "  bottom    mirrored: every pillar " << fmt("%.2f", s.zMm(s.mirror_thickness_units))
           << " mm thick; the underside shows the negated data\n";
     o << "  z snap    " << fmt("%.4g", s.z_snap_mm) << " mm\n";
+    if (s.one_to_one)
+        o << "  values    one pillar per value: each of the " << s.cells_with_data << " values stands at its own height\n";
+    if (s.marks.notch)
+        o << "  notch     V " << fmt("%.1f", s.marks.notch->depth_mm) << " mm deep, " << fmt("%.1f", s.marks.notch->width_mm)
+          << " mm wide, at the origin (south-west) corner, through the whole height\n";
+    if (s.marks.triangle) {
+        const OrientationTriangle& t = *s.marks.triangle;
+        o << "  triangle  raised " << fmt("%.2f", s.zMm(t.raise_units)) << " mm, legs " << fmt("%.1f", t.leg_x_mm)
+          << " mm east (x) and " << fmt("%.1f", t.leg_y_mm) << " mm north (y), right angle at ("
+          << fmt("%.1f", planarX(t.corner, s.pitch_mm)) << ", " << fmt("%.1f", planarY(t.corner, s.pitch_mm)) << ") mm\n";
+    }
     for (const std::string& n : s.notes) o << "  note      " << n << "\n";
     return o.str();
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <ostream>
 #include <system_error>
+#include <unordered_map>
 
 #include <nlohmann/json.hpp>
 
@@ -60,9 +61,11 @@ Parameters parametersOf(const Scene& s) {
 }
 
 // Library parts a strategy needs, in the order they are pasted.
-std::vector<std::string> libraryParts(ScadOptions::Strategy strategy) {
-    if (strategy == ScadOptions::Strategy::Csg) return {"tsf_model.scad", "tsf_polyhedron.scad", "tsf_csg.scad"};
-    return {"tsf_model.scad", "tsf_polyhedron.scad"};
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks) {
+    std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
+    if (strategy == ScadOptions::Strategy::Csg) parts.push_back("tsf_csg.scad");
+    if (marks) parts.push_back("tsf_marks.scad");
+    return parts;
 }
 
 std::string stemOf(const std::string& file_name) { return fs::path(file_name).stem().string(); }
@@ -76,7 +79,7 @@ void emitHeader(std::string& o, const Scene& s, const ScadOptions& opts, const s
     if (!opts.command.empty()) o += "// Command:   " + oneLine(opts.command) + "\n";
     o += "// Grid:      " + std::to_string(s.grid.cols) + " columns x " + std::to_string(s.grid.rows) + " rows, " +
          std::to_string(s.keptCount()) + " cells with a pillar";
-    if (s.cells_nodata_kept > 0) o += " (" + std::to_string(s.cells_nodata_kept) + " without data, at the floor)";
+    if (s.cells_nodata_kept > 0) o += " (" + std::to_string(s.cells_nodata_kept) + " without data, as pits below the floor)";
     o += "\n";
     o += std::string("// Bottom:    ") +
          (s.params.bottom == Bottom::Mirrored ? "mirrored (the underside shows the data negated)" : "flat") + "\n";
@@ -132,6 +135,95 @@ void emitParameters(std::string& o, const Scene& s) {
     o += "/* [Mirror] */\n"
          "// The underside shows the data negated; every pillar has the same thickness\n"
          "mirror = " + std::string(p.mirrored ? "true" : "false") + ";\n\n";
+
+    if (s.faces.empty()) return;
+    o += "/* [Orientation marks] */\n"
+         "// The V notch at the origin (south-west) corner and the raised right triangle (long leg east)\n"
+         "orientation_marks = true;\n"
+         "// How far the triangle stands above its flat region (mm)\n"
+         "mark_height = " + number(s.params.marks.triangle_height_mm) + ";  " +
+         range(0.1, 0.1, std::max(5.0, std::ceil(2 * s.params.marks.triangle_height_mm))) + "\n\n";
+}
+
+// "[col, row]" of a kept cell.
+std::string cellRef(const Scene& s, int32_t kept) {
+    return "[" + std::to_string(s.col[size_t(kept)]) + ", " + std::to_string(s.row[size_t(kept)]) + "]";
+}
+
+// The faces of the orientation marks as data for tsf_marks.scad (see there).
+void emitMarks(std::string& o, const Scene& s) {
+    if (s.faces.empty()) return;
+    const int64_t lattice = latticeVertexIdCount(s.grid);
+    // Which faces have a planar vertex on a ring, for the "at" lists.
+    std::unordered_map<int64_t, std::vector<int32_t>> faces_at;
+    for (size_t f = 0; f < s.faces.faces.size(); ++f)
+        for (const auto& ring : s.faces.faces[f].rings)
+            for (int64_t id : ring) {
+                auto& at = faces_at[id];
+                if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
+            }
+    o += "// ----------------------------------------------------------------- Marks ---\n"
+         "// Orientation marks placed by tsf (docs/model.md): each entry is a piece of the\n"
+         "// footprint drawn instead of the hexagons it covers (format: tsf_marks.scad).\n"
+         "// Heights still come from `values` and the parameters above.\n"
+         "marks = [\n";
+    for (size_t f = 0; f < s.faces.faces.size(); ++f) {
+        const PlanarFace& face = s.faces.faces[f];
+        std::vector<int64_t> ids;
+        std::unordered_map<int64_t, size_t> local;
+        for (const auto& ring : face.rings)
+            for (int64_t id : ring)
+                if (local.emplace(id, ids.size()).second) ids.push_back(id);
+        std::string points, tris, rings, across, at, cells;
+        for (int64_t id : ids) {
+            PlanarPoint p;
+            if (id < lattice) {
+                const LatticePoint q = latticeVertexPoint(s.grid, id);
+                p = {double(q.i), double(q.j)};
+            } else {
+                p = s.faces.extra[size_t(id - lattice)];
+            }
+            points += std::string(points.empty() ? "" : ", ") + "[" + number(p.i) + ", " + number(p.j) + "]";
+            std::string refs;
+            if (id < lattice) {
+                int32_t col[3], row[3];
+                latticeVertexCells(s.grid, id, col, row);
+                for (int n = 0; n < 3; ++n) {
+                    const int32_t k = s.keptAt(col[n], row[n]);
+                    if (k >= 0 && !s.drawn_by_face[size_t(k)]) refs += std::string(refs.empty() ? "" : ", ") + cellRef(s, k);
+                }
+            }
+            for (int32_t g : faces_at[id]) refs += std::string(refs.empty() ? "" : ", ") + "[" + std::to_string(g) + "]";
+            at += std::string(at.empty() ? "" : ", ") + "[" + refs + "]";
+        }
+        for (const auto& t : face.triangles)
+            tris += std::string(tris.empty() ? "" : ", ") + "[" + std::to_string(local[t[0]]) + ", " +
+                    std::to_string(local[t[1]]) + ", " + std::to_string(local[t[2]]) + "]";
+        for (size_t r = 0; r < face.rings.size(); ++r) {
+            std::string ring, ac;
+            for (size_t n = 0; n < face.rings[r].size(); ++n) {
+                ring += std::string(n ? ", " : "") + std::to_string(local[face.rings[r][n]]);
+                const Across& a = face.across[r][n];
+                ac += std::string(n ? ", " : "") +
+                      (a.kind == Across::Kind::Outside ? std::string("undef")
+                       : a.kind == Across::Kind::Cell  ? cellRef(s, a.index)
+                                                       : "[" + std::to_string(a.index) + "]");
+            }
+            rings += std::string(r ? ", " : "") + "[" + ring + "]";
+            across += std::string(r ? ", " : "") + "[" + ac + "]";
+        }
+        for (int32_t k : face.cells) cells += std::string(cells.empty() ? "" : ", ") + cellRef(s, k);
+        o += "    [" + cellRef(s, face.anchor) + ", " + (face.raise_units > 0 ? "true" : "false") + ",\n" +
+             "     [" + points + "],\n" +
+             "     [" + tris + "],\n" +
+             "     [" + rings + "],\n" +
+             "     [" + across + "],\n" +
+             "     [" + at + "],\n" +
+             "     [" + cells + "]]" + (f + 1 < s.faces.faces.size() ? "," : "") + "  // face " + std::to_string(f) +
+             (face.raise_units > 0 ? ": the triangle" : face.cells.size() > 1 ? ": the triangle's flat region" : ": cut by the notch") +
+             "\n";
+    }
+    o += "];\n\n";
 }
 
 void emitValues(std::string& o, const Scene& s) {
@@ -151,7 +243,7 @@ void emitValues(std::string& o, const Scene& s) {
          "// The cell values: one row of the hex grid per line, north row first, west to\n"
          "// east; odd rows (1, 3, ...) are shifted half a cell east.\n"
          "//   undef  = no pillar (outside the model)\n"
-         "//   nodata = a pillar at the floor (inside the model, no value)\n"
+         "//   nodata = no value: a pit below the floor (inside the model)\n"
          "// Change a number and render again; write a number over undef to add a pillar.\n"
          "nodata = \"nodata\";\n"
          "values = [\n";
@@ -172,18 +264,19 @@ void emitValues(std::string& o, const Scene& s) {
     o += "];\n\n";
 }
 
-void emitCall(std::string& o, const ScadOptions& opts) {
+void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
     o += "// ----------------------------------------------------------------- Model ---\n";
     if (!opts.inline_library) o += std::string("use <") + kScadLibraryCopyDir + "/" + kScadLibraryEntry + ">\n";
     o += "model = tsf_model(values, cell_mm = cell, max_height_mm = height, base_mm = base,\n"
          "                  transfer = transfer, baseline = baseline, value_max = value_max,\n"
-         "                  z_step_mm = snap, mirrored = mirror);\n";
+         "                  z_step_mm = snap, mirrored = mirror";
+    o += s.faces.empty() ? ");\n" : ",\n                  faces = orientation_marks ? marks : [], mark_height_mm = mark_height);\n";
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
-void emitInlineLibrary(std::string& o, const ScadOptions& opts) {
+void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts) {
     const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
-    const std::vector<std::string> parts = libraryParts(opts.strategy);
+    const std::vector<std::string> parts = libraryParts(opts.strategy, !s.faces.empty());
     std::string list;
     for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
     o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
@@ -224,8 +317,9 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     emitHeader(o, scene, opts, file_name);
     emitParameters(o, scene);
     emitValues(o, scene);
-    emitCall(o, opts);
-    if (opts.inline_library) emitInlineLibrary(o, opts);
+    emitMarks(o, scene);
+    emitCall(o, scene, opts);
+    if (opts.inline_library) emitInlineLibrary(o, scene, opts);
     return o;
 }
 
@@ -240,6 +334,10 @@ std::string emitScadParameterSets(const Scene& scene) {
     all["snap"] = number(p.z_step_mm);
     all["base"] = number(p.base_mm);
     all["mirror"] = p.mirrored ? "true" : "false";
+    if (!scene.faces.empty()) {
+        all["orientation_marks"] = "true";
+        all["mark_height"] = number(scene.params.marks.triangle_height_mm);
+    }
 
     // A coarse height grid must stay below the base (base >= snap).
     constexpr double kLayerMm = 0.2;  // a common FDM layer height

@@ -80,12 +80,14 @@ TEST(Scene, DegenerateHullIsWidenedToOnePiece) {
     EXPECT_FALSE(s.notes.empty());
 }
 
-TEST(Scene, NanCellsAreNoDataAtTheFloor) {
+TEST(Scene, NanCellsAreNoDataPitsBelowTheFloor) {
     const Scene s = buildScene(fieldFromRows({{1, kNaN, 1}, {1, 1, 1}}), smallParams(Bottom::Flat, Cull::None));
     const int32_t k = s.keptAt(1, 0);
     ASSERT_GE(k, 0);
     EXPECT_TRUE(std::isnan(s.value[k]));
-    EXPECT_EQ(s.top[k], s.floor_units);
+    EXPECT_EQ(s.kind[k], CellKind::NoData);
+    EXPECT_EQ(s.top[k], s.floor_units - s.nodata_pit_units);  // a pit: never read as the lowest value
+    EXPECT_EQ(s.nodata_pit_units, 1000);                       // half the 2 mm base, at most 1 mm
     EXPECT_EQ(s.cells_nodata_kept, 1);
     EXPECT_EQ(s.cells_with_data, 5);
 }

@@ -32,6 +32,7 @@ inline HexField fieldFromFunction(int cols, int rows, const std::function<double
 
 inline SceneParams smallParams(Bottom bottom = Bottom::Flat, Cull cull = Cull::Hull) {
     SceneParams p;
+    p.marks = withoutMarks();  // the pillar rules alone; marks have their own tests
     p.pitch_mm = 5.0;
     p.max_height_mm = 10.0;
     p.base_mm = 2.0;

@@ -78,7 +78,7 @@ TEST(ScadLibrary, EveryPublicModuleAndFunctionHasADocBlock) {
             EXPECT_NE(block.find("// Example"), std::string::npos);
         }
     }
-    EXPECT_GE(public_names, 15);
+    EXPECT_GE(public_names, 14);  // every public name of tsf.scad's list is found
 }
 
 // A library read with use<> or pasted after [Hidden] must not bring

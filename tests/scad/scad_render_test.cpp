@@ -170,6 +170,7 @@ TEST(ScadRender, PolyhedronAgreesForEveryTransferBaselineAndSnap) {
                             Variant{Transfer::Log, Bottom::Mirrored, Cull::None, 0.001, BaselineMode::Min},
                             Variant{Transfer::Linear, Bottom::Mirrored, Cull::Hull, 0.05, BaselineMode::Zero}}) {
         SceneParams p;
+        p.marks = withoutMarks();  // the pillar rules alone; marks have their own tests
         p.pitch_mm = 0;  // fit to 97 x 83 mm: an arbitrary double
         p.fit_width_mm = 97;
         p.fit_depth_mm = 83;

@@ -55,6 +55,7 @@ inline HexField bumpyField(int cols, int rows) {
 
 inline SceneParams smallParams(Bottom bottom = Bottom::Flat) {
     SceneParams p;
+    p.marks = withoutMarks();  // the pillar rules alone; marks have their own tests
     p.pitch_mm = 5.0;
     p.max_height_mm = 10.0;
     p.base_mm = 2.0;

@@ -62,6 +62,8 @@ void expectSameSolid(const ScadEngine& engine, const Scene& scene, const fs::pat
     VerifyOptions vo;
     vo.name = out.string();
     vo.printability = false;
+    vo.reference = &direct;  // the same surface, plane by plane (verify/agreement.h)
+    vo.reference_name = "direct mesher";
     vo.exact = true;  // exact predicates and constructions: a self-touching corner is found for sure
     const VerifyReport report = verifyModel(mesh, &scene, vo);
     EXPECT_TRUE(report.passed()) << engine.name() << ":\n" << formatReport(report);
@@ -90,6 +92,45 @@ TEST_P(CrossEngine, RendersTheSameSolidAsTheDirectMesher) {
 
 INSTANTIATE_TEST_SUITE_P(
     EnginesStrategiesBottoms, CrossEngine,
+    ::testing::Combine(::testing::Values("openscad", "wasm"), ::testing::Values("polyhedron", "csg"),
+                       ::testing::Values(Bottom::Flat, Bottom::Mirrored)),
+    [](const auto& info) {
+        return std::get<0>(info.param) + "_" + std::get<1>(info.param) + "_" + toString(std::get<2>(info.param));
+    });
+
+// The orientation marks (notch and triangle) drawn by scad_lib from the faces
+// tsf writes: the same solid as the direct mesher's on both engines, with
+// both strategies, flat and mirrored.
+class CrossEngineMarks : public ::testing::TestWithParam<Case> {};
+
+TEST_P(CrossEngineMarks, RendersTheSameSolidAsTheDirectMesher) {
+    const auto& [engine_name, strategy_name, bottom] = GetParam();
+    TSF_NEED_ENGINE(engineNamed(engine_name));
+    // A flat floor in the west for the triangle, a small terrain in the east.
+    const HexField terrain = test::smallTerrain();
+    HexField field;
+    field.grid = {7 + terrain.grid.cols, 2 * terrain.grid.rows};
+    field.values.assign(size_t(field.grid.cellCount()), 0.0);
+    for (int32_t r = 0; r < field.grid.rows; ++r)
+        for (int32_t c = 7; c < field.grid.cols; ++c) field.at(c, r) = terrain.at(c - 7, r % terrain.grid.rows);
+    field.source = "floor and terrain";
+    field.one_to_one = true;
+    SceneParams p = test::smallParams(bottom);
+    p.marks = MarkParams{};
+    p.pitch_mm = 6.0;
+    const Scene scene = buildScene(field, p);
+    ASSERT_TRUE(scene.marks.notch.has_value());
+    ASSERT_TRUE(scene.marks.triangle.has_value());
+    ScadOptions opts;
+    ASSERT_TRUE(parseScadStrategy(strategy_name, opts.strategy));
+    opts.inline_library = bottom == Bottom::Flat;
+    const fs::path dir = test::scratchDir("marks_" + engine_name + "_" + strategy_name + "_" + toString(bottom));
+    writeScad(scene, opts, (dir / "model.scad").string());
+    expectSameSolid(*engineNamed(engine_name).engine, scene, dir / "model.scad", dir / "model.stl");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EnginesStrategiesBottoms, CrossEngineMarks,
     ::testing::Combine(::testing::Values("openscad", "wasm"), ::testing::Values("polyhedron", "csg"),
                        ::testing::Values(Bottom::Flat, Bottom::Mirrored)),
     [](const auto& info) {

@@ -111,7 +111,7 @@ TEST(Readback, CellWithoutDataIsComparedByHeightOnly) {
         EXPECT_TRUE(std::isnan(c.value));
         EXPECT_TRUE(std::isnan(c.value_read));
         EXPECT_TRUE(std::isnan(c.value_error));
-        EXPECT_DOUBLE_EQ(c.measured_mm, m.scene.zMm(m.scene.floor_units));  // modelled at the floor
+        EXPECT_DOUBLE_EQ(c.measured_mm, m.scene.zMm(m.scene.floor_units - m.scene.nodata_pit_units));  // a pit
     }
     EXPECT_TRUE(seen);
 }

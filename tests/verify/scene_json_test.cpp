@@ -142,8 +142,8 @@ TEST(SceneJson, MalformedMembersNameTheirPath) {
     }
     {
         auto j = good;
-        j["version"] = 2;
-        expectError(j, "version: unsupported version 2");
+        j["version"] = 3;
+        expectError(j, "version: unsupported version 3");
     }
     {
         auto j = good;
