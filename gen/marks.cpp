@@ -11,6 +11,7 @@
 #include <cmath>
 #include <deque>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -137,19 +138,82 @@ std::vector<int32_t> cellsMeeting(const Scene& s, const std::vector<int32_t>& ne
     return out;
 }
 
-// Is the notch with this apex usable: no kept centre in or near it, and its
-// apex and edges clear of every corner and edge of the hexagons it cuts?
+// The part of a convex polygon on the left of the directed line a -> b.
+std::vector<Xy> clipLeft(const std::vector<Xy>& poly, const Xy& a, const Xy& b) {
+    std::vector<Xy> out;
+    for (size_t n = 0; n < poly.size(); ++n) {
+        const Xy& p = poly[n];
+        const Xy& q = poly[(n + 1) % poly.size()];
+        const double dp = cross(a, b, p), dq = cross(a, b, q);
+        if (dp >= 0) out.push_back(p);
+        if ((dp >= 0) != (dq >= 0)) {
+            const double t = dp / (dp - dq);
+            out.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
+        }
+    }
+    return out;
+}
+
+double polygonArea(const std::vector<Xy>& poly) {
+    double a = 0;
+    for (size_t n = 0; n < poly.size(); ++n) {
+        const Xy& p = poly[n];
+        const Xy& q = poly[(n + 1) % poly.size()];
+        a += p.x * q.y - q.x * p.y;
+    }
+    return 0.5 * a;
+}
+
+std::vector<Xy> hexPolygon(const Scene& s, size_t k) {
+    std::vector<Xy> h;
+    for (int e = 0; e < kHexCorners; ++e) h.push_back(toMm(hexCorner(s.grid, s.col[k], s.row[k], e), s.pitch_mm));
+    return h;
+}
+
+// Where the height of kept cell k is read when the notch (apex, m1, m2) cuts
+// it: its centre when that stays kMarkClearanceMm from the V, else the point
+// of the rest of its hexagon farthest from the V (a 13 x 13 search), kept
+// kReadEdgeMm inside the hexagon. Empty if no point is clear enough.
+constexpr double kReadEdgeMm = 0.4;
+std::optional<Xy> notchReadPoint(const Scene& s, size_t k, const Xy& apex, const Xy& m1, const Xy& m2) {
+    const Xy c = toMm(hexCentre(s.grid, s.col[k], s.row[k]), s.pitch_mm);
+    if (triangleDistance(c, apex, m1, m2) >= kMarkClearanceMm) return c;
+    const std::vector<Xy> hex = hexPolygon(s, k);
+    std::optional<Xy> best;
+    double best_d = kMarkClearanceMm;
+    constexpr int kSteps = 13;
+    for (int u = 0; u < kSteps; ++u)
+        for (int v = 0; v < kSteps; ++v) {
+            const Xy p{c.x + (u / double(kSteps - 1) - 0.5) * s.pitch_mm, c.y + (v / double(kSteps - 1) - 0.5) * s.pitch_mm};
+            bool inside = true;
+            for (size_t e = 0; e < hex.size() && inside; ++e)
+                inside = cross(hex[e], hex[(e + 1) % hex.size()], p) > 0 &&
+                         segmentDistance(p, hex[e], hex[(e + 1) % hex.size()]) >= kReadEdgeMm;
+            if (!inside) continue;
+            const double d = triangleDistance(p, apex, m1, m2);
+            if (d >= best_d) {
+                best_d = d;
+                best = p;
+            }
+        }
+    return best;
+}
+
+// Is the notch with this apex usable? Every pillar it cuts keeps at least
+// half its hexagon and a point to be read at (notchReadPoint); its apex and
+// edges keep clear of every corner and edge of the hexagons it cuts.
 bool notchIsClean(const Scene& s, const std::vector<int32_t>& near, const Xy& apex, const Xy& m1, const Xy& m2,
                   const std::vector<int32_t>& cut) {
+    (void)near;
     const double clear = kMarkClearanceMm;
-    for (int32_t k : near) {
-        const Xy ctr = toMm(hexCentre(s.grid, s.col[size_t(k)], s.row[size_t(k)]), s.pitch_mm);
-        if (triangleDistance(ctr, apex, m1, m2) < std::max(clear, 0.25 * s.pitch_mm)) return false;
-    }
     for (int32_t k : cut) {
+        const std::vector<Xy> hex = hexPolygon(s, size_t(k));
+        const std::vector<Xy> lost = clipLeft(clipLeft(clipLeft(hex, apex, m1), m1, m2), m2, apex);
+        if (polygonArea(lost) > 0.5 * polygonArea(hex)) return false;
+        if (!notchReadPoint(s, size_t(k), apex, m1, m2)) return false;
         for (int e = 0; e < kHexCorners; ++e) {
-            const Xy p = toMm(hexCorner(s.grid, s.col[size_t(k)], s.row[size_t(k)], e), s.pitch_mm);
-            const Xy q = toMm(hexCorner(s.grid, s.col[size_t(k)], s.row[size_t(k)], (e + 1) % kHexCorners), s.pitch_mm);
+            const Xy& p = hex[size_t(e)];
+            const Xy& q = hex[size_t(e + 1) % hex.size()];
             if (segmentDistance(p, apex, m1) < clear || segmentDistance(p, apex, m2) < clear) return false;
             if (segmentDistance(apex, p, q) < clear) return false;
         }
@@ -157,12 +221,16 @@ bool notchIsClean(const Scene& s, const std::vector<int32_t>& near, const Xy& ap
     return true;
 }
 
-constexpr double kNotchOpeningDeg = 60.0;
+// Openings tried, widest first: 60 degrees reads as a clear V; 45 threads
+// deeper between the centres of small corner pillars.
+constexpr double kNotchOpeningsDeg[] = {60.0, 45.0};
 
 // The V of a notch: apex `depth` from the corner o along direction `bisector`
-// (radians), mouth one pitch behind the corner. Counter-clockwise apex, m1, m2.
-void notchTriangle(const Scene& s, const Xy& o, double bisector, double depth, Xy& apex, Xy& m1, Xy& m2) {
-    const double half = kNotchOpeningDeg / 2.0 * M_PI / 180.0;
+// (radians), opening `opening_deg`, mouth one pitch behind the corner.
+// Counter-clockwise apex, m1, m2.
+void notchTriangle(const Scene& s, const Xy& o, double bisector, double opening_deg, double depth, Xy& apex, Xy& m1,
+                   Xy& m2) {
+    const double half = opening_deg / 2.0 * M_PI / 180.0;
     apex = {o.x + depth * std::cos(bisector), o.y + depth * std::sin(bisector)};
     // Every kept point lies on the far side of the corner (it is the extreme
     // one towards the south-west), so a mouth a pitch behind it leaves no skin.
@@ -181,40 +249,46 @@ void placeNotch(Scene& s) {
     // Into the model towards the north-east; the direction is turned (up to
     // 30 degrees either way) when that lets the V go deeper between the
     // centres of the corner pillars. Deepest wins, then the one nearest 45.
-    double best_depth = 0, best_bisector = 0;
+    double best_depth = 0, best_bisector = 0, best_opening = 0;
     const double step = 0.25;
-    for (int turn : {0, -5, 5, -10, 10, -15, 15, -20, 20, -25, 25, -30, 30}) {
-        const double bisector = (45.0 + turn) * M_PI / 180.0;
-        for (double depth = mp.notch_depth_mm; depth >= mp.notch_min_depth_mm - 1e-9; depth -= step) {
-            if (depth <= best_depth + 1e-9) break;
-            Xy apex, m1, m2;
-            notchTriangle(s, o, bisector, depth, apex, m1, m2);
-            const std::vector<int32_t> cut = cellsMeeting(s, near, apex, m1, m2);
-            if (cut.empty() || !notchIsClean(s, near, apex, m1, m2, cut)) continue;
-            best_depth = depth;
-            best_bisector = bisector;
-            break;
+    for (double opening : kNotchOpeningsDeg) {
+        for (int turn : {0, -5, 5, -10, 10, -15, 15, -20, 20, -25, 25, -30, 30}) {
+            const double bisector = (45.0 + turn) * M_PI / 180.0;
+            // A narrower V must go clearly deeper to be worth it.
+            const double better = best_opening > opening ? best_depth + 1.0 : best_depth;
+            for (double depth = mp.notch_depth_mm; depth >= mp.notch_min_depth_mm - 1e-9; depth -= step) {
+                if (depth <= better + 1e-9) break;
+                Xy apex, m1, m2;
+                notchTriangle(s, o, bisector, opening, depth, apex, m1, m2);
+                const std::vector<int32_t> cut = cellsMeeting(s, near, apex, m1, m2);
+                if (cut.empty() || !notchIsClean(s, near, apex, m1, m2, cut)) continue;
+                best_depth = depth;
+                best_bisector = bisector;
+                best_opening = opening;
+                break;
+            }
+            if (best_depth >= mp.notch_depth_mm - 1e-9) break;
         }
         if (best_depth >= mp.notch_depth_mm - 1e-9) break;
     }
     if (best_depth == 0) {
         s.notes.push_back("orientation notch left out: a V at least " + mmText(mp.notch_min_depth_mm) +
-                          " mm deep would reach the centre of a corner pillar (use larger cells)");
+                          " mm deep would cut away more than half of a corner pillar (use larger cells)");
         return;
     }
     Xy apex, m1, m2;
-    notchTriangle(s, o, best_bisector, best_depth, apex, m1, m2);
+    notchTriangle(s, o, best_bisector, best_opening, best_depth, apex, m1, m2);
     Notch n;
     n.apex = toPlanar(apex, s.pitch_mm);
     n.mouth_a = toPlanar(m1, s.pitch_mm);
     n.mouth_b = toPlanar(m2, s.pitch_mm);
     n.depth_mm = best_depth;
-    n.width_mm = 2.0 * best_depth * std::tan(kNotchOpeningDeg / 2.0 * M_PI / 180.0);
-    n.opening_deg = kNotchOpeningDeg;
+    n.width_mm = 2.0 * best_depth * std::tan(best_opening / 2.0 * M_PI / 180.0);
+    n.opening_deg = best_opening;
     s.marks.notch = n;
     if (best_depth < mp.notch_depth_mm - 1e-9)
         s.notes.push_back("orientation notch: " + mmText(best_depth) + " mm deep (asked " + mmText(mp.notch_depth_mm) +
-                          " mm): a deeper V would reach the centre of a corner pillar");
+                          " mm): a deeper V would cut away more than half of a corner pillar");
 }
 
 // ------------------------------------------------------------- triangle ---
@@ -345,7 +419,7 @@ std::vector<int32_t> triangleHost(const Scene& s, const std::vector<int32_t>& la
     for (int32_t k : host) {
         const Xy p = toMm(hexCentre(s.grid, s.col[size_t(k)], s.row[size_t(k)]), s.pitch_mm);
         for (int e = 0; e < 3; ++e)
-            if (segmentDistance(p, tri[e], tri[(e + 1) % 3]) < kMarkClearanceMm) return {};
+            if (segmentDistance(p, tri[e], tri[(e + 1) % 3]) < kReadPointClearanceMm) return {};
     }
     std::vector<uint8_t> in(s.keptCount(), 0);
     for (int32_t k : host) in[size_t(k)] = 1;
@@ -385,7 +459,7 @@ void placeTriangle(Scene& s) {
         return s.top[size_t(a)] < s.top[size_t(b)];
     });
     if (order.size() > 24) order.resize(24);
-    const double margin = std::max(1.0, 2 * kMarkClearanceMm);
+    const double margin = kTriangleMarginMm;
     double best_leg = 0;
     for (int32_t ki : order) {
         const size_t k = size_t(ki);
@@ -422,7 +496,7 @@ void placeTriangle(Scene& s) {
     if (!s.marks.triangle)
         s.notes.push_back("orientation triangle left out: no flat region is large enough for legs of " +
                           mmText(mp.triangle_min_leg_mm) + " x " + mmText(kTriangleLegRatio * mp.triangle_min_leg_mm) +
-                          " mm; the notch marks the origin");
+                          std::string(" mm") + (s.marks.notch ? "; the notch marks the origin" : ""));
 }
 
 // ---------------------------------------------------------------- faces ---
@@ -572,6 +646,8 @@ void buildMarkFaces(Scene& s) {
         for (size_t n2 = 0; n2 < cut.size(); ++n2) {
             s.drawn_by_face[size_t(cut[n2])] = 1;
             fb.addFace(cut[n2], 0, per_cell[n2], {cut[n2]});
+            const std::optional<Xy> at = notchReadPoint(s, size_t(cut[n2]), apex, m1, m2);
+            s.faces.faces.back().read_point = toPlanar(*at, s.pitch_mm);
         }
     }
     if (s.marks.triangle) {
@@ -584,7 +660,7 @@ void buildMarkFaces(Scene& s) {
         const Xy tri[3] = {toMm(t.corner, s.pitch_mm), toMm(t.east, s.pitch_mm), toMm(t.north, s.pitch_mm)};
         const Xy c{(tri[0].x + tri[1].x + tri[2].x) / 3, (tri[0].y + tri[1].y + tri[2].y) / 3};
         const double circum = std::max({dist(c, tri[0]), dist(c, tri[1]), dist(c, tri[2])});
-        const double margin = std::max(1.0, 2 * kMarkClearanceMm);
+        const double margin = kTriangleMarginMm;
         std::vector<int32_t> host;
         for (int ring = 0; ring < 3 && host.empty(); ++ring)
             host = triangleHost(s, label, size_t(t.anchor), c, circum + s.pitch_mm / kSqrt3 + ring * s.pitch_mm, tri, margin);
@@ -627,6 +703,14 @@ void buildMarkFaces(Scene& s) {
         fb.addFace(t.anchor, t.raise_units, tri_tris, {});
     }
     fb.resolveAcross();
+}
+
+PlanarPoint readPoint(const Scene& s, size_t kept) {
+    if (!s.drawn_by_face.empty() && s.drawn_by_face[kept])
+        for (const PlanarFace& f : s.faces.faces)
+            if (f.read_point && size_t(f.anchor) == kept) return *f.read_point;
+    const LatticePoint c = hexCentre(s.grid, s.col[kept], s.row[kept]);
+    return {double(c.i), double(c.j)};
 }
 
 int64_t markRaiseAtCentre(const Scene& s, size_t kept) {

@@ -28,9 +28,13 @@
 // then rounded to the 1 um grid exactly like lattice points.
 //
 // Guarantees (checked when marks are placed; a mark that cannot meet them is
-// left out with a note): no kept cell's centre lies in the notch or within
-// kMarkClearanceMm of it; every extra vertex is at least kMarkClearanceMm from
-// every hex corner and hex edge it does not lie on, so no face has a sliver.
+// left out with a note): the notch removes no pillar: each pillar it cuts
+// keeps at least half its hexagon and a point kMarkClearanceMm from the cut
+// where its height is read (readPoint); every corner of the notch's
+// faces is at least kMarkClearanceMm from every hex corner and hex edge it
+// does not lie on, so no face is a sliver; the triangle keeps
+// kTriangleMarginMm from its region's edge and kReadPointClearanceMm from
+// every pillar centre.
 #pragma once
 
 #include <array>
@@ -45,10 +49,16 @@ namespace tsf {
 
 struct Scene;
 
-/// Shortest distance (mm) between a mark's corner or crossing and any hex
-/// corner or edge it does not lie on, and between the notch and a cell centre.
-/// 0.2 mm is 200 xy snap steps and below one printed line width.
-inline constexpr double kMarkClearanceMm = 0.2;
+/// Shortest distance (mm) between a notch corner or crossing and any hex
+/// corner or edge it does not lie on, and between the notch and a cell centre:
+/// two 0.4 mm nozzle widths, so the cut leaves no sliver of pillar too thin to
+/// print (the verifier's wall-thickness check stays quiet).
+inline constexpr double kMarkClearanceMm = 0.8;
+/// Shortest distance (mm) from a pillar centre to the triangle's edge: the
+/// pillar's height is read there, on one side of the edge or the other.
+inline constexpr double kReadPointClearanceMm = 0.2;
+/// Shortest distance (mm) from the triangle to the edge of its flat region.
+inline constexpr double kTriangleMarginMm = 1.0;
 /// y leg / x leg of the orientation triangle: clearly different by touch.
 inline constexpr double kTriangleLegRatio = 0.6;
 
@@ -120,6 +130,9 @@ struct PlanarFace {
     /// The face triangulated (planar vertex ids, counter-clockwise from +z),
     /// using every ring vertex and no other point.
     std::vector<std::array<int64_t, 3>> triangles;
+    /// For a cell the notch cuts: where its height is read (its centre, or the
+    /// point of what is left farthest from the notch when the centre is near it).
+    std::optional<PlanarPoint> read_point;
 };
 
 struct PlanarFaces {
@@ -137,6 +150,11 @@ void placeMarks(Scene& scene);
 /// placeMarks and when a Scene is read back from its sidecar). Throws
 /// InputError if the marks do not fit the Scene's cells.
 void buildMarkFaces(Scene& scene);
+
+/// Where the height of kept cell `kept` is read (lattice coordinates): its
+/// centre, or for a pillar the notch cuts near its centre, the point of what
+/// is left farthest from the notch.
+PlanarPoint readPoint(const Scene& scene, size_t kept);
 
 /// How many z snap units a mark raises the top of kept cell `kept` at its
 /// centre (the orientation triangle), 0 where no mark stands.

@@ -74,7 +74,10 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& c
         CellReadback c;
         c.col = scene.col[k];
         c.row = scene.row[k];
-        const Vec3 centre = scene.point(hexCentre(scene.grid, c.col, c.row), 0);
+        // The centre, or where a pillar the notch cuts is read (gen/marks.h).
+        const PlanarPoint at = readPoint(scene, k);
+        const Vec3 centre{std::round(planarX(at, scene.pitch_mm) / kXYSnapMm) * kXYSnapMm,
+                          std::round(planarY(at, scene.pitch_mm) / kXYSnapMm) * kXYSnapMm, 0.0};
         c.x_mm = centre.x;
         c.y_mm = centre.y;
         c.surface = top ? "top" : "bottom";
