@@ -78,7 +78,8 @@ private:
     // Sorted distinct heights (snap units) of the mesh vertices at planar vertex id.
     int usedHeights(int64_t id, int64_t out[kMaxHeightsPerVertex]) const {
         int n = 0;
-        const auto faces = faces_at_.find(id);
+        // Most models have a handful of face vertices: skip the lookup when there are none.
+        const auto faces = faces_at_.empty() ? faces_at_.end() : faces_at_.find(id);
         const bool touched = faces != faces_at_.end();
         bool rim = false;
         if (id < lattice_ids_) {

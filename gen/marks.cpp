@@ -244,6 +244,13 @@ double notchReach(const Scene& s, double depth) { return (depth + s.pitch_mm) / 
 
 void placeNotch(Scene& s) {
     const MarkParams& mp = s.params.marks;
+    // The apex must keep kMarkClearanceMm from the edges of the hexagon it
+    // stands in: impossible when the cells are narrower than twice that.
+    if (s.pitch_mm < 2 * kMarkClearanceMm) {
+        s.notes.push_back("orientation notch left out: cells of " + mmText(s.pitch_mm) +
+                          " mm are too small to cut a notch into without thin slivers (use larger cells)");
+        return;
+    }
     const Xy o = toMm(originCorner(s), s.pitch_mm);
     const std::vector<int32_t> near = cellsNear(s, o, notchReach(s, mp.notch_depth_mm) + mp.notch_depth_mm);
     // Into the model towards the north-east; the direction is turned (up to
@@ -256,7 +263,8 @@ void placeNotch(Scene& s) {
             const double bisector = (45.0 + turn) * M_PI / 180.0;
             // A narrower V must go clearly deeper to be worth it.
             const double better = best_opening > opening ? best_depth + 1.0 : best_depth;
-            for (double depth = mp.notch_depth_mm; depth >= mp.notch_min_depth_mm - 1e-9; depth -= step) {
+            const double shallowest = std::min(mp.notch_min_depth_mm, mp.notch_depth_mm);
+            for (double depth = mp.notch_depth_mm; depth >= shallowest - 1e-9; depth -= step) {
                 if (depth <= better + 1e-9) break;
                 Xy apex, m1, m2;
                 notchTriangle(s, o, bisector, opening, depth, apex, m1, m2);
