@@ -1,6 +1,8 @@
-// Subcommands of the tsf binary. Each is defined next to the library it drives
-// and registered by main.cpp; a command reports failure by throwing
-// CLI::RuntimeError(exit_code) (see kExit* below) or tsf::InputError.
+// Subcommands of the tsf binary. Each is defined in this folder (gen/app/, the
+// application: the only code that includes CLI11) and registered by main.cpp;
+// a command reports failure by throwing CLI::RuntimeError(exit_code) (see
+// kExit* below) or tsf::InputError. The work itself is done by the libraries'
+// entry points (docs/design.md), which know nothing of the command line.
 #pragma once
 
 #include <string>
@@ -21,10 +23,10 @@ inline constexpr int kExitInterrupted = 130; ///< SIGINT
 const std::string& invocation();
 void setInvocation(int argc, char** argv);
 
-void addGenCommand(CLI::App& app);     // gen/cli/gen_command.cpp
-void addInfoCommand(CLI::App& app);    // gen/cli/info_command.cpp
-void addRenderCommand(CLI::App& app);  // gen/cli/render_command.cpp
-void addVerifyCommand(CLI::App& app);  // verify/cli/verify_command.cpp
-void addFeelCommand(CLI::App& app);    // haptics/cli/feel_command.cpp
+void addGenCommand(CLI::App& app);     // gen_command.cpp
+void addInfoCommand(CLI::App& app);    // gen_command.cpp
+void addRenderCommand(CLI::App& app);  // render_command.cpp
+void addVerifyCommand(CLI::App& app);  // verify_command.cpp
+void addFeelCommand(CLI::App& app);    // feel_command.cpp
 
 }  // namespace tsf::cli

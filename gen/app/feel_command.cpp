@@ -14,7 +14,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "gen/cli/commands.h"
+#include "gen/app/commands.h"
 #include "gen/error.h"
 #include "gen/io/raster_reader.h"
 #include "haptics/feel_renderer.h"

@@ -3,11 +3,11 @@
 #include <iostream>
 #include <optional>
 
-#include "gen/cli/commands.h"
-#include "gen/cli/gen_options.h"
-#include "gen/cli/gen_summary.h"
-#include "gen/cli/stage_timer.h"
-#include "gen/cli/preview.h"
+#include "gen/app/commands.h"
+#include "gen/app/gen_options.h"
+#include "gen/app/gen_summary.h"
+#include "gen/app/stage_timer.h"
+#include "gen/app/preview.h"
 #include "gen/direct_mesher.h"
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_writer.h"

@@ -1,4 +1,4 @@
-#include "gen/cli/gen_options.h"
+#include "gen/app/gen_options.h"
 
 #include <cmath>
 #include <sstream>

@@ -1,4 +1,4 @@
-#include "gen/cli/gen_summary.h"
+#include "gen/app/gen_summary.h"
 
 #include <cmath>
 #include <cstdio>

@@ -3,7 +3,7 @@
 #include <exception>
 #include <string>
 
-#include "gen/cli/commands.h"
+#include "gen/app/commands.h"
 #include "gen/error.h"
 
 namespace tsf::cli {

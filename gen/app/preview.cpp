@@ -1,4 +1,4 @@
-#include "gen/cli/preview.h"
+#include "gen/app/preview.h"
 
 #include <filesystem>
 #include <fstream>

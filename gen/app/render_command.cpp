@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "gen/cli/commands.h"
+#include "gen/app/commands.h"
 #include "gen/error.h"
 #include "gen/scad/engine_output_check.h"
 #include "gen/scad/engine_select.h"

@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "gen/cli/commands.h"
-#include "gen/cli/gen_options.h"
+#include "gen/app/commands.h"
+#include "gen/app/gen_options.h"
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/scene_json.h"

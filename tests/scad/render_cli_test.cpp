@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "gen/cli/commands.h"
+#include "gen/app/commands.h"
 #include "gen/scad/process_runner.h"
 #include "gen/scad/scad_emitter.h"
 #include "scad_test_support.h"
