@@ -76,7 +76,7 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     if (!o.against.empty()) {
         GenOptions g = o.gen;
         g.input = o.against;
-        scene = loadScene(g);
+        scene = buildScene(loadField(g), g.scene);
     } else if (!o.scene.empty()) {
         scene = readSceneJson(o.scene);
     }
