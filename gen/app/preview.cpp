@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_runner.h"
 
 namespace tsf::cli {
 

@@ -9,7 +9,7 @@ namespace tsf::cli {
 
 /// Renders model_path (STL, 3MF or OFF) to png_path (width x height pixels).
 /// Throws std::runtime_error with OpenSCAD's error lines on failure, and
-/// ScadEngineMissing (gen/scad/openscad_runner.h) when OpenSCAD is missing.
+/// ScadEngineMissing (verify/render/openscad_runner.h) when OpenSCAD is missing.
 void writeModelPreview(const std::string& model_path, const std::string& png_path, int width_px = 1024,
                        int height_px = 768);
 

@@ -16,9 +16,9 @@
 
 #include "gen/app/commands.h"
 #include "gen/error.h"
-#include "gen/scad/engine_output_check.h"
-#include "gen/scad/engine_select.h"
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/engine_output_check.h"
+#include "verify/render/engine_select.h"
+#include "verify/render/openscad_runner.h"
 #include "gen/scad/scad_variables.h"
 #include "verify/solid_checks.h"
 

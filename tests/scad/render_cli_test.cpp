@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "gen/app/commands.h"
-#include "gen/scad/process_runner.h"
+#include "verify/render/process_runner.h"
 #include "gen/scad/scad_emitter.h"
 #include "scad_test_support.h"
 #include "verify/mesh_topology.h"

@@ -16,7 +16,7 @@
 #include "gen/hex_field.h"
 #include "gen/mesh.h"
 #include "gen/mesh_io/mesh_reader.h"
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_runner.h"
 #include "gen/scene.h"
 
 namespace tsf::test {

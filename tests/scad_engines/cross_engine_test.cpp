@@ -13,7 +13,7 @@
 #include "engine_fixtures.h"
 #include "gen/direct_mesher.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "gen/scad/engine_output_check.h"
+#include "verify/render/engine_output_check.h"
 #include "gen/scad/scad_emitter.h"
 #include "verify/verify_model.h"
 

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "gen/hex_field.h"
-#include "gen/scad/openscad_runner.h"
-#include "gen/scad/wasm_engine.h"
+#include "verify/render/openscad_runner.h"
+#include "verify/render/wasm_engine.h"
 #include "gen/scene.h"
 
 namespace tsf::test {

@@ -7,7 +7,7 @@
 #include "gen/direct_mesher.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "gen/scad/engine_output_check.h"
+#include "verify/render/engine_output_check.h"
 
 namespace tsf {
 namespace {

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_runner.h"
 
 namespace tsf {
 namespace {

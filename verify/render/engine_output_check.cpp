@@ -1,4 +1,4 @@
-#include "gen/scad/engine_output_check.h"
+#include "verify/render/engine_output_check.h"
 
 #include <algorithm>
 #include <cmath>

@@ -26,7 +26,7 @@
 #include <string>
 
 #include "gen/mesh.h"
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_runner.h"
 
 namespace tsf {
 

@@ -1,11 +1,11 @@
-#include "gen/scad/engine_select.h"
+#include "verify/render/engine_select.h"
 
 #include <algorithm>
 #include <cctype>
 #include <sstream>
 
-#include "gen/scad/process_runner.h"
-#include "gen/scad/wasm_engine.h"
+#include "verify/render/process_runner.h"
+#include "verify/render/wasm_engine.h"
 
 namespace tsf {
 namespace {

@@ -3,7 +3,7 @@
 //   openscad  the desktop binary (makeOpenScadEngine): Debian's OpenSCAD
 //             2021.01 by default, or the one given with --openscad PATH;
 //   wasm      OpenSCAD 2025.01.19 with Manifold, compiled to WebAssembly and
-//             run under Node.js (makeWasmOpenScadEngine, gen/scad/wasm_engine.h);
+//             run under Node.js (makeWasmOpenScadEngine, verify/render/wasm_engine.h);
 //   auto      the fastest engine that is installed for the model's strategy,
 //             from the measurements in docs/engines.md:
 //               polyhedron (one polyhedron(), no boolean work): the desktop
@@ -24,7 +24,7 @@
 #include <memory>
 #include <string>
 
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_runner.h"
 
 namespace tsf {
 

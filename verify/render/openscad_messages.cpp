@@ -1,4 +1,4 @@
-#include "gen/scad/openscad_messages.h"
+#include "verify/render/openscad_messages.h"
 
 #include <sstream>
 

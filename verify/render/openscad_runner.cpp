@@ -1,6 +1,6 @@
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_runner.h"
 
-#include "gen/scad/engine_select.h"  // openScadHasManifoldBackend
+#include "verify/render/engine_select.h"  // openScadHasManifoldBackend
 
 #include <sys/stat.h>
 
@@ -16,7 +16,7 @@
 
 #include "gen/error.h"
 #include "gen/mesh_io/atomic_file.h"
-#include "gen/scad/process_runner.h"
+#include "verify/render/process_runner.h"
 
 namespace tsf {
 namespace fs = std::filesystem;

@@ -13,7 +13,7 @@
 // status 0 (OpenSCAD 2025 exports what is left after a failed assert()).
 //
 // Never trust the engine's verdict on the mesh: OpenSCAD may report success
-// for a broken union. Check the STL (gen/scad/engine_output_check.h, tsf
+// for a broken union. Check the STL (verify/render/engine_output_check.h, tsf
 // verify) before printing.
 #pragma once
 
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "gen/scad/openscad_messages.h"
+#include "verify/render/openscad_messages.h"
 
 namespace tsf {
 

@@ -1,4 +1,4 @@
-#include "gen/scad/process_runner.h"
+#include "verify/render/process_runner.h"
 
 #include <fcntl.h>
 #include <poll.h>

@@ -1,4 +1,4 @@
-#include "gen/scad/wasm_engine.h"
+#include "verify/render/wasm_engine.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gen/scad/openscad_runner.h"
-#include "gen/scad/process_runner.h"
+#include "verify/render/openscad_runner.h"
+#include "verify/render/process_runner.h"
 
 namespace tsf {
 namespace fs = std::filesystem;

