@@ -20,7 +20,6 @@
 #include "verify/render/engine_select.h"
 #include "verify/render/openscad_runner.h"
 #include "gen/scad/scad_variables.h"
-#include "verify/solid_checks.h"
 
 namespace tsf::cli {
 namespace {
@@ -77,30 +76,6 @@ int failureExitCode(const ScadRenderResult& r) {
     return kExitToolFailed;
 }
 
-// The caller's part of the engine output check: the verifier's solid checks
-// with CGAL, for what topology alone cannot see (self-intersections, e.g. a
-// T-junction Manifold left at one corner, docs/engines.md; zero-area
-// triangles). The exact kernel: the filtered one can stop on a CGAL
-// precondition for such near-degenerate input.
-std::string solidProblem(const Mesh& mesh) {
-    SolidOptions so;
-    so.exact = true;
-    so.max_offenders = 1;
-    const SolidResult r = checkSolid(mesh, so);
-    for (const Check& c : r.checks) {
-        if (c.status != CheckStatus::Fail) continue;
-        std::string what = c.title + " (" + std::to_string(c.count) + ")";
-        if (!c.worst.empty()) {
-            char at[96];
-            std::snprintf(at, sizeof at, " at (%.3f, %.3f, %.3f) mm", c.worst[0].at_mm.x, c.worst[0].at_mm.y,
-                          c.worst[0].at_mm.z);
-            what += at;
-        }
-        return what;
-    }
-    return "";
-}
-
 // One render. source_name: what to call the input in messages (the model, or
 // the mesh a preview is drawn from). check (may be null): read the output
 // back and refuse a mesh that is not a solid (renderScadChecked). Prints the
@@ -120,7 +95,7 @@ ScadRenderResult renderOnce(const ScadEngine& engine, const ScadRenderRequest& r
         };
     }
     EngineOutputExpectation expect;
-    expect.solid_check = solidProblem;
+    expect.solid_checks = true;
     const ScadRenderResult r =
         check ? renderScadChecked(engine, rq, progress, expect, check) : renderScad(engine, rq, progress);
     if (!r.ok()) {

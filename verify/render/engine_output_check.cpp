@@ -2,27 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <numeric>
+#include <cstdio>
 #include <sstream>
-#include <vector>
 
 #include "gen/error.h"
 #include "gen/mesh_io/atomic_file.h"
 #include "gen/mesh_io/off_reader.h"
 #include "gen/mesh_io/stl_reader.h"
 #include "gen/mesh_io/three_mf_reader.h"
+#include "verify/mesh_topology.h"
+#include "verify/solid_checks.h"
 
 namespace tsf {
 namespace {
-
-uint64_t edgeKey(uint32_t from, uint32_t to) { return (uint64_t(from) << 32) | to; }
-
-// Union-find over vertex indices (path halving).
-uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-}
 
 // Surface area (mm^2) and the largest |coordinate| (mm) of the vertices in use.
 void surfaceFigures(const Mesh& mesh, double& area_mm2, double& max_abs_mm) {
@@ -45,6 +37,26 @@ std::string count(size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
+// The first failed solid check with CGAL, as one line ("" = all passed).
+std::string solidProblem(const Mesh& mesh) {
+    SolidOptions so;
+    so.exact = true;
+    so.max_offenders = 1;
+    const SolidResult r = checkSolid(mesh, so);
+    for (const Check& c : r.checks) {
+        if (c.status != CheckStatus::Fail) continue;
+        std::string what = c.title + " (" + std::to_string(c.count) + ")";
+        if (!c.worst.empty()) {
+            char at[96];
+            std::snprintf(at, sizeof at, " at (%.3f, %.3f, %.3f) mm", c.worst[0].at_mm.x, c.worst[0].at_mm.y,
+                          c.worst[0].at_mm.z);
+            what += at;
+        }
+        return what;
+    }
+    return "";
+}
+
 }  // namespace
 
 EngineOutputCheck checkEngineMesh(const Mesh& mesh, const EngineOutputExpectation& expect) {
@@ -55,40 +67,16 @@ EngineOutputCheck checkEngineMesh(const Mesh& mesh, const EngineOutputExpectatio
         c.problem = "the mesh has no triangles";
         return c;
     }
-    const uint32_t n_vertices = uint32_t(mesh.positions.size());
-    std::vector<uint64_t> edges;
-    edges.reserve(3 * mesh.triangles.size());
-    std::vector<uint32_t> parent(n_vertices);
-    std::iota(parent.begin(), parent.end(), 0u);
-    for (const auto& t : mesh.triangles) {
-        if (t[0] >= n_vertices || t[1] >= n_vertices || t[2] >= n_vertices) {
-            c.problem = "a triangle refers to a vertex that does not exist";
-            return c;
-        }
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-            ++c.degenerate_triangles;
-            continue;
-        }
-        for (int k = 0; k < 3; ++k) {
-            edges.push_back(edgeKey(t[k], t[(k + 1) % 3]));
-            const uint32_t a = findRoot(parent, t[k]), b = findRoot(parent, t[(k + 1) % 3]);
-            if (a != b) parent[a] = b;
-        }
+    const MeshTopology topo = analyzeTopology(mesh);
+    if (!topo.out_of_range_triangles.empty()) {
+        c.problem = "a triangle refers to a vertex that does not exist";
+        return c;
     }
-    std::sort(edges.begin(), edges.end());
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
-        if (j - i > 1) c.overused_edges += j - i - 1;
-        const uint64_t reverse = (edges[i] << 32) | (edges[i] >> 32);
-        if (!std::binary_search(edges.begin(), edges.end(), reverse)) ++c.open_edges;
-        i = j;
-    }
-    std::vector<bool> used(n_vertices, false);
-    for (const auto& t : mesh.triangles)
-        for (uint32_t v : t) used[v] = true;
-    for (uint32_t v = 0; v < n_vertices; ++v)
-        if (used[v] && findRoot(parent, v) == v) ++c.pieces;
+    c.degenerate_triangles = topo.index_degenerate_triangles.size();
+    c.open_edges = topo.border_edges.size();
+    c.overused_edges = topo.nonmanifold_edges.size() + topo.misoriented_edges.size();
+    c.pinched_vertices = topo.nonmanifold_vertices.size();
+    c.pieces = topo.components.size();
 
     c.volume_mm3 = signedVolume(mesh);
     double area_mm2 = 0, max_abs_mm = 0;
@@ -96,11 +84,16 @@ EngineOutputCheck checkEngineMesh(const Mesh& mesh, const EngineOutputExpectatio
     c.volume_tolerance_mm3 = area_mm2 * max_abs_mm * kStlCoordinateRoundoff;
 
     std::ostringstream why;
-    if (c.degenerate_triangles > 0) {
+    if (!topo.nonfinite_vertices.empty()) {
+        why << count(topo.nonfinite_vertices.size(), "vertex has", "vertices have") << " a coordinate that is not a finite number";
+    } else if (c.degenerate_triangles > 0) {
         why << count(c.degenerate_triangles, "triangle repeats a vertex", "triangles repeat a vertex");
     } else if (c.open_edges > 0 || c.overused_edges > 0) {
         why << "not a closed, consistently oriented 2-manifold (" << count(c.open_edges, "edge", "edges")
             << " without a matching opposite edge, " << count(c.overused_edges, "edge", "edges") << " used twice)";
+    } else if (c.pinched_vertices > 0) {
+        why << "not a 2-manifold: " << count(c.pinched_vertices, "vertex joins", "vertices join")
+            << " surfaces that only touch there";
     } else if (c.pieces != 1) {
         why << "the mesh falls apart into " << c.pieces << " pieces";
     } else if (!(c.volume_mm3 > 0)) {
@@ -111,7 +104,7 @@ EngineOutputCheck checkEngineMesh(const Mesh& mesh, const EngineOutputExpectatio
             << " mm^3 (more than the coordinates' rounding, " << c.volume_tolerance_mm3 << " mm^3, apart)";
     }
     c.problem = why.str();
-    if (c.problem.empty() && expect.solid_check) c.problem = expect.solid_check(mesh);
+    if (c.problem.empty() && expect.solid_checks) c.problem = solidProblem(mesh);
     c.ok = c.problem.empty();
     return c;
 }

@@ -3,25 +3,26 @@
 // "Simple: yes" and the WebAssembly build with Manifold prints "NoError" for
 // unions that come out open or with a wrong volume (docs/engines.md).
 //
-// checkEngineMesh is the cheap, purely topological gate (no CGAL; the full
-// verifier in verify/ adds self-intersections and the values read back):
+// checkEngineMesh judges the mesh with the verifier's own analyses, in order:
 //   [empty]        the mesh has triangles;
+//   topology from the indices (verify/mesh_topology.h, no CGAL):
+//   [valid]        every index refers to a vertex, every coordinate is finite;
 //   [degenerate]   no triangle repeats a vertex (after exact vertex merging);
-//   [edges]        every directed edge a->b occurs exactly once and its
-//                  reverse b->a exactly once: closed, every edge has two
-//                  triangles, neighbours consistently oriented;
-//   [pieces]       one connected piece (triangles linked through shared vertices);
+//   [edges]        every edge has exactly two triangles, which traverse it in
+//                  opposite directions: closed, manifold, consistently oriented;
+//   [vertices]     no vertex where two fans of triangles touch;
+//   [pieces]       one edge-connected piece;
 //   [volume]       positive signed volume (outward normals), and, when the
 //                  expected volume is known, equal to it within the rounding
 //                  of the file's coordinates (see kStlCoordinateRoundoff);
-//   [solid_check]  the caller's own check, if any (EngineOutputExpectation).
+//   [solid]        when asked (EngineOutputExpectation::solid_checks), the
+//                  verifier's solid checks with CGAL (verify/solid_checks.h).
 // renderScadChecked puts the rule "a bad mesh is an engine failure" in one
 // place: the output file appears only when the engine succeeded and its mesh
 // passes.
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <optional>
 #include <string>
 
@@ -40,11 +41,14 @@ struct EngineOutputExpectation {
     /// mesher's volume of the same Scene; unknown for an edited file or one
     /// rendered with -D / -p overrides.
     std::optional<double> volume_mm3;
-    /// A further check of the mesh, run last and only when every check above
-    /// passed: e.g. the verifier's self-intersection test (verify/solid_checks.h),
-    /// which this library cannot call itself. Returns "" for a good mesh, else
-    /// one line saying what is wrong. Empty function = none.
-    std::function<std::string(const Mesh&)> solid_check;
+    /// Also run the verifier's solid checks (checkSolid with the exact kernel),
+    /// last and only when every check above passed: they see what the indices
+    /// cannot, such as self-intersections (a T-junction Manifold left at one
+    /// corner, docs/engines.md) and zero-area triangles. About 4 us per
+    /// triangle; `tsf render` turns them on. The exact kernel because the
+    /// filtered one can stop on a CGAL precondition for such near-degenerate
+    /// input.
+    bool solid_checks = false;
 };
 
 struct EngineOutputCheck {
@@ -53,9 +57,10 @@ struct EngineOutputCheck {
     std::string problem;            ///< first failed check, one line for people ("" when ok or not checked)
     size_t triangles = 0;
     size_t degenerate_triangles = 0;   ///< triangles repeating a vertex
-    size_t open_edges = 0;             ///< directed edges whose reverse is missing
-    size_t overused_edges = 0;         ///< directed edges occurring more than once
-    size_t pieces = 0;
+    size_t open_edges = 0;             ///< edges with one triangle (MeshTopology::border_edges)
+    size_t overused_edges = 0;         ///< edges traversed twice in one direction or with three or more triangles
+    size_t pinched_vertices = 0;       ///< vertices where two fans of triangles touch
+    size_t pieces = 0;                 ///< edge-connected pieces
     double volume_mm3 = 0;             ///< signed volume of the mesh
     double volume_tolerance_mm3 = 0;   ///< allowed |volume - expected| (see kStlCoordinateRoundoff)
 };
