@@ -1,4 +1,4 @@
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 
 #include <atomic>
 #include <cerrno>

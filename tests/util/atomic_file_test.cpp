@@ -11,9 +11,9 @@
 #include <unistd.h>
 
 #include "gen/error.h"
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 #include "gen/mesh_io/mesh_writer.h"
-#include "mesh_io_test_support.h"
+#include "tests/mesh_io/mesh_io_test_support.h"
 
 namespace tsf {
 namespace {

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "gen/error.h"
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 #include "gen/mesh_io/off_reader.h"
 #include "gen/mesh_io/stl_reader.h"
 #include "gen/mesh_io/three_mf_reader.h"

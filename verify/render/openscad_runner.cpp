@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gen/error.h"
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 #include "verify/render/process_runner.h"
 
 namespace tsf {
