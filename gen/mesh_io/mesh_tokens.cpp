@@ -1,20 +1,10 @@
-#include "gen/mesh_io/text_scanner.h"
+#include "gen/mesh_io/mesh_tokens.h"
 
 #include <charconv>
 #include <cmath>
 #include <system_error>
 
-#include "gen/error.h"
-#include "gen/mesh_io/file_bytes.h"
-
 namespace tsf::mesh_io {
-namespace {
-
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-
-bool isTokenEnd(char c) { return isBlank(c) || c == '\n'; }
-
-}  // namespace
 
 bool equalsIgnoringCase(std::string_view token, std::string_view keyword) {
     if (token.size() != keyword.size()) return false;
@@ -27,79 +17,46 @@ bool equalsIgnoringCase(std::string_view token, std::string_view keyword) {
     return true;
 }
 
-TextScanner::TextScanner(std::string_view text, std::string path, char comment)
-    : text_(text), path_(std::move(path)), comment_(comment) {}
-
-bool TextScanner::tokenOnLine(std::string_view& token) {
-    while (pos_ < text_.size() && isBlank(text_[pos_])) ++pos_;
-    if (pos_ >= text_.size() || text_[pos_] == '\n') return false;
-    if (comment_ != '\0' && text_[pos_] == comment_) {
-        while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
-        return false;
+std::string quoteForMessage(std::string_view text, size_t max_chars) {
+    std::string out = "'";
+    for (size_t i = 0; i < text.size() && i < max_chars; ++i) {
+        const auto byte = static_cast<unsigned char>(text[i]);
+        out += (byte >= 0x20 && byte < 0x7F) ? static_cast<char>(byte) : '?';
     }
-    const size_t start = pos_;
-    while (pos_ < text_.size() && !isTokenEnd(text_[pos_]) && !(comment_ != '\0' && text_[pos_] == comment_)) ++pos_;
-    token = text_.substr(start, pos_ - start);
-    token_line_ = line_;
-    token_column_ = static_cast<int>(start - line_start_) + 1;
-    return true;
+    if (text.size() > max_chars) out += "...";
+    return out + "'";
 }
 
-bool TextScanner::nextLine() {
-    while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
-    if (pos_ >= text_.size()) return false;
-    ++pos_;
-    line_start_ = pos_;
-    ++line_;
-    token_line_ = line_;
-    token_column_ = 0;
-    return true;
-}
-
-bool TextScanner::token(std::string_view& token) {
-    for (;;) {
-        if (tokenOnLine(token)) return true;
-        if (!nextLine()) return false;
-    }
-}
-
-void TextScanner::fail(const std::string& what) const { throw InputError(path_, token_line_, token_column_, what); }
-
-void TextScanner::failHere(const std::string& what) const {
-    // At the end of a file that ends with a newline, the "current line" is
-    // the empty one after it; name the last line a person sees instead.
-    const bool after_final_newline = line_start_ == text_.size() && line_ > 1;
-    throw InputError(path_, after_final_newline ? line_ - 1 : line_, 0, what);
-}
-
-double TextScanner::anyNumber(std::string_view token, const char* what) const {
+double anyNumber(const TextScanner& scanner, std::string_view token, const char* what) {
     std::string_view digits = token;
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     double value = 0;
     const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (digits.empty()) fail(std::string(what) + " expected, found " + quoteForMessage(token));
+    if (digits.empty()) scanner.fail(std::string(what) + " expected, found " + quoteForMessage(token));
     if (result.ec == std::errc::result_out_of_range) {
-        fail(std::string(what) + " expected, found " + quoteForMessage(token) + ", which is out of the range of a double");
+        scanner.fail(std::string(what) + " expected, found " + quoteForMessage(token) +
+                     ", which is out of the range of a double");
     }
     if (result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
-        fail(std::string(what) + " expected, found " + quoteForMessage(token));
+        scanner.fail(std::string(what) + " expected, found " + quoteForMessage(token));
     }
     return value;
 }
 
-double TextScanner::finiteNumber(std::string_view token, const char* what) const {
-    const double value = anyNumber(token, what);
-    if (!std::isfinite(value)) fail(std::string(what) + " expected, found " + quoteForMessage(token) + " (not a finite number)");
+double finiteNumber(const TextScanner& scanner, std::string_view token, const char* what) {
+    const double value = anyNumber(scanner, token, what);
+    if (!std::isfinite(value))
+        scanner.fail(std::string(what) + " expected, found " + quoteForMessage(token) + " (not a finite number)");
     return value;
 }
 
-int64_t TextScanner::integer(std::string_view token, const char* what) const {
+int64_t integer(const TextScanner& scanner, std::string_view token, const char* what) {
     std::string_view digits = token;
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     int64_t value = 0;
     const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (digits.empty() || result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
-        fail(std::string(what) + " expected, found " + quoteForMessage(token));
+        scanner.fail(std::string(what) + " expected, found " + quoteForMessage(token));
     }
     return value;
 }

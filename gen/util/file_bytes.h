@@ -1,19 +1,17 @@
-// readFileBytes: a whole file in memory, for the mesh readers. Internal to
-// gen/mesh_io/.
+// readFileBytes: a whole file in memory, for every reader (fields in gen/io,
+// meshes in gen/mesh_io, the scene sidecar).
 #pragma once
 
+#include <cstdint>
 #include <string>
-#include <string_view>
 
-namespace tsf::mesh_io {
+namespace tsf {
 
-/// The file's bytes. Throws tsf::InputError naming path if it does not exist,
-/// is a folder or cannot be read (with the OS reason). An empty file is
-/// returned as an empty string; the format readers say what they expected.
-std::string readFileBytes(const std::string& path);
+/// The file's bytes, unchanged (binary, no newline translation). Throws
+/// tsf::InputError naming path if it does not exist, is a folder, cannot be
+/// read (with the OS reason) or holds more than max_bytes (0 = no limit). An
+/// empty file is returned as an empty string; the format readers say what
+/// they expected. Works for pipes and other files without a size too.
+std::string readFileBytes(const std::string& path, int64_t max_bytes = 0);
 
-/// text cut to max_chars with control and non-ASCII bytes shown as '?', in
-/// single quotes, for quoting file content in error messages.
-std::string quoteForMessage(std::string_view text, size_t max_chars = 40);
-
-}  // namespace tsf::mesh_io
+}  // namespace tsf
