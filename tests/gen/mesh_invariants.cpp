@@ -8,19 +8,9 @@
 #include <tuple>
 #include <unordered_map>
 
-namespace tsf::test {
-namespace {
-struct UnionFind {
-    std::vector<uint32_t> parent;
-    explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    uint32_t find(uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
-};
-}  // namespace
+#include "gen/util/union_find.h"
 
+namespace tsf::test {
 std::string Invariants::describe() const {
     std::ostringstream s;
     s << "V=" << vertices << " E=" << edges << " F=" << faces << " euler=" << euler << " components=" << components
