@@ -7,8 +7,8 @@
 
 #include "gen/direct_mesher.h"
 #include "gen/scene.h"
-#include "mesh_invariants.h"
-#include "test_fields.h"
+#include "tests/support/fields.h"
+#include "tests/support/mesh_invariants.h"
 
 namespace tsf {
 namespace {

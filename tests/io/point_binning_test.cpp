@@ -7,7 +7,8 @@
 #include <numeric>
 #include <random>
 
-#include "io_test_util.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
 
 namespace tsf {
 namespace {

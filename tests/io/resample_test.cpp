@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "io_test_util.h"
+#include "tests/support/input_error.h"
 
 namespace tsf {
 namespace {

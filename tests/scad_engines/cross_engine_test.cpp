@@ -78,7 +78,7 @@ class CrossEngine : public ::testing::TestWithParam<Case> {};
 TEST_P(CrossEngine, RendersTheSameSolidAsTheDirectMesher) {
     const auto& [engine_name, strategy_name, bottom] = GetParam();
     TSF_NEED_ENGINE(engineNamed(engine_name));
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(bottom));
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(bottom));
     ScadOptions opts;
     ASSERT_TRUE(parseScadStrategy(strategy_name, opts.strategy));
     // Both ways of shipping the library: pasted into the file, and a copy use<>d beside it.
@@ -103,8 +103,8 @@ class CrossEngineParameters : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CrossEngineParameters, MirroredSetEqualsTheMirroredScene) {
     TSF_NEED_ENGINE(engineNamed(GetParam()));
-    const Scene flat = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
-    const Scene mirrored = buildScene(test::smallTerrain(), test::smallParams(Bottom::Mirrored));
+    const Scene flat = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
+    const Scene mirrored = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Mirrored));
     const fs::path dir = test::scratchDir("cross_set_" + GetParam());
     writeScad(flat, ScadOptions{}, (dir / "model.scad").string());
     ScadRenderRequest rq;
@@ -115,8 +115,8 @@ TEST_P(CrossEngineParameters, MirroredSetEqualsTheMirroredScene) {
 
 TEST_P(CrossEngineParameters, HeightOverrideEqualsTheTallerScene) {
     TSF_NEED_ENGINE(engineNamed(GetParam()));
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
-    SceneParams taller_params = test::smallParams(Bottom::Flat);
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
+    SceneParams taller_params = test::terrainParams(Bottom::Flat);
     taller_params.max_height_mm = 18.5;
     const Scene taller = buildScene(test::smallTerrain(), taller_params);
     const fs::path dir = test::scratchDir("cross_define_" + GetParam());
@@ -132,7 +132,7 @@ TEST_P(CrossEngineParameters, HeightOverrideEqualsTheTallerScene) {
 // message on both versions (2025 would otherwise export what is left).
 TEST_P(CrossEngineParameters, RefusedParameterStopsWithTheLibraryMessage) {
     TSF_NEED_ENGINE(engineNamed(GetParam()));
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
     const fs::path dir = test::scratchDir("cross_refused_" + GetParam());
     writeScad(scene, ScadOptions{}, (dir / "model.scad").string());
     ScadRenderRequest rq;

@@ -115,7 +115,7 @@ TEST(EngineOutputCheck, RepeatedVertexAndEmptyMeshAreRefused) {
 // a real model written to STL matches the direct mesher's exact volume, the
 // same model one snap step lower in one cell does not.
 TEST(EngineOutputCheck, StlRoundingIsWithinToleranceButOneStepIsNot) {
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
     const Mesh direct = meshScene(scene);
     const fs::path dir = test::scratchDir("output_check_rounding");
     writeMesh(direct, (dir / "m.stl").string());

@@ -1,4 +1,5 @@
-// Small hand-made fields for the gen tests.
+// Small hand-made fields and model parameters for tests. Part of the shared
+// test support (tests/support/).
 #pragma once
 
 #include <cmath>
@@ -10,7 +11,7 @@
 
 namespace tsf::test {
 
-/// Rows are listed north to south, as in a file.
+/// Rows are listed north to south, as in a file; NaN = no data.
 inline HexField fieldFromRows(const std::vector<std::vector<double>>& rows) {
     HexField f;
     f.grid.rows = int32_t(rows.size());
@@ -23,13 +24,14 @@ inline HexField fieldFromRows(const std::vector<std::vector<double>>& rows) {
 inline HexField fieldFromFunction(int cols, int rows, const std::function<double(int, int)>& value) {
     HexField f;
     f.grid = {cols, rows};
-    f.values.resize(size_t(cols) * rows);
+    f.values.resize(size_t(cols) * size_t(rows));
     for (int r = 0; r < rows; ++r)
-        for (int c = 0; c < cols; ++c) f.values[size_t(r) * cols + c] = value(c, r);
+        for (int c = 0; c < cols; ++c) f.values[size_t(r) * size_t(cols) + size_t(c)] = value(c, r);
     f.source = "test";
     return f;
 }
 
+/// 5 mm cells, 10 mm relief on a 2 mm base, 1 um height snap.
 inline SceneParams smallParams(Bottom bottom = Bottom::Flat, Cull cull = Cull::Hull) {
     SceneParams p;
     p.pitch_mm = 5.0;

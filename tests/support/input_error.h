@@ -1,30 +1,15 @@
-// Helpers for the reader tests: scratch files and checks on InputError.
+// Checks on tsf::InputError: the error type every bad input must end in
+// (never an assertion). Part of the shared test support (tests/support/).
 #pragma once
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <string>
 
 #include "gen/error.h"
 
 namespace tsf::test {
-
-/// Writes `bytes` to TSF_TEST_SCRATCH/name (folder created) and returns the path.
-inline std::string writeScratch(const std::string& name, const std::string& bytes) {
-    const std::filesystem::path dir(TSF_TEST_SCRATCH);
-    std::filesystem::create_directories(dir);
-    const std::filesystem::path path = dir / name;
-    std::ofstream out(path, std::ios::binary);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    EXPECT_TRUE(out.good()) << path;
-    return path.string();
-}
-
-inline std::string sourcePath(const std::string& relative) { return std::string(TSF_SOURCE_DIR) + "/" + relative; }
 
 /// The InputError thrown by `f`, or a test failure (returned error then has line -1).
 inline InputError catchInputError(const std::function<void()>& f) {
@@ -48,5 +33,12 @@ inline InputError catchInputError(const std::function<void()>& f) {
         const ::tsf::InputError err_ = ::tsf::test::catchInputError([&] { (void)(stmt); });          \
         EXPECT_EQ(err_.line(), (line_)) << err_.what();                                            \
         EXPECT_EQ(err_.column(), (column_)) << err_.what();                                        \
+        EXPECT_NE(err_.detail().find(text), std::string::npos) << "message: " << err_.what();       \
+    } while (0)
+
+/// Asserts that `stmt` throws InputError whose detail contains `text`, at any position.
+#define EXPECT_INPUT_ERROR(stmt, text)                                                            \
+    do {                                                                                           \
+        const ::tsf::InputError err_ = ::tsf::test::catchInputError([&] { (void)(stmt); });          \
         EXPECT_NE(err_.detail().find(text), std::string::npos) << "message: " << err_.what();       \
     } while (0)

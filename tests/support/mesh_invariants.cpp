@@ -1,4 +1,4 @@
-#include "mesh_invariants.h"
+#include "tests/support/mesh_invariants.h"
 
 #include <algorithm>
 #include <cmath>

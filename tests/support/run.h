@@ -1,20 +1,34 @@
-// Runs the tsf binary (or another program) for end-to-end tests.
+// Runs the tsf binary (or another program) for end-to-end tests. Part of the
+// shared test support (tests/support/).
 #pragma once
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <sys/wait.h>
 
+#include "tests/support/files.h"
+
 namespace tsf::test {
+
+/// The exit codes `tsf --help` documents (what a script may rely on).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitCheckFailed = 1;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitToolFailed = 3;
+inline constexpr int kExitDeviceFailed = 4;
+inline constexpr int kExitInterrupted = 130;
 
 struct RunResult {
     int exit_code = -1;
     std::string output;  ///< stdout and stderr together
+    std::string out;     ///< stdout alone (runTsf with a folder only)
+    std::string err;     ///< stderr alone (runTsf with a folder only)
 };
 
+/// Runs a shell command; stdout and stderr interleaved in output.
 inline RunResult runCommand(const std::string& command) {
     RunResult r;
     FILE* pipe = popen((command + " 2>&1").c_str(), "r");
@@ -27,18 +41,21 @@ inline RunResult runCommand(const std::string& command) {
     return r;
 }
 
+/// Runs `tsf <args>` (a shell command line); stdout and stderr interleaved in output.
 inline RunResult runTsf(const std::string& args) { return runCommand(std::string(TSF_BINARY) + " " + args); }
 
-/// A fresh scratch folder for one test.
-inline std::filesystem::path scratchDir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(TSF_TEST_SCRATCH) / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-inline void writeText(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
+/// Runs `tsf <args>` with stdout and stderr captured apart (through files in
+/// dir); output is stdout followed by stderr.
+inline RunResult runTsf(const std::string& args, const std::filesystem::path& dir) {
+    RunResult r;
+    const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+    const std::string cmd = std::string(TSF_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = readText(out);
+    r.err = readText(err);
+    r.output = r.out + r.err;
+    return r;
 }
 
 }  // namespace tsf::test

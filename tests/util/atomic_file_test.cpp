@@ -11,17 +11,18 @@
 #include <unistd.h>
 
 #include "gen/error.h"
-#include "gen/util/atomic_file.h"
 #include "gen/mesh_io/mesh_writer.h"
-#include "tests/mesh_io/mesh_io_test_support.h"
+#include "gen/util/atomic_file.h"
+#include "tests/support/files.h"
+#include "tests/support/meshes.h"
 
 namespace tsf {
 namespace {
 
 using test::listFiles;
-using test::readBytes;
+using test::readText;
 using test::scratchDir;
-using test::writeBytes;
+using test::writeText;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::IsEmpty;
@@ -30,7 +31,7 @@ TEST(AtomicFile, SuccessfulWriteLeavesOnlyTheTarget) {
     const auto dir = scratchDir();
     const std::string target = (dir / "out.txt").string();
     writeFileAtomically(target, [](std::ostream& out) { out << "hello"; });
-    EXPECT_EQ(readBytes(target), "hello");
+    EXPECT_EQ(readText(target), "hello");
     EXPECT_THAT(listFiles(dir), ElementsAre("out.txt"));
 }
 
@@ -66,23 +67,23 @@ TEST(AtomicFile, WriterThatThrowsMidwayLeavesNoFileBehind) {
 TEST(AtomicFile, ExistingTargetIsUntouchedWhenTheWriterFails) {
     const auto dir = scratchDir();
     const std::string target = (dir / "keep.obj").string();
-    writeBytes(target, "old content");
+    writeText(target, "old content");
     EXPECT_THROW(writeFileAtomically(target,
                                      [](std::ostream& out) {
                                          out << "new half";
                                          throw std::runtime_error("boom");
                                      }),
                  std::runtime_error);
-    EXPECT_EQ(readBytes(target), "old content");
+    EXPECT_EQ(readText(target), "old content");
     EXPECT_THAT(listFiles(dir), ElementsAre("keep.obj"));
 }
 
 TEST(AtomicFile, ExistingTargetIsReplacedOnSuccess) {
     const auto dir = scratchDir();
     const std::string target = (dir / "replace.txt").string();
-    writeBytes(target, "a much longer old content than the new one");
+    writeText(target, "a much longer old content than the new one");
     writeFileAtomically(target, [](std::ostream& out) { out << "new"; });
-    EXPECT_EQ(readBytes(target), "new");
+    EXPECT_EQ(readText(target), "new");
     EXPECT_THAT(listFiles(dir), ElementsAre("replace.txt"));
 }
 
@@ -92,7 +93,7 @@ TEST(AtomicFile, UncommittedFileIsRemovedByTheDestructor) {
     {
         AtomicFile file((dir / "never.3mf").string());
         temp = file.tempPath();
-        writeBytes(temp, "partial");
+        writeText(temp, "partial");
     }
     EXPECT_FALSE(std::filesystem::exists(temp));
     EXPECT_THAT(listFiles(dir), IsEmpty());
@@ -102,10 +103,10 @@ TEST(AtomicFile, CommitMovesTheTempFileOntoTheTarget) {
     const auto dir = scratchDir();
     const std::string target = (dir / "done.bin").string();
     AtomicFile file(target);
-    writeBytes(file.tempPath(), "payload");
+    writeText(file.tempPath(), "payload");
     file.commit();
     EXPECT_TRUE(file.committed());
-    EXPECT_EQ(readBytes(target), "payload");
+    EXPECT_EQ(readText(target), "payload");
     EXPECT_FALSE(std::filesystem::exists(file.tempPath()));
 }
 
@@ -143,9 +144,9 @@ TEST(AtomicFile, MeshThatCannotBeWrittenLeavesTheOldFileAlone) {
     bad.positions[3].y = std::numeric_limits<double>::quiet_NaN();
     for (const char* name : {"a.stl", "a.3mf", "a.off", "a.obj"}) {
         const auto target = dir / name;
-        writeBytes(target, "previous");
+        writeText(target, "previous");
         EXPECT_THROW(writeMesh(bad, target.string()), InputError) << name;
-        EXPECT_EQ(readBytes(target), "previous") << name;
+        EXPECT_EQ(readText(target), "previous") << name;
     }
     EXPECT_EQ(listFiles(dir).size(), 4u);
 }

@@ -356,7 +356,7 @@ TEST(Agreement, EmptyReferenceFails) {
 // against the direct mesh, through the command line.
 TEST(Agreement, OpenScadRenderIsProvenTheSameSolidQuickly) {
     if (!std::filesystem::exists("/usr/bin/openscad")) GTEST_SKIP() << "no /usr/bin/openscad";
-    const auto dir = vtest::scratch("agreement_openscad");
+    const auto dir = vtest::scratchDir("agreement_openscad");
     std::string csv;
     const HexField f = vtest::smallField();
     for (int r = 0; r < f.grid.rows; ++r) {
