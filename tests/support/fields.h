@@ -44,4 +44,25 @@ inline SceneParams smallParams(Bottom bottom = Bottom::Flat, Cull cull = Cull::H
 
 inline constexpr double kNaN = NAN;
 
+/// Volume of the union of a Scene's pillars from the Scene alone: each kept
+/// cell's footprint (its six corners, snapped to the 1 um grid the way the
+/// Scene contract says; shoelace) times its z extent. Shares no code with the
+/// direct mesher or the OpenSCAD library.
+inline double sceneVolume(const Scene& s) {
+    auto snap = [](double v) { return std::round(v / 0.001) * 0.001; };
+    double volume = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        double area2 = 0;
+        for (int e = 0; e < 6; ++e) {
+            const LatticePoint a = hexCorner(s.grid, s.col[k], s.row[k], e);
+            const LatticePoint b = hexCorner(s.grid, s.col[k], s.row[k], (e + 1) % 6);
+            const double ax = snap(double(a.i) * s.pitch_mm / 2), ay = snap(double(a.j) * s.pitch_mm / (2 * std::sqrt(3.0)));
+            const double bx = snap(double(b.i) * s.pitch_mm / 2), by = snap(double(b.j) * s.pitch_mm / (2 * std::sqrt(3.0)));
+            area2 += ax * by - bx * ay;
+        }
+        volume += area2 / 2 * double(s.top[k] - s.bottom[k]) * s.z_snap_mm;
+    }
+    return volume;
+}
+
 }  // namespace tsf::test
