@@ -27,9 +27,9 @@
 
 #include "gen/direct_mesher.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "gen/scad/engine_output_check.h"
+#include "verify/render/engine_output_check.h"
 #include "gen/scad/scad_emitter.h"
-#include "gen/scad/wasm_engine.h"
+#include "verify/render/wasm_engine.h"
 #include "gen/scene.h"
 #include "verify/verify_model.h"
 

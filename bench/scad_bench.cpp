@@ -30,7 +30,7 @@
 
 #include "gen/direct_mesher.h"
 #include "gen/mesh_io/mesh_reader.h"
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_runner.h"
 #include "gen/scad/scad_emitter.h"
 #include "gen/scene.h"
 #include "verify/mesh_topology.h"

@@ -35,6 +35,8 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include "gen/scene_check.h"
+
 namespace tsf {
 namespace {
 
@@ -302,6 +304,7 @@ private:
 }  // namespace
 
 Mesh meshScene(const Scene& scene) {
+    checkScene(scene);
     if (scene.keptCount() == 0) return {};
     return MeshBuilder(scene).build();
 }

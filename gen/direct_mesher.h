@@ -17,7 +17,9 @@
 
 namespace tsf {
 
-/// Mesh the Scene. An empty Scene (no kept cells) gives an empty Mesh.
+/// Mesh the Scene. An empty Scene (no kept cells) gives an empty Mesh. A
+/// Scene that breaks the invariants the mesher builds on (gen/scene_check.h;
+/// buildScene never makes one) is a tsf::InputError.
 Mesh meshScene(const Scene& scene);
 
 }  // namespace tsf

@@ -1,7 +1,6 @@
 #include "gen/resample.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -93,7 +92,10 @@ ResampleLayout resampleLayout(int32_t raster_cols, int32_t raster_rows, int hex_
 
 HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
     const ResampleLayout layout = resampleLayout(raster.cols, raster.rows, opts.hex_cols);
-    assert(raster.values.size() == size_t(raster.cols) * size_t(raster.rows));
+    if (raster.values.size() != size_t(raster.cols) * size_t(raster.rows))
+        throw InputError(raster.source, 0, 0,
+                         "the raster holds " + std::to_string(raster.values.size()) + " values, not " +
+                             std::to_string(raster.cols) + " x " + std::to_string(raster.rows));
     const HexGrid& grid = layout.grid;
     const double p = layout.pitch_px;
 

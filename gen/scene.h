@@ -13,7 +13,7 @@
 // Frame: x east, y north, z up, millimetres; the grid's bounding box starts at
 // (0, 0) (see hex_grid.h); the lowest bottom is z = 0.
 //
-// Invariants (checked by buildScene, asserted by the mesher):
+// Invariants (made by buildScene, checked by the mesher: gen/scene_check.h):
 //   - kept cells form one edge-connected piece;
 //   - every kept cell has bottom < top;
 //   - the z intervals of two neighbouring kept cells overlap by at least one

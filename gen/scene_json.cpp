@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "gen/error.h"
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 
 namespace tsf {
 namespace {

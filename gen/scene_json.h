@@ -47,7 +47,7 @@ nlohmann::json sceneToJson(const Scene& scene);
 /// (row, col) order or repeated, or a cell whose bottom is not below its top.
 Scene sceneFromJson(const nlohmann::json& j);
 
-/// Writes sceneToJson(scene) to path atomically (gen/mesh_io/atomic_file.h),
+/// Writes sceneToJson(scene) to path atomically (gen/util/atomic_file.h),
 /// one cell per line. Throws InputError for an unusable folder,
 /// std::runtime_error for I/O failures.
 void writeSceneJson(const Scene& scene, const std::string& path);

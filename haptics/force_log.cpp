@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 #include "haptics/force_model.h"
 
 namespace tsf::haptics {

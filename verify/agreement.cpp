@@ -11,6 +11,7 @@
 #include <memory>
 #include <unordered_set>
 
+#include "gen/error.h"
 #include "verify/closest_point_tree.h"
 #include "verify/detail/format.h"
 #include "verify/surface_chains.h"
@@ -305,6 +306,12 @@ void sampleDirection(Direction& d, const std::vector<uint32_t>& vertices, const 
 
 AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const std::string& reference_name,
                               const AgreementOptions& options) {
+    if (!(options.distance_tolerance_mm > 0 && std::isfinite(options.distance_tolerance_mm)))
+        throw InputError("the distance tolerance must be a positive number of mm, got " +
+                         fmtNum(options.distance_tolerance_mm));
+    if (!(options.error_bound_mm >= 0 && std::isfinite(options.error_bound_mm)))
+        throw InputError("the error bound must be 0 (automatic) or a positive number of mm, got " +
+                         fmtNum(options.error_bound_mm));
     AgreementResult r;
     AgreementFigures& f = r.figures;
     f.reference = reference_name;

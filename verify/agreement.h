@@ -88,6 +88,8 @@ struct AgreementResult {
 
 /// Compares `model` with `reference` (named `reference_name` in the report).
 /// An empty mesh or a non-finite coordinate on either side fails both checks.
+/// A tolerance that is not a positive number (or a negative error bound) is a
+/// tsf::InputError.
 AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const std::string& reference_name,
                               const AgreementOptions& options);
 

@@ -7,28 +7,10 @@
 #include <limits>
 #include <numeric>
 
+#include "gen/util/union_find.h"
+
 namespace tsf {
 namespace {
-
-class UnionFind {
-public:
-    explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), uint32_t(0)); }
-    uint32_t find(uint32_t x) {
-        while (parent_[x] != x) {
-            parent_[x] = parent_[parent_[x]];  // path halving
-            x = parent_[x];
-        }
-        return x;
-    }
-    void unite(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-    }
-
-private:
-    std::vector<uint32_t> parent_;
-};
 
 // One side of a triangle: corner `side` to corner `side + 1`.
 struct HalfEdge {

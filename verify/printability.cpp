@@ -8,6 +8,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include "gen/util/union_find.h"
 #include "verify/detail/format.h"
 
 namespace tsf {
@@ -40,12 +41,7 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
         const Vec3& p = mesh.positions[v];
         return K::Point_3(p.x, p.y, p.z);
     };
-    std::vector<uint32_t> parent(nt);
-    for (uint32_t i = 0; i < nt; ++i) parent[i] = i;
-    auto find = [&](uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
+    UnionFind regions(nt);
     // Half-edges keyed by their directed vertex pair; a consistently oriented
     // neighbour has the reverse pair.
     std::vector<std::pair<uint64_t, uint32_t>> half;
@@ -73,8 +69,7 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
             const K::Vector_3 n = CGAL::cross_product(pb - pa, pc - pa);
             const K::Vector_3 e = CGAL::cross_product(n, pb - pa);  // in-plane, towards c's side
             if ((e * (pc - pa) > 0) == (e * (pd - pa) > 0)) continue;  // folded onto itself
-            const uint32_t x = find(t), y = find(it->second);
-            if (x != y) parent[std::max(x, y)] = std::min(x, y);
+            regions.unite(t, it->second);
         }
     }
     std::vector<double> best_area(nt, -1.0);
@@ -85,7 +80,7 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
         const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
         const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
         const double area2 = nx * nx + ny * ny + nz * nz;
-        const uint32_t r = find(t);
+        const uint32_t r = regions.find(t);
         if (area2 > best_area[r]) {
             best_area[r] = area2;
             best[r] = t;
@@ -93,7 +88,7 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
     }
     std::vector<uint32_t> out;
     for (uint32_t t = 0; t < nt; ++t)
-        if (parent[t] == t && best_area[t] > 0) out.push_back(best[t]);
+        if (regions.isRoot(t) && best_area[t] > 0) out.push_back(best[t]);
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <numeric>
 
+#include "gen/util/union_find.h"
 #include "verify/detail/cgal_checks.h"
 #include "verify/detail/format.h"
 #include "verify/mesh_topology.h"
@@ -56,16 +57,8 @@ void reportHoles(const Mesh& mesh, const MeshTopology& topo, size_t max_offender
         compact.emplace(e.a, uint32_t(compact.size()));
         compact.emplace(e.b, uint32_t(compact.size()));
     }
-    std::vector<uint32_t> parent(compact.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
-    for (const EdgeUse& e : topo.border_edges) {
-        const uint32_t a = find(compact[e.a]), b = find(compact[e.b]);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
+    UnionFind rims(compact.size());
+    for (const EdgeUse& e : topo.border_edges) rims.unite(compact[e.a], compact[e.b]);
     struct Hole {
         size_t edges = 0;
         Vec3 sum;
@@ -73,7 +66,7 @@ void reportHoles(const Mesh& mesh, const MeshTopology& topo, size_t max_offender
     };
     std::map<uint32_t, Hole> holes;
     for (const EdgeUse& e : topo.border_edges) {
-        Hole& h = holes[find(compact[e.a])];
+        Hole& h = holes[rims.find(compact[e.a])];
         const Vec3 m = edgeMidpoint(mesh, e);
         const Vec3 &p = mesh.positions[e.a], &q = mesh.positions[e.b];
         ++h.edges;

@@ -5,9 +5,9 @@
 
 #include "gen/error.h"
 #include "gen/io/csv_tokenizer.h"
-#include "gen/io/input_file.h"
 #include "gen/io/number_field.h"
 #include "gen/io/raster_limits.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 namespace {
@@ -111,7 +111,7 @@ Raster parseCsvGrid(std::string_view text, const std::string& path, char delimit
 
 Raster readCsvGrid(const std::string& path, char delimiter) {
     checkCsvDelimiter(delimiter);
-    const std::string bytes = readInputFile(path);
+    const std::string bytes = readFileBytes(path, kMaxInputFileBytes);
     return parseCsvGrid(bytes, path, delimiter);
 }
 

@@ -5,10 +5,10 @@
 #include <optional>
 
 #include "gen/error.h"
-#include "gen/io/input_file.h"
 #include "gen/io/number_field.h"
 #include "gen/io/raster_limits.h"
-#include "gen/io/text_scanner.h"
+#include "gen/util/file_bytes.h"
+#include "gen/util/text_scanner.h"
 
 namespace tsf {
 namespace {
@@ -55,7 +55,7 @@ bool startsLikeNumber(std::string_view token) {
 
 Raster parseEsriAscii(std::string_view text, const std::string& path) {
     const size_t bom = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;  // some editors write a UTF-8 BOM
-    TextScanner scanner(text, /*hash_comments=*/false, bom);
+    TextScanner scanner(text, path, /*comment=*/'\0', bom, 1, 1);
     EsriHeader h;
     std::string_view token;
     bool have_token = scanner.next(token);
@@ -193,7 +193,7 @@ Raster parseEsriAscii(std::string_view text, const std::string& path) {
 }
 
 Raster readEsriAscii(const std::string& path) {
-    const std::string bytes = readInputFile(path);
+    const std::string bytes = readFileBytes(path, kMaxInputFileBytes);
     return parseEsriAscii(bytes, path);
 }
 

@@ -3,10 +3,10 @@
 #include <algorithm>
 
 #include "gen/error.h"
-#include "gen/io/input_file.h"
 #include "gen/io/number_field.h"
 #include "gen/io/raster_limits.h"
-#include "gen/io/text_scanner.h"
+#include "gen/util/file_bytes.h"
+#include "gen/util/text_scanner.h"
 
 namespace tsf {
 namespace {
@@ -59,7 +59,7 @@ Raster parsePgm(std::string_view bytes, const std::string& path) {
         bytes[2] != '#')
         throw InputError(path, 1, 3, "expected whitespace after the magic number \"P" + std::string(1, bytes[1]) + "\"");
 
-    TextScanner header(bytes, /*hash_comments=*/true, 2, 1, 3);
+    TextScanner header(bytes, path, /*comment=*/'#', 2, 1, 3);
     const int64_t width = readHeaderNumber(header, path, "width");
     const int width_line = header.line();
     const int64_t height = readHeaderNumber(header, path, "height");
@@ -139,7 +139,7 @@ Raster parsePgm(std::string_view bytes, const std::string& path) {
 }
 
 Raster readPgm(const std::string& path) {
-    const std::string bytes = readInputFile(path);
+    const std::string bytes = readFileBytes(path, kMaxInputFileBytes);
     return parsePgm(bytes, path);
 }
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "gen/error.h"
-#include "gen/io/input_file.h"
 #include "gen/io/raster_limits.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 namespace {
@@ -170,7 +170,7 @@ Raster parsePng(std::string_view bytes, const std::string& path) {
 }
 
 Raster readPng(const std::string& path) {
-    const std::string bytes = readInputFile(path);
+    const std::string bytes = readFileBytes(path, kMaxInputFileBytes);
     return parsePng(bytes, path);
 }
 

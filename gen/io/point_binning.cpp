@@ -28,7 +28,8 @@ double rowsFor(double h) { return std::max(1.0, std::ceil((h * 2.0 * kSqrt3 + 1.
 BinLayout binLayout(const PointTable& points, const BinOptions& opts) {
     const size_t n = points.size();
     if (n == 0) throw InputError(points.source, 0, 0, "no points to bin");
-    assert(points.y.size() == n);
+    if (points.y.size() != n || (points.hasWeight() && points.weight.size() != n))
+        throw InputError(points.source, 0, 0, "the point table's columns differ in length");
     if (!std::isfinite(opts.bin_size) || opts.bin_size < 0.0)
         throw InputError("bin size must be a positive number of data units, got " + formatNumber(opts.bin_size));
     if (opts.hex_cols < 0) throw InputError("hex columns must be >= 1 (0 = default), got " + std::to_string(opts.hex_cols));

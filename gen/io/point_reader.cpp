@@ -5,8 +5,9 @@
 #include "gen/error.h"
 #include "gen/io/csv_grid_reader.h"
 #include "gen/io/csv_tokenizer.h"
-#include "gen/io/input_file.h"
 #include "gen/io/number_field.h"
+#include "gen/io/raster_limits.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 namespace {
@@ -186,7 +187,7 @@ PointTable parsePointsCsv(std::string_view text, const std::string& path, const 
 
 PointTable readPointsCsv(const std::string& path, const PointColumns& cols) {
     checkCsvDelimiter(cols.delimiter);
-    const std::string bytes = readInputFile(path);
+    const std::string bytes = readFileBytes(path, kMaxInputFileBytes);
     return parsePointsCsv(bytes, path, cols);
 }
 

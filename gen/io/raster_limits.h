@@ -1,4 +1,5 @@
-// Size limits for rasters, checked by every reader BEFORE it allocates.
+// Size limits for field files and rasters, checked by every reader BEFORE it
+// allocates.
 //
 // A raster is held as doubles (8 bytes per cell), so kMaxRasterCells cells
 // take 800 MB. tsf models have at most a few hundred thousand hexagons, so a
@@ -10,6 +11,12 @@
 #include <string>
 
 namespace tsf {
+
+/// Largest field file tsf reads (bytes; readFileBytes(path,
+/// kMaxInputFileBytes), gen/util/file_bytes.h). A raster at the cell cap as
+/// text is well below this; anything larger is almost certainly not a field
+/// file.
+inline constexpr int64_t kMaxInputFileBytes = int64_t(4) << 30;  // 4 GiB
 
 inline constexpr int64_t kMaxRasterSide = 20'000;         ///< cells along either side
 inline constexpr int64_t kMaxRasterCells = 100'000'000;   ///< cols * rows

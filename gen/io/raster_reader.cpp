@@ -6,10 +6,11 @@
 #include "gen/error.h"
 #include "gen/io/csv_grid_reader.h"
 #include "gen/io/esri_ascii_reader.h"
-#include "gen/io/input_file.h"
 #include "gen/io/number_field.h"
 #include "gen/io/pgm_reader.h"
 #include "gen/io/png_reader.h"
+#include "gen/io/raster_limits.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 namespace {
@@ -82,7 +83,7 @@ Raster parseRaster(std::string_view bytes, const std::string& path, const Raster
 
 Raster readRaster(const std::string& path, const RasterReadOptions& opts) {
     checkCsvDelimiter(opts.delimiter);
-    const std::string bytes = readInputFile(path);
+    const std::string bytes = readFileBytes(path, kMaxInputFileBytes);
     return parseRaster(bytes, path, opts);
 }
 

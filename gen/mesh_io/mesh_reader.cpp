@@ -1,16 +1,15 @@
 #include "gen/mesh_io/mesh_reader.h"
 
 #include "gen/error.h"
-#include "gen/mesh_io/file_bytes.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/obj_reader.h"
 #include "gen/mesh_io/off_reader.h"
 #include "gen/mesh_io/stl_reader.h"
 #include "gen/mesh_io/three_mf_reader.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 
-using mesh_io::readFileBytes;
 namespace {
 
 bool startsWithZipSignature(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == "PK\x03\x04"; }

@@ -3,7 +3,7 @@
 // Extensions (case-insensitive): .stl (binary, or ASCII with
 // opts.ascii_stl), .3mf, .off, .obj. Every format is written atomically: a
 // temporary file in the target's folder, renamed over the target once
-// complete (gen/mesh_io/atomic_file.h); on any failure no file appears and an
+// complete (gen/util/atomic_file.h); on any failure no file appears and an
 // existing one is untouched. An empty mesh gives a valid empty STL, OFF or
 // OBJ file (it reads back with a "no triangles" note); 3MF refuses it.
 //

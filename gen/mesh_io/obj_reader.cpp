@@ -5,16 +5,17 @@
 #include <vector>
 
 #include "gen/error.h"
-#include "gen/mesh_io/file_bytes.h"
 #include "gen/mesh_io/mesh_assembler.h"
-#include "gen/mesh_io/text_scanner.h"
+#include "gen/mesh_io/mesh_tokens.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 
 using mesh_io::MeshAssembler;
-using mesh_io::readFileBytes;
 using mesh_io::quoteForMessage;
-using mesh_io::TextScanner;
+using mesh_io::anyNumber;
+using mesh_io::finiteNumber;
+using mesh_io::integer;
 namespace {
 
 // Statements that carry nothing tsf uses.
@@ -44,18 +45,18 @@ struct ForwardReference {
 // Parses "v", "v/vt", "v//vn" or "v/vt/vn" and returns v (not yet resolved).
 int64_t cornerVertex(const TextScanner& scanner, std::string_view token) {
     const size_t slash = token.find('/');
-    const int64_t v = scanner.integer(token.substr(0, slash), "a vertex index");
+    const int64_t v = integer(scanner, token.substr(0, slash), "a vertex index");
     if (slash != std::string_view::npos) {
         std::string_view rest = token.substr(slash + 1);
         const size_t second = rest.find('/');
         const std::string_view vt = rest.substr(0, second);
-        if (!vt.empty()) scanner.integer(vt, "a texture index after '/'");
+        if (!vt.empty()) integer(scanner, vt, "a texture index after '/'");
         if (second != std::string_view::npos) {
             const std::string_view vn = rest.substr(second + 1);
             if (vn.empty() || vn.find('/') != std::string_view::npos) {
                 scanner.fail("a face corner 'v', 'v/vt', 'v//vn' or 'v/vt/vn' expected, found " + quoteForMessage(token));
             }
-            scanner.integer(vn, "a normal index after '/'");
+            integer(scanner, vn, "a normal index after '/'");
         }
     }
     return v;
@@ -77,20 +78,20 @@ Mesh parseObj(std::string_view text, const std::string& name, MeshReadReport* re
 
     std::string_view token;
     do {
-        if (!scanner.tokenOnLine(token)) continue;
+        if (!scanner.nextOnLine(token)) continue;
         if (token == "v") {
             double xyz[3];
             for (int k = 0; k < 3; ++k) {
                 std::string_view value;
-                if (!scanner.tokenOnLine(value)) scanner.failHere("'v' needs 3 coordinates: x y z");
-                xyz[k] = scanner.finiteNumber(value, "a vertex coordinate");
+                if (!scanner.nextOnLine(value)) scanner.failHere("'v' needs 3 coordinates: x y z");
+                xyz[k] = finiteNumber(scanner, value, "a vertex coordinate");
             }
             positions.push_back({xyz[0], xyz[1], xyz[2]});
         } else if (token == "f") {
             const int face_line = scanner.line();
             corners.clear();
             std::string_view corner;
-            while (scanner.tokenOnLine(corner)) {
+            while (scanner.nextOnLine(corner)) {
                 const int64_t v = cornerVertex(scanner, corner);
                 const auto count = static_cast<int64_t>(positions.size());
                 int64_t index = 0;
@@ -125,7 +126,7 @@ Mesh parseObj(std::string_view text, const std::string& name, MeshReadReport* re
         } else {
             scanner.fail("unknown OBJ statement " + quoteForMessage(token) + "; 'v' or 'f' expected");
         }
-    } while (scanner.nextLine());
+    } while (scanner.skipLine());
 
     for (const ForwardReference& ref : forward) {
         if (ref.index_1based > static_cast<int64_t>(positions.size())) {

@@ -2,7 +2,7 @@
 
 #include <ostream>
 
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 #include "gen/mesh_io/mesh_write_checks.h"
 #include "gen/mesh_io/text_lines.h"
 

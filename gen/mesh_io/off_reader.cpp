@@ -5,16 +5,17 @@
 #include <vector>
 
 #include "gen/error.h"
-#include "gen/mesh_io/file_bytes.h"
 #include "gen/mesh_io/mesh_assembler.h"
-#include "gen/mesh_io/text_scanner.h"
+#include "gen/mesh_io/mesh_tokens.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 
 using mesh_io::MeshAssembler;
-using mesh_io::readFileBytes;
 using mesh_io::quoteForMessage;
-using mesh_io::TextScanner;
+using mesh_io::anyNumber;
+using mesh_io::finiteNumber;
+using mesh_io::integer;
 using mesh_io::equalsIgnoringCase;
 namespace {
 
@@ -26,14 +27,14 @@ constexpr size_t kMinFaceBytes = 8;
 
 std::string_view nextToken(TextScanner& scanner, const char* expected) {
     std::string_view token;
-    if (!scanner.token(token)) scanner.failHere(std::string("unexpected end of file: ") + expected + " expected");
+    if (!scanner.next(token)) scanner.failHere(std::string("unexpected end of file: ") + expected + " expected");
     return token;
 }
 
 // As nextToken, naming item `index` of `count` ("vertex 3 of 8") on failure.
 std::string_view nextItemToken(TextScanner& scanner, const char* item, int64_t index, int64_t count) {
     std::string_view token;
-    if (!scanner.token(token)) {
+    if (!scanner.next(token)) {
         scanner.failHere("unexpected end of file: " + std::string(item) + " " + std::to_string(index) + " of " +
                          std::to_string(count) + " expected (do the counts in the header match the data?)");
     }
@@ -47,7 +48,7 @@ Mesh parseOff(std::string_view text, const std::string& name, MeshReadReport* re
     TextScanner scanner(text, name, '#');
 
     std::string_view header;
-    if (!scanner.token(header)) scanner.failHere("'OFF' expected, the file has only comments or blank lines");
+    if (!scanner.next(header)) scanner.failHere("'OFF' expected, the file has only comments or blank lines");
     const bool plain = header == "OFF";
     if (!plain && header != "COFF" && header != "NOFF" && header != "CNOFF") {
         if (header.size() > 3 && header.substr(header.size() - 3) == "OFF") {
@@ -58,13 +59,13 @@ Mesh parseOff(std::string_view text, const std::string& name, MeshReadReport* re
 
     std::string_view token = nextToken(scanner, "the vertex count");
     if (equalsIgnoringCase(token, "BINARY")) scanner.fail("binary OFF is not supported; write OFF as text");
-    const int64_t vertex_count = scanner.integer(token, "the vertex count");
-    const int64_t face_count = scanner.integer(nextToken(scanner, "the face count"), "the face count");
+    const int64_t vertex_count = integer(scanner, token, "the vertex count");
+    const int64_t face_count = integer(scanner, nextToken(scanner, "the face count"), "the face count");
     if (vertex_count < 0 || vertex_count >= int64_t{std::numeric_limits<uint32_t>::max()}) {
         scanner.fail("vertex count " + std::to_string(vertex_count) + " is out of range");
     }
     if (face_count < 0) scanner.fail("face count " + std::to_string(face_count) + " is negative");
-    if (scanner.tokenOnLine(token)) scanner.integer(token, "the edge count");  // optional, unused
+    if (scanner.nextOnLine(token)) integer(scanner, token, "the edge count");  // optional, unused
 
     const size_t vertex_reserve = std::min<size_t>(static_cast<size_t>(vertex_count), text.size() / kMinVertexBytes);
     const size_t face_reserve = std::min<size_t>(static_cast<size_t>(face_count), text.size() / kMinFaceBytes);
@@ -76,24 +77,24 @@ Mesh parseOff(std::string_view text, const std::string& name, MeshReadReport* re
     for (int64_t v = 0; v < vertex_count; ++v) {
         double xyz[3];
         for (int k = 0; k < 3; ++k) {
-            xyz[k] = scanner.finiteNumber(nextItemToken(scanner, "vertex", v, vertex_count), "a vertex coordinate");
+            xyz[k] = finiteNumber(scanner, nextItemToken(scanner, "vertex", v, vertex_count), "a vertex coordinate");
         }
         remap.push_back(assembler.addVertex({xyz[0], xyz[1], xyz[2]}));
-        if (scanner.tokenOnLine(token)) extra_vertex_values = true;
-        scanner.nextLine();
+        if (scanner.nextOnLine(token)) extra_vertex_values = true;
+        scanner.skipLine();
     }
     if (extra_vertex_values && plain) assembler.note("ignored values after x y z on vertex lines (colours or normals?)");
 
     size_t polygons = 0;
     for (int64_t f = 0; f < face_count; ++f) {
         const int64_t corners =
-            scanner.integer(nextItemToken(scanner, "face", f, face_count), "the corner count of a face");
+            integer(scanner, nextItemToken(scanner, "face", f, face_count), "the corner count of a face");
         if (corners < 3) {
             scanner.fail("face " + std::to_string(f) + " has " + std::to_string(corners) + " corners; at least 3 expected");
         }
         uint32_t first = 0, previous = 0;
         for (int64_t c = 0; c < corners; ++c) {
-            const int64_t index = scanner.integer(nextItemToken(scanner, "corner", c, corners), "a vertex index");
+            const int64_t index = integer(scanner, nextItemToken(scanner, "corner", c, corners), "a vertex index");
             if (index < 0 || index >= vertex_count) {
                 scanner.fail("vertex index " + std::to_string(index) + " is out of range: the file has " +
                              std::to_string(vertex_count) + " vertices (0 to " + std::to_string(vertex_count - 1) + ")");
@@ -104,13 +105,13 @@ Mesh parseOff(std::string_view text, const std::string& name, MeshReadReport* re
             previous = vertex;
         }
         if (corners > 3) ++polygons;
-        scanner.nextLine();  // the rest of the line may hold a colour
+        scanner.skipLine();  // the rest of the line may hold a colour
     }
     if (polygons > 0) {
         assembler.note(std::to_string(polygons) + " faces with more than 3 corners were split into triangles fanning "
                                                   "from their first corner (right for convex faces)");
     }
-    if (scanner.token(token)) {
+    if (scanner.next(token)) {
         scanner.fail("end of file expected after " + std::to_string(face_count) + " faces, found " + quoteForMessage(token) +
                      " (do the counts in the header match the data?)");
     }

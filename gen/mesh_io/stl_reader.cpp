@@ -6,16 +6,17 @@
 #include <cstdint>
 
 #include "gen/error.h"
-#include "gen/mesh_io/file_bytes.h"
 #include "gen/mesh_io/mesh_assembler.h"
-#include "gen/mesh_io/text_scanner.h"
+#include "gen/mesh_io/mesh_tokens.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 
 using mesh_io::MeshAssembler;
-using mesh_io::readFileBytes;
 using mesh_io::quoteForMessage;
-using mesh_io::TextScanner;
+using mesh_io::anyNumber;
+using mesh_io::finiteNumber;
+using mesh_io::integer;
 using mesh_io::equalsIgnoringCase;
 namespace {
 
@@ -89,7 +90,7 @@ Mesh parseBinary(std::string_view bytes, const std::string& name, uint32_t count
 // Reads the next token and checks it is the keyword.
 void expectKeyword(TextScanner& scanner, std::string_view keyword, const char* context) {
     std::string_view token;
-    if (!scanner.token(token)) {
+    if (!scanner.next(token)) {
         scanner.failHere("unexpected end of file: '" + std::string(keyword) + "' expected " + context);
     }
     if (!equalsIgnoringCase(token, keyword)) {
@@ -99,8 +100,8 @@ void expectKeyword(TextScanner& scanner, std::string_view keyword, const char* c
 
 double expectNumber(TextScanner& scanner, const char* what, bool finite) {
     std::string_view token;
-    if (!scanner.token(token)) scanner.failHere(std::string("unexpected end of file: ") + what + " expected");
-    return finite ? scanner.finiteNumber(token, what) : scanner.anyNumber(token, what);
+    if (!scanner.next(token)) scanner.failHere(std::string("unexpected end of file: ") + what + " expected");
+    return finite ? finiteNumber(scanner, token, what) : anyNumber(scanner, token, what);
 }
 
 Mesh parseAscii(std::string_view bytes, const std::string& name, MeshReadReport* report) {
@@ -111,19 +112,19 @@ Mesh parseAscii(std::string_view bytes, const std::string& name, MeshReadReport*
     MeshAssembler assembler(name, estimate / kVerticesPerTriangleEstimateDivisor + 3, estimate);
     std::string_view token;
     size_t solids = 0;
-    while (scanner.token(token)) {
+    while (scanner.next(token)) {
         if (!equalsIgnoringCase(token, "solid")) {
             scanner.fail(std::string(solids == 0 ? "'solid'" : "'solid' or the end of the file") + " expected, found " +
                          quoteForMessage(token));
         }
         ++solids;
-        scanner.nextLine();  // the rest of the line is the solid's name
+        scanner.skipLine();  // the rest of the line is the solid's name
         for (;;) {
-            if (!scanner.token(token)) {
+            if (!scanner.next(token)) {
                 scanner.failHere("unexpected end of file: 'facet' or 'endsolid' expected (is the file truncated?)");
             }
             if (equalsIgnoringCase(token, "endsolid")) {
-                scanner.nextLine();
+                scanner.skipLine();
                 break;
             }
             if (!equalsIgnoringCase(token, "facet")) {

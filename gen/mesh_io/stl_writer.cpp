@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gen/error.h"
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 #include "gen/mesh_io/mesh_write_checks.h"
 #include "gen/mesh_io/number_text.h"
 

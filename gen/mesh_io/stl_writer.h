@@ -28,7 +28,7 @@
 
 namespace tsf {
 
-/// Writes mesh to path atomically (gen/mesh_io/atomic_file.h), binary unless
+/// Writes mesh to path atomically (gen/util/atomic_file.h), binary unless
 /// opts.ascii_stl. Throws tsf::InputError for an unusable path or a mesh that
 /// cannot be stored (NaN, beyond float32, more than 2^32-1 triangles),
 /// std::invalid_argument for out-of-range indices, std::runtime_error for I/O.

@@ -5,14 +5,13 @@
 
 #include "Model/COM/NMR_DLLInterfaces.h"
 #include "gen/error.h"
-#include "gen/mesh_io/file_bytes.h"
 #include "gen/mesh_io/lib3mf_handle.h"
 #include "gen/mesh_io/mesh_assembler.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 
 using mesh_io::MeshAssembler;
-using mesh_io::readFileBytes;
 using mesh_io::Lib3mfHandle;
 using mesh_io::Lib3mfObject;
 using mesh_io::lib3mfErrorText;

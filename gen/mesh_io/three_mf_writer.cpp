@@ -5,7 +5,7 @@
 
 #include "Model/COM/NMR_DLLInterfaces.h"
 #include "gen/error.h"
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 #include "gen/mesh_io/lib3mf_handle.h"
 #include "gen/mesh_io/mesh_write_checks.h"
 

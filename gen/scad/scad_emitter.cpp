@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gen/error.h"
-#include "gen/mesh_io/atomic_file.h"
+#include "gen/util/atomic_file.h"
 #include "gen/scad/scad_library.h"
 
 namespace tsf {

@@ -18,7 +18,7 @@
 //                   "mirrored bottom", "half size"), used by the GUI's customizer and by
 //                   openscad -p dir/name.json -P "<set>";
 //   dir/tsf_lib/    a copy of the library, only when inline_library is false.
-// Every file is written atomically (gen/mesh_io/atomic_file.h).
+// Every file is written atomically (gen/util/atomic_file.h).
 #pragma once
 
 #include <string>

@@ -7,8 +7,8 @@
 
 #include "gen/direct_mesher.h"
 #include "gen/scene.h"
-#include "mesh_invariants.h"
-#include "test_fields.h"
+#include "tests/support/fields.h"
+#include "tests/support/mesh_invariants.h"
 
 namespace tsf {
 namespace {
@@ -16,27 +16,9 @@ using test::checkInvariants;
 using test::fieldFromFunction;
 using test::fieldFromRows;
 using test::kNaN;
+using test::sceneVolume;
 using test::smallParams;
 
-// Volume of the union of pillars computed from the Scene alone: each kept
-// cell's footprint (its six corners, snapped to the 1 um grid the way the
-// Scene contract says) times its z extent. Shares no code with the mesher.
-double expectedVolume(const Scene& s) {
-    auto snap = [](double v) { return std::round(v / 0.001) * 0.001; };
-    double volume = 0;
-    for (size_t k = 0; k < s.keptCount(); ++k) {
-        double area2 = 0;
-        for (int e = 0; e < 6; ++e) {
-            const LatticePoint a = hexCorner(s.grid, s.col[k], s.row[k], e);
-            const LatticePoint b = hexCorner(s.grid, s.col[k], s.row[k], (e + 1) % 6);
-            const double ax = snap(a.i * s.pitch_mm / 2), ay = snap(a.j * s.pitch_mm / (2 * std::sqrt(3.0)));
-            const double bx = snap(b.i * s.pitch_mm / 2), by = snap(b.j * s.pitch_mm / (2 * std::sqrt(3.0)));
-            area2 += ax * by - bx * ay;
-        }
-        volume += area2 / 2 * double(s.top[k] - s.bottom[k]) * s.z_snap_mm;
-    }
-    return volume;
-}
 
 // Every kept cell's six top corners exist as mesh vertices at its top height
 // (and bottom corners when mirrored): the values can be read back.
@@ -62,7 +44,7 @@ void expectSolid(const HexField& field, const SceneParams& params, const char* w
     EXPECT_TRUE(inv.closedManifold()) << inv.describe();
     EXPECT_EQ(inv.euler, 2) << inv.describe();
     EXPECT_EQ(inv.components, 1u) << inv.describe();
-    const double expected = expectedVolume(s);
+    const double expected = sceneVolume(s);
     EXPECT_NEAR(inv.volume, expected, 1e-9 * expected) << inv.describe();
     expectCellHeightsPresent(s, m);
 }
@@ -167,7 +149,7 @@ TEST(DirectMesher, ThousandByThousandGridIsSolid) {
     EXPECT_TRUE(inv.closedManifold()) << inv.describe();
     EXPECT_EQ(inv.euler, 2);
     EXPECT_EQ(inv.components, 1u);
-    EXPECT_NEAR(inv.volume, expectedVolume(s), 1e-8 * inv.volume);
+    EXPECT_NEAR(inv.volume, sceneVolume(s), 1e-8 * inv.volume);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "cli_runner.h"
+#include "tests/support/run.h"
 
 namespace tsf {
 namespace {

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
-#include "cli_runner.h"
-#include "mesh_invariants.h"
+#include "tests/support/mesh_invariants.h"
+#include "tests/support/run.h"
 
 namespace tsf {
 namespace {
@@ -21,8 +21,7 @@ using test::writeText;
 // Minimal binary STL reader, written against the format description and
 // merging only bit-identical vertices.
 Mesh readBinaryStl(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    const std::string bytes = test::readText(path);
     Mesh m;
     if (bytes.size() < 84) return m;
     uint32_t n;

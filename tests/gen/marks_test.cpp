@@ -9,8 +9,8 @@
 #include "gen/marks.h"
 #include "gen/scene.h"
 #include "gen/scene_json.h"
-#include "mesh_invariants.h"
-#include "test_fields.h"
+#include "tests/support/fields.h"
+#include "tests/support/mesh_invariants.h"
 #include "verify/verify_model.h"
 
 namespace tsf {

@@ -4,7 +4,7 @@
 
 #include "gen/error.h"
 #include "gen/scene.h"
-#include "test_fields.h"
+#include "tests/support/fields.h"
 
 namespace tsf {
 namespace {

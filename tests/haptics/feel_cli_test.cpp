@@ -18,6 +18,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/run.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -27,26 +29,6 @@ const fs::path kScratch = fs::path(TSF_TEST_SCRATCH) / "feel";
 /// A file name unique to the running test (ctest may run tests in parallel).
 fs::path scratchFile(const std::string& suffix) {
     return kScratch / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" + suffix);
-}
-
-struct CliResult {
-    int code = -1;
-    std::string out;
-};
-
-/// Runs `tsf ARGS`, capturing stdout+stderr and the exit code.
-CliResult tsf(const std::string& args) {
-    fs::create_directories(kScratch);
-    const fs::path out = scratchFile("stdout.txt");
-    const std::string cmd = std::string(TSF_BINARY) + " " + args + " > " + out.string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    CliResult r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream f(out);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    r.out = ss.str();
-    return r;
 }
 
 /// A 12 x 9 field with one hill and a no-data corner, written once.
@@ -85,10 +67,10 @@ TEST(FeelCli, SimSweepWritesAForceLogAndAPlot) {
     const fs::path log = kScratch / "forces.csv", plot = kScratch / "forces.png";
     fs::remove(log);
     fs::remove(plot);
-    const CliResult r = tsf("feel " + hillField() + " --device sim --trajectory sweep --max-force 5 --log " + log.string() +
+    const tsf::test::RunResult r = tsf::test::runTsf("feel " + hillField() + " --device sim --trajectory sweep --max-force 5 --log " + log.string() +
                       " --plot " + plot.string());
-    ASSERT_EQ(r.code, 0) << r.out;
-    EXPECT_NE(r.out.find("zero force sent"), std::string::npos) << r.out;
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("zero force sent"), std::string::npos) << r.output;
     const auto rows = readCsv(log);
     ASSERT_GT(rows.size(), 1000u);
     ASSERT_EQ(rows[0][0], "t_s");
@@ -120,11 +102,11 @@ TEST(FeelCli, SimSweepWritesAForceLogAndAPlot) {
 
 TEST(FeelCli, ALogReplaysThroughTheSameFieldWithTheSameForces) {
     const fs::path log = kScratch / "taps.csv", again = kScratch / "taps-again.csv";
-    ASSERT_EQ(tsf("feel " + hillField() + " --trajectory taps --friction off --log " + log.string()).code, 0);
-    const CliResult r = tsf("feel " + hillField() + " --friction off --device replay:" + log.string() + " --log " +
+    ASSERT_EQ(tsf::test::runTsf("feel " + hillField() + " --trajectory taps --friction off --log " + log.string()).exit_code, 0);
+    const tsf::test::RunResult r = tsf::test::runTsf("feel " + hillField() + " --friction off --device replay:" + log.string() + " --log " +
                       again.string() + " --json");
-    ASSERT_EQ(r.code, 0) << r.out;
-    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
     EXPECT_EQ(j["loop"]["end"], "device-ended");
     EXPECT_TRUE(j["loop"]["zero_force_sent"].get<bool>());
     // Positions come back exactly at the recorded ticks, so the forces are
@@ -137,9 +119,9 @@ TEST(FeelCli, ALogReplaysThroughTheSameFieldWithTheSameForces) {
 }
 
 TEST(FeelCli, FalconIsNotSupportedYetAndSaysSo) {
-    const CliResult r = tsf("feel " + hillField() + " --device falcon");
-    EXPECT_EQ(r.code, 4);
-    EXPECT_NE(r.out.find("not yet supported"), std::string::npos) << r.out;
+    const tsf::test::RunResult r = tsf::test::runTsf("feel " + hillField() + " --device falcon");
+    EXPECT_EQ(r.exit_code, 4);
+    EXPECT_NE(r.output.find("not yet supported"), std::string::npos) << r.output;
 }
 
 TEST(FeelCli, UnsafeOrBadOptionsAreRejectedWithExitTwo) {
@@ -148,18 +130,18 @@ TEST(FeelCli, UnsafeOrBadOptionsAreRejectedWithExitTwo) {
          {std::string("--stiffness 5000"), std::string("--max-force 20"), std::string("--mu-s 0.1 --mu-k 0.3"),
           std::string("--rate 200 --stiffness 2000"), std::string("--device replay:/nonexistent.csv"),
           std::string("--device usb"), std::string("--levels 0")}) {
-        const CliResult r = tsf("feel " + f + " " + args);
-        EXPECT_EQ(r.code, 2) << args << "\n" << r.out;
-        EXPECT_NE(r.out.find("error"), std::string::npos) << args;
+        const tsf::test::RunResult r = tsf::test::runTsf("feel " + f + " " + args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find("error"), std::string::npos) << args;
     }
-    EXPECT_EQ(tsf("feel " + (kScratch / "missing.csv").string()).code, 2);
+    EXPECT_EQ(tsf::test::runTsf("feel " + (kScratch / "missing.csv").string()).exit_code, 2);
 }
 
 TEST(FeelCli, JsonStatisticsForVolumeModeAndMipmaps) {
-    const CliResult r = tsf("feel " + hillField() +
+    const tsf::test::RunResult r = tsf::test::runTsf("feel " + hillField() +
                       " --trajectory taps --volume --scale-space mipmap --levels 3 --sampling bilinear --json");
-    ASSERT_EQ(r.code, 0) << r.out;
-    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
     EXPECT_EQ(j["field"]["cols"], 12);
     EXPECT_EQ(j["field"]["nodata_cells"], 1);
     EXPECT_EQ(j["scale_space"]["levels"], 3);

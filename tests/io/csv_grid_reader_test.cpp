@@ -5,7 +5,8 @@
 #include <cmath>
 
 #include "gen/io/csv_tokenizer.h"
-#include "io_test_util.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
 
 namespace tsf {
 namespace {

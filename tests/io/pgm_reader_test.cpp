@@ -4,7 +4,8 @@
 
 #include <string>
 
-#include "io_test_util.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
 
 namespace tsf {
 namespace {

@@ -4,7 +4,8 @@
 
 #include <cmath>
 
-#include "io_test_util.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
 #include "png_test_writer.h"
 
 namespace tsf {

@@ -7,7 +7,8 @@
 #include <numeric>
 #include <random>
 
-#include "io_test_util.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
 
 namespace tsf {
 namespace {
@@ -232,6 +233,8 @@ TEST(PointBinning, BadOptions) {
     EXPECT_THROW(binPoints(makePoints({}, {}), {}), InputError);
     EXPECT_THROW(binPoints(makePoints({-1e308, 1e308}, {0, 0}), {}), InputError);
     EXPECT_THROW(binPoints(makePoints({0, INFINITY}, {0, 0}), {}), InputError);
+    EXPECT_THROW(binPoints(makePoints({0, 1, 2}, {0, 1}), {}), InputError);  // columns of different lengths
+    EXPECT_THROW(binPoints(makePoints({0, 1}, {0, 1}, {1}), {}), InputError);
     EXPECT_EQ(parseAggregate("mean"), BinOptions::Aggregate::Mean);
     EXPECT_THROW(parseAggregate("median"), InputError);
 }

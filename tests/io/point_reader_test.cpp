@@ -6,7 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "io_test_util.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
 
 namespace tsf {
 namespace {

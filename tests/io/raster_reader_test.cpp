@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io_test_util.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
 #include "png_test_writer.h"
 
 namespace tsf {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "io_test_util.h"
+#include "tests/support/input_error.h"
 
 namespace tsf {
 namespace {
@@ -252,6 +252,9 @@ TEST(Resample, LimitsAndBadOptions) {
     EXPECT_THROW(resampleRaster(makeRaster(10, 10), {-1}), InputError);
     EXPECT_THROW(resampleRaster(makeRaster(10, 10), {kMaxResampleCols + 1}), InputError);
     EXPECT_THROW(resampleRaster(Raster{}, {}), InputError);
+    Raster short_of_values = makeRaster(10, 10);
+    short_of_values.values.pop_back();
+    EXPECT_THROW(resampleRaster(short_of_values, {}), InputError);
     // Default columns are capped.
     const ResampleLayout wide = resampleLayout(5000, 10, 0);
     EXPECT_EQ(wide.grid.cols, kMaxResampleCols);

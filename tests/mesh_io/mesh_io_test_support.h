@@ -1,94 +1,19 @@
-// Shared fixtures for the mesh_io tests: hand-drawn meshes, a per-test
-// scratch folder, file helpers and a minimal stored-ZIP builder for writing
-// 3MF packages by hand.
+// Fixtures of the mesh_io tests: a minimal stored-ZIP builder for writing 3MF
+// packages by hand. Meshes, scratch folders and file helpers come from the
+// shared test support (tests/support/).
 #pragma once
 
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "tests/support/files.h"
+#include "tests/support/meshes.h"
 
 namespace tsf::test {
-
-// Cube of side s at origin o, CCW seen from outside.
-//
-//        7-------6
-//       /|      /|          z
-//      4-------5 |          |  y
-//      | 3-----|-2          | /
-//      |/      |/           |/
-//      0-------1            +---- x
-//
-// 0=(0,0,0) 1=(s,0,0) 2=(s,s,0) 3=(0,s,0), 4..7 the same at z = s.
-inline Mesh cube(double s = 1.0, Vec3 o = {}) {
-    Mesh m;
-    for (int i = 0; i < 8; ++i) {
-        const double x = (i == 1 || i == 2 || i == 5 || i == 6) ? s : 0.0;
-        const double y = (i == 2 || i == 3 || i == 6 || i == 7) ? s : 0.0;
-        const double z = i >= 4 ? s : 0.0;
-        m.positions.push_back({o.x + x, o.y + y, o.z + z});
-    }
-    m.triangles = {{0, 3, 2}, {0, 2, 1},   // bottom, -z
-                   {4, 5, 6}, {4, 6, 7},   // top, +z
-                   {0, 1, 5}, {0, 5, 4},   // front, -y
-                   {3, 7, 6}, {3, 6, 2},   // back, +y
-                   {0, 4, 7}, {0, 7, 3},   // left, -x
-                   {1, 2, 6}, {1, 6, 5}};  // right, +x
-    return m;
-}
-
-// Right-angled tetrahedron, CCW seen from outside, volume 4*3*5/6 = 10.
-//
-//            3 (0,0,5)
-//           /|\
-//          / | \
-//         /  0  \          0 = (0,0,0)
-//        / /   \ \         1 = (4,0,0)
-//        1 ------ 2        2 = (0,3,0)
-//
-// Faces: {0,2,1} base (normal -z), {0,1,3} (normal -y), {0,3,2} (normal -x),
-// {1,2,3} slanted (normal (15,20,12)/sqrt(769)).
-inline Mesh tetrahedron() {
-    Mesh m;
-    m.positions = {{0, 0, 0}, {4, 0, 0}, {0, 3, 0}, {0, 0, 5}};
-    m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-    return m;
-}
-
-// A scratch folder of its own for the running test, emptied first.
-inline std::filesystem::path scratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::filesystem::path dir =
-        std::filesystem::path(TSF_TEST_SCRATCH) / (std::string(info->test_suite_name()) + "." + info->name());
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-inline std::string readBytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-inline void writeBytes(const std::filesystem::path& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-// Names of the files in dir (to check no temporary file is left behind).
-inline std::vector<std::string> listFiles(const std::filesystem::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
-    return names;
-}
 
 // CRC-32 (IEEE 802.3, as ZIP uses), bit by bit: slow and obviously right.
 inline uint32_t crc32(const std::string& data) {

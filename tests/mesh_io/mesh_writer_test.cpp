@@ -79,7 +79,7 @@ TEST(ReadMesh, ContentDecidesForUnknownExtensions) {
     EXPECT_EQ(report.format, "off");
     readMesh((dir / "t").string(), &report);
     EXPECT_EQ(report.format, "stl-binary");
-    test::writeBytes(dir / "t.txt", "hello");
+    test::writeText(dir / "t.txt", "hello");
     EXPECT_THROW(readMesh((dir / "t.txt").string()), InputError);
 }
 

@@ -18,9 +18,9 @@
 namespace tsf {
 namespace {
 
-using test::readBytes;
+using test::readText;
 using test::scratchDir;
-using test::writeBytes;
+using test::writeText;
 using ::testing::HasSubstr;
 
 std::string bytesOf(std::initializer_list<int> values) {
@@ -127,7 +127,7 @@ TEST(StlAscii, RoundTripThroughTextKeepsFloat32Positions) {
     opts.ascii_stl = true;
     opts.title = "cube";
     writeMesh(original, path, opts);
-    const std::string text = readBytes(path);
+    const std::string text = readText(path);
     EXPECT_EQ(text.rfind("solid cube\n", 0), 0u);
     EXPECT_THAT(text, HasSubstr("endsolid cube"));
     MeshReadReport report;

@@ -5,9 +5,9 @@
 #include <filesystem>
 
 #include "gen/error.h"
-#include "gen/scad/openscad_messages.h"
-#include "gen/scad/process_runner.h"
-#include "gen/scad/openscad_runner.h"
+#include "verify/render/openscad_messages.h"
+#include "verify/render/process_runner.h"
+#include "verify/render/openscad_runner.h"
 #include "scad_test_support.h"
 
 namespace tsf {

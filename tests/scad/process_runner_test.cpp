@@ -7,7 +7,7 @@
 #include <chrono>
 #include <unistd.h>
 
-#include "gen/scad/process_runner.h"
+#include "verify/render/process_runner.h"
 
 namespace tsf {
 namespace {

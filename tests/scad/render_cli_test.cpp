@@ -3,29 +3,28 @@
 
 #include <filesystem>
 
-#include "gen/cli/commands.h"
-#include "gen/scad/process_runner.h"
 #include "gen/scad/scad_emitter.h"
 #include "scad_test_support.h"
+#include "tests/support/run.h"
 #include "verify/mesh_topology.h"
+#include "verify/render/process_runner.h"
 
 namespace tsf {
 namespace {
 namespace fs = std::filesystem;
 using namespace test;
 
-struct CliRun {
-    int exit_code = -1;
-    std::string output;
-};
-
-CliRun runTsf(std::vector<std::string> args) {
+// tsf with an argument vector (no shell quoting), through the process runner.
+RunResult runTsfArgv(std::vector<std::string> args) {
     args.insert(args.begin(), TSF_BINARY);
     ProcessOptions o;
     o.timeout_s = 300;
     const ProcessResult r = runProcess(args, o);
     EXPECT_EQ(r.end, ProcessResult::End::Exited) << r.output;
-    return {r.exit_code, r.output};
+    RunResult out;
+    out.exit_code = r.exit_code;
+    out.output = r.output;
+    return out;
 }
 
 std::string writeModel(const std::string& name) {
@@ -40,8 +39,8 @@ bool contains(const std::string& text, const std::string& what) { return text.fi
 TEST(RenderCli, RendersBinaryStlChecksItAndReportsTime) {
     const std::string scad = writeModel("cli_ok");
     const std::string stl = fs::path(scad).replace_extension(".stl").string();
-    const CliRun r = runTsf({"render", scad, "-o", stl});
-    ASSERT_EQ(r.exit_code, cli::kExitOk) << r.output;
+    const RunResult r = runTsfArgv({"render", scad, "-o", stl});
+    ASSERT_EQ(r.exit_code, kExitOk) << r.output;
     EXPECT_TRUE(contains(r.output, "with OpenSCAD version")) << r.output;
     EXPECT_TRUE(contains(r.output, "wrote " + stl + " (binary STL) in ")) << r.output;
     EXPECT_TRUE(contains(r.output, "closed, manifold, outward")) << r.output;
@@ -52,9 +51,9 @@ TEST(RenderCli, RendersBinaryStlChecksItAndReportsTime) {
 TEST(RenderCli, OverridesAndParameterSetsReachOpenScad) {
     const std::string scad = writeModel("cli_params");
     const std::string dir = fs::path(scad).parent_path().string();
-    ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/a.stl", "-q"}).exit_code, 0);
-    ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/b.stl", "-q", "-D", "height=20"}).exit_code, 0);
-    ASSERT_EQ(runTsf({"render", scad, "-o", dir + "/c.stl", "-q", "-p", dir + "/model.json", "-P", "half size"}).exit_code, 0);
+    ASSERT_EQ(runTsfArgv({"render", scad, "-o", dir + "/a.stl", "-q"}).exit_code, 0);
+    ASSERT_EQ(runTsfArgv({"render", scad, "-o", dir + "/b.stl", "-q", "-D", "height=20"}).exit_code, 0);
+    ASSERT_EQ(runTsfArgv({"render", scad, "-o", dir + "/c.stl", "-q", "-p", dir + "/model.json", "-P", "half size"}).exit_code, 0);
     const double a = signedVolume(readMesh(dir + "/a.stl"));
     const double b = signedVolume(readMesh(dir + "/b.stl"));
     const double c = signedVolume(readMesh(dir + "/c.stl"));
@@ -65,33 +64,33 @@ TEST(RenderCli, OverridesAndParameterSetsReachOpenScad) {
 TEST(RenderCli, AMalformedParameterIsBadInputWithTheAssertMessage) {
     const std::string scad = writeModel("cli_bad");
     const std::string stl = fs::path(scad).replace_extension(".stl").string();
-    const CliRun r = runTsf({"render", scad, "-o", stl, "-D", "cell=-2"});
-    EXPECT_EQ(r.exit_code, cli::kExitBadInput) << r.output;
+    const RunResult r = runTsfArgv({"render", scad, "-o", stl, "-D", "cell=-2"});
+    EXPECT_EQ(r.exit_code, kExitBadInput) << r.output;
     EXPECT_TRUE(contains(r.output, "tsf_model: cell_mm must be a number > 0 (mm), got -2")) << r.output;
     EXPECT_FALSE(fs::exists(stl));
-    const CliRun bad_define = runTsf({"render", scad, "-o", stl, "-D", "max_height_mm"});
-    EXPECT_EQ(bad_define.exit_code, cli::kExitBadInput) << bad_define.output;
-    const CliRun typo = runTsf({"render", scad, "-o", stl, "-D", "heigth=25"});
-    EXPECT_EQ(typo.exit_code, cli::kExitBadInput) << typo.output;
+    const RunResult bad_define = runTsfArgv({"render", scad, "-o", stl, "-D", "max_height_mm"});
+    EXPECT_EQ(bad_define.exit_code, kExitBadInput) << bad_define.output;
+    const RunResult typo = runTsfArgv({"render", scad, "-o", stl, "-D", "heigth=25"});
+    EXPECT_EQ(typo.exit_code, kExitBadInput) << typo.output;
     EXPECT_TRUE(contains(typo.output, "assigns no variable named 'heigth'; its variables are: cell, height,")) << typo.output;
-    const CliRun bad_set = runTsf({"render", scad, "-o", stl, "-p", fs::path(scad).replace_extension(".json").string(),
+    const RunResult bad_set = runTsfArgv({"render", scad, "-o", stl, "-p", fs::path(scad).replace_extension(".json").string(),
                              "-P", "tiny"});
-    EXPECT_EQ(bad_set.exit_code, cli::kExitBadInput) << bad_set.output;
+    EXPECT_EQ(bad_set.exit_code, kExitBadInput) << bad_set.output;
     EXPECT_TRUE(contains(bad_set.output, "no parameter set \"tiny\"")) << bad_set.output;
 }
 
 TEST(RenderCli, MissingOpenScadIsAToolFailureWithAnInstallHint) {
     const std::string scad = writeModel("cli_missing");
     const std::string stl = fs::path(scad).replace_extension(".stl").string();
-    const CliRun r = runTsf({"render", scad, "-o", stl, "--engine", "openscad", "--openscad", "/nonexistent/openscad"});
-    EXPECT_EQ(r.exit_code, cli::kExitToolFailed) << r.output;
+    const RunResult r = runTsfArgv({"render", scad, "-o", stl, "--engine", "openscad", "--openscad", "/nonexistent/openscad"});
+    EXPECT_EQ(r.exit_code, kExitToolFailed) << r.output;
     EXPECT_TRUE(contains(r.output, "apt install openscad")) << r.output;
 }
 
 TEST(RenderCli, WritesAPngPreviewOfTheExportedModel) {
     const std::string scad = writeModel("cli_png");
     const std::string dir = fs::path(scad).parent_path().string();
-    const CliRun r = runTsf({"render", scad, "-o", dir + "/m.stl", "--png", dir + "/m.png", "--imgsize", "320,240"});
+    const RunResult r = runTsfArgv({"render", scad, "-o", dir + "/m.stl", "--png", dir + "/m.png", "--imgsize", "320,240"});
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const std::string png = readText(dir + "/m.png");
     ASSERT_GT(png.size(), 24u);
@@ -110,19 +109,19 @@ TEST(RenderCli, WritesAPngPreviewOfTheExportedModel) {
 TEST(RenderCli, ABrokenMeshIsNotWritten) {
     const std::string dir = scratchDir("cli_broken");
     writeText(dir + "/edge.scad", "cube(1);\ntranslate([1, 1, 0]) cube(1);\n");  // two cubes sharing one edge
-    const CliRun r = runTsf({"render", dir + "/edge.scad", "-o", dir + "/edge.stl", "--engine", "openscad"});
-    EXPECT_EQ(r.exit_code, cli::kExitToolFailed) << r.output;
+    const RunResult r = runTsfArgv({"render", dir + "/edge.scad", "-o", dir + "/edge.stl", "--engine", "openscad"});
+    EXPECT_EQ(r.exit_code, kExitToolFailed) << r.output;
     EXPECT_TRUE(contains(r.output, "broken mesh")) << r.output;
     EXPECT_FALSE(fs::exists(dir + "/edge.stl"));
-    const CliRun kept = runTsf({"render", dir + "/edge.scad", "-o", dir + "/edge.stl", "--engine", "openscad", "--no-check"});
-    EXPECT_EQ(kept.exit_code, cli::kExitOk) << kept.output;
+    const RunResult kept = runTsfArgv({"render", dir + "/edge.scad", "-o", dir + "/edge.stl", "--engine", "openscad", "--no-check"});
+    EXPECT_EQ(kept.exit_code, kExitOk) << kept.output;
     EXPECT_TRUE(fs::exists(dir + "/edge.stl"));
 }
 
 TEST(RenderCli, NothingToWriteIsBadInput) {
     const std::string scad = writeModel("cli_nothing");
-    EXPECT_EQ(runTsf({"render", scad}).exit_code, cli::kExitBadInput);
-    EXPECT_EQ(runTsf({"render", scad, "-o", "model.obj"}).exit_code, cli::kExitBadInput);
+    EXPECT_EQ(runTsfArgv({"render", scad}).exit_code, kExitBadInput);
+    EXPECT_EQ(runTsfArgv({"render", scad, "-o", "model.obj"}).exit_code, kExitBadInput);
 }
 
 }  // namespace

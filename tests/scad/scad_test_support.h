@@ -1,5 +1,7 @@
-// Shared helpers for the OpenSCAD tests: small fields, scratch files, the
-// real openscad binary, and an independent reference for a Scene's solid.
+// Helpers of the OpenSCAD tests: a bumpy field, the real openscad binary, an
+// independent reference for a Scene's solid, and reading generated files.
+// Fields, parameters and files come from the shared test support
+// (tests/support/).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -16,32 +18,12 @@
 #include "gen/hex_field.h"
 #include "gen/mesh.h"
 #include "gen/mesh_io/mesh_reader.h"
-#include "gen/scad/openscad_runner.h"
 #include "gen/scene.h"
+#include "tests/support/fields.h"
+#include "tests/support/files.h"
+#include "verify/render/openscad_runner.h"
 
 namespace tsf::test {
-
-inline constexpr double kNaN = NAN;
-
-/// Rows listed north to south, as in a file.
-inline HexField fieldFromRows(const std::vector<std::vector<double>>& rows) {
-    HexField f;
-    f.grid.rows = int32_t(rows.size());
-    f.grid.cols = rows.empty() ? 0 : int32_t(rows[0].size());
-    for (const auto& r : rows) f.values.insert(f.values.end(), r.begin(), r.end());
-    f.source = "test";
-    return f;
-}
-
-inline HexField fieldFromFunction(int cols, int rows, const std::function<double(int, int)>& value) {
-    HexField f;
-    f.grid = {cols, rows};
-    f.values.resize(size_t(cols) * size_t(rows));
-    for (int r = 0; r < rows; ++r)
-        for (int c = 0; c < cols; ++c) f.values[size_t(r) * size_t(cols) + size_t(c)] = value(c, r);
-    f.source = "test";
-    return f;
-}
 
 /// A bumpy field with a few holes (NaN) and an empty rim on two sides, so
 /// that hull culling drops cells and keeps some no-data cells inside.
@@ -51,37 +33,6 @@ inline HexField bumpyField(int cols, int rows) {
         if ((c * 7 + r * 3) % 11 == 5) return kNaN;       // no data, inside the hull
         return 0.5 + 9.5 * std::fabs(std::sin(0.9 * c + 0.4 * r * r)) + (c + r) % 3;
     });
-}
-
-inline SceneParams smallParams(Bottom bottom = Bottom::Flat) {
-    SceneParams p;
-    p.marks = withoutMarks();  // the pillar rules alone; marks have their own tests
-    p.pitch_mm = 5.0;
-    p.max_height_mm = 10.0;
-    p.base_mm = 2.0;
-    p.bottom = bottom;
-    return p;
-}
-
-/// A fresh folder under the test scratch area.
-inline std::string scratchDir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(TSF_TEST_SCRATCH) / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir.string();
-}
-
-inline std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-inline void writeText(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    ASSERT_TRUE(bool(out)) << path;
 }
 
 /// The real openscad binary (tests fail, not skip, when it is missing: the
@@ -111,26 +62,6 @@ inline std::string errorText(const ScadRenderResult& r) {
     std::string out = r.summary;
     for (const ScadMessage& m : r.errors()) out += "\n  " + formatScadMessage(m);
     return out;
-}
-
-/// Volume of the union of a Scene's pillars from the Scene alone: each kept
-/// cell's snapped footprint (shoelace) times its z extent. Shares no code
-/// with the direct mesher or the OpenSCAD library.
-inline double sceneVolume(const Scene& s) {
-    auto snap = [](double v) { return std::round(v / 0.001) * 0.001; };
-    double volume = 0;
-    for (size_t k = 0; k < s.keptCount(); ++k) {
-        double area2 = 0;
-        for (int e = 0; e < 6; ++e) {
-            const LatticePoint a = hexCorner(s.grid, s.col[k], s.row[k], e);
-            const LatticePoint b = hexCorner(s.grid, s.col[k], s.row[k], (e + 1) % 6);
-            const double ax = snap(double(a.i) * s.pitch_mm / 2), ay = snap(double(a.j) * s.pitch_mm / (2 * std::sqrt(3.0)));
-            const double bx = snap(double(b.i) * s.pitch_mm / 2), by = snap(double(b.j) * s.pitch_mm / (2 * std::sqrt(3.0)));
-            area2 += ax * by - bx * ay;
-        }
-        volume += area2 / 2 * double(s.top[k] - s.bottom[k]) * s.z_snap_mm;
-    }
-    return volume;
 }
 
 /// The `values` rows of a generated file: [line index, entries] per grid row.

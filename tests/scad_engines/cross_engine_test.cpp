@@ -13,7 +13,7 @@
 #include "engine_fixtures.h"
 #include "gen/direct_mesher.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "gen/scad/engine_output_check.h"
+#include "verify/render/engine_output_check.h"
 #include "gen/scad/scad_emitter.h"
 #include "verify/verify_model.h"
 
@@ -80,7 +80,7 @@ class CrossEngine : public ::testing::TestWithParam<Case> {};
 TEST_P(CrossEngine, RendersTheSameSolidAsTheDirectMesher) {
     const auto& [engine_name, strategy_name, bottom] = GetParam();
     TSF_NEED_ENGINE(engineNamed(engine_name));
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(bottom));
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(bottom));
     ScadOptions opts;
     ASSERT_TRUE(parseScadStrategy(strategy_name, opts.strategy));
     // Both ways of shipping the library: pasted into the file, and a copy use<>d beside it.
@@ -115,7 +115,7 @@ TEST_P(CrossEngineMarks, RendersTheSameSolidAsTheDirectMesher) {
         for (int32_t c = 7; c < field.grid.cols; ++c) field.at(c, r) = terrain.at(c - 7, r % terrain.grid.rows);
     field.source = "floor and terrain";
     field.one_to_one = true;
-    SceneParams p = test::smallParams(bottom);
+    SceneParams p = test::terrainParams(bottom);
     p.marks = MarkParams{};
     p.pitch_mm = 6.0;
     const Scene scene = buildScene(field, p);
@@ -144,8 +144,8 @@ class CrossEngineParameters : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CrossEngineParameters, MirroredSetEqualsTheMirroredScene) {
     TSF_NEED_ENGINE(engineNamed(GetParam()));
-    const Scene flat = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
-    const Scene mirrored = buildScene(test::smallTerrain(), test::smallParams(Bottom::Mirrored));
+    const Scene flat = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
+    const Scene mirrored = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Mirrored));
     const fs::path dir = test::scratchDir("cross_set_" + GetParam());
     writeScad(flat, ScadOptions{}, (dir / "model.scad").string());
     ScadRenderRequest rq;
@@ -156,8 +156,8 @@ TEST_P(CrossEngineParameters, MirroredSetEqualsTheMirroredScene) {
 
 TEST_P(CrossEngineParameters, HeightOverrideEqualsTheTallerScene) {
     TSF_NEED_ENGINE(engineNamed(GetParam()));
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
-    SceneParams taller_params = test::smallParams(Bottom::Flat);
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
+    SceneParams taller_params = test::terrainParams(Bottom::Flat);
     taller_params.max_height_mm = 18.5;
     const Scene taller = buildScene(test::smallTerrain(), taller_params);
     const fs::path dir = test::scratchDir("cross_define_" + GetParam());
@@ -173,7 +173,7 @@ TEST_P(CrossEngineParameters, HeightOverrideEqualsTheTallerScene) {
 // message on both versions (2025 would otherwise export what is left).
 TEST_P(CrossEngineParameters, RefusedParameterStopsWithTheLibraryMessage) {
     TSF_NEED_ENGINE(engineNamed(GetParam()));
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
     const fs::path dir = test::scratchDir("cross_refused_" + GetParam());
     writeScad(scene, ScadOptions{}, (dir / "model.scad").string());
     ScadRenderRequest rq;

@@ -10,8 +10,8 @@
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "gen/scad/engine_output_check.h"
-#include "gen/scad/process_runner.h"
+#include "verify/render/engine_output_check.h"
+#include "verify/render/process_runner.h"
 
 namespace tsf {
 namespace {

@@ -1,5 +1,6 @@
-// Shared helpers for the OpenSCAD engine tests: the two engines (or why one
-// is missing), scratch folders, small fields.
+// Helpers of the OpenSCAD engine tests: the two engines (or why one is
+// missing) and a small terrain. Fields and files come from the shared test
+// support (tests/support/).
 //
 // A missing engine makes a test SKIP with the reason. Set
 // TSF_REQUIRE_SCAD_ENGINES=1 (the CI machine has both) to make it FAIL instead.
@@ -9,17 +10,15 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include "gen/hex_field.h"
-#include "gen/scad/openscad_runner.h"
-#include "gen/scad/wasm_engine.h"
 #include "gen/scene.h"
+#include "tests/support/fields.h"
+#include "tests/support/files.h"
+#include "verify/render/openscad_runner.h"
+#include "verify/render/wasm_engine.h"
 
 namespace tsf::test {
 
@@ -68,35 +67,6 @@ inline bool enginesRequired() {
         }                                                                                                   \
     } while (0)
 
-/// A fresh scratch folder for one test.
-inline std::filesystem::path scratchDir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(TSF_TEST_SCRATCH) / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-inline void writeText(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
-
-inline std::string readText(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-/// Rows listed north to south, as in a file; NaN = no data.
-inline HexField fieldFromRows(const std::vector<std::vector<double>>& rows) {
-    HexField f;
-    f.grid.rows = int32_t(rows.size());
-    f.grid.cols = rows.empty() ? 0 : int32_t(rows[0].size());
-    for (const auto& r : rows) f.values.insert(f.values.end(), r.begin(), r.end());
-    f.source = "test";
-    return f;
-}
-
 /// A small uneven field with one no-data cell inside and a low corner (hull culling cuts it).
 inline HexField smallTerrain() {
     return fieldFromRows({
@@ -107,7 +77,8 @@ inline HexField smallTerrain() {
     });
 }
 
-inline SceneParams smallParams(Bottom bottom) {
+/// 5 mm cells, 12 mm relief on a 2 mm base, 0.01 mm height snap: for smallTerrain().
+inline SceneParams terrainParams(Bottom bottom) {
     SceneParams p;
     p.marks = withoutMarks();  // the pillar rules alone; marks have their own tests
     p.pitch_mm = 5.0;

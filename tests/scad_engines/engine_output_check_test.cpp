@@ -7,7 +7,7 @@
 #include "gen/direct_mesher.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "gen/scad/engine_output_check.h"
+#include "verify/render/engine_output_check.h"
 
 namespace tsf {
 namespace {
@@ -115,7 +115,7 @@ TEST(EngineOutputCheck, RepeatedVertexAndEmptyMeshAreRefused) {
 // a real model written to STL matches the direct mesher's exact volume, the
 // same model one snap step lower in one cell does not.
 TEST(EngineOutputCheck, StlRoundingIsWithinToleranceButOneStepIsNot) {
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
     const Mesh direct = meshScene(scene);
     const fs::path dir = test::scratchDir("output_check_rounding");
     writeMesh(direct, (dir / "m.stl").string());
@@ -132,21 +132,47 @@ TEST(EngineOutputCheck, StlRoundingIsWithinToleranceButOneStepIsNot) {
     EXPECT_FALSE(off.ok);
 }
 
-TEST(EngineOutputCheck, CallersSolidCheckRunsLastAndOnlyOnGoodMeshes) {
-    int calls = 0;
+// Closed and consistently oriented by the indices, one piece, the right
+// volume - but one triangle has no area: a vertex on the middle of edge 0-1
+// splits face {0,1,3} in two, and the needle {0,1,4} closes the surface.
+Mesh tetrahedronWithANeedle() {
+    Mesh m = tetrahedron();
+    m.positions.push_back({0.5, 0, 0});  // 4
+    m.triangles = {{0, 2, 1}, {0, 3, 2}, {1, 2, 3}, {0, 4, 3}, {4, 1, 3}, {0, 1, 4}};
+    return m;
+}
+
+TEST(EngineOutputCheck, SolidChecksRunLastAndOnlyWhenAsked) {
+    const Mesh needle = tetrahedronWithANeedle();
+    const EngineOutputCheck topological = checkEngineMesh(needle);
+    EXPECT_TRUE(topological.ok) << "the indices alone cannot see a zero-area triangle: " << topological.problem;
+    EXPECT_NEAR(topological.volume_mm3, 1.0 / 6.0, 1e-15);
+
     EngineOutputExpectation expect;
-    expect.solid_check = [&](const Mesh& m) {
-        ++calls;
-        return m.triangleCount() == 4 ? std::string("2 pairs of triangles intersect") : std::string();
-    };
-    const EngineOutputCheck c = checkEngineMesh(tetrahedron(), expect);
-    EXPECT_FALSE(c.ok);
-    EXPECT_EQ(c.problem, "2 pairs of triangles intersect");
-    EXPECT_EQ(calls, 1);
+    expect.solid_checks = true;
+    const EngineOutputCheck solid = checkEngineMesh(needle, expect);
+    EXPECT_FALSE(solid.ok);
+    EXPECT_NE(solid.problem.find("(1) at (0.500, 0.000, 0.000) mm"), std::string::npos) << solid.problem;
+    EXPECT_TRUE(checkEngineMesh(tetrahedron(), expect).ok);
+
     Mesh open = tetrahedron();
     open.triangles.pop_back();
-    EXPECT_FALSE(checkEngineMesh(open, expect).ok);
-    EXPECT_EQ(calls, 1) << "run on a mesh that already failed";
+    EXPECT_NE(checkEngineMesh(open, expect).problem.find("not a closed"), std::string::npos)
+        << "the topological verdict comes first";
+}
+
+TEST(EngineOutputCheck, SurfacesTouchingAtAVertexAreRefused) {
+    // A second tetrahedron hung from the first one's apex 3 by its vertex 0.
+    Mesh m = tetrahedron();
+    const Mesh other = tetrahedron(1, {0, 0, 1});
+    const auto shift = [](uint32_t v) { return v == 0 ? 3u : v + 3u; };  // other's 0 is our 3
+    m.positions.insert(m.positions.end(), other.positions.begin() + 1, other.positions.end());
+    for (const auto& t : other.triangles) m.triangles.push_back({shift(t[0]), shift(t[1]), shift(t[2])});
+    const EngineOutputCheck c = checkEngineMesh(m);
+    EXPECT_FALSE(c.ok);
+    EXPECT_EQ(c.open_edges + c.overused_edges, 0u);
+    EXPECT_EQ(c.pinched_vertices, 1u);
+    EXPECT_NE(c.problem.find("touch"), std::string::npos) << c.problem;
 }
 
 // A stand-in engine that "renders" by writing a fixed mesh.

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "engine_fixtures.h"
-#include "gen/scad/engine_select.h"
+#include "verify/render/engine_select.h"
 #include "gen/scad/scad_emitter.h"
 
 namespace tsf {
@@ -150,7 +150,7 @@ TEST(SelectEngine, MissingEnginesSayHowToInstall) {
 }
 
 TEST(ScadFileFacts, ReadsStrategyAndCellsOfEmittedFiles) {
-    const Scene scene = buildScene(test::smallTerrain(), test::smallParams(Bottom::Flat));
+    const Scene scene = buildScene(test::smallTerrain(), test::terrainParams(Bottom::Flat));
     for (auto strategy : {ScadOptions::Strategy::Csg, ScadOptions::Strategy::Polyhedron}) {
         for (bool inline_library : {true, false}) {
             ScadOptions opts;

@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
-#include "gen/scad/openscad_runner.h"
+#include "tests/support/files.h"
+#include "verify/render/openscad_runner.h"
 
 namespace tsf {
 namespace {
@@ -38,23 +38,18 @@ fs::path writeFakeOpenScad(const fs::path& dir, bool offers_manifold) {
 std::string renderArgs(const fs::path& dir, bool offers_manifold) {
     const fs::path args = dir / (offers_manifold ? "args-2025.txt" : "args-2021.txt");
     setenv("TSF_FAKE_ARGS", args.c_str(), 1);
-    std::ofstream(dir / "m.scad") << "cube(1);\n";
+    test::writeText(dir / "m.scad", "cube(1);\n");
     const auto engine = makeOpenScadEngine(writeFakeOpenScad(dir, offers_manifold).string());
     ScadRenderRequest rq;
     rq.scad_path = (dir / "m.scad").string();
     rq.output_path = (dir / "m.stl").string();
     const ScadRenderResult r = renderScad(*engine, rq);
     EXPECT_TRUE(r.ok()) << r.summary << "\n" << r.output;
-    std::ifstream in(args);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return test::readText(args);
 }
 
 TEST(NativeEngine, PassesTheManifoldBackendOnlyWhenTheBinaryOffersIt) {
-    const fs::path dir = fs::path(TSF_TEST_SCRATCH) / "native_manifold";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = test::scratchDir("native_manifold");
     EXPECT_NE(renderArgs(dir, true).find("--backend=manifold"), std::string::npos);
     const std::string old_args = renderArgs(dir, false);
     EXPECT_FALSE(old_args.empty());

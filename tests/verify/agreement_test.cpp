@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gen/error.h"
 #include "gen/hex_grid.h"
 #include "tests/verify/verify_test_support.h"
 #include "verify/agreement.h"
@@ -112,6 +113,18 @@ Mesh retriangulated(const Mesh& m) {
     }
     EXPECT_GT(splits, 20u);
     return out;
+}
+
+TEST(Agreement, AToleranceThatIsNotPositiveIsAnInputError) {
+    const Mesh m = vtest::box({0, 0, 0}, {1, 1, 1});
+    for (double bad : {0.0, -1.0, double(NAN), double(INFINITY)}) {
+        AgreementOptions o;
+        o.distance_tolerance_mm = bad;
+        EXPECT_THROW(compareMeshes(m, m, "same", o), InputError) << bad;
+    }
+    AgreementOptions o;
+    o.error_bound_mm = -0.1;
+    EXPECT_THROW(compareMeshes(m, m, "same", o), InputError);
 }
 
 TEST(Agreement, ReListedCopyIsProvenIdenticalWithoutSampling) {
@@ -356,7 +369,7 @@ TEST(Agreement, EmptyReferenceFails) {
 // against the direct mesh, through the command line.
 TEST(Agreement, OpenScadRenderIsProvenTheSameSolidQuickly) {
     if (!std::filesystem::exists("/usr/bin/openscad")) GTEST_SKIP() << "no /usr/bin/openscad";
-    const auto dir = vtest::scratch("agreement_openscad");
+    const auto dir = vtest::scratchDir("agreement_openscad");
     std::string csv;
     const HexField f = vtest::smallField();
     for (int r = 0; r < f.grid.rows; ++r) {

@@ -81,7 +81,7 @@ TEST(Readback, ValuesReadBackWithinTheHeightQuantisation) {
     // Independent bound: a height within half a snap step of the exact
     // height maps to a value within that step times the transfer's slope.
     for (Transfer tr : {Transfer::Linear, Transfer::Sqrt, Transfer::Log}) {
-        SceneParams p = vtest::smallParams(Bottom::Mirrored, 0.01);
+        SceneParams p = vtest::smallFieldParams(Bottom::Mirrored, 0.01);
         p.transfer = tr;
         const Scene s = buildScene(vtest::smallField(), p);
         const ReadbackResult r = readBackModel(meshScene(s), s);

@@ -63,7 +63,7 @@ Scene awkwardScene() {
     HexField f = vtest::smallField();
     f.values[5] = 1.0 / 3.0;
     f.values[9] = 2.0e-17;
-    SceneParams p = vtest::smallParams(Bottom::Mirrored, 0.01);
+    SceneParams p = vtest::smallFieldParams(Bottom::Mirrored, 0.01);
     p.transfer = Transfer::Log;
     p.value_max = 4.7;
     p.baseline_mode = BaselineMode::Value;
@@ -81,7 +81,7 @@ TEST(SceneJson, RoundTripsEveryField) {
 }
 
 TEST(SceneJson, FileRoundTripOneCellPerLineAndNoTemporaryLeft) {
-    const auto dir = vtest::scratch("scene_json_file");
+    const auto dir = vtest::scratchDir("scene_json_file");
     const Scene s = awkwardScene();
     const auto path = dir / "model.stl.scene.json";
     writeSceneJson(s, path.string());
@@ -165,7 +165,7 @@ TEST(SceneJson, MalformedMembersNameTheirPath) {
 }
 
 TEST(SceneJson, BadJsonTextHasLineAndColumn) {
-    const auto dir = vtest::scratch("scene_json_bad");
+    const auto dir = vtest::scratchDir("scene_json_bad");
     const auto path = dir / "bad.scene.json";
     vtest::writeText(path, "{\n  \"format\": \"tsf-scene\",\n  \"version\": 1,\n  \"grid\": {\"cols\": 2,, }\n}\n");
     try {

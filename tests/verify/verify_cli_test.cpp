@@ -23,7 +23,7 @@ const char* kFieldCsv =
     "5,6,7,8,9,10\n";
 
 TEST(VerifyCli, GeneratedModelPassesAsFileAgainstFieldAndSidecar) {
-    const auto dir = vtest::scratch("cli_gen");
+    const auto dir = vtest::scratchDir("cli_gen");
     vtest::writeText(dir / "field.csv", kFieldCsv);
     const std::string model = (dir / "model.stl").string();
     const auto gen = runTsf("gen " + (dir / "field.csv").string() + " --height 12 -o " + model, dir);
@@ -56,7 +56,7 @@ TEST(VerifyCli, GeneratedModelPassesAsFileAgainstFieldAndSidecar) {
 }
 
 TEST(VerifyCli, SidecarAndJsonFromALibraryBuiltModel) {
-    const auto dir = vtest::scratch("cli_sidecar");
+    const auto dir = vtest::scratchDir("cli_sidecar");
     const vtest::Model m = vtest::smallModel(Bottom::Mirrored);
     writeMesh(m.mesh, (dir / "m.stl").string());
     writeSceneJson(m.scene, (dir / "m.scene.json").string());
@@ -71,7 +71,7 @@ TEST(VerifyCli, SidecarAndJsonFromALibraryBuiltModel) {
 }
 
 TEST(VerifyCli, DefectiveMeshExitsOneAndSaysWhere) {
-    const auto dir = vtest::scratch("cli_defect");
+    const auto dir = vtest::scratchDir("cli_defect");
     Mesh m = vtest::smallModel(Bottom::Flat).mesh;
     m.triangles.erase(m.triangles.begin() + 10);
     vtest::writeText(dir / "open.off", vtest::toOff(m));
@@ -88,7 +88,7 @@ TEST(VerifyCli, DefectiveMeshExitsOneAndSaysWhere) {
 }
 
 TEST(VerifyCli, BadInputExitsTwo) {
-    const auto dir = vtest::scratch("cli_bad");
+    const auto dir = vtest::scratchDir("cli_bad");
     EXPECT_EQ(runTsf("verify " + (dir / "missing.stl").string(), dir).exit_code, 2);
     vtest::writeText(dir / "junk.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
     const auto junk = runTsf("verify " + (dir / "junk.off").string(), dir);
@@ -108,7 +108,7 @@ TEST(VerifyCli, BadInputExitsTwo) {
 }
 
 TEST(VerifyCli, ReferenceComparesTwoMeshes) {
-    const auto dir = vtest::scratch("cli_reference");
+    const auto dir = vtest::scratchDir("cli_reference");
     const Mesh m = vtest::smallModel(Bottom::Flat).mesh;
     writeMesh(m, (dir / "direct.stl").string());
     vtest::writeText(dir / "same.off", vtest::toOff(m));
@@ -129,7 +129,7 @@ TEST(VerifyCli, ReferenceComparesTwoMeshes) {
 // overlaps counted twice; the solid is 996 mm^3); here the overlaps are
 // self-intersections and the model is several pieces.
 TEST(VerifyCli, OverlappingShellsFromOutsideTsfAreCaught) {
-    const auto dir = vtest::scratch("cli_outside");
+    const auto dir = vtest::scratchDir("cli_outside");
     Mesh m = vtest::box({0, 0, 0}, {30, 10, 2});
     m = vtest::append(m, vtest::box({2, 2, 1}, {8, 8, 6}));
     m = vtest::append(m, vtest::box({12, 2, 1}, {18, 8, 9}));
@@ -154,7 +154,7 @@ TEST(VerifyCli, OverlappingShellsFromOutsideTsfAreCaught) {
 TEST(VerifyCli, BlenderExportWithInnerShellIsCaught) {
     const std::string path = "/usr/share/openscad/examples/Basics/projection.stl";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not installed";
-    const auto dir = vtest::scratch("cli_blender");
+    const auto dir = vtest::scratchDir("cli_blender");
     const auto r = runTsf("verify " + path + " --json", dir);
     EXPECT_EQ(r.exit_code, 1);
     const auto j = nlohmann::json::parse(r.out);
@@ -172,7 +172,7 @@ TEST(VerifyCli, BlenderExportWithInnerShellIsCaught) {
 // the figures. Runs only where openscad is installed.
 TEST(VerifyCli, OpenScadTouchingPrismsVerdictMatchesFigures) {
     if (std::system("command -v openscad >/dev/null 2>&1") != 0) GTEST_SKIP() << "openscad not installed";
-    const auto dir = vtest::scratch("cli_openscad");
+    const auto dir = vtest::scratchDir("cli_openscad");
     vtest::writeText(dir / "touching.scad",
                      "for (i = [0:1], j = [0:1]) translate([i * 10, j * 10, 0]) cube([10, 10, 2 + 3 * (i + 2 * j)]);\n");
     const std::string stl = (dir / "touching.stl").string();

@@ -1,62 +1,37 @@
-// Fixtures for the verifier tests: hand-drawn meshes, small real tsf models
-// (buildScene + meshScene), defect planting, and running the tsf binary.
+// Fixtures of the verifier tests: small real tsf models (buildScene +
+// meshScene), finding checks and offenders in a report. Meshes, parameters,
+// files and running the tsf binary come from the shared test support
+// (tests/support/).
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <functional>
-#include <iterator>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
 
 #include "gen/direct_mesher.h"
 #include "gen/hex_field.h"
 #include "gen/mesh.h"
 #include "gen/scene.h"
+#include "tests/support/fields.h"
+#include "tests/support/files.h"
+#include "tests/support/meshes.h"
+#include "tests/support/run.h"
 #include "verify/report.h"
 
 namespace tsf::vtest {
 
-// Axis-aligned box from lo to hi, CCW seen from outside.
-//
-//        7-------6
-//       /|      /|          z
-//      4-------5 |          |  y
-//      | 3-----|-2          | /
-//      |/      |/           |/
-//      0-------1            +---- x
-inline Mesh box(Vec3 lo, Vec3 hi) {
-    Mesh m;
-    for (int i = 0; i < 8; ++i) {
-        const bool x = i == 1 || i == 2 || i == 5 || i == 6;
-        const bool y = i == 2 || i == 3 || i == 6 || i == 7;
-        const bool z = i >= 4;
-        m.positions.push_back({x ? hi.x : lo.x, y ? hi.y : lo.y, z ? hi.z : lo.z});
-    }
-    m.triangles = {{0, 3, 2}, {0, 2, 1},   // bottom, -z
-                   {4, 5, 6}, {4, 6, 7},   // top, +z
-                   {0, 1, 5}, {0, 5, 4},   // front, -y
-                   {1, 2, 6}, {1, 6, 5},   // right, +x
-                   {2, 3, 7}, {2, 7, 6},   // back, +y
-                   {3, 0, 4}, {3, 4, 7}};  // left, -x
-    return m;
-}
-
-/// Appends b to a (b's indices shifted); no vertex is shared.
-inline Mesh append(Mesh a, const Mesh& b) {
-    const uint32_t off = uint32_t(a.positions.size());
-    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
-    for (auto t : b.triangles) a.triangles.push_back({t[0] + off, t[1] + off, t[2] + off});
-    return a;
-}
+using test::append;
+using test::box;
+using test::readText;
+using test::RunResult;
+using test::runTsf;
+using test::scratchDir;
+using test::smallParams;
+using test::writeText;
 
 inline Vec3 centroid(const Mesh& m, size_t t) {
     const auto& tri = m.triangles[t];
@@ -82,25 +57,21 @@ inline HexField smallField() {
     return f;
 }
 
-inline SceneParams smallParams(Bottom bottom = Bottom::Flat, double snap_mm = 0.001) {
-    SceneParams p;
-    p.marks = withoutMarks();  // the pillar rules alone; marks have their own tests
-    p.pitch_mm = 5.0;
-    p.max_height_mm = 10.0;
-    p.base_mm = 2.0;
-    p.z_snap_mm = snap_mm;
-    p.bottom = bottom;
-    return p;
-}
-
 struct Model {
     Scene scene;
     Mesh mesh;
 };
 
+/// smallField() with smallParams(bottom) and the given height snap.
+inline SceneParams smallFieldParams(Bottom bottom = Bottom::Flat, double snap_mm = 0.001) {
+    SceneParams p = smallParams(bottom);
+    p.z_snap_mm = snap_mm;
+    return p;
+}
+
 inline Model smallModel(Bottom bottom = Bottom::Flat, double snap_mm = 0.001) {
     Model m;
-    m.scene = buildScene(smallField(), smallParams(bottom, snap_mm));
+    m.scene = buildScene(smallField(), smallFieldParams(bottom, snap_mm));
     m.mesh = meshScene(m.scene);
     return m;
 }
@@ -142,42 +113,6 @@ inline double nearestOffender(const Check& c, const Vec3& p) {
     double best = INFINITY;
     for (const Offender& o : c.worst) best = std::min(best, distance(o.at_mm, p));
     return best;
-}
-
-// --- files and the tsf binary ----------------------------------------------
-
-struct RunResult {
-    int exit_code = -1;
-    std::string out;  ///< stdout only
-    std::string err;  ///< stderr
-};
-
-inline std::filesystem::path scratch(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(TSF_TEST_SCRATCH) / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-inline std::string readText(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-inline void writeText(const std::filesystem::path& p, const std::string& text) {
-    std::ofstream(p, std::ios::binary) << text;
-}
-
-/// Runs `tsf <args>` with stdout and stderr captured separately.
-inline RunResult runTsf(const std::string& args, const std::filesystem::path& dir) {
-    RunResult r;
-    const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string cmd = std::string(TSF_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(cmd.c_str());
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = readText(out);
-    r.err = readText(err);
-    return r;
 }
 
 /// OFF text of a mesh with coordinates printed exactly (17 significant digits).

@@ -1,0 +1,199 @@
+// tsf gen: field in, model out (mesh file, OpenSCAD, scene sidecar), verified.
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "gen/app/commands.h"
+#include "gen/app/gen_options.h"
+#include "gen/app/gen_summary.h"
+#include "gen/app/stage_timer.h"
+#include "gen/app/preview.h"
+#include "gen/direct_mesher.h"
+#include "gen/error.h"
+#include "gen/mesh_io/mesh_writer.h"
+#include "gen/scad/scad_emitter.h"
+#include "gen/scene_json.h"
+#include "verify/verify_model.h"
+
+namespace tsf::cli {
+namespace {
+
+struct GenCommandOptions {
+    GenOptions gen;
+    std::string output;
+    std::string scad;
+    bool ascii = false;
+    bool no_verify = false;
+    bool json = false;
+    bool progress = false;
+    bool no_sidecar = false;
+    std::string scad_strategy = "polyhedron";
+    bool scad_library_beside = false;
+    std::string command_line;
+    std::string preview;
+    bool verify_full = false;
+};
+
+// Grids above this many cells print progress lines without being asked.
+constexpr int64_t kProgressCells = 250000;
+// Above this many triangles the self-check skips CGAL's self-intersection test
+// and the printability rays (minutes at 10^7 triangles); the mesher builds no
+// intersections by construction and the test suite checks that on large
+// grids. --verify-full runs everything.
+constexpr size_t kQuickVerifyTriangles = 3'000'000;
+
+// One line per verifier outcome for the summary; failures are listed fully.
+std::string verifyLines(const VerifyReport& r) {
+    std::string passed, other;
+    for (const Check& c : r.checks) {
+        if (c.status == CheckStatus::Pass) passed += (passed.empty() ? "" : ", ") + c.title;
+        else if (c.status != CheckStatus::Skipped) other += "  " + std::string(toString(c.status)) + "      " + c.title +
+                                                          (c.note.empty() ? "" : ": " + c.note) + "\n";
+    }
+    std::string out = "  verify    " + std::string(r.passed() ? "passed" : "FAILED") + " (" + passed + ")\n";
+    if (r.readback) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "  read back %zu cells: heights within %.4f mm of the data (max error %.4f mm)\n",
+                      r.readback->cells_checked, r.readback->tolerance_mm, r.readback->max_error_mm);
+        out += buf;
+    }
+    return out + other;
+}
+
+void runGen(const GenCommandOptions& o) {
+    if (o.output.empty() && o.scad.empty())
+        throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
+    StageTimer timer(o.progress);
+    GenSummary summary;
+    summary.input = o.gen.input;
+
+    timer.begin("reading");
+    const HexField field = loadField(o.gen);
+    summary.field = &field;
+    if (field.grid.cellCount() > kProgressCells && !o.progress && !o.json)
+        std::fprintf(stderr, "tsf: %d x %d cells, this may take a few seconds\n", field.grid.cols, field.grid.rows);
+    timer.begin("scene");
+    const Scene scene = buildScene(field, o.gen.scene);
+    summary.scene = &scene;
+    timer.begin("meshing");
+    const Mesh mesh = meshScene(scene);
+    summary.mesh = &mesh;
+
+    std::optional<VerifyReport> report;
+    if (!o.no_verify) {
+        timer.begin("verifying");
+        VerifyOptions vo;
+        vo.name = o.output.empty() ? o.scad : o.output;
+        if (!o.verify_full && mesh.triangleCount() > kQuickVerifyTriangles) {
+            vo.self_intersections = false;
+            vo.printability = false;
+            std::fprintf(stderr, "tsf: %zu triangles: verifying topology and heights only (--verify-full for all checks)\n",
+                         mesh.triangleCount());
+        }
+        report = verifyModel(mesh, &scene, vo);
+        summary.verify = toJson(*report);
+        summary.verify_text = verifyLines(*report);
+        if (!report->passed()) {
+            // A model that fails its own checks is a bug in tsf: never hand it to a printer.
+            timer.end();
+            std::cerr << formatReport(*report);
+            std::cerr << "tsf: the generated model failed verification; nothing was written. "
+                         "Please report this with the input file.\n";
+            throw CLI::RuntimeError(kExitCheckFailed);
+        }
+    }
+
+    if (!o.output.empty()) {
+        timer.begin("writing");
+        MeshWriteOptions wo;
+        wo.ascii_stl = o.ascii;
+        wo.title = "tsf " TSF_VERSION " " + o.gen.input;
+        writeMesh(mesh, o.output, wo);
+        summary.outputs.push_back({o.output, "model"});
+    }
+    if (!o.preview.empty()) {
+        if (o.output.empty() || lowerCaseExtension(o.output) == ".obj")
+            throw InputError("--preview draws the written model: give -o MODEL.stl, .3mf or .off");
+        timer.begin("drawing preview");
+        writeModelPreview(o.output, o.preview);
+        summary.outputs.push_back({o.preview, "preview picture"});
+    }
+    if (!o.scad.empty()) {
+        timer.begin("writing OpenSCAD");
+        ScadOptions so;
+        parseScadStrategy(o.scad_strategy, so.strategy);
+        so.inline_library = !o.scad_library_beside;
+        so.source = o.gen.input;
+        so.command = o.command_line;
+        writeScad(scene, so, o.scad);
+        for (const std::string& path : scadOutputPaths(so, o.scad)) summary.outputs.push_back({path, "OpenSCAD"});
+    }
+    if (!o.no_sidecar) {
+        // The scene sidecar lets `tsf verify --scene` check any mesh of this model later.
+        const std::string sidecar = (o.output.empty() ? o.scad : o.output) + ".scene.json";
+        writeSceneJson(scene, sidecar);
+        summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
+    }
+    timer.end();
+    summary.timings_ms = timer.stagesMs();
+    if (o.json)
+        std::cout << summaryJson(summary).dump(2) << "\n";
+    else
+        std::cout << formatSummary(summary);
+}
+
+}  // namespace
+
+void addGenCommand(CLI::App& app) {
+    auto opts = std::make_shared<GenCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("gen", "Generate a printable hex-pillar model from a field");
+    cmd->footer(
+        "Examples:\n"
+        "  tsf gen examples/volcano.csv -o volcano.stl\n"
+        "  tsf gen examples/airports-europe.csv --points x=lon,y=lat --bins 40 --mirror -o europe.3mf\n"
+        "Frame: x east, y north, z up, millimetres; the model stands on z = 0.");
+    addGenOptions(cmd, opts->gen);
+    cmd->add_option("-o,--output", opts->output, "Model file: .stl (binary), .3mf, .off or .obj");
+    cmd->add_option("--scad", opts->scad, "Also write a parametric OpenSCAD file");
+    cmd->add_flag("--ascii", opts->ascii, "Write ASCII STL instead of binary");
+    cmd->add_option("--preview", opts->preview, "Also draw the written model to this PNG (needs openscad; xvfb-run when there is no display)");
+    cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
+    cmd->add_flag("--verify-full", opts->verify_full,
+                  "Run every check even on very large models (self-intersections, printability; minutes)");
+    cmd->add_flag("--json", opts->json, "Print the summary as JSON");
+    cmd->add_flag("--progress", opts->progress, "Print each stage and its time on stderr");
+    cmd->add_flag("--no-scene", opts->no_sidecar, "Do not write the MODEL.scene.json sidecar");
+    cmd->add_option("--scad-strategy", opts->scad_strategy,
+                    "polyhedron: one polyhedron() built from the values (fast, default) | csg: union of one prism "
+                    "per cell (slow, tolerant of hand-added geometry); see docs/openscad.md")
+        ->check(CLI::IsMember({"polyhedron", "csg"}))->capture_default_str();
+    cmd->add_flag("--scad-library-beside", opts->scad_library_beside,
+                  "Copy the OpenSCAD library into a folder beside the .scad instead of inlining it");
+    cmd->callback([opts] {
+        // The command line goes into the OpenSCAD header so a file says how it was made.
+        opts->command_line = invocation();
+        runGen(*opts);
+    });
+}
+
+void addInfoCommand(CLI::App& app) {
+    auto opts = std::make_shared<GenOptions>();
+    auto json = std::make_shared<bool>(false);
+    CLI::App* cmd = app.add_subcommand("info", "Show what tsf sees in an input file and the model it would make");
+    addGenOptions(cmd, *opts);
+    cmd->add_flag("--json", *json, "Print as JSON");
+    cmd->callback([opts, json] {
+        const HexField field = loadField(*opts);
+        const Scene scene = buildScene(field, opts->scene);
+        if (*json) {
+            nlohmann::json j = sceneFactsJson(scene);
+            j["input"] = opts->input;
+            j["field"] = {{"how", field.how}, {"pitch_data_units", field.pitch_data}};
+            std::cout << j.dump(2) << "\n";
+        } else {
+            std::cout << "tsf info: " << opts->input << "\n  input     " << field.how << "\n" << formatSceneFacts(scene);
+        }
+    });
+}
+
+}  // namespace tsf::cli

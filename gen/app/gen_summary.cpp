@@ -1,0 +1,132 @@
+#include "gen/app/gen_summary.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace tsf::cli {
+namespace {
+std::string fmt(const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+}
+
+std::string mappingText(const Scene& s) {
+    const ValueMapping& m = s.mapping;
+    std::ostringstream o;
+    o << toString(m.transfer) << ": value " << m.baseline << " -> 0 mm, value " << m.value_max << " -> "
+      << fmt("%.2f", m.max_height_mm) << " mm above the floor";
+    if (m.transfer == Transfer::Linear && m.value_max > m.baseline && m.max_height_mm > 0)
+        o << " (1 mm = " << fmt("%.4g", (m.value_max - m.baseline) / m.max_height_mm) << " data units)";
+    return o.str();
+}
+}  // namespace
+
+nlohmann::json sceneFactsJson(const Scene& s) {
+    nlohmann::json j;
+    j["grid"] = {{"cols", s.grid.cols}, {"rows", s.grid.rows}};
+    j["cells"] = {{"total", s.grid.cellCount()}, {"with_data", s.cells_with_data},
+                  {"nonempty", s.cells_nonempty}, {"kept", s.keptCount()}, {"kept_without_data", s.cells_nodata_kept}};
+    j["pitch_mm"] = s.pitch_mm;
+    double zmax = 0;
+    for (int64_t t : s.top) zmax = std::max(zmax, s.zMm(t));
+    j["size_mm"] = {gridWidth(s.grid, s.pitch_mm), gridDepth(s.grid, s.pitch_mm), zmax};
+    j["z_snap_mm"] = s.z_snap_mm;
+    j["mapping"] = {{"transfer", toString(s.mapping.transfer)}, {"baseline", s.mapping.baseline},
+                    {"value_max", s.mapping.value_max}, {"max_height_mm", s.mapping.max_height_mm},
+                    {"base_mm", s.params.base_mm}};
+    j["cull"] = toString(s.params.cull);
+    j["bottom"] = toString(s.params.bottom);
+    if (s.params.bottom == Bottom::Mirrored) j["mirror_thickness_mm"] = s.zMm(s.mirror_thickness_units);
+    j["one_pillar_per_value"] = s.one_to_one;
+    j["nodata_pit_mm"] = s.zMm(s.nodata_pit_units);
+    nlohmann::json marks = nlohmann::json::object();
+    if (s.marks.notch)
+        marks["notch"] = {{"depth_mm", s.marks.notch->depth_mm}, {"width_mm", s.marks.notch->width_mm},
+                          {"opening_deg", s.marks.notch->opening_deg},
+                          {"apex_mm", {planarX(s.marks.notch->apex, s.pitch_mm), planarY(s.marks.notch->apex, s.pitch_mm)}}};
+    else
+        marks["notch"] = nullptr;
+    if (s.marks.triangle)
+        marks["triangle"] = {{"leg_x_mm", s.marks.triangle->leg_x_mm}, {"leg_y_mm", s.marks.triangle->leg_y_mm},
+                             {"height_mm", s.zMm(s.marks.triangle->raise_units)},
+                             {"corner_mm", {planarX(s.marks.triangle->corner, s.pitch_mm),
+                                            planarY(s.marks.triangle->corner, s.pitch_mm)}}};
+    else
+        marks["triangle"] = nullptr;
+    j["marks"] = marks;
+    j["notes"] = s.notes;
+    return j;
+}
+
+std::string formatSceneFacts(const Scene& s) {
+    std::ostringstream o;
+    const double w = gridWidth(s.grid, s.pitch_mm), d = gridDepth(s.grid, s.pitch_mm);
+    double zmax = 0;
+    for (int64_t t : s.top) zmax = std::max(zmax, s.zMm(t));
+    o << "  cells     " << s.keptCount() << " kept of " << s.grid.cols << " x " << s.grid.rows << " = "
+      << s.grid.cellCount() << " (" << s.cells_nonempty << " above the floor, " << s.cells_with_data - s.cells_nonempty
+      << " at the floor, " << s.grid.cellCount() - s.cells_with_data << " without data; culling: "
+      << toString(s.params.cull) << ")\n";
+    o << "  size      " << fmt("%.1f", w) << " x " << fmt("%.1f", d) << " x " << fmt("%.1f", zmax)
+      << " mm (grid box), hexagons " << fmt("%.2f", s.pitch_mm) << " mm across flats\n";
+    o << "  heights   " << mappingText(s) << "\n";
+    if (s.params.bottom == Bottom::Flat)
+        o << "  bottom    flat, base " << fmt("%.2f", s.params.base_mm) << " mm\n";
+    else
+        o << "  bottom    mirrored: every pillar " << fmt("%.2f", s.zMm(s.mirror_thickness_units))
+          << " mm thick; the underside shows the negated data\n";
+    o << "  z snap    " << fmt("%.4g", s.z_snap_mm) << " mm\n";
+    if (s.one_to_one)
+        o << "  values    one pillar per value: each of the " << s.cells_with_data << " values stands at its own height\n";
+    if (s.marks.notch)
+        o << "  notch     V " << fmt("%.1f", s.marks.notch->depth_mm) << " mm deep, " << fmt("%.1f", s.marks.notch->width_mm)
+          << " mm wide, at the origin (south-west) corner, through the whole height\n";
+    if (s.marks.triangle) {
+        const OrientationTriangle& t = *s.marks.triangle;
+        o << "  triangle  raised " << fmt("%.2f", s.zMm(t.raise_units)) << " mm, legs " << fmt("%.1f", t.leg_x_mm)
+          << " mm east (x) and " << fmt("%.1f", t.leg_y_mm) << " mm north (y), right angle at ("
+          << fmt("%.1f", planarX(t.corner, s.pitch_mm)) << ", " << fmt("%.1f", planarY(t.corner, s.pitch_mm)) << ") mm\n";
+    }
+    for (const std::string& n : s.notes) o << "  note      " << n << "\n";
+    return o.str();
+}
+
+nlohmann::json summaryJson(const GenSummary& s) {
+    nlohmann::json j;
+    j["input"] = s.input;
+    if (s.field) j["field"] = {{"how", s.field->how}, {"pitch_data_units", s.field->pitch_data}};
+    if (s.scene) j["scene"] = sceneFactsJson(*s.scene);
+    if (s.mesh) {
+        const Bounds b = meshBounds(*s.mesh);
+        j["mesh"] = {{"vertices", s.mesh->vertexCount()}, {"triangles", s.mesh->triangleCount()},
+                     {"volume_mm3", signedVolume(*s.mesh)},
+                     {"bounds_mm", {{b.min.x, b.min.y, b.min.z}, {b.max.x, b.max.y, b.max.z}}}};
+    }
+    j["outputs"] = nlohmann::json::array();
+    for (const auto& [path, what] : s.outputs) j["outputs"].push_back({{"path", path}, {"kind", what}});
+    for (const auto& [stage, ms] : s.timings_ms) j["timings_ms"][stage] = ms;
+    if (!s.verify.is_null()) j["verify"] = s.verify;
+    return j;
+}
+
+std::string formatSummary(const GenSummary& s) {
+    std::ostringstream o;
+    o << "tsf gen: " << s.input << "\n";
+    if (s.field) o << "  input     " << s.field->how << "\n";
+    if (s.scene) o << formatSceneFacts(*s.scene);
+    if (s.mesh)
+        o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
+          << fmt("%.1f", signedVolume(*s.mesh)) << " mm^3\n";
+    if (!s.verify_text.empty()) o << s.verify_text;
+    for (const auto& [path, what] : s.outputs) o << "  wrote     " << path << " (" << what << ")\n";
+    if (!s.timings_ms.empty()) {
+        o << "  time     ";
+        for (const auto& [stage, ms] : s.timings_ms) o << " " << stage << " " << fmt("%.0f", ms) << " ms";
+        o << "\n";
+    }
+    return o.str();
+}
+
+}  // namespace tsf::cli

@@ -1,0 +1,64 @@
+#include "gen/io/load_field.h"
+
+#include "gen/error.h"
+#include <cmath>
+#include <sstream>
+
+#include "gen/io/point_binning.h"
+#include "gen/io/point_projection.h"
+#include "gen/io/point_reader.h"
+#include "gen/io/raster_reader.h"
+#include "gen/resample.h"
+
+namespace tsf {
+
+HexField loadField(const FieldLoadOptions& o) {
+    if (!o.delimiter.empty() && o.delimiter != "," && o.delimiter != ";" && o.delimiter != "tab" &&
+        o.delimiter != "\t" && o.delimiter != "space" && o.delimiter != " ")
+        throw InputError("--delimiter: expected , ; tab or space, got '" + o.delimiter + "'");
+    const char delimiter = o.delimiter.empty()                              ? 0
+                           : (o.delimiter == "tab" || o.delimiter == "\t") ? '\t'
+                           : (o.delimiter == "space" || o.delimiter == " ") ? ' '
+                                                                            : o.delimiter[0];
+    if (!o.points.empty()) {
+        PointColumns cols = parsePointColumns(o.points);
+        cols.delimiter = delimiter;
+        const PointTable table = readPointsCsv(o.input, cols);
+        BinOptions b;
+        b.aggregate = parseAggregate(o.aggregate);
+        b.bin_size = o.bin_size;
+        b.hex_cols = o.bins;
+        PointTable points = table;
+        const std::string projected = projectPoints(points, parseProjection(o.project));
+        HexField f = binPoints(points, b);
+        f.source = o.input;
+        if (!projected.empty()) f.how += "; " + projected;
+        return f;
+    }
+    RasterReadOptions ro;
+    ro.delimiter = delimiter;
+    Raster raster = readRaster(o.input, ro);
+    int64_t nodata_cells = 0;
+    if (o.nodata)
+        for (double& v : raster.values)
+            if (v == *o.nodata) {
+                v = NAN;
+                ++nodata_cells;
+            }
+    RasterPlacement pl;
+    pl.hex_cols = o.bins;
+    pl.method = parseResampleMethod(o.sample);
+    pl.pitch_mm = o.cell_mm;
+    pl.fit_width_mm = o.fit_width_mm;
+    pl.fit_depth_mm = o.fit_depth_mm;
+    HexField f = placeRaster(raster, pl);
+    f.source = o.input;
+    if (o.nodata) {
+        std::ostringstream s;
+        s << "; " << nodata_cells << " values equal to --nodata " << *o.nodata << " are no data";
+        f.how += s.str();
+    }
+    return f;
+}
+
+}  // namespace tsf

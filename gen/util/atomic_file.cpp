@@ -1,0 +1,113 @@
+#include "gen/util/atomic_file.h"
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "gen/error.h"
+
+namespace tsf {
+namespace {
+
+// Keeps the temporary name within NAME_MAX (255) whatever the target's name.
+constexpr size_t kMaxNameStemChars = 200;
+
+std::atomic<unsigned> g_temp_counter{0};
+
+std::string osMessage(int error_number) { return std::strerror(error_number); }
+
+// Folder part of a path, "." for a bare file name.
+std::string folderOf(const std::string& path) {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    return parent.empty() ? std::string(".") : parent.string();
+}
+
+void syncFolder(const std::string& folder) {
+    // Makes the rename itself durable. Failure here is not reported: the new
+    // file is already complete and in place, only its durability across a
+    // power cut is in doubt, and some file systems refuse fsync on folders.
+    const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    (void)::fsync(fd);
+    ::close(fd);
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(const std::string& target_path) : target_path_(target_path) {
+    if (target_path.empty()) throw InputError("output path is empty");
+    const std::string folder = folderOf(target_path);
+    struct stat st {};
+    if (::stat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
+        throw InputError(target_path, 0, 0, "cannot write: folder '" + folder + "' does not exist");
+    }
+    if (::stat(target_path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+        throw InputError(target_path, 0, 0, "cannot write: this is a folder, a file name is expected");
+    }
+    std::string stem = std::filesystem::path(target_path).filename().string();
+    if (stem.size() > kMaxNameStemChars) stem.resize(kMaxNameStemChars);
+    const std::string prefix = (folder == "." && target_path.find('/') == std::string::npos ? std::string() : folder + "/");
+
+    for (;;) {
+        const unsigned n = g_temp_counter.fetch_add(1);
+        std::string candidate = prefix + "." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(n);
+        const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            ::close(fd);
+            temp_path_ = std::move(candidate);
+            return;
+        }
+        if (errno == EEXIST) continue;  // a leftover from a crashed run with a recycled pid
+        throw InputError(target_path, 0, 0, "cannot write in folder '" + folder + "': " + osMessage(errno));
+    }
+}
+
+AtomicFile::~AtomicFile() {
+    if (!committed_ && !temp_path_.empty()) ::unlink(temp_path_.c_str());
+}
+
+void AtomicFile::commit() {
+    if (committed_) throw std::logic_error("AtomicFile::commit called twice for " + target_path_);
+    const int fd = ::open(temp_path_.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        throw std::runtime_error("cannot reopen temporary file '" + temp_path_ + "': " + osMessage(errno));
+    }
+    if (::fsync(fd) != 0) {
+        const int error_number = errno;
+        ::close(fd);
+        throw std::runtime_error("cannot flush '" + temp_path_ + "' to disk: " + osMessage(error_number));
+    }
+    ::close(fd);
+    if (::rename(temp_path_.c_str(), target_path_.c_str()) != 0) {
+        throw std::runtime_error("cannot replace '" + target_path_ + "': " + osMessage(errno));
+    }
+    committed_ = true;
+    syncFolder(folderOf(target_path_));
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    AtomicFile file(path);
+    {
+        std::ofstream out(file.tempPath(), std::ios::binary | std::ios::trunc);
+        if (!out) {
+            throw std::runtime_error("cannot open '" + file.tempPath() + "' for writing: " + osMessage(errno));
+        }
+        write(out);
+        errno = 0;
+        out.flush();
+        out.close();
+        if (out.fail()) {
+            const std::string reason = errno != 0 ? osMessage(errno) : std::string("write error (is the disk full?)");
+            throw std::runtime_error("writing '" + path + "' failed: " + reason);
+        }
+    }
+    file.commit();
+}
+
+}  // namespace tsf

@@ -1,0 +1,17 @@
+// readFileBytes: a whole file in memory, for every reader (fields in gen/io,
+// meshes in gen/mesh_io, the scene sidecar).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace tsf {
+
+/// The file's bytes, unchanged (binary, no newline translation). Throws
+/// tsf::InputError naming path if it does not exist, is a folder, cannot be
+/// read (with the OS reason) or holds more than max_bytes (0 = no limit). An
+/// empty file is returned as an empty string; the format readers say what
+/// they expected. Works for pipes and other files without a size too.
+std::string readFileBytes(const std::string& path, int64_t max_bytes = 0);
+
+}  // namespace tsf

@@ -1,0 +1,155 @@
+// Atomic writes: a failed write leaves no file and no temporary file, an
+// existing target survives a failed replacement, a bad folder is an
+// InputError naming the path.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+#include <unistd.h>
+
+#include "gen/error.h"
+#include "gen/mesh_io/mesh_writer.h"
+#include "gen/util/atomic_file.h"
+#include "tests/support/files.h"
+#include "tests/support/meshes.h"
+
+namespace tsf {
+namespace {
+
+using test::listFiles;
+using test::readText;
+using test::scratchDir;
+using test::writeText;
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::IsEmpty;
+
+TEST(AtomicFile, SuccessfulWriteLeavesOnlyTheTarget) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "out.txt").string();
+    writeFileAtomically(target, [](std::ostream& out) { out << "hello"; });
+    EXPECT_EQ(readText(target), "hello");
+    EXPECT_THAT(listFiles(dir), ElementsAre("out.txt"));
+}
+
+TEST(AtomicFile, TempFileIsInTheTargetFolderAndHidden) {
+    const auto dir = scratchDir();
+    AtomicFile file((dir / "model.stl").string());
+    const std::filesystem::path temp(file.tempPath());
+    EXPECT_EQ(temp.parent_path(), dir);
+    EXPECT_EQ(temp.filename().string().rfind(".model.stl.tmp-", 0), 0u) << temp;
+    EXPECT_TRUE(std::filesystem::exists(temp));
+    EXPECT_FALSE(std::filesystem::exists(dir / "model.stl"));
+}
+
+TEST(AtomicFile, TwoWritersGetDifferentTempFiles) {
+    const auto dir = scratchDir();
+    AtomicFile a((dir / "x.off").string());
+    AtomicFile b((dir / "x.off").string());
+    EXPECT_NE(a.tempPath(), b.tempPath());
+}
+
+TEST(AtomicFile, WriterThatThrowsMidwayLeavesNoFileBehind) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "half.stl").string();
+    EXPECT_THROW(writeFileAtomically(target,
+                                     [](std::ostream& out) {
+                                         out << std::string(100000, 'x');  // some data already written
+                                         throw std::runtime_error("generator failed");
+                                     }),
+                 std::runtime_error);
+    EXPECT_THAT(listFiles(dir), IsEmpty());
+}
+
+TEST(AtomicFile, ExistingTargetIsUntouchedWhenTheWriterFails) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "keep.obj").string();
+    writeText(target, "old content");
+    EXPECT_THROW(writeFileAtomically(target,
+                                     [](std::ostream& out) {
+                                         out << "new half";
+                                         throw std::runtime_error("boom");
+                                     }),
+                 std::runtime_error);
+    EXPECT_EQ(readText(target), "old content");
+    EXPECT_THAT(listFiles(dir), ElementsAre("keep.obj"));
+}
+
+TEST(AtomicFile, ExistingTargetIsReplacedOnSuccess) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "replace.txt").string();
+    writeText(target, "a much longer old content than the new one");
+    writeFileAtomically(target, [](std::ostream& out) { out << "new"; });
+    EXPECT_EQ(readText(target), "new");
+    EXPECT_THAT(listFiles(dir), ElementsAre("replace.txt"));
+}
+
+TEST(AtomicFile, UncommittedFileIsRemovedByTheDestructor) {
+    const auto dir = scratchDir();
+    std::string temp;
+    {
+        AtomicFile file((dir / "never.3mf").string());
+        temp = file.tempPath();
+        writeText(temp, "partial");
+    }
+    EXPECT_FALSE(std::filesystem::exists(temp));
+    EXPECT_THAT(listFiles(dir), IsEmpty());
+}
+
+TEST(AtomicFile, CommitMovesTheTempFileOntoTheTarget) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "done.bin").string();
+    AtomicFile file(target);
+    writeText(file.tempPath(), "payload");
+    file.commit();
+    EXPECT_TRUE(file.committed());
+    EXPECT_EQ(readText(target), "payload");
+    EXPECT_FALSE(std::filesystem::exists(file.tempPath()));
+}
+
+TEST(AtomicFile, MissingFolderIsAnInputErrorNamingThePath) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "no-such-folder" / "out.stl").string();
+    try {
+        writeFileAtomically(target, [](std::ostream& out) { out << "x"; });
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.path(), target);
+        EXPECT_THAT(e.what(), HasSubstr("does not exist"));
+        EXPECT_THAT(e.what(), HasSubstr("no-such-folder"));
+    }
+}
+
+TEST(AtomicFile, TargetThatIsAFolderIsAnInputError) {
+    const auto dir = scratchDir();
+    std::filesystem::create_directory(dir / "sub.stl");
+    EXPECT_THROW(AtomicFile((dir / "sub.stl").string()), InputError);
+}
+
+TEST(AtomicFile, UnwritableFolderIsAnInputError) {
+    if (::geteuid() == 0) GTEST_SKIP() << "root ignores folder permissions";
+    const auto dir = scratchDir();
+    std::filesystem::create_directory(dir / "ro");
+    std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    EXPECT_THROW(AtomicFile((dir / "ro" / "x.stl").string()), InputError);
+    std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_all);
+}
+
+TEST(AtomicFile, MeshThatCannotBeWrittenLeavesTheOldFileAlone) {
+    const auto dir = scratchDir();
+    Mesh bad = test::cube();
+    bad.positions[3].y = std::numeric_limits<double>::quiet_NaN();
+    for (const char* name : {"a.stl", "a.3mf", "a.off", "a.obj"}) {
+        const auto target = dir / name;
+        writeText(target, "previous");
+        EXPECT_THROW(writeMesh(bad, target.string()), InputError) << name;
+        EXPECT_EQ(readText(target), "previous") << name;
+    }
+    EXPECT_EQ(listFiles(dir).size(), 4u);
+}
+
+}  // namespace
+}  // namespace tsf
