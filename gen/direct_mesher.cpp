@@ -35,6 +35,8 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include "gen/cdt_parity.h"
+
 #include "gen/scene_check.h"
 
 namespace tsf {
@@ -270,19 +272,8 @@ private:
         }
         assert(cdt.number_of_vertices() == loop.size() && "two rim vertices snapped to one point");
         for (size_t n = 0; n < handles.size(); ++n) cdt.insert_constraint(handles[n], handles[(n + 1) % handles.size()]);
-        // Faces inside the rim: flood from the infinite face, flipping at constraints.
-        for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
-        std::vector<std::pair<Cdt::Face_handle, int>> queue{{cdt.infinite_face(), 0}};
-        while (!queue.empty()) {
-            auto [f, depth] = queue.back();
-            queue.pop_back();
-            if (f->info() != -1) continue;
-            f->info() = depth;
-            for (int e = 0; e < 3; ++e) {
-                Cdt::Face_handle nb = f->neighbor(e);
-                if (nb->info() == -1) queue.push_back({nb, cdt.is_constrained({f, e}) ? depth + 1 : depth});
-            }
-        }
+        // Faces inside the rim: odd parity of rim constraints crossed from outside.
+        markInsideByParity(cdt);
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
             if (f->info() % 2 != 1) continue;
             // CGAL faces are counter-clockwise from above; the bottom faces down.

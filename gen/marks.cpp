@@ -22,6 +22,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include "gen/cdt_parity.h"
 #include "gen/error.h"
 #include "gen/scene.h"
 
@@ -315,9 +316,7 @@ std::vector<int32_t> flatRegions(const Scene& s) {
             const size_t k = size_t(stack.back());
             stack.pop_back();
             for (int e = 0; e < kHexCorners; ++e) {
-                int32_t nc, nr;
-                hexNeighbour(s.col[k], s.row[k], e, nc, nr);
-                const int32_t o = s.keptAt(nc, nr);
+                const int32_t o = s.keptNeighbour(k, e);
                 if (o < 0 || label[size_t(o)] >= 0 || s.kind[size_t(o)] != CellKind::Data || s.drawn_by_face[size_t(o)])
                     continue;
                 if (s.top[size_t(o)] != s.top[k] || s.bottom[size_t(o)] != s.bottom[k]) continue;
@@ -339,9 +338,7 @@ std::vector<int32_t> stepsToEdge(const Scene& s, const std::vector<int32_t>& lab
     for (size_t k = 0; k < n; ++k) {
         if (label[k] < 0) continue;
         for (int e = 0; e < kHexCorners; ++e) {
-            int32_t nc, nr;
-            hexNeighbour(s.col[k], s.row[k], e, nc, nr);
-            const int32_t o = s.keptAt(nc, nr);
+            const int32_t o = s.keptNeighbour(k, e);
             if (o < 0 || label[size_t(o)] != label[k]) {
                 d[k] = 1;
                 queue.push_back(int32_t(k));
@@ -353,9 +350,7 @@ std::vector<int32_t> stepsToEdge(const Scene& s, const std::vector<int32_t>& lab
         const size_t k = size_t(queue.front());
         queue.pop_front();
         for (int e = 0; e < kHexCorners; ++e) {
-            int32_t nc, nr;
-            hexNeighbour(s.col[k], s.row[k], e, nc, nr);
-            const int32_t o = s.keptAt(nc, nr);
+            const int32_t o = s.keptNeighbour(k, e);
             if (o < 0 || d[size_t(o)] >= 0 || label[size_t(o)] != label[k]) continue;
             d[size_t(o)] = d[k] + 1;
             queue.push_back(o);
@@ -385,9 +380,7 @@ std::vector<int64_t> outline(const Scene& s, const std::vector<int32_t>& cells, 
     std::unordered_map<int64_t, int64_t> next;
     for (int32_t k : cells)
         for (int e = 0; e < kHexCorners; ++e) {
-            int32_t nc, nr;
-            hexNeighbour(s.col[size_t(k)], s.row[size_t(k)], e, nc, nr);
-            const int32_t o = s.keptAt(nc, nr);
+            const int32_t o = s.keptNeighbour(size_t(k), e);
             if (o >= 0 && in[size_t(o)]) continue;
             next[hexCornerId(s.grid, s.col[size_t(k)], s.row[size_t(k)], e)] =
                 hexCornerId(s.grid, s.col[size_t(k)], s.row[size_t(k)], (e + 1) % kHexCorners);
@@ -689,18 +682,7 @@ void buildMarkFaces(Scene& s) {
         // Parity of the constraints crossed from the infinite face: odd = host
         // (inside the outline, outside the triangle); the triangle is the even
         // part inside it.
-        for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
-        std::vector<std::pair<Cdt::Face_handle, int>> queue{{cdt.infinite_face(), 0}};
-        while (!queue.empty()) {
-            auto [f, depth] = queue.back();
-            queue.pop_back();
-            if (f->info() != -1) continue;
-            f->info() = depth;
-            for (int e = 0; e < 3; ++e) {
-                Cdt::Face_handle nb = f->neighbor(e);
-                if (nb->info() == -1) queue.push_back({nb, cdt.is_constrained({f, e}) ? depth + 1 : depth});
-            }
-        }
+        markInsideByParity(cdt);
         std::vector<Cdt::Face_handle> host_tris, tri_tris;
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
             if (f->info() % 2 == 1) host_tris.push_back(f);

@@ -154,6 +154,13 @@ struct Scene {
     int32_t keptAt(int32_t c, int32_t r) const {
         return grid.contains(c, r) ? kept_index[size_t(grid.index(c, r))] : -1;
     }
+    /// The kept index (-1: not kept, or beyond the grid) of the cell across
+    /// edge e (0..5, hex_grid.h) of kept cell k.
+    int32_t keptNeighbour(size_t k, int e) const {
+        int32_t nc, nr;
+        hexNeighbour(col[k], row[k], e, nc, nr);
+        return keptAt(nc, nr);
+    }
 };
 
 /// Builds the Scene for a field. Throws InputError for invalid parameters or a
