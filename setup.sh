@@ -49,8 +49,9 @@ if [ ! -f "$wasm/node_modules/.package-lock.json" ] || [ "$wasm/package-lock.jso
 fi
 [ "$mode" = "--deps-only" ] && exit 0
 
+# Release: no assertions (run-tests.sh builds the tests apart, with them).
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+cmake --build build -j"$(nproc)" --target tsf
 [ "$mode" = "--no-demo" ] && exit 0
 
 # The main job on a bundled example (European airports, OpenFlights data).

@@ -133,4 +133,37 @@ bool hexCellAt(const HexGrid& grid, double x, double y, int32_t& col, int32_t& r
     return true;
 }
 
+int32_t labelCellComponents(const HexGrid& grid, const std::vector<uint8_t>& marked, std::vector<int32_t>& label) {
+    label.assign(marked.size(), -1);
+    std::vector<int64_t> stack;
+    int32_t count = 0;
+    for (int64_t start = 0; start < int64_t(marked.size()); ++start) {
+        if (!marked[size_t(start)] || label[size_t(start)] >= 0) continue;
+        label[size_t(start)] = count;
+        stack.push_back(start);
+        while (!stack.empty()) {
+            const int64_t cell = stack.back();
+            stack.pop_back();
+            const int32_t c = int32_t(cell % grid.cols), r = int32_t(cell / grid.cols);
+            for (int k = 0; k < kHexCorners; ++k) {
+                int32_t nc, nr;
+                hexNeighbour(c, r, k, nc, nr);
+                if (!grid.contains(nc, nr)) continue;
+                const int64_t n = grid.index(nc, nr);
+                if (marked[size_t(n)] && label[size_t(n)] < 0) {
+                    label[size_t(n)] = count;
+                    stack.push_back(n);
+                }
+            }
+        }
+        ++count;
+    }
+    return count;
+}
+
+int32_t componentCount(const HexGrid& grid, const std::vector<uint8_t>& marked) {
+    std::vector<int32_t> label;
+    return labelCellComponents(grid, marked, label);
+}
+
 }  // namespace tsf

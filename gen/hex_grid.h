@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace tsf {
 
@@ -79,6 +80,14 @@ double gridDepth(const HexGrid& grid, double pitch);
 /// Returns false (and leaves col/row unchanged) if the point is outside every
 /// cell of the grid. NaN coordinates return false.
 bool hexCellAt(const HexGrid& grid, double x_pitch, double y_pitch, int32_t& col, int32_t& row);
+
+/// The edge-connected components of the marked cells (marked[grid.index(c, r)]
+/// != 0; one entry per grid cell): label[index] is the component (0, 1, ...)
+/// of a marked cell, -1 for the others. Returns the number of components.
+int32_t labelCellComponents(const HexGrid& grid, const std::vector<uint8_t>& marked, std::vector<int32_t>& label);
+
+/// The number of edge-connected components of the marked cells.
+int32_t componentCount(const HexGrid& grid, const std::vector<uint8_t>& marked);
 
 /// Area of one hexagon in mm^2 for a given pitch in mm.
 inline double hexArea(double pitch) { return kSqrt3 / 2.0 * pitch * pitch; }

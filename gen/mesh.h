@@ -32,6 +32,9 @@ struct Bounds {
 };
 Bounds meshBounds(const Mesh& mesh);
 
+/// Area (mm^2) of triangle t (indices into mesh.positions).
+double triangleArea(const Mesh& mesh, const std::array<uint32_t, 3>& t);
+
 /// Signed volume (mm^3) by the divergence theorem; positive for a closed,
 /// outward-oriented mesh. Meaningless for an open mesh.
 double signedVolume(const Mesh& mesh);

@@ -185,32 +185,6 @@ double resolvePitch(const HexGrid& grid, const SceneParams& p) {
     return pitch;
 }
 
-// Number of edge-connected components among the cells marked in `keep`.
-int componentCount(const HexGrid& grid, const std::vector<uint8_t>& keep) {
-    std::vector<uint8_t> seen(keep.size(), 0);
-    std::vector<int64_t> stack;
-    int components = 0;
-    for (int64_t start = 0; start < int64_t(keep.size()); ++start) {
-        if (!keep[start] || seen[start]) continue;
-        ++components;
-        seen[start] = 1;
-        stack.push_back(start);
-        while (!stack.empty()) {
-            const int64_t cell = stack.back();
-            stack.pop_back();
-            const int32_t c = int32_t(cell % grid.cols), r = int32_t(cell / grid.cols);
-            for (int k = 0; k < kHexCorners; ++k) {
-                int32_t nc, nr;
-                hexNeighbour(c, r, k, nc, nr);
-                if (!grid.contains(nc, nr)) continue;
-                const int64_t n = grid.index(nc, nr);
-                if (keep[n] && !seen[n]) { seen[n] = 1; stack.push_back(n); }
-            }
-        }
-    }
-    return components;
-}
-
 }  // namespace
 
 Scene buildScene(const HexField& field, const SceneParams& params) {

@@ -16,26 +16,6 @@ std::string cellName(const Scene& s, size_t k) {
 
 [[noreturn]] void fail(const std::string& what) { throw InputError("scene: " + what); }
 
-// Marks every grid cell reachable from the cells on the stack (already
-// marked), stepping only onto cells where `open` is true.
-void flood(const HexGrid& g, const std::vector<uint8_t>& open, std::vector<uint8_t>& seen, std::vector<int64_t> stack) {
-    while (!stack.empty()) {
-        const int64_t cell = stack.back();
-        stack.pop_back();
-        const int32_t c = int32_t(cell % g.cols), r = int32_t(cell / g.cols);
-        for (int e = 0; e < kHexCorners; ++e) {
-            int32_t nc, nr;
-            hexNeighbour(c, r, e, nc, nr);
-            if (!g.contains(nc, nr)) continue;
-            const int64_t n = g.index(nc, nr);
-            if (open[size_t(n)] && !seen[size_t(n)]) {
-                seen[size_t(n)] = 1;
-                stack.push_back(n);
-            }
-        }
-    }
-}
-
 void checkLists(const Scene& s) {
     const size_t n = s.keptCount();
     if (s.row.size() != n || s.value.size() != n || s.top.size() != n || s.bottom.size() != n)
@@ -59,7 +39,10 @@ void checkLists(const Scene& s) {
 void checkScene(const Scene& s) {
     if (s.keptCount() == 0 && s.row.empty() && s.top.empty() && s.bottom.empty()) return;
     checkLists(s);
-    if (!(s.pitch_mm > 0 && std::isfinite(s.pitch_mm))) fail("pitch_mm must be a positive number");
+    // buildScene's smallest cell: 50 xy snap steps, so that snapping cannot
+    // distort a hexagon or join two of its corners.
+    if (!(s.pitch_mm >= 50 * kXYSnapMm && std::isfinite(s.pitch_mm)))
+        fail("pitch_mm must be a number of at least " + std::to_string(50 * kXYSnapMm) + " mm");
     if (!(s.z_snap_mm > 0 && std::isfinite(s.z_snap_mm))) fail("z_snap_mm must be a positive number");
     const HexGrid& g = s.grid;
     const bool flat = s.params.bottom == Bottom::Flat;
@@ -80,35 +63,36 @@ void checkScene(const Scene& s) {
         }
     }
 
-    // One piece: everything reachable from the first kept cell.
-    std::vector<uint8_t> kept(size_t(g.cellCount()), 0), seen(size_t(g.cellCount()), 0);
+    // One piece.
+    std::vector<uint8_t> kept(size_t(g.cellCount()), 0);
     for (size_t idx = 0; idx < kept.size(); ++idx) kept[idx] = s.kept_index[idx] >= 0;
-    const int64_t first = g.index(s.col[0], s.row[0]);
-    seen[size_t(first)] = 1;
-    flood(g, kept, seen, {first});
-    for (size_t k = 0; k < s.keptCount(); ++k)
-        if (!seen[size_t(g.index(s.col[k], s.row[k]))])
-            fail("the kept cells fall apart into more than one piece (" + cellName(s, k) + " is not joined to " +
-                 cellName(s, 0) + ")");
+    std::vector<int32_t> label;
+    if (labelCellComponents(g, kept, label) > 1) {
+        for (size_t k = 1; k < s.keptCount(); ++k)
+            if (label[size_t(g.index(s.col[k], s.row[k]))] != label[size_t(g.index(s.col[0], s.row[0]))])
+                fail("the kept cells fall apart into more than one piece (" + cellName(s, k) + " is not joined to " +
+                     cellName(s, 0) + ")");
+    }
 
     if (flat) {
-        // No holes: every empty cell is joined through empty cells to the
-        // outside of the grid.
-        std::vector<uint8_t> empty(kept.size()), outside(kept.size(), 0);
-        std::vector<int64_t> border;
-        for (size_t idx = 0; idx < kept.size(); ++idx) {
-            empty[idx] = !kept[idx];
-            const int32_t c = int32_t(int64_t(idx) % g.cols), r = int32_t(int64_t(idx) / g.cols);
-            if (empty[idx] && (c == 0 || r == 0 || c == g.cols - 1 || r == g.rows - 1)) {
-                outside[idx] = 1;
-                border.push_back(int64_t(idx));
+        // No holes: every piece of empty cells reaches the grid's edge (and
+        // so the outside).
+        std::vector<uint8_t> empty(kept.size());
+        for (size_t idx = 0; idx < kept.size(); ++idx) empty[idx] = !kept[idx];
+        const int32_t pieces = labelCellComponents(g, empty, label);
+        std::vector<uint8_t> reaches_edge(size_t(pieces), 0);
+        for (int32_t r = 0; r < g.rows; ++r)
+            for (int32_t c = 0; c < g.cols; ++c) {
+                const int32_t l = label[size_t(g.index(c, r))];
+                if (l >= 0 && (c == 0 || r == 0 || c == g.cols - 1 || r == g.rows - 1)) reaches_edge[size_t(l)] = 1;
             }
-        }
-        flood(g, empty, outside, std::move(border));
-        for (size_t idx = 0; idx < kept.size(); ++idx)
-            if (empty[idx] && !outside[idx])
-                fail("the kept region has a hole at grid cell (" + std::to_string(int64_t(idx) % g.cols) + ", " +
-                     std::to_string(int64_t(idx) / g.cols) + "); a flat bottom needs a region without holes");
+        for (int32_t r = 0; r < g.rows; ++r)
+            for (int32_t c = 0; c < g.cols; ++c) {
+                const int32_t l = label[size_t(g.index(c, r))];
+                if (l >= 0 && !reaches_edge[size_t(l)])
+                    fail("the kept region has a hole at grid cell (" + std::to_string(c) + ", " + std::to_string(r) +
+                         "); a flat bottom needs a region without holes");
+            }
     }
 }
 

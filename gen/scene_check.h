@@ -6,7 +6,8 @@
 // a bad Scene is a tsf::InputError, never an assertion or a broken mesh:
 //   - the cell lists (col, row, value, top, bottom) have one entry per kept
 //     cell, each inside the grid, and kept_index maps each back to it;
-//   - pitch_mm and z_snap_mm are positive and finite;
+//   - pitch_mm is finite and at least 50 xy snap steps (buildScene's smallest
+//     cell), z_snap_mm is positive and finite;
 //   - every kept cell has bottom < top;
 //   - the z intervals of two neighbouring kept cells overlap by at least one
 //     snap step (else the union is not a 2-manifold);

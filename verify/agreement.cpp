@@ -98,13 +98,6 @@ size_t usableCount(const Mesh& m) {
     return n;
 }
 
-double triangleArea(const Mesh& m, const std::array<uint32_t, 3>& t) {
-    const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-    const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-    return 0.5 * std::hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
-}
-
 // One direction of the distance: from the triangles of `from` (those flagged)
 // to the surface in `to_tree`.
 struct Direction {

@@ -42,14 +42,6 @@ std::string plural(int64_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-double triangleArea(const Mesh& m, const std::array<uint32_t, 3>& t) {
-    const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-    const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-    return 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
-}
-
 // Border edges grouped into holes: edges that share a vertex belong to one hole.
 void reportHoles(const Mesh& mesh, const MeshTopology& topo, size_t max_offenders, Check& c) {
     std::map<uint32_t, uint32_t> compact;  // vertex -> dense id

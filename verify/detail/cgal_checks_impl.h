@@ -16,6 +16,12 @@
 
 #include "verify/detail/cgal_checks.h"
 
+// On near-degenerate contacts CGAL's preconditions fail in the filtered
+// kernel and throw; solid_checks.cpp catches that and redoes the check with
+// the exact kernel. So they must stay on in the Release build too, which
+// defines NDEBUG: CMakeLists.txt defines CGAL_DEBUG everywhere.
+static_assert(CGAL_PRECONDITIONS_ENABLED, "CGAL's preconditions are off: build with CGAL_DEBUG (CMakeLists.txt)");
+
 namespace tsf::detail {
 
 inline double msSince(std::chrono::steady_clock::time_point t0) {

@@ -21,15 +21,11 @@ void surfaceFigures(const Mesh& mesh, double& area_mm2, double& max_abs_mm) {
     area_mm2 = 0;
     max_abs_mm = 0;
     for (const auto& t : mesh.triangles) {
-        const Vec3& a = mesh.positions[t[0]];
-        const Vec3& b = mesh.positions[t[1]];
-        const Vec3& c = mesh.positions[t[2]];
-        const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-        const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-        const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-        area_mm2 += 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
-        for (const Vec3* p : {&a, &b, &c})
-            max_abs_mm = std::max({max_abs_mm, std::abs(p->x), std::abs(p->y), std::abs(p->z)});
+        area_mm2 += triangleArea(mesh, t);
+        for (uint32_t v : t) {
+            const Vec3& p = mesh.positions[v];
+            max_abs_mm = std::max({max_abs_mm, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        }
     }
 }
 
