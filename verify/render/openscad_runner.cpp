@@ -40,17 +40,6 @@ bool isIdentifier(const std::string& s) {
     return std::all_of(s.begin() + 1, s.end(), [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; });
 }
 
-// OpenSCAD's --export-format names.
-const char* exportFormatArg(ScadExportFormat f) {
-    switch (f) {
-        case ScadExportFormat::ThreeMf: return "3mf";
-        case ScadExportFormat::Off: return "off";
-        case ScadExportFormat::Amf: return "amf";
-        case ScadExportFormat::Png: return "png";
-        default: return "binstl";
-    }
-}
-
 std::string firstLine(const std::string& s) { return s.substr(0, s.find('\n')); }
 
 class OpenScadEngine : public ScadEngine {
@@ -163,6 +152,8 @@ const char* toString(ScadExportFormat f) {
         default: return "stl";
     }
 }
+
+const char* exportFormatArg(ScadExportFormat f) { return f == ScadExportFormat::Stl ? "binstl" : toString(f); }
 
 ScadDefine parseScadDefine(const std::string& text) {
     const size_t eq = text.find('=');

@@ -33,6 +33,8 @@ enum class ScadExportFormat { Stl, ThreeMf, Off, Amf, Png };
 /// .png; case-insensitive). Returns false for anything else.
 bool scadFormatForPath(const std::string& path, ScadExportFormat& format);
 const char* toString(ScadExportFormat format);  ///< "stl", "3mf", "off", "amf", "png"
+/// OpenSCAD's --export-format name: as toString, but "binstl" (STL is always binary).
+const char* exportFormatArg(ScadExportFormat format);
 
 /// One -D override: OpenSCAD expression text assigned to a top-level variable.
 struct ScadDefine {

@@ -62,17 +62,6 @@ std::string launcherLine(const std::string& output) {
     return found;
 }
 
-// OpenSCAD's --export-format names (binary STL always).
-const char* exportFormatArg(ScadExportFormat f) {
-    switch (f) {
-        case ScadExportFormat::ThreeMf: return "3mf";
-        case ScadExportFormat::Off: return "off";
-        case ScadExportFormat::Amf: return "amf";
-        case ScadExportFormat::Png: return "png";
-        default: return "binstl";
-    }
-}
-
 class WasmOpenScadEngine : public ScadEngine {
 public:
     WasmOpenScadEngine(std::string node, std::string node_version, std::string launcher)
