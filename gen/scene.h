@@ -46,6 +46,7 @@ enum class Transfer {
 enum class Cull {
     None,  ///< every cell of the grid
     Hull,  ///< cells whose centre lies inside the convex hull of the non-empty cells (thesis 3.2)
+    Concave,  ///< fewer empty cells: a closing of the non-empty cells, one piece (gen/concave_hull.h)
 };
 
 /// What is under the pillars.
@@ -78,6 +79,7 @@ struct SceneParams {
     double z_snap_mm = 0.001;      ///< height grid; may be set to the printer's layer height
     // --- shape ---
     Cull cull = Cull::Hull;
+    int concave_radius = 2;        ///< Cull::Concave: closing radius in hex steps (gaps up to about 2r cells are filled)
     Bottom bottom = Bottom::Flat;
     // --- marks (gen/marks.h) ---
     MarkParams marks;
@@ -135,7 +137,9 @@ struct Scene {
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)
     int64_t cells_with_data = 0;     ///< grid cells with a finite value
     int64_t cells_nonempty = 0;      ///< grid cells whose snapped height is above the floor
-    int64_t cells_nodata_kept = 0;   ///< kept cells without data (modelled at the floor)
+    int64_t cells_nodata_kept = 0;   ///< kept cells without data (modelled as pits)
+    int64_t cells_convex = 0;        ///< Cull::Concave: cells the convex hull would keep (for the summary)
+    double volume_saved_mm3 = 0;     ///< Cull::Concave: volume of the pillars the convex hull has and this one not
     int64_t mirror_thickness_units = 0;  ///< mirrored: every pillar's top - bottom
     int64_t nodata_pit_units = 0;    ///< how far a no-data cell sits below the floor (and, mirrored, above the underside)
     std::vector<std::string> notes;  ///< decisions a person should know about (constant field, ...)

@@ -95,7 +95,7 @@ const json& getArray(const json& obj, const std::string& path, const char* key) 
 }
 
 constexpr Transfer kTransfers[] = {Transfer::Linear, Transfer::Sqrt, Transfer::Log};
-constexpr Cull kCulls[] = {Cull::None, Cull::Hull};
+constexpr Cull kCulls[] = {Cull::None, Cull::Hull, Cull::Concave};
 constexpr Bottom kBottoms[] = {Bottom::Flat, Bottom::Mirrored};
 constexpr BaselineMode kBaselines[] = {BaselineMode::Auto, BaselineMode::Zero, BaselineMode::Min, BaselineMode::Value};
 

@@ -92,9 +92,11 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--snap", p.z_snap_mm, "Height grid, mm; e.g. your layer height (0.2) so steps print as steps")
         ->check(CLI::Range(1e-6, 1.0))->capture_default_str()->group(model);
     cmd->add_option_function<std::string>(
-           "--cull", [&p](const std::string& t) { p.cull = t == "none" ? Cull::None : Cull::Hull; },
-           "Which cells to model: hull (inside the convex hull of the non-empty cells, default) | none (all)")
-        ->check(CLI::IsMember({"hull", "none"}))->group(model);
+           "--cull",
+           [&p](const std::string& t) { p.cull = t == "none" ? Cull::None : t == "concave" ? Cull::Concave : Cull::Hull; },
+           "Which cells to model: hull (inside the convex hull of the non-empty cells, default) | concave (fewer "
+           "empty cells: gaps wider than about 4 cells stay open; still one piece) | none (all)")
+        ->check(CLI::IsMember({"hull", "concave", "none"}))->group(model);
     cmd->add_flag_callback(
            "--mirror", [&p] { p.bottom = Bottom::Mirrored; },
            "Mirrored bottom: the underside shows the negated data, so cells hidden between tall neighbours "

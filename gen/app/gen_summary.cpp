@@ -40,6 +40,8 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     j["bottom"] = toString(s.params.bottom);
     if (s.params.bottom == Bottom::Mirrored) j["mirror_thickness_mm"] = s.zMm(s.mirror_thickness_units);
     j["one_pillar_per_value"] = s.one_to_one;
+    if (s.params.cull == Cull::Concave)
+        j["concave"] = {{"cells_convex_hull", s.cells_convex}, {"volume_saved_mm3", s.volume_saved_mm3}};
     j["nodata_pit_mm"] = s.zMm(s.nodata_pit_units);
     nlohmann::json marks = nlohmann::json::object();
     if (s.marks.notch)
