@@ -203,9 +203,7 @@ std::optional<Xy> notchReadPoint(const Scene& s, size_t k, const Xy& apex, const
 // Is the notch with this apex usable? Every pillar it cuts keeps at least
 // half its hexagon and a point to be read at (notchReadPoint); its apex and
 // edges keep clear of every corner and edge of the hexagons it cuts.
-bool notchIsClean(const Scene& s, const std::vector<int32_t>& near, const Xy& apex, const Xy& m1, const Xy& m2,
-                  const std::vector<int32_t>& cut) {
-    (void)near;
+bool notchIsClean(const Scene& s, const Xy& apex, const Xy& m1, const Xy& m2, const std::vector<int32_t>& cut) {
     const double clear = kMarkClearanceMm;
     for (int32_t k : cut) {
         const std::vector<Xy> hex = hexPolygon(s, size_t(k));
@@ -270,7 +268,7 @@ void placeNotch(Scene& s) {
                 Xy apex, m1, m2;
                 notchTriangle(s, o, bisector, opening, depth, apex, m1, m2);
                 const std::vector<int32_t> cut = cellsMeeting(s, near, apex, m1, m2);
-                if (cut.empty() || !notchIsClean(s, near, apex, m1, m2, cut)) continue;
+                if (cut.empty() || !notchIsClean(s, apex, m1, m2, cut)) continue;
                 best_depth = depth;
                 best_bisector = bisector;
                 best_opening = opening;
@@ -399,7 +397,6 @@ std::vector<int64_t> outline(const Scene& s, const std::vector<int32_t>& cells, 
     return loop;
 }
 
-LatticePoint latticeOfId(const HexGrid& g, int64_t id) { return latticeVertexPoint(g, id); }
 
 // Hex cells (kept indices) the triangle fits in: the cells of its region within
 // `radius_mm` of its circumcentre, provided the triangle keeps `margin_mm`
@@ -427,7 +424,7 @@ std::vector<int32_t> triangleHost(const Scene& s, const std::vector<int32_t>& la
     const std::vector<int64_t> loop = outline(s, host, in);
     if (loop.empty()) return {};
     std::vector<Xy> poly;
-    for (int64_t id : loop) poly.push_back(toMm(latticeOfId(s.grid, id), s.pitch_mm));
+    for (int64_t id : loop) poly.push_back(toMm(latticeVertexPoint(s.grid, id), s.pitch_mm));
     for (size_t n = 0; n < poly.size(); ++n) {
         const Xy& a = poly[n];
         const Xy& b = poly[(n + 1) % poly.size()];
@@ -625,7 +622,7 @@ void buildMarkFaces(Scene& s) {
         if (!(n.depth_mm > 0 && n.depth_mm <= 1000)) throw InputError("orientation notch: depth_mm must be in (0, 1000]");
         const std::vector<int32_t> near = cellsNear(s, apex, dist(apex, m1) + 2 * s.pitch_mm);
         const std::vector<int32_t> cut = cellsMeeting(s, near, apex, m1, m2);
-        if (cut.empty() || !notchIsClean(s, near, apex, m1, m2, cut))
+        if (cut.empty() || !notchIsClean(s, apex, m1, m2, cut))
             throw InputError("orientation notch: it does not fit this model's cells");
         Cdt cdt;
         for (int32_t k : cut) insertHexEdges(cdt, s, size_t(k));
@@ -672,7 +669,7 @@ void buildMarkFaces(Scene& s) {
         Cdt cdt;
         std::vector<Cdt::Vertex_handle> hv;
         for (int64_t id : loop) {
-            hv.push_back(cdt.insert(cdtPoint(toPlanar(latticeOfId(s.grid, id)))));
+            hv.push_back(cdt.insert(cdtPoint(toPlanar(latticeVertexPoint(s.grid, id)))));
             hv.back()->info().id = id;
         }
         for (size_t n = 0; n < hv.size(); ++n) cdt.insert_constraint(hv[n], hv[(n + 1) % hv.size()]);
