@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -21,6 +22,8 @@
 #include "gen/io/load_field.h"
 #include "gen/scene.h"
 #include "haptics/coverage.h"
+#include "haptics/falcon/falcon_device.h"
+#include "haptics/falcon/libusb_transport.h"
 #include "haptics/feel_renderer.h"
 #include "haptics/field_mapping.h"
 #include "haptics/force_log.h"
@@ -42,6 +45,7 @@ using namespace tsf::haptics;
 struct FeelOptions {
     GenOptions gen;  ///< input and model options, as tsf gen takes them
     std::string device = "sim";
+    std::string firmware;
     std::string trajectory = "sweep";
     double duration_s = 0.0;
     double rate_Hz = 1000.0;
@@ -138,6 +142,45 @@ FieldFacts fieldFacts(const HexField& field) {
     return f;
 }
 
+/// What the Falcon's link did: firmware, packets, the achieved rate.
+nlohmann::json falconJson(const FalconDevice& d, const LoopStats& loop) {
+    const FalconLinkStats& s = d.stats();
+    return {{"firmware", s.firmware_was_running ? "already running" : "loaded"},
+            {"firmware_bytes", s.firmware.bytes},
+            {"firmware_attempts", s.firmware.attempts},
+            {"packets_sent", s.packets_sent},
+            {"frames_received", s.frames_received},
+            {"frames_per_s", loop.elapsed_s > 0.0 ? double(s.frames_received) / loop.elapsed_s : 0.0},
+            {"ticks_without_frame", s.ticks_without_frame},
+            {"longest_silence_ticks", s.max_silent_ticks},
+            {"resends", s.resends},
+            {"bytes_discarded", s.bytes_discarded},
+            {"usb_errors", s.usb_errors},
+            {"solver_fallbacks", s.solver_fallbacks},
+            {"limited_commands", s.limited_commands},
+            {"refused_forces", s.refused_forces},
+            {"homed_ticks", s.ticks_homed}};
+}
+
+std::string falconText(const FalconDevice& d, const LoopStats& loop) {
+    const FalconLinkStats& s = d.stats();
+    char b[512];
+    std::snprintf(b, sizeof b,
+                  "  falcon    firmware %s; %llu packets, %llu frames (%.0f per s), %llu ticks without a frame "
+                  "(longest %llu), %llu resent, %llu solver fallbacks, %llu commands at the motor limit; "
+                  "homed for %llu ticks\n",
+                  s.firmware_was_running ? "already running"
+                                         : ("loaded (" + std::to_string(s.firmware.bytes) + " bytes, " +
+                                            std::to_string(s.firmware.attempts) + " attempt" +
+                                            (s.firmware.attempts == 1 ? ")" : "s)")).c_str(),
+                  (unsigned long long)s.packets_sent, (unsigned long long)s.frames_received,
+                  loop.elapsed_s > 0.0 ? double(s.frames_received) / loop.elapsed_s : 0.0,
+                  (unsigned long long)s.ticks_without_frame, (unsigned long long)s.max_silent_ticks,
+                  (unsigned long long)s.resends, (unsigned long long)s.solver_fallbacks,
+                  (unsigned long long)s.limited_commands, (unsigned long long)s.ticks_homed);
+    return b;
+}
+
 ForceParams forceParams(const FeelOptions& o) {
     ForceParams p;
     p.stiffness_N_per_m = o.stiffness_N_per_m;
@@ -168,18 +211,19 @@ void runFeel(const FeelOptions& o) {
     if (!(o.spin_us >= 0.0 && o.spin_us <= 1000.0)) throw InputError("--spin-us must be 0 to 1000");
     if (o.realtime && o.no_realtime) throw InputError("--realtime and --no-realtime contradict each other");
 
-    // The device first: a device that cannot work should say so before any
-    // field is read.
+    // Every input is checked before a device is opened: a Falcon must be
+    // served without pause once it is open (its link drops when packets stop).
     const std::string& spec = o.device;
-    if (spec == "falcon")
-        deviceFailed("the Novint Falcon driver is not yet supported in this version of tsf; "
-                     "use --device sim to try a field, or --device replay:FILE to replay a recording");
     const bool is_sim = spec == "sim";
     const bool is_replay = spec.rfind("replay:", 0) == 0;
-    if (!is_sim && !is_replay)
+    const bool is_falcon = spec == "falcon";
+    if (!is_sim && !is_replay && !is_falcon)
         throw InputError("--device must be sim, replay:FILE or falcon (got '" + spec + "')");
     if (is_replay && spec.size() == 7) throw InputError("--device replay: needs a file name, as in replay:session.csv");
+    if (!o.firmware.empty() && !is_falcon) throw InputError("--firmware is for --device falcon");
     const SimTrajectory trajectory = parseSimTrajectory(o.trajectory);
+    FalconOptions falcon_options;
+    if (is_falcon && !o.firmware.empty()) falcon_options.firmware = readFalconFirmware(o.firmware);
 
     // The relief tsf gen would print from the same input and options.
     const HexField field = loadField(o.gen);
@@ -190,8 +234,13 @@ void runFeel(const FeelOptions& o) {
     const FieldMapping mapping = mapFieldToWorkspace(grid.cols, grid.rows, limits.workspace);
 
     std::unique_ptr<HapticDevice> device;
+    FalconDevice* falcon = nullptr;
     double script_s = 0.0;
-    if (is_sim) {
+    if (is_falcon) {
+        auto f = std::make_unique<FalconDevice>(openFalconUsb, std::move(falcon_options));
+        falcon = f.get();
+        device = std::move(f);
+    } else if (is_sim) {
         SimScript script = makeSimScript(trajectory, mapping, o.press_N, reliefRowLines(scene, relief, mapping));
         script_s = script.duration_s();
         device = std::make_unique<SimDevice>(std::move(script), limits);
@@ -237,7 +286,15 @@ void runFeel(const FeelOptions& o) {
     const auto t_wall = std::chrono::steady_clock::now();
     {
         SigintGuard sigint;
-        DeviceSession session(*device);
+        std::optional<DeviceSession> session;
+        try {
+            session.emplace(*device);
+        } catch (const DeviceError& e) {
+            deviceFailed(e.what());
+        }
+        if (falcon && !falcon->homed())
+            std::fprintf(stderr, "tsf: home the Falcon: pull the grip all the way out toward you, then push it back "
+                                 "in; forces start when its light turns from red to green (Ctrl-C ends)\n");
         runHapticLoopThread(*device, renderer, clock, lo, g_stop, &log, stats, realtime, &priority);
     }
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall).count();
@@ -265,6 +322,7 @@ void runFeel(const FeelOptions& o) {
                        {"samples_per_cell", relief.samples_per_pitch},
                        {"exact_at_cell_centres", relief.exact_at_centres}};
         j["device"] = device->name();
+        if (falcon) j["falcon"] = falconJson(*falcon, stats);
         j["mapping_m"] = {{"cell", pitch_m},
                           {"sample", mapping.cell_m},
                           {"width", mapping.cell_m * grid.cols},
@@ -323,6 +381,7 @@ void runFeel(const FeelOptions& o) {
             std::printf("  timing    lateness p50 %.0f us, p99 %.0f us, max %.0f us; compute p99 %.0f us; overruns %llu\n",
                         stats.lateness.quantile_us(0.5), stats.lateness.quantile_us(0.99), stats.lateness.max_us(),
                         stats.compute.quantile_us(0.99), (unsigned long long)stats.overruns);
+        if (falcon) std::printf("%s", falconText(*falcon, stats).c_str());
         std::printf("  forces    max %.2f N (limit %.2f N), contact %.0f%% of ticks, at the limit %.1f%% (%llu), "
                     "observer damping %llu, rejected %llu\n",
                     c.max_force_N, o.max_force_N, contact_pct, clamped_pct, (unsigned long long)c.clamped_ticks,
@@ -337,7 +396,10 @@ void runFeel(const FeelOptions& o) {
         if (!o.plot.empty()) std::printf("  plot      %s\n", o.plot.c_str());
     }
     std::fflush(stdout);
-    if (stats.end == LoopEnd::kDeviceFailed) deviceFailed("the device stopped answering during the session");
+    if (stats.end == LoopEnd::kDeviceFailed) {
+        const std::string why = device->failureReason();
+        deviceFailed(why.empty() ? "the device stopped answering during the session" : why);
+    }
     if (stats.end == LoopEnd::kInterrupted) throw CLI::RuntimeError(kExitInterrupted);
 }
 
@@ -350,12 +412,16 @@ void addFeelCommand(CLI::App& app) {
         "Examples:\n"
         "  tsf feel field.csv --device sim --trajectory sweep --log forces.csv --plot forces.png\n"
         "  tsf feel field.csv --device replay:forces.csv --log again.csv\n"
+        "  tsf feel examples/volcano.csv --device falcon --firmware nvent_firmware.bin\n"
         "The input and model options are tsf gen's: the relief felt is the relief gen prints.\n"
         "Device frame: x right, y up, z toward the user, metres; north of the field is away from the user.\n"
         "Buttons: centre = volume mode on/off, plus = coarser level, minus = finer level.\n"
         "Ctrl-C ramps the force to zero and ends the session (exit code 130). See docs/haptics.md.");
     addGenOptions(cmd, o->gen);
     cmd->add_option("--device", o->device, "sim | replay:FILE | falcon")->capture_default_str();
+    cmd->add_option("--firmware", o->firmware,
+                    "Falcon firmware file (nvent_firmware.bin from Novint's SDK), loaded when the Falcon has none "
+                    "running (after every power-up)");
     cmd->add_option("--trajectory", o->trajectory, "Simulated hand: sweep | taps | finger")
         ->check(CLI::IsMember({"sweep", "taps", "finger"}))->capture_default_str();
     cmd->add_option("--duration", o->duration_s, "Seconds to run (0 = until the script or recording ends, or Ctrl-C)")

@@ -122,7 +122,7 @@ void FakeFalcon::stepGrip(const Vec3& force_N) {
     for (int k = 0; k < 10; ++k) {
         const double dt = kPacketPeriod_s / 10;
         Vec3 f = force_N + kHand * (target - p_) - kDamping * v_;
-        f.y -= cfg_.press_N;
+        f.y += (cfg_.hand_y_N_per_m - kHand) * (target.y - p_.y) - cfg_.press_N;
         v_ += f * (dt / kMass);
         p_ += v_ * dt;
     }
@@ -130,6 +130,8 @@ void FakeFalcon::stepGrip(const Vec3& force_N) {
 
 void FakeFalcon::onCommand(const FalconCommand& c) {
     commands_.push_back(c);
+    if (!homed_ && (c.motor[0] || c.motor[1] || c.motor[2])) ++nonzero_unhomed_;
+    if (homed_) lowest_y_ = std::min(lowest_y_, p_.y);
     if (c.status & kFalconHoming) ++homing_seen_;
     if (cfg_.homing_packets >= 0 && homing_seen_ >= cfg_.homing_packets) homed_ = true;
     // The motors push with the commanded torques at the current pose.

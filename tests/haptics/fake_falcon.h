@@ -52,6 +52,7 @@ struct FakeFalconConfig {
     std::function<uint8_t(double t_s)> buttons;
     bool finger = false;             ///< simulate a finger (mass 0.15 kg, hand 300 N/m, 4 N s/m) pushed by the motors
     double press_N = 0.0;            ///< finger: constant downward push of the hand
+    double hand_y_N_per_m = 300.0;   ///< finger: the hand spring's vertical stiffness (soft = a resting hand)
 };
 
 struct ControlRecord {
@@ -84,6 +85,10 @@ public:
     size_t firmwareBytesEchoed() const { return uploaded_; }
     int handshakes() const { return handshakes_; }
     bool homed() const { return homed_; }
+    /// Commands with a nonzero motor value received while not homed.
+    long nonzeroBeforeHomed() const { return nonzero_unhomed_; }
+    /// Lowest y the grip reached after homing.
+    double lowestHomedY() const { return lowest_y_; }
     double time() const { return t_s_; }
     Vec3 gripPosition() const { return p_; }
     uint16_t baudDivisor() const { return divisor_; }
@@ -127,6 +132,8 @@ private:
     long homing_seen_ = 0;
     bool homed_ = false;
     long replies_ = 0;
+    long nonzero_unhomed_ = 0;
+    double lowest_y_ = 1e9;
     double t_s_ = 0.0;
     Vec3 p_{0.0}, v_{0.0};
 };

@@ -118,12 +118,6 @@ TEST(FeelCli, ALogReplaysThroughTheSameFieldWithTheSameForces) {
     EXPECT_LT(worst, 1e-3);
 }
 
-TEST(FeelCli, FalconIsNotSupportedYetAndSaysSo) {
-    const tsf::test::RunResult r = tsf::test::runTsf("feel " + hillField() + " --device falcon");
-    EXPECT_EQ(r.exit_code, 4);
-    EXPECT_NE(r.output.find("not yet supported"), std::string::npos) << r.output;
-}
-
 TEST(FeelCli, FeelsTheReliefGenPrintsFromTheSameOptions) {
     // The value -> height rule comes from the same options as tsf gen's,
     // resolved the same way (tsf info shows what gen would print).
