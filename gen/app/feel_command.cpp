@@ -142,6 +142,11 @@ FieldFacts fieldFacts(const HexField& field) {
     return f;
 }
 
+/// Frames the Falcon answered per second of the loop: the achieved rate.
+double framesPerSecond(const FalconDevice& d, const LoopStats& loop) {
+    return loop.elapsed_s > 0.0 ? double(d.stats().frames_received) / loop.elapsed_s : 0.0;
+}
+
 /// What the Falcon's link did: firmware, packets, the achieved rate.
 nlohmann::json falconJson(const FalconDevice& d, const LoopStats& loop) {
     const FalconLinkStats& s = d.stats();
@@ -150,7 +155,7 @@ nlohmann::json falconJson(const FalconDevice& d, const LoopStats& loop) {
             {"firmware_attempts", s.firmware.attempts},
             {"packets_sent", s.packets_sent},
             {"frames_received", s.frames_received},
-            {"frames_per_s", loop.elapsed_s > 0.0 ? double(s.frames_received) / loop.elapsed_s : 0.0},
+            {"frames_per_s", framesPerSecond(d, loop)},
             {"ticks_without_frame", s.ticks_without_frame},
             {"longest_silence_ticks", s.max_silent_ticks},
             {"resends", s.resends},
@@ -174,7 +179,7 @@ std::string falconText(const FalconDevice& d, const LoopStats& loop) {
                                             std::to_string(s.firmware.attempts) + " attempt" +
                                             (s.firmware.attempts == 1 ? ")" : "s)")).c_str(),
                   (unsigned long long)s.packets_sent, (unsigned long long)s.frames_received,
-                  loop.elapsed_s > 0.0 ? double(s.frames_received) / loop.elapsed_s : 0.0,
+                  framesPerSecond(d, loop),
                   (unsigned long long)s.ticks_without_frame, (unsigned long long)s.max_silent_ticks,
                   (unsigned long long)s.resends, (unsigned long long)s.solver_fallbacks,
                   (unsigned long long)s.limited_commands, (unsigned long long)s.ticks_homed);

@@ -38,20 +38,37 @@ struct Leg {
     double dg_dtheta = 0.0;
 };
 
+/// The probe seen from leg i: its frame's axes (cos, sin of phi), the
+/// in-plane coordinates u, w, the parallelogram's out-of-plane ratio
+/// q = (v + f) / b and its in-plane reach d + e + b sqrt(1 - q^2).
+struct LegView {
+    double cp = 0.0, sp = 0.0, u = 0.0, w = 0.0, q = 0.0, root = 0.0, reach = 0.0;
+};
+
+/// False when the leg cannot reach p (the parallelogram would have to be
+/// longer than b out of its plane).
+bool viewFromLeg(int i, const Vec3& p_mech, LegView& l) noexcept {
+    l.cp = std::cos(kPhi[size_t(i)]);
+    l.sp = std::sin(kPhi[size_t(i)]);
+    l.u = l.cp * p_mech.x + l.sp * p_mech.y - kR;
+    const double v = -l.sp * p_mech.x + l.cp * p_mech.y - kS;
+    l.w = p_mech.z;
+    l.q = (v + kF) / kB;
+    if (!(std::abs(l.q) < 1.0 - kReachMargin)) return false;
+    l.root = std::sqrt(1.0 - l.q * l.q);
+    l.reach = kD + kE + kB * l.root;
+    return true;
+}
+
 bool evalLeg(int i, const Vec3& p_mech, double theta, Leg& out) noexcept {
-    const double cp = std::cos(kPhi[size_t(i)]), sp = std::sin(kPhi[size_t(i)]);
-    const double u = cp * p_mech.x + sp * p_mech.y - kR;
-    const double v = -sp * p_mech.x + cp * p_mech.y - kS;
-    const double w = p_mech.z;
-    const double q = (v + kF) / kB;
-    if (!(std::abs(q) < 1.0 - kReachMargin)) return false;
-    const double root = std::sqrt(1.0 - q * q);
-    const double U = u + kC - kA * std::cos(theta), W = w - kA * std::sin(theta);
+    LegView l;
+    if (!viewFromLeg(i, p_mech, l)) return false;
+    const double U = l.u + kC - kA * std::cos(theta), W = l.w - kA * std::sin(theta);
     const double rho = std::hypot(U, W);
     if (!(rho > 0.0)) return false;
-    out.g = rho - (kD + kE + kB * root);
-    const double dg_du = U / rho, dg_dv = q / root, dg_dw = W / rho;
-    out.dg_dp = Vec3(dg_du * cp - dg_dv * sp, dg_du * sp + dg_dv * cp, dg_dw);
+    out.g = rho - l.reach;
+    const double dg_du = U / rho, dg_dv = l.q / l.root, dg_dw = W / rho;
+    out.dg_dp = Vec3(dg_du * l.cp - dg_dv * l.sp, dg_du * l.sp + dg_dv * l.cp, dg_dw);
     out.dg_dtheta = kA * (U * std::sin(theta) - W * std::cos(theta)) / rho;
     return std::isfinite(out.g) && std::isfinite(out.dg_dtheta);
 }
@@ -77,21 +94,16 @@ bool inverseMechanism(const Vec3& p, FalconAngles& out) noexcept {
     if (!finite(p)) return false;
     FalconAngles th;
     for (int i = 0; i < 3; ++i) {
-        const double cp = std::cos(kPhi[size_t(i)]), sp = std::sin(kPhi[size_t(i)]);
-        const double u = cp * p.x + sp * p.y - kR;
-        const double v = -sp * p.x + cp * p.y - kS;
-        const double w = p.z;
-        const double q = (v + kF) / kB;
-        if (!(std::abs(q) < 1.0 - kReachMargin)) return false;
-        const double reach = kD + kE + kB * std::sqrt(1.0 - q * q);
+        LegView l;
+        if (!viewFromLeg(i, p, l)) return false;
         // |(U0 - a cos t, w - a sin t)| = reach  <=>  R cos(t - alpha) = M.
-        const double U0 = u + kC;
-        const double R = std::hypot(U0, w);
-        const double M = (U0 * U0 + w * w + kA * kA - reach * reach) / (2.0 * kA);
+        const double U0 = l.u + kC;
+        const double R = std::hypot(U0, l.w);
+        const double M = (U0 * U0 + l.w * l.w + kA * kA - l.reach * l.reach) / (2.0 * kA);
         if (!(R > 0.0) || !(std::abs(M) <= R)) return false;
         // The Falcon's configuration is the smaller of the two angles
         // (libnifalcon's "-" root of the same equation).
-        th[size_t(i)] = std::atan2(w, U0) - std::acos(M / R);
+        th[size_t(i)] = std::atan2(l.w, U0) - std::acos(M / R);
     }
     out = th;
     return true;

@@ -28,53 +28,51 @@ bool getNumber(std::span<const uint8_t, kFalconPacketBytes> f, size_t first, int
     return true;
 }
 
-bool framed(std::span<const uint8_t, kFalconPacketBytes> f) noexcept {
-    return f[0] == kStart && f[kFalconPacketBytes - 1] == kEnd;
-}
-
-}  // namespace
-
-FalconPacket encodeFalconCommand(const FalconCommand& c) noexcept {
+/// A frame of three numbers and a status value (already without 'A').
+FalconPacket frame(const std::array<int16_t, 3>& numbers, uint8_t status) noexcept {
     FalconPacket p{};
     p[0] = kStart;
-    for (size_t m = 0; m < 3; ++m) putNumber(p, 1 + 4 * m, c.motor[m]);
-    p[kStatusByte] = uint8_t(kZero + (c.status & 0x0F));
+    for (size_t m = 0; m < 3; ++m) putNumber(p, 1 + 4 * m, numbers[m]);
+    p[kStatusByte] = uint8_t(kZero + status);
     p[kSpareByte] = kZero;
     p[kFalconPacketBytes - 1] = kEnd;
     return p;
 }
 
-bool decodeFalconReport(std::span<const uint8_t, kFalconPacketBytes> f, FalconReport& out) noexcept {
-    if (!framed(f)) return false;
-    FalconReport r;
+/// The numbers and status value of a frame; false when the delimiters are
+/// missing, a number's byte is no nibble or the status is above max_status.
+bool unframe(std::span<const uint8_t, kFalconPacketBytes> f, std::array<int16_t, 3>& numbers, uint8_t& status,
+             uint8_t max_status) noexcept {
+    if (f[0] != kStart || f[kFalconPacketBytes - 1] != kEnd) return false;
     for (size_t m = 0; m < 3; ++m)
-        if (!getNumber(f, 1 + 4 * m, r.encoder[m])) return false;
+        if (!getNumber(f, 1 + 4 * m, numbers[m])) return false;
     const uint8_t s = f[kStatusByte];
-    if (s < kZero || s > kZero + 0x7F) return false;
-    r.buttons = uint8_t((s - kZero) & 0x0F);
-    r.homed_mask = uint8_t(((s - kZero) >> 4) & 0x07);
+    if (s < kZero || s > kZero + max_status) return false;
+    status = uint8_t(s - kZero);
+    return true;
+}
+
+}  // namespace
+
+FalconPacket encodeFalconCommand(const FalconCommand& c) noexcept { return frame(c.motor, c.status & 0x0F); }
+
+bool decodeFalconReport(std::span<const uint8_t, kFalconPacketBytes> f, FalconReport& out) noexcept {
+    FalconReport r;
+    uint8_t status = 0;
+    if (!unframe(f, r.encoder, status, 0x7F)) return false;
+    r.buttons = uint8_t(status & 0x0F);
+    r.homed_mask = uint8_t((status >> 4) & 0x07);
     out = r;
     return true;
 }
 
 FalconPacket encodeFalconReport(const FalconReport& r) noexcept {
-    FalconPacket p{};
-    p[0] = kStart;
-    for (size_t m = 0; m < 3; ++m) putNumber(p, 1 + 4 * m, r.encoder[m]);
-    p[kStatusByte] = uint8_t(kZero + ((r.buttons & 0x0F) | ((r.homed_mask & 0x07) << 4)));
-    p[kSpareByte] = kZero;
-    p[kFalconPacketBytes - 1] = kEnd;
-    return p;
+    return frame(r.encoder, uint8_t((r.buttons & 0x0F) | ((r.homed_mask & 0x07) << 4)));
 }
 
 bool decodeFalconCommand(std::span<const uint8_t, kFalconPacketBytes> f, FalconCommand& out) noexcept {
-    if (!framed(f)) return false;
     FalconCommand c;
-    for (size_t m = 0; m < 3; ++m)
-        if (!getNumber(f, 1 + 4 * m, c.motor[m])) return false;
-    const uint8_t s = f[kStatusByte];
-    if (s < kZero || s > kZero + 0x0F) return false;
-    c.status = uint8_t(s - kZero);
+    if (!unframe(f, c.motor, c.status, 0x0F)) return false;
     out = c;
     return true;
 }

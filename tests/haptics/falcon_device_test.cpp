@@ -34,6 +34,22 @@ FalconOptions options(bool with_firmware = true) {
     return o;
 }
 
+/// A Falcon whose firmware runs, homed after `homing_packets` packets
+/// (-1: never).
+FakeFalconConfig running(int homing_packets = 0) {
+    FakeFalconConfig c;
+    c.firmware_running = true;
+    c.homing_packets = homing_packets;
+    return c;
+}
+
+/// A fake Falcon and the driver, opened on it.
+struct Rig {
+    FakeFalcon fake;
+    FalconDevice dev;
+    explicit Rig(const FakeFalconConfig& config) : fake(config), dev(openerFor(fake), options(false)) { dev.open(); }
+};
+
 /// A slow circle in the middle of the workspace (device frame).
 Vec3 circle(double t) { return {0.015 * std::cos(t), -0.005, 0.015 * std::sin(t)}; }
 
@@ -110,22 +126,18 @@ TEST(FalconDevice, OpenWithoutFirmwareSaysWhatToDo) {
 }
 
 TEST(FalconDevice, TracksThePoseAndAppliesTheForceAfterHoming) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 400;
+    FakeFalconConfig cfg = running(400);
     cfg.pose = circle;
-    FakeFalcon fake(cfg);
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
+    Rig rig(cfg);
     Session s;
     s.handler.anchor = Vec3(0.0, 0.01, 0.0);
-    run(dev, s, 3.0);
+    run(rig.dev, s, 3.0);
     EXPECT_EQ(s.stats.end, LoopEnd::kDuration);
     ASSERT_FALSE(s.handler.seen.empty());
     // The handler was only asked once the device was homed...
     for (const DeviceState& st : s.handler.seen) EXPECT_TRUE(st.homed);
     // ...and until then every motor command was zero.
-    const auto& cmds = fake.commands();
+    const auto& cmds = rig.fake.commands();
     size_t first_force = cmds.size();
     for (size_t k = 0; k < cmds.size(); ++k)
         if (!zero(cmds[k])) {
@@ -144,53 +156,44 @@ TEST(FalconDevice, TracksThePoseAndAppliesTheForceAfterHoming) {
     // The motors pushed with the force the handler asked for: tick k sent
     // command base + k, and the loop's final zero write came last.
     const size_t ticks = s.stats.ticks, asked = s.handler.asked.size();
-    ASSERT_EQ(fake.commands().size(), fake.forces().size());
-    const size_t base = fake.commands().size() - 1 - ticks;
+    ASSERT_EQ(rig.fake.commands().size(), rig.fake.forces().size());
+    const size_t base = rig.fake.commands().size() - 1 - ticks;
     double worst_force = 0.0;
     for (size_t j = 0; j < asked; ++j)
-        worst_force = std::max(worst_force, glm::length(fake.forces()[base + ticks - asked + j] - s.handler.asked[j]));
+        worst_force = std::max(worst_force, glm::length(rig.fake.forces()[base + ticks - asked + j] - s.handler.asked[j]));
     EXPECT_LT(worst_force, 0.05);  // whole motor units and encoder counts
-    EXPECT_EQ(dev.stats().resends, 0u);
-    EXPECT_EQ(dev.stats().solver_fallbacks, 0u);
+    EXPECT_EQ(rig.dev.stats().resends, 0u);
+    EXPECT_EQ(rig.dev.stats().solver_fallbacks, 0u);
     // Zero force at the end: the loop's last write.
-    EXPECT_TRUE(zero(fake.commands().back()));
+    EXPECT_TRUE(zero(rig.fake.commands().back()));
     EXPECT_TRUE(s.stats.zero_force_sent);
 }
 
 TEST(FalconDevice, RefusesForceBeforeHoming) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = -1;  // the user never homes it
-    FakeFalcon fake(cfg);
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
+    Rig rig(running(-1));  // the user never homes it
     DeviceState st;
-    ASSERT_EQ(dev.read(0.0, st), ReadStatus::kOk);
+    ASSERT_EQ(rig.dev.read(0.0, st), ReadStatus::kOk);
     EXPECT_FALSE(st.homed);
-    EXPECT_FALSE(dev.writeForce(Vec3(0.0, 3.0, 0.0)));
-    EXPECT_TRUE(zero(fake.commands().back()));
-    EXPECT_TRUE(fake.commands().back().status & kFalconHoming);
-    EXPECT_TRUE(fake.commands().back().status & kFalconLedRed);
-    EXPECT_EQ(dev.stats().refused_forces, 1u);
-    ASSERT_EQ(dev.read(0.001, st), ReadStatus::kOk);
-    EXPECT_TRUE(dev.writeForce(Vec3(0.0)));  // zero is always fine
+    EXPECT_FALSE(rig.dev.writeForce(Vec3(0.0, 3.0, 0.0)));
+    EXPECT_TRUE(zero(rig.fake.commands().back()));
+    EXPECT_TRUE(rig.fake.commands().back().status & kFalconHoming);
+    EXPECT_TRUE(rig.fake.commands().back().status & kFalconLedRed);
+    EXPECT_EQ(rig.dev.stats().refused_forces, 1u);
+    ASSERT_EQ(rig.dev.read(0.001, st), ReadStatus::kOk);
+    EXPECT_TRUE(rig.dev.writeForce(Vec3(0.0)));  // zero is always fine
 }
 
 TEST(FalconDevice, ResynchronisesThroughGarbageSplitFramesAndLostReplies) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 10;
+    FakeFalconConfig cfg = running(10);
     cfg.pose = circle;
     cfg.garbage_every = 7;
     cfg.split_every = 5;
     cfg.drop_reply_every = 97;
-    FakeFalcon fake(cfg);
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
+    Rig rig(cfg);
     Session s;
-    run(dev, s, 2.0);
+    run(rig.dev, s, 2.0);
     EXPECT_EQ(s.stats.end, LoopEnd::kDuration);
-    const FalconLinkStats& ls = dev.stats();
+    const FalconLinkStats& ls = rig.dev.stats();
     EXPECT_GT(ls.bytes_discarded, 100u);  // the garbage went
     EXPECT_GT(ls.resends, 5u);            // lost replies were given up on and resent
     EXPECT_GT(ls.frames_received, 1500u);
@@ -200,59 +203,43 @@ TEST(FalconDevice, ResynchronisesThroughGarbageSplitFramesAndLostReplies) {
 }
 
 TEST(FalconDevice, KeepsOnePacketInFlight) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 0;
-    FakeFalcon fake(cfg);
-    fake.reply_delay_reads = 2;  // a reply is there two reads (ticks) after its command
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
+    Rig rig(running());
+    rig.fake.reply_delay_reads = 2;  // a reply is there two reads (ticks) after its command
     Session s;
-    run(dev, s, 1.0);
+    run(rig.dev, s, 1.0);
     EXPECT_EQ(s.stats.end, LoopEnd::kDuration);
     // One packet per two ticks: nothing is sent while one is unanswered.
-    EXPECT_NEAR(double(dev.stats().packets_sent) / double(s.stats.ticks), 0.5, 0.02);
-    EXPECT_EQ(dev.stats().resends, 0u);
-    EXPECT_NEAR(double(dev.stats().ticks_without_frame) / double(s.stats.ticks), 0.5, 0.02);
+    EXPECT_NEAR(double(rig.dev.stats().packets_sent) / double(s.stats.ticks), 0.5, 0.02);
+    EXPECT_EQ(rig.dev.stats().resends, 0u);
+    EXPECT_NEAR(double(rig.dev.stats().ticks_without_frame) / double(s.stats.ticks), 0.5, 0.02);
 }
 
 TEST(FalconDevice, UnplugMidSessionEndsTheLoopAsFailed) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 0;
+    FakeFalconConfig cfg = running();
     cfg.pose = circle;
     cfg.unplug_after_packets = 800;
-    FakeFalcon fake(cfg);
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
+    Rig rig(cfg);
     Session s;
-    run(dev, s, 5.0);
+    run(rig.dev, s, 5.0);
     EXPECT_EQ(s.stats.end, LoopEnd::kDeviceFailed);
-    EXPECT_NE(dev.failureReason().find("unplugged"), std::string::npos) << dev.failureReason();
+    EXPECT_NE(rig.dev.failureReason().find("unplugged"), std::string::npos) << rig.dev.failureReason();
     EXPECT_LT(s.stats.ticks, 900u);
-    dev.close();  // must not throw or hang on a vanished device
+    rig.dev.close();  // must not throw or hang on a vanished device
 }
 
 TEST(FalconDevice, SilentDeviceFails) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 0;
-    FakeFalcon fake(cfg);
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
-    fake.stopAnswering();  // the firmware hangs
+    Rig rig(running());
+    rig.fake.stopAnswering();  // the firmware hangs
     Session s;
-    run(dev, s, 5.0);
+    run(rig.dev, s, 5.0);
     EXPECT_EQ(s.stats.end, LoopEnd::kDeviceFailed);
-    EXPECT_NE(dev.failureReason().find("stopped answering"), std::string::npos) << dev.failureReason();
+    EXPECT_NE(rig.dev.failureReason().find("stopped answering"), std::string::npos) << rig.dev.failureReason();
     EXPECT_NEAR(double(s.stats.ticks), 250.0, 2.0);
-    EXPECT_EQ(dev.stats().max_silent_ticks, 250u);
+    EXPECT_EQ(rig.dev.stats().max_silent_ticks, 250u);
 }
 
 TEST(FalconDevice, StopRequestAndDestructionLeaveZeroForce) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 0;
+    FakeFalconConfig cfg = running();
     cfg.pose = circle;
     FakeFalcon fake(cfg);
     {
@@ -274,53 +261,38 @@ TEST(FalconDevice, StopRequestAndDestructionLeaveZeroForce) {
 }
 
 TEST(FalconDevice, NonFiniteForceSendsZero) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 0;
-    FakeFalcon fake(cfg);
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
+    Rig rig(running());
     DeviceState st;
-    ASSERT_EQ(dev.read(0.0, st), ReadStatus::kOk);
+    ASSERT_EQ(rig.dev.read(0.0, st), ReadStatus::kOk);
     ASSERT_TRUE(st.homed);
-    EXPECT_FALSE(dev.writeForce(Vec3(NAN, 1.0, 0.0)));
-    EXPECT_TRUE(zero(fake.commands().back()));
+    EXPECT_FALSE(rig.dev.writeForce(Vec3(NAN, 1.0, 0.0)));
+    EXPECT_TRUE(zero(rig.fake.commands().back()));
 }
 
 TEST(FalconDevice, ClampsTheForceToTheDeviceLimit) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 0;
-    FakeFalcon fake(cfg);
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
+    Rig rig(running());
     DeviceState st;
-    ASSERT_EQ(dev.read(0.0, st), ReadStatus::kOk);
-    ASSERT_TRUE(dev.writeForce(Vec3(0.0, 50.0, 0.0)));
-    ASSERT_EQ(dev.read(0.001, st), ReadStatus::kOk);
-    ASSERT_TRUE(dev.writeForce(Vec3(0.0)));
-    const Vec3 felt = fake.forces()[fake.forces().size() - 2];
-    EXPECT_NEAR(felt.y, dev.limits().max_force_N, 0.05);
+    ASSERT_EQ(rig.dev.read(0.0, st), ReadStatus::kOk);
+    ASSERT_TRUE(rig.dev.writeForce(Vec3(0.0, 50.0, 0.0)));
+    ASSERT_EQ(rig.dev.read(0.001, st), ReadStatus::kOk);
+    ASSERT_TRUE(rig.dev.writeForce(Vec3(0.0)));
+    const Vec3 felt = rig.fake.forces()[rig.fake.forces().size() - 2];
+    EXPECT_NEAR(felt.y, rig.dev.limits().max_force_N, 0.05);
     EXPECT_NEAR(std::hypot(felt.x, felt.z), 0.0, 0.05);
 }
 
 TEST(FalconDevice, LedsShowHomingContactAndVolume) {
-    FakeFalconConfig cfg;
-    cfg.firmware_running = true;
-    cfg.homing_packets = 20;
-    FakeFalcon fake(cfg);
-    FalconDevice dev(openerFor(fake), options(false));
-    dev.open();
+    Rig rig(running(20));
     DeviceState st;
     auto tick = [&](bool contact, bool volume) {
-        dev.read(0.0, st);
-        dev.showStatus(contact, volume);
-        dev.writeForce(Vec3(0.0));
-        return uint8_t(fake.commands().back().status & ~kFalconHoming);
+        rig.dev.read(0.0, st);
+        rig.dev.showStatus(contact, volume);
+        rig.dev.writeForce(Vec3(0.0));
+        return uint8_t(rig.fake.commands().back().status & ~kFalconHoming);
     };
     EXPECT_EQ(tick(false, false), kFalconLedRed);
     for (int k = 0; k < 30; ++k) tick(false, false);
-    ASSERT_TRUE(dev.homed());
+    ASSERT_TRUE(rig.dev.homed());
     EXPECT_EQ(tick(false, false), kFalconLedGreen);
     EXPECT_EQ(tick(true, false), kFalconLedBlue);
     EXPECT_EQ(tick(true, true), kFalconLedGreen | kFalconLedBlue);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -58,32 +59,22 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 
 }  // namespace
 
-TEST(FeelFalconCli, NoFalconSaysWhatToDo) {
-    const auto r = runWithFakeFalcon("TSF_FAKE_FALCON=absent", "feel " + volcano() + " --device falcon");
-    EXPECT_EQ(r.exit_code, tsf::test::kExitDeviceFailed) << r.output;
-    EXPECT_TRUE(has(r.output, "no Novint Falcon found")) << r.output;
-    EXPECT_TRUE(has(r.output, "lsusb -d 0403:cb48")) << r.output;
-    EXPECT_TRUE(has(r.output, "power supply")) << r.output;
-}
-
-TEST(FeelFalconCli, PermissionDeniedPointsAtTheUdevRule) {
-    const auto r = runWithFakeFalcon("TSF_FAKE_FALCON=access", "feel " + volcano() + " --device falcon");
-    EXPECT_EQ(r.exit_code, tsf::test::kExitDeviceFailed) << r.output;
-    EXPECT_TRUE(has(r.output, "permission denied")) << r.output;
-    EXPECT_TRUE(has(r.output, "70-novint-falcon.rules")) << r.output;
-    EXPECT_TRUE(has(r.output, "udevadm control --reload-rules")) << r.output;
-}
-
-TEST(FeelFalconCli, BusyDeviceSaysAnotherProgramHasIt) {
-    const auto r = runWithFakeFalcon("TSF_FAKE_FALCON=busy", "feel " + volcano() + " --device falcon");
-    EXPECT_EQ(r.exit_code, tsf::test::kExitDeviceFailed) << r.output;
-    EXPECT_TRUE(has(r.output, "in use by another program")) << r.output;
-}
-
-TEST(FeelFalconCli, MissingFirmwareAsksForIt) {
-    const auto r = runWithFakeFalcon("", "feel " + volcano() + " --device falcon");
-    EXPECT_EQ(r.exit_code, tsf::test::kExitDeviceFailed) << r.output;
-    EXPECT_TRUE(has(r.output, "--firmware FILE")) << r.output;
+TEST(FeelFalconCli, EveryDeviceProblemSaysWhatToDo) {
+    struct Case {
+        const char* env;
+        std::vector<const char*> says;
+    };
+    const Case cases[] = {
+        {"TSF_FAKE_FALCON=absent", {"no Novint Falcon found", "lsusb -d 0403:cb48", "power supply"}},
+        {"TSF_FAKE_FALCON=access", {"permission denied", "70-novint-falcon.rules", "udevadm control --reload-rules"}},
+        {"TSF_FAKE_FALCON=busy", {"in use by another program"}},
+        {"", {"no firmware running", "--firmware FILE"}},  // powered up, no file given
+    };
+    for (const Case& c : cases) {
+        const auto r = runWithFakeFalcon(c.env, "feel " + volcano() + " --device falcon");
+        EXPECT_EQ(r.exit_code, tsf::test::kExitDeviceFailed) << c.env << "\n" << r.output;
+        for (const char* part : c.says) EXPECT_TRUE(has(r.output, part)) << c.env << ": " << part << "\n" << r.output;
+    }
 }
 
 TEST(FeelFalconCli, BadFirmwareFileIsBadInputAndTheDeviceIsNotTouched) {
