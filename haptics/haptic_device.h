@@ -1,6 +1,6 @@
 // HapticDevice: the small interface every force-feedback device implements -
 // the simulated finger (sim_device.h), a recorded session (replay_device.h),
-// and later the Novint Falcon over libusb.
+// and the Novint Falcon over libusb (falcon/falcon_device.h).
 //
 // Frame and units: positions in metres and forces in newtons in the device
 // frame of frames.h (x right, y up, z toward the user, origin at the
@@ -83,6 +83,12 @@ public:
     /// Commands a force, held until the next call. False when the device did
     /// not accept it.
     virtual bool writeForce(const Vec3& force_N) noexcept = 0;
+    /// What the rendering is doing, for a device that can show it (the
+    /// Falcon's LEDs); called by the loop after each tick's force. Default:
+    /// nothing.
+    virtual void showStatus(bool in_contact, bool volume_mode) noexcept {}
+    /// Why read() returned kFailed, for a person ("" when unknown).
+    virtual std::string failureReason() const { return {}; }
 };
 
 }  // namespace tsf::haptics

@@ -9,6 +9,8 @@
 #include <cstring>
 #include <thread>
 
+#include "haptics/force_model.h"
+
 namespace tsf::haptics {
 namespace {
 
@@ -58,6 +60,7 @@ void runHapticLoop(HapticDevice& device, TickHandler& handler, LoopClock& clock,
     double stop_t = 0.0;
     int failed_in_row = 0;
     double last_t = 0.0;
+    double homed_t = -1.0;  // loop time of the first homed tick (< 0: not homed)
     DeviceState state;
     LogRecord record;
     for (;;) {
@@ -90,7 +93,13 @@ void runHapticLoop(HapticDevice& device, TickHandler& handler, LoopClock& clock,
             }
             if (stopping) stop_t = t;
         }
-        double gain = options.start_ramp_s > 0.0 ? smoothstep01(t / options.start_ramp_s) : 1.0;
+        // The start ramp runs from the first homed tick: a device that homes
+        // late (the Falcon, after the user has moved the grip) still gets
+        // its forces faded in, and losing the homing restarts it.
+        if (!state.homed) homed_t = -1.0;
+        else if (homed_t < 0.0) homed_t = t;
+        const double since_homed = homed_t < 0.0 ? 0.0 : t - homed_t;
+        double gain = options.start_ramp_s > 0.0 ? smoothstep01(since_homed / options.start_ramp_s) : 1.0;
         if (stopping) {
             const double left = options.stop_ramp_s > 0.0 ? 1.0 - (t - stop_t) / options.stop_ramp_s : 0.0;
             if (left <= 0.0) break;
@@ -103,6 +112,7 @@ void runHapticLoop(HapticDevice& device, TickHandler& handler, LoopClock& clock,
         record.buttons = state.buttons;
         if (state.homed) force = handler.tick(state, gain, record);
         record.force_N = force;
+        device.showStatus((record.flags & kFlagContact) != 0, record.volume);
         if (device.writeForce(force)) {
             failed_in_row = 0;
         } else {

@@ -11,14 +11,17 @@
 // go to memory reserved before the loop.
 //
 // Force safety:
-//   - the output gain ramps from 0 to 1 over start_ramp_s (smoothstep) so a
-//     probe resting inside the surface at start is not kicked;
+//   - the output gain ramps from 0 to 1 over start_ramp_s (smoothstep) from
+//     the first tick the device is homed, so a probe resting inside the
+//     surface at start (or when homing completes) is not kicked;
 //   - on a stop request (Ctrl-C sets the flag), at duration_s, or when the
 //     handler asks, the gain ramps to 0 over stop_ramp_s and then the loop
 //     ends;
 //   - on EVERY exit (ramp finished, device ended or failed, a device that
 //     refuses forces) the loop writes zero force before returning;
 //   - the device not homed: zero force (the handler is not even asked).
+// After each tick the device is told whether the probe touches and whether
+// volume mode is on (HapticDevice::showStatus; the Falcon lights its LEDs).
 #pragma once
 
 #include <atomic>

@@ -91,11 +91,12 @@ HeightGrid gaussianBlur(const HeightGrid& grid, double t_cells2, double truncati
 
 double gaussianLevelVariance(int level) { return level <= 0 ? 0.0 : std::pow(4.0, level); }
 
-ScaleSpace buildScaleSpace(const HeightGrid& base, int levels, ScaleSpaceKind kind) {
+ScaleSpace buildScaleSpace(const HeightGrid& base, int levels, ScaleSpaceKind kind, double samples_per_cell) {
     ScaleSpace space;
     space.kind = kind;
     if (base.empty()) return space;
     levels = std::clamp(levels, 1, kMaxScaleLevels);
+    if (!(samples_per_cell >= 1.0)) samples_per_cell = 1.0;
     space.levels.reserve(size_t(levels));
     space.levels.push_back({base, 1.0, 0.0});
     for (int n = 1; n < levels; ++n) {
@@ -104,8 +105,14 @@ ScaleSpace buildScaleSpace(const HeightGrid& base, int levels, ScaleSpaceKind ki
         if (kind == ScaleSpaceKind::kMipmap) {
             next.grid = mipmapDown(prev.grid);
             next.base_cells_per_texel = 2.0 * prev.base_cells_per_texel;
+            // Halve on until a texel spans 2^n data cells.
+            while (next.base_cells_per_texel < std::ldexp(samples_per_cell, n) - 1e-9 &&
+                   (next.grid.cols > 1 || next.grid.rows > 1)) {
+                next.grid = mipmapDown(next.grid);
+                next.base_cells_per_texel *= 2.0;
+            }
         } else {
-            next.t_cells2 = gaussianLevelVariance(n);
+            next.t_cells2 = gaussianLevelVariance(n) * samples_per_cell * samples_per_cell;
             next.grid = gaussianBlur(prev.grid, next.t_cells2 - prev.t_cells2);
         }
         space.levels.push_back(std::move(next));

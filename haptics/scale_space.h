@@ -42,7 +42,7 @@ inline constexpr double kGaussianTruncationSigmas = 4.0;
 struct ScaleLevel {
     HeightGrid grid;
     double base_cells_per_texel = 1.0;  ///< 2^n for mipmap level n, 1 for Gaussian levels
-    double t_cells2 = 0.0;              ///< Gaussian variance in base cells^2 (0 for mipmaps)
+    double t_cells2 = 0.0;              ///< Gaussian variance in base samples^2 (0 for mipmaps)
 };
 
 struct ScaleSpace {
@@ -74,7 +74,14 @@ double gaussianLevelVariance(int level);
 
 /// Builds `levels` levels (clamped to [1, kMaxScaleLevels]) of the given kind.
 /// An empty base gives an empty ScaleSpace.
-ScaleSpace buildScaleSpace(const HeightGrid& base, int levels, ScaleSpaceKind kind);
+///
+/// samples_per_cell: base samples per data cell along each axis (1 for a
+/// raster sampled cell by cell; printed_relief.h samples each hexagon more
+/// finely). Levels are scaled in data cells, so level n smooths over about
+/// 2^n data cells whatever the sampling: Gaussian level n has variance
+/// 4^n data cells^2 (4^n samples_per_cell^2 samples^2), and mipmap level n
+/// is the first halving whose texel spans at least 2^n data cells.
+ScaleSpace buildScaleSpace(const HeightGrid& base, int levels, ScaleSpaceKind kind, double samples_per_cell = 1.0);
 
 /// Height and gradient of one level at base coordinates (gi, gj); the
 /// gradient is per BASE cell. level is clamped to the valid range.

@@ -15,8 +15,13 @@ namespace {
 /// Speeds and timings of the standard scripts: slow enough to feel, like a
 /// careful explorer (thesis 6.2: participants moved at a few cm/s).
 constexpr double kSweepSpeed_m_per_s = 0.03;
-constexpr int kSweepLines = 6;
 constexpr int kTapsPerSide = 4;
+/// At the end of each sweep line the hand eases its press to this fraction
+/// over kSweepDwell_s, so the finger, held back by static friction, catches
+/// up; it presses again kSweepEase_s into the next line.
+constexpr double kSweepEasedPress = 0.2;
+constexpr double kSweepDwell_s = 0.1;
+constexpr double kSweepEase_s = 0.05;
 constexpr double kLiftClearance_m = 0.005;
 /// Every script starts with the finger held still above the surface for this
 /// long: the loop ramps the force in over its first second (haptic_loop.h),
@@ -34,7 +39,7 @@ SimTrajectory parseSimTrajectory(const std::string& name) {
     throw InputError("--trajectory must be sweep, taps or finger (got '" + name + "')");
 }
 
-SimScript makeSimScript(SimTrajectory kind, const FieldMapping& m, double press_N) {
+SimScript makeSimScript(SimTrajectory kind, const FieldMapping& m, double press_N, std::vector<SweepLine> sweep_lines) {
     SimScript s;
     const double margin = 0.05 * std::min(m.eastX() - m.west_x_m, m.south_z_m - m.northZ());
     const double x0 = m.west_x_m + margin, x1 = m.eastX() - margin;
@@ -52,22 +57,42 @@ SimScript makeSimScript(SimTrajectory kind, const FieldMapping& m, double press_
     switch (kind) {
     case SimTrajectory::kSweep: {
         s.name = "sweep";
-        key(t, x0, z0, press_N, 1.0);
+        const double light_N = kSweepEasedPress * press_N;
+        if (sweep_lines.empty()) {
+            // Edge to edge, a hair inside the border so the finger stays over the field.
+            const double inset = 0.25 * kSweepLineSpacing_m;
+            const double depth = m.south_z_m - m.northZ();
+            const int lines = std::max(1, int(std::ceil(depth / kSweepLineSpacing_m)));
+            for (int k = 0; k < lines; ++k)
+                sweep_lines.push_back({m.northZ() + depth * (k + 0.5) / lines, m.west_x_m + inset, m.eastX() - inset});
+        }
+        std::sort(sweep_lines.begin(), sweep_lines.end(),
+                  [](const SweepLine& a, const SweepLine& b) { return a.z_m < b.z_m; });  // north first
+        key(t, sweep_lines.front().x_west_m, sweep_lines.front().z_m, press_N, 1.0);
         lift_y = near_y;
         t += 0.5;
-        key(t, x0, z0, press_N, 0.0);
-        for (int line = 0; line < kSweepLines; ++line) {
-            const double z = lerp(z0, z1, double(line) / (kSweepLines - 1));
+        for (size_t line = 0; line < sweep_lines.size(); ++line) {
+            const SweepLine& l = sweep_lines[line];
             const bool east = line % 2 == 0;
-            if (line > 0) {
-                t += std::abs(z1 - z0) / (kSweepLines - 1) / kSweepSpeed_m_per_s;
-                key(t, east ? x0 : x1, z, press_N, 0.0);
+            const double from = east ? l.x_west_m : l.x_east_m, to = east ? l.x_east_m : l.x_west_m;
+            if (line == 0) {
+                key(t, from, l.z_m, press_N, 0.0);  // put the finger down
+                t += 0.5;                           // and let it settle
             } else {
-                t += 0.5;  // settle onto the surface
-                key(t, x0, z, press_N, 0.0);
+                const SimKeyframe& prev = s.keys.back();
+                t += std::max(kSweepEase_s, std::hypot(from - prev.x_m, l.z_m - prev.z_m) / kSweepSpeed_m_per_s);
+                key(t, from, l.z_m, light_N, 0.0);
+                t += kSweepEase_s;
             }
-            t += (x1 - x0) / kSweepSpeed_m_per_s;
-            key(t, east ? x1 : x0, z, press_N, 0.0);
+            key(t, from, l.z_m, press_N, 0.0);
+            t += std::max(0.01, std::abs(to - from) / kSweepSpeed_m_per_s);
+            key(t, to, l.z_m, press_N, 0.0);
+            // Static friction holds the finger until the hand spring pulls
+            // harder than mu_s * press (1.5 mm behind at the defaults): at
+            // each line's end the hand eases its press so the finger slides
+            // the rest of the way, and moves to the next line so.
+            t += kSweepDwell_s;
+            key(t, to, l.z_m, light_N, 0.0);
         }
         const SimKeyframe last = s.keys.back();
         t += 0.5;
@@ -139,6 +164,15 @@ SimDevice::SimDevice(SimScript script, DeviceLimits limits, FingerParams finger)
     p_ = script_.start_m;
 }
 
+Vec3 SimDevice::travelAt(double t) noexcept {
+    const auto& keys = script_.keys;
+    if (t <= keys.front().t_s || t >= keys.back().t_s) return Vec3(0.0);
+    targetAt(t);  // moves key_cursor_ to the segment holding t
+    const SimKeyframe& a = keys[key_cursor_];
+    const SimKeyframe& b = keys[key_cursor_ + 1];
+    return Vec3(b.x_m - a.x_m, 0.0, b.z_m - a.z_m) / (b.t_s - a.t_s);
+}
+
 SimKeyframe SimDevice::targetAt(double t) noexcept {
     const auto& keys = script_.keys;
     if (t <= keys.front().t_s) return keys.front();
@@ -160,13 +194,23 @@ SimKeyframe SimDevice::targetAt(double t) noexcept {
 }
 
 void SimDevice::step(double dt) noexcept {
-    const SimKeyframe k = targetAt(t_);
+    const SimKeyframe k = targetAt(script_t_);
     const FingerParams& f = finger_;
     Vec3 hand(0.0);
-    hand.x = f.hand_stiffness_N_per_m * (k.x_m - p_.x) - f.hand_damping_Ns_per_m * v_.x;
-    hand.z = f.hand_stiffness_N_per_m * (k.z_m - p_.z) - f.hand_damping_Ns_per_m * v_.z;
+    // The hand waits for a finger that falls behind (held at a step, say)
+    // instead of dragging it: its script runs slower while the finger lags.
+    const double lead = std::hypot(k.x_m - p_.x, k.z_m - p_.z);
+    const double pace = k.lift < 1.0 && lead > f.max_lead_m ? f.waiting_pace : 1.0;
+    const Vec3 travel = pace * travelAt(script_t_);  // the hand's own velocity (x, z)
+    hand.x = f.hand_stiffness_N_per_m * (k.x_m - p_.x) + f.hand_damping_Ns_per_m * (travel.x - v_.x);
+    hand.z = f.hand_stiffness_N_per_m * (k.z_m - p_.z) + f.hand_damping_Ns_per_m * (travel.z - v_.z);
     hand.y = -(1.0 - k.lift) * k.press_N + k.lift * f.hand_stiffness_N_per_m * (k.lift_y_m - p_.y) -
              f.hand_damping_Ns_per_m * v_.y;
+    // Lift when the surface pushes back against the hand's travel.
+    const double speed = glm::length(travel);
+    const double resisting = speed > 0.0 ? -glm::dot(force_, travel) / speed : 0.0;
+    hand.y += (1.0 - k.lift) * std::min(k.press_N + f.lift_excess_N,
+                                        f.lift_gain * std::max(0.0, resisting - f.lift_threshold_N));
     Vec3 stop(0.0);
     const WorkspaceBox& box = limits_.workspace;
     for (int a = 0; a < 3; ++a) {
@@ -181,17 +225,19 @@ void SimDevice::step(double dt) noexcept {
     max_work_J_ = std::max(max_work_J_, work_J_);
     p_ += dp;
     t_ += dt;
+    script_t_ += pace * dt;
 }
 
 ReadStatus SimDevice::read(double loop_time_s, DeviceState& out) noexcept {
-    if (loop_time_s > script_.duration_s()) return ReadStatus::kEnded;
-    // Sub-steps until the loop time; a remainder below a nanosecond is not
-    // worth a step (and could be below the resolution of t_).
+    // Sub-steps until the loop time (or the script's end); a remainder below
+    // a nanosecond is not worth a step (and could be below the resolution of t_).
     constexpr double kTimeResolution_s = 1e-9;
-    while (loop_time_s - t_ > kTimeResolution_s) step(std::min(kSimSubstep_s, loop_time_s - t_));
+    while (loop_time_s - t_ > kTimeResolution_s && script_t_ <= script_.duration_s())
+        step(std::min(kSimSubstep_s, loop_time_s - t_));
+    if (script_t_ > script_.duration_s()) return ReadStatus::kEnded;
     out.t_s = t_;
     out.position_m = p_;
-    out.buttons = targetAt(t_).buttons;
+    out.buttons = targetAt(script_t_).buttons;
     out.homed = true;
     return ReadStatus::kOk;
 }

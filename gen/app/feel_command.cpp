@@ -1,6 +1,7 @@
 // tsf feel: render a field on a force-feedback device (or a simulated one)
 // at 1 kHz, then report what happened: loop timing, forces, an optional CSV
-// log and a picture of the path.
+// log and a picture of the path. It reads the same inputs and model options
+// as tsf gen and feels the relief gen prints (haptics/printed_relief.h).
 #include <signal.h>
 
 #include <atomic>
@@ -9,14 +10,20 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "gen/app/commands.h"
+#include "gen/app/gen_options.h"
 #include "gen/error.h"
-#include "gen/io/raster_reader.h"
+#include "gen/io/load_field.h"
+#include "gen/scene.h"
+#include "haptics/coverage.h"
+#include "haptics/falcon/falcon_device.h"
+#include "haptics/falcon/libusb_transport.h"
 #include "haptics/feel_renderer.h"
 #include "haptics/field_mapping.h"
 #include "haptics/force_log.h"
@@ -25,6 +32,7 @@
 #include "haptics/haptic_loop.h"
 #include "haptics/height_grid.h"
 #include "haptics/loop_clock.h"
+#include "haptics/printed_relief.h"
 #include "haptics/replay_device.h"
 #include "haptics/scale_space.h"
 #include "haptics/sim_device.h"
@@ -35,8 +43,9 @@ namespace {
 using namespace tsf::haptics;
 
 struct FeelOptions {
-    std::string field;
+    GenOptions gen;  ///< input and model options, as tsf gen takes them
     std::string device = "sim";
+    std::string firmware;
     std::string trajectory = "sweep";
     double duration_s = 0.0;
     double rate_Hz = 1000.0;
@@ -67,6 +76,9 @@ struct FeelOptions {
 /// Longest log kept in memory when the run has no known end (a device
 /// served until Ctrl-C): ten minutes at the loop rate.
 constexpr double kMaxLogSeconds = 600.0;
+/// Room in the log for a simulated session this many times its script's
+/// length (the hand slows down while it waits for the finger, sim_device.h).
+constexpr double kSimLogScriptFactor = 2.0;
 
 std::atomic<bool> g_stop{false};
 static_assert(std::atomic<bool>::is_always_lock_free, "the SIGINT flag must be lock-free");
@@ -100,7 +112,7 @@ class DeviceSession {
 public:
     explicit DeviceSession(HapticDevice& d) : device_(d) { device_.open(); }
     ~DeviceSession() {
-        device_.writeForce(Vec3(0.0));
+        device_.writeForce(haptics::Vec3(0.0));
         device_.close();
     }
     DeviceSession(const DeviceSession&) = delete;
@@ -113,6 +125,65 @@ private:
 [[noreturn]] void deviceFailed(const std::string& message) {
     std::fprintf(stderr, "tsf: error: %s\n", message.c_str());
     throw CLI::RuntimeError(kExitDeviceFailed);
+}
+
+struct FieldFacts {
+    double min = 0.0, max = 0.0;  ///< finite values
+    int64_t nodata = 0;
+};
+
+FieldFacts fieldFacts(const HexField& field) {
+    FieldFacts f{INFINITY, -INFINITY, 0};
+    for (double v : field.values) {
+        if (!std::isfinite(v)) ++f.nodata;
+        else f.min = std::min(f.min, v), f.max = std::max(f.max, v);
+    }
+    if (f.min > f.max) f.min = f.max = NAN;
+    return f;
+}
+
+/// Frames the Falcon answered per second of the loop: the achieved rate.
+double framesPerSecond(const FalconDevice& d, const LoopStats& loop) {
+    return loop.elapsed_s > 0.0 ? double(d.stats().frames_received) / loop.elapsed_s : 0.0;
+}
+
+/// What the Falcon's link did: firmware, packets, the achieved rate.
+nlohmann::json falconJson(const FalconDevice& d, const LoopStats& loop) {
+    const FalconLinkStats& s = d.stats();
+    return {{"firmware", s.firmware_was_running ? "already running" : "loaded"},
+            {"firmware_bytes", s.firmware.bytes},
+            {"firmware_attempts", s.firmware.attempts},
+            {"packets_sent", s.packets_sent},
+            {"frames_received", s.frames_received},
+            {"frames_per_s", framesPerSecond(d, loop)},
+            {"ticks_without_frame", s.ticks_without_frame},
+            {"longest_silence_ticks", s.max_silent_ticks},
+            {"resends", s.resends},
+            {"bytes_discarded", s.bytes_discarded},
+            {"usb_errors", s.usb_errors},
+            {"solver_fallbacks", s.solver_fallbacks},
+            {"limited_commands", s.limited_commands},
+            {"refused_forces", s.refused_forces},
+            {"homed_ticks", s.ticks_homed}};
+}
+
+std::string falconText(const FalconDevice& d, const LoopStats& loop) {
+    const FalconLinkStats& s = d.stats();
+    char b[512];
+    std::snprintf(b, sizeof b,
+                  "  falcon    firmware %s; %llu packets, %llu frames (%.0f per s), %llu ticks without a frame "
+                  "(longest %llu), %llu resent, %llu solver fallbacks, %llu commands at the motor limit; "
+                  "homed for %llu ticks\n",
+                  s.firmware_was_running ? "already running"
+                                         : ("loaded (" + std::to_string(s.firmware.bytes) + " bytes, " +
+                                            std::to_string(s.firmware.attempts) + " attempt" +
+                                            (s.firmware.attempts == 1 ? ")" : "s)")).c_str(),
+                  (unsigned long long)s.packets_sent, (unsigned long long)s.frames_received,
+                  framesPerSecond(d, loop),
+                  (unsigned long long)s.ticks_without_frame, (unsigned long long)s.max_silent_ticks,
+                  (unsigned long long)s.resends, (unsigned long long)s.solver_fallbacks,
+                  (unsigned long long)s.limited_commands, (unsigned long long)s.ticks_homed);
+    return b;
 }
 
 ForceParams forceParams(const FeelOptions& o) {
@@ -145,29 +216,37 @@ void runFeel(const FeelOptions& o) {
     if (!(o.spin_us >= 0.0 && o.spin_us <= 1000.0)) throw InputError("--spin-us must be 0 to 1000");
     if (o.realtime && o.no_realtime) throw InputError("--realtime and --no-realtime contradict each other");
 
-    // The device first: a device that cannot work should say so before any
-    // field is read.
+    // Every input is checked before a device is opened: a Falcon must be
+    // served without pause once it is open (its link drops when packets stop).
     const std::string& spec = o.device;
-    if (spec == "falcon")
-        deviceFailed("the Novint Falcon driver is not yet supported in this version of tsf; "
-                     "use --device sim to try a field, or --device replay:FILE to replay a recording");
     const bool is_sim = spec == "sim";
     const bool is_replay = spec.rfind("replay:", 0) == 0;
-    if (!is_sim && !is_replay)
+    const bool is_falcon = spec == "falcon";
+    if (!is_sim && !is_replay && !is_falcon)
         throw InputError("--device must be sim, replay:FILE or falcon (got '" + spec + "')");
     if (is_replay && spec.size() == 7) throw InputError("--device replay: needs a file name, as in replay:session.csv");
+    if (!o.firmware.empty() && !is_falcon) throw InputError("--firmware is for --device falcon");
     const SimTrajectory trajectory = parseSimTrajectory(o.trajectory);
+    FalconOptions falcon_options;
+    if (is_falcon && !o.firmware.empty()) falcon_options.firmware = readFalconFirmware(o.firmware);
 
-    HeightGridInfo info;
-    const Raster raster = readRaster(o.field);
-    const HeightGrid grid = heightGridFromRaster(raster, &info);
-    const DeviceLimits limits;  // both sim and replay stand in for a Falcon
+    // The relief tsf gen would print from the same input and options.
+    const HexField field = loadField(o.gen);
+    const Scene scene = buildScene(field, o.gen.scene);
+    ReliefInfo relief;
+    const HeightGrid grid = printedRelief(scene, &relief);
+    const DeviceLimits limits;  // the Falcon's (sim and replay stand in for one)
     const FieldMapping mapping = mapFieldToWorkspace(grid.cols, grid.rows, limits.workspace);
 
     std::unique_ptr<HapticDevice> device;
+    FalconDevice* falcon = nullptr;
     double script_s = 0.0;
-    if (is_sim) {
-        SimScript script = makeSimScript(trajectory, mapping, o.press_N);
+    if (is_falcon) {
+        auto f = std::make_unique<FalconDevice>(openFalconUsb, std::move(falcon_options));
+        falcon = f.get();
+        device = std::move(f);
+    } else if (is_sim) {
+        SimScript script = makeSimScript(trajectory, mapping, o.press_N, reliefRowLines(scene, relief, mapping));
         script_s = script.duration_s();
         device = std::make_unique<SimDevice>(std::move(script), limits);
     } else {
@@ -181,8 +260,9 @@ void runFeel(const FeelOptions& o) {
         throw InputError("--levels must be 1 to " + std::to_string(kMaxScaleLevels));
     if (!(o.lod >= 0 && o.lod < o.levels)) throw InputError("--lod must be between 0 and --levels - 1");
     const auto t_build = std::chrono::steady_clock::now();
-    const ScaleSpace space = buildScaleSpace(
-        grid, o.levels, o.scale_space == "mipmap" ? ScaleSpaceKind::kMipmap : ScaleSpaceKind::kGaussian);
+    const ScaleSpace space =
+        buildScaleSpace(grid, o.levels, o.scale_space == "mipmap" ? ScaleSpaceKind::kMipmap : ScaleSpaceKind::kGaussian,
+                        relief.samples_per_pitch);
     const double build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_build).count();
     const ForceModel model = makeForceModel(space, mapping, forceParams(o), limits, o.rate_Hz);
 
@@ -200,16 +280,26 @@ void runFeel(const FeelOptions& o) {
     lo.rate_Hz = o.rate_Hz;
     lo.duration_s = o.duration_s;
     lo.start_ramp_s = o.start_ramp_s;
-    double expected_s = o.duration_s > 0.0 ? o.duration_s : script_s;
+    // A simulated hand that waits for its finger runs longer than its script.
+    double expected_s = o.duration_s > 0.0 ? o.duration_s : (is_sim ? kSimLogScriptFactor : 1.0) * script_s;
     if (!(expected_s > 0.0)) expected_s = kMaxLogSeconds;
-    ForceLog log(size_t(std::min(expected_s, kMaxLogSeconds) * o.rate_Hz) + 16);
+    // Room for the stop ramp and a second's slack too.
+    ForceLog log(size_t((std::min(expected_s, kMaxLogSeconds) + lo.stop_ramp_s + 1.0) * o.rate_Hz));
 
     LoopStats stats;
     std::string priority;
     const auto t_wall = std::chrono::steady_clock::now();
     {
         SigintGuard sigint;
-        DeviceSession session(*device);
+        std::optional<DeviceSession> session;
+        try {
+            session.emplace(*device);
+        } catch (const DeviceError& e) {
+            deviceFailed(e.what());
+        }
+        if (falcon && !falcon->homed())
+            std::fprintf(stderr, "tsf: home the Falcon: pull the grip all the way out toward you, then push it back "
+                                 "in; forces start when its light turns from red to green (Ctrl-C ends)\n");
         runHapticLoopThread(*device, renderer, clock, lo, g_stop, &log, stats, realtime, &priority);
     }
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall).count();
@@ -219,12 +309,27 @@ void runFeel(const FeelOptions& o) {
 
     const RendererCounters& c = renderer.counters();
     const double contact_pct = c.ticks ? 100.0 * double(c.contact_ticks) / double(c.ticks) : 0.0;
+    const double clamped_pct = c.ticks ? 100.0 * double(c.clamped_ticks) / double(c.ticks) : 0.0;
+    const Coverage coverage = touchedCells(scene, relief, mapping, log);
+    const FieldFacts facts = fieldFacts(field);
+    const ValueMapping& vm = scene.mapping;
+    const double pitch_m = mapping.cell_m * relief.samples_per_pitch;  // one hexagon's width on the device
     if (o.json) {
         nlohmann::json j;
-        j["field"] = {{"file", o.field},       {"cols", grid.cols},           {"rows", grid.rows},
-                      {"min", info.min_value}, {"max", info.max_value},       {"nodata_cells", info.nodata_cells}};
+        j["field"] = {{"file", o.gen.input},     {"how", field.how},          {"cols", field.grid.cols},
+                      {"rows", field.grid.rows}, {"min", facts.min},          {"max", facts.max},
+                      {"nodata_cells", facts.nodata}, {"kept_cells", scene.keptCount()}};
+        j["relief"] = {{"transfer", toString(vm.transfer)},
+                       {"baseline", vm.baseline},
+                       {"value_max", vm.value_max},
+                       {"printed_height_mm", vm.max_height_mm},
+                       {"felt_height_m", mapping.relief_m},
+                       {"samples_per_cell", relief.samples_per_pitch},
+                       {"exact_at_cell_centres", relief.exact_at_centres}};
         j["device"] = device->name();
-        j["mapping_m"] = {{"cell", mapping.cell_m},
+        if (falcon) j["falcon"] = falconJson(*falcon, stats);
+        j["mapping_m"] = {{"cell", pitch_m},
+                          {"sample", mapping.cell_m},
                           {"width", mapping.cell_m * grid.cols},
                           {"depth", mapping.cell_m * grid.rows},
                           {"relief", mapping.relief_m},
@@ -253,22 +358,25 @@ void runFeel(const FeelOptions& o) {
                        {"limit_N", o.max_force_N},
                        {"contact_ticks", c.contact_ticks},
                        {"clamped_ticks", c.clamped_ticks},
+                       {"clamped_share", c.ticks ? double(c.clamped_ticks) / double(c.ticks) : 0.0},
                        {"damping_ticks", c.damping_ticks},
                        {"rejected_ticks", c.rejected_ticks},
                        {"mode_switches", c.mode_switches},
                        {"max_penetration_m", c.max_penetration_m}};
+        j["coverage"] = {{"cells", coverage.cells}, {"touched", coverage.touched}, {"fraction", coverage.fraction()}};
         j["log"] = {{"file", o.log}, {"records", log.size()}, {"dropped", log.dropped()}};
         j["plot"] = o.plot;
         std::cout << j.dump(2) << "\n";
     } else {
-        std::printf("tsf feel: %s (%d x %d cells, values %g..%g%s) on %s\n", o.field.c_str(), grid.cols, grid.rows,
-                    info.min_value, info.max_value,
-                    info.nodata_cells ? (", " + std::to_string(info.nodata_cells) + " no-data cells as floor").c_str()
-                                      : "",
+        std::printf("tsf feel: %s (%d x %d cells, values %g..%g%s) on %s\n", o.gen.input.c_str(), field.grid.cols,
+                    field.grid.rows, facts.min, facts.max,
+                    facts.nodata ? (", " + std::to_string(facts.nodata) + " no-data cells as floor").c_str() : "",
                     device->name().c_str());
-        std::printf("  mapping   %s x %s footprint, cell %s, relief %s, volume slab %s\n",
-                    mm(mapping.cell_m * grid.cols).c_str(), mm(mapping.cell_m * grid.rows).c_str(),
-                    mm(mapping.cell_m).c_str(), mm(mapping.relief_m).c_str(),
+        std::printf("  relief    as printed: %s from %g (floor) to %g (top: %.1f mm printed, %s felt), %zu cells\n",
+                    toString(vm.transfer), vm.baseline, vm.value_max, vm.max_height_mm, mm(mapping.relief_m).c_str(),
+                    scene.keptCount());
+        std::printf("  mapping   %s x %s footprint, cell %s, volume slab %s\n", mm(mapping.cell_m * grid.cols).c_str(),
+                    mm(mapping.cell_m * grid.rows).c_str(), mm(pitch_m).c_str(),
                     mm(mapping.volume_top_y_m - mapping.volume_bottom_y_m).c_str());
         std::printf("  levels    %d %s levels built in %.1f ms\n", space.count(), o.scale_space.c_str(), build_s * 1e3);
         std::printf("  loop      %llu ticks in %.2f s (%.1f Hz, target %.0f Hz), %s, %s\n",
@@ -278,10 +386,13 @@ void runFeel(const FeelOptions& o) {
             std::printf("  timing    lateness p50 %.0f us, p99 %.0f us, max %.0f us; compute p99 %.0f us; overruns %llu\n",
                         stats.lateness.quantile_us(0.5), stats.lateness.quantile_us(0.99), stats.lateness.max_us(),
                         stats.compute.quantile_us(0.99), (unsigned long long)stats.overruns);
-        std::printf("  forces    max %.2f N (limit %.2f N), contact %.0f%% of ticks, clamped %llu, observer damping %llu, "
-                    "rejected %llu\n",
-                    c.max_force_N, o.max_force_N, contact_pct, (unsigned long long)c.clamped_ticks,
+        if (falcon) std::printf("%s", falconText(*falcon, stats).c_str());
+        std::printf("  forces    max %.2f N (limit %.2f N), contact %.0f%% of ticks, at the limit %.1f%% (%llu), "
+                    "observer damping %llu, rejected %llu\n",
+                    c.max_force_N, o.max_force_N, contact_pct, clamped_pct, (unsigned long long)c.clamped_ticks,
                     (unsigned long long)c.damping_ticks, (unsigned long long)c.rejected_ticks);
+        std::printf("  coverage  touched %lld of %lld cells (%.1f%%)%s\n", (long long)coverage.touched,
+                    (long long)coverage.cells, 100.0 * coverage.fraction(), log.dropped() ? ", log full: undercounted" : "");
         std::printf("  ended     %s; zero force %s\n", loopEndName(stats.end),
                     stats.zero_force_sent ? "sent" : "NOT confirmed by the device");
         if (!o.log.empty())
@@ -290,7 +401,10 @@ void runFeel(const FeelOptions& o) {
         if (!o.plot.empty()) std::printf("  plot      %s\n", o.plot.c_str());
     }
     std::fflush(stdout);
-    if (stats.end == LoopEnd::kDeviceFailed) deviceFailed("the device stopped answering during the session");
+    if (stats.end == LoopEnd::kDeviceFailed) {
+        const std::string why = device->failureReason();
+        deviceFailed(why.empty() ? "the device stopped answering during the session" : why);
+    }
     if (stats.end == LoopEnd::kInterrupted) throw CLI::RuntimeError(kExitInterrupted);
 }
 
@@ -303,11 +417,16 @@ void addFeelCommand(CLI::App& app) {
         "Examples:\n"
         "  tsf feel field.csv --device sim --trajectory sweep --log forces.csv --plot forces.png\n"
         "  tsf feel field.csv --device replay:forces.csv --log again.csv\n"
+        "  tsf feel examples/volcano.csv --device falcon --firmware nvent_firmware.bin\n"
+        "The input and model options are tsf gen's: the relief felt is the relief gen prints.\n"
         "Device frame: x right, y up, z toward the user, metres; north of the field is away from the user.\n"
         "Buttons: centre = volume mode on/off, plus = coarser level, minus = finer level.\n"
         "Ctrl-C ramps the force to zero and ends the session (exit code 130). See docs/haptics.md.");
-    cmd->add_option("field", o->field, "Field file (grid CSV, PGM, PNG or ESRI ASCII grid)")->required();
+    addGenOptions(cmd, o->gen);
     cmd->add_option("--device", o->device, "sim | replay:FILE | falcon")->capture_default_str();
+    cmd->add_option("--firmware", o->firmware,
+                    "Falcon firmware file (nvent_firmware.bin from Novint's SDK), loaded when the Falcon has none "
+                    "running (after every power-up)");
     cmd->add_option("--trajectory", o->trajectory, "Simulated hand: sweep | taps | finger")
         ->check(CLI::IsMember({"sweep", "taps", "finger"}))->capture_default_str();
     cmd->add_option("--duration", o->duration_s, "Seconds to run (0 = until the script or recording ends, or Ctrl-C)")

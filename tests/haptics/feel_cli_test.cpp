@@ -118,10 +118,23 @@ TEST(FeelCli, ALogReplaysThroughTheSameFieldWithTheSameForces) {
     EXPECT_LT(worst, 1e-3);
 }
 
-TEST(FeelCli, FalconIsNotSupportedYetAndSaysSo) {
-    const tsf::test::RunResult r = tsf::test::runTsf("feel " + hillField() + " --device falcon");
-    EXPECT_EQ(r.exit_code, 4);
-    EXPECT_NE(r.output.find("not yet supported"), std::string::npos) << r.output;
+TEST(FeelCli, FeelsTheReliefGenPrintsFromTheSameOptions) {
+    // The value -> height rule comes from the same options as tsf gen's,
+    // resolved the same way (tsf info shows what gen would print).
+    const std::string f = hillField(), opts = " --transfer sqrt --baseline 20 --value-max 120 --cull none";
+    const tsf::test::RunResult info = tsf::test::runTsf("info " + f + opts + " --json");
+    const tsf::test::RunResult feel = tsf::test::runTsf("feel " + f + opts + " --trajectory taps --json");
+    ASSERT_EQ(info.exit_code, 0) << info.output;
+    ASSERT_EQ(feel.exit_code, 0) << feel.output;
+    const auto i = nlohmann::json::parse(info.output), j = nlohmann::json::parse(feel.output);
+    EXPECT_EQ(j["relief"]["transfer"], "sqrt");
+    EXPECT_EQ(j["relief"]["transfer"], i["mapping"]["transfer"]);
+    EXPECT_EQ(j["relief"]["baseline"], i["mapping"]["baseline"]);
+    EXPECT_EQ(j["relief"]["value_max"], i["mapping"]["value_max"]);
+    EXPECT_EQ(j["relief"]["printed_height_mm"], i["mapping"]["max_height_mm"]);
+    EXPECT_EQ(j["field"]["kept_cells"], i["cells"]["kept"]);
+    EXPECT_EQ(j["field"]["cols"], i["grid"]["cols"]);
+    EXPECT_TRUE(j["relief"]["exact_at_cell_centres"].get<bool>());
 }
 
 TEST(FeelCli, UnsafeOrBadOptionsAreRejectedWithExitTwo) {

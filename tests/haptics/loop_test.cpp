@@ -21,6 +21,7 @@ public:
     double fail_at_s = 1e9;
     bool refuse_writes = false;
     bool homed = true;
+    double homed_at_s = 0.0;  ///< homed from this loop time on
     std::vector<Vec3> forces;
     std::vector<double> read_times;
 
@@ -35,7 +36,7 @@ public:
         read_times.push_back(t);
         out.t_s = t;
         out.position_m = Vec3(0.0);
-        out.homed = homed;
+        out.homed = homed && t >= homed_at_s;
         return ReadStatus::kOk;
     }
     bool writeForce(const Vec3& f) noexcept override {
@@ -192,6 +193,25 @@ TEST(Loop, UnhomedDeviceGetsZeroForceAndTheHandlerIsNotAsked) {
     runHapticLoop(dev, h, clock, o, stop, nullptr, s);
     EXPECT_TRUE(h.gains.empty());
     for (const Vec3& f : dev.forces) EXPECT_EQ(f, Vec3(0.0));
+}
+
+TEST(Loop, ForceRampsInFromTheFirstHomedTick) {
+    // A device that homes late (the Falcon after the user moved the grip)
+    // must not get full force at once: the start ramp waits for the homing.
+    RecordingDevice dev;
+    dev.homed_at_s = 3.0;
+    ConstantHandler h;
+    FakeLoopClock clock;
+    LoopOptions o;
+    o.duration_s = 5.0;
+    std::atomic<bool> stop{false};
+    LoopStats s;
+    runHapticLoop(dev, h, clock, o, stop, nullptr, s);
+    ASSERT_GT(h.gains.size(), 1500u);
+    EXPECT_NEAR(h.gains.front(), 0.0, 1e-12);        // the first homed tick
+    EXPECT_NEAR(h.gains[500], 0.5, 0.01);            // half-way through the 1 s ramp
+    EXPECT_NEAR(h.gains[1500], 1.0, 1e-12);
+    for (size_t k = 0; k < 3000; ++k) EXPECT_EQ(dev.forces[k], Vec3(0.0));  // nothing before homing
 }
 
 TEST(Histogram, QuantilesOfKnownSamples) {

@@ -118,3 +118,16 @@ TEST(ScaleSample, EquationFourNineInterpolatesLinearlyBetweenLevels) {
     EXPECT_NEAR(sampleScale(s, std::nan(""), 1.2, 1.7, sp).height, a, 1e-12);   // NaN -> level 0
     EXPECT_NEAR(sampleScale(s, 99.0, 1.2, 1.7, sp).height, sampleLevel(s, 2, 1.2, 1.7, sp).height, 1e-12);
 }
+
+TEST(ScaleSpace, LevelsCountDataCellsWhenACellHasManySamples) {
+    // The printed relief samples each hexagon 6 times across: level n still
+    // smooths over about 2^n cells, not 2^n samples.
+    const HeightGrid g = makeHeightGrid(48, 48, std::vector<float>(48 * 48, 0.5f));
+    const ScaleSpace gau = buildScaleSpace(g, 3, ScaleSpaceKind::kGaussian, 6.0);
+    EXPECT_DOUBLE_EQ(gau.levels[1].t_cells2, 4.0 * 36.0);
+    EXPECT_DOUBLE_EQ(gau.levels[2].t_cells2, 16.0 * 36.0);
+    const ScaleSpace mip = buildScaleSpace(g, 3, ScaleSpaceKind::kMipmap, 6.0);
+    EXPECT_DOUBLE_EQ(mip.levels[1].base_cells_per_texel, 16.0);  // the first power of two >= 2 * 6
+    EXPECT_DOUBLE_EQ(mip.levels[2].base_cells_per_texel, 32.0);  // >= 4 * 6
+    EXPECT_EQ(mip.levels[2].grid.cols, 2);
+}

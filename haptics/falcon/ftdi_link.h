@@ -1,0 +1,87 @@
+// FtdiLink: the FTDI USB-serial chip inside the Falcon, driven over a
+// UsbTransport with the chip's vendor control requests (all bmRequestType
+// 0x40, wIndex 0, no data stage):
+//
+//   request 0  reset/purge      wValue 1 = receive buffer, 2 = transmit buffer
+//   request 1  modem control    wValue = mask << 8 | state; DTR is bit 0, RTS bit 1
+//   request 2  flow control     wValue 0 = none
+//   request 3  baud rate        wValue = the chip's divisor encoding
+//   request 4  line properties  wValue 0x0008 = 8 data bits, no parity, 1 stop bit
+//   request 9  latency timer    wValue = milliseconds (1..255)
+//
+// read() strips the two modem-status bytes that begin every IN packet
+// (each kUsbPacketBytes long at most), so callers see only serial data.
+// Every call is noexcept and allocation-free.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "haptics/falcon/usb_transport.h"
+
+namespace tsf::haptics {
+
+/// The chip's request numbers (see the file comment).
+enum class FtdiRequest : uint8_t {
+    kReset = 0,
+    kModemControl = 1,
+    kFlowControl = 2,
+    kBaudRate = 3,
+    kLineProperties = 4,
+    kLatencyTimer = 9,
+};
+
+/// Baud divisors the Falcon uses (the chip's 3 MHz base clock divided, with
+/// its fractional encoding in the top bits).
+inline constexpr uint16_t kFtdiBaud9600 = 0x4138;    ///< 312.5: the boot loader's handshake
+inline constexpr uint16_t kFtdiBaud142857 = 0x0015;  ///< 21: firmware upload
+inline constexpr uint16_t kFtdiBaud1500000 = 0x0002; ///< 2 (special code): normal operation
+inline constexpr uint16_t kFtdiLine8N1 = 0x0008;
+
+/// Control requests wait this long; they are rare and answered at once.
+inline constexpr int kFtdiControlTimeout_ms = 100;
+
+class FtdiLink {
+public:
+    explicit FtdiLink(UsbTransport& transport) noexcept : usb_(transport) {}
+
+    UsbResult purgeReceive() noexcept { return request(FtdiRequest::kReset, 1); }
+    UsbResult purgeTransmit() noexcept { return request(FtdiRequest::kReset, 2); }
+    UsbResult setDtr(bool high) noexcept { return request(FtdiRequest::kModemControl, high ? 0x0101 : 0x0100); }
+    UsbResult setRts(bool high) noexcept { return request(FtdiRequest::kModemControl, high ? 0x0202 : 0x0200); }
+    UsbResult setNoFlowControl() noexcept { return request(FtdiRequest::kFlowControl, 0); }
+    UsbResult setBaudDivisor(uint16_t divisor) noexcept { return request(FtdiRequest::kBaudRate, divisor); }
+    UsbResult setLine8N1() noexcept { return request(FtdiRequest::kLineProperties, kFtdiLine8N1); }
+    UsbResult setLatencyTimer(uint8_t ms) noexcept { return request(FtdiRequest::kLatencyTimer, ms); }
+
+    /// Writes serial data.
+    UsbResult write(std::span<const uint8_t> data, int timeout_ms) noexcept;
+    /// One bulk IN transfer of up to kRawBytes raw bytes; the serial data
+    /// (status bytes removed) goes to out, which must hold kDataBytes.
+    /// result.bytes counts data bytes.
+    static constexpr size_t kRawBytes = 4 * kUsbPacketBytes;
+    static constexpr size_t kDataBytes = 4 * (kUsbPacketBytes - 2);
+    UsbResult read(std::span<uint8_t, kDataBytes> out, int timeout_ms) noexcept;
+
+    /// Modem-status bytes of the last packet read (0, 0 before any).
+    uint8_t modemStatus() const noexcept { return status_[0]; }
+    uint8_t lineStatus() const noexcept { return status_[1]; }
+    UsbTransport& transport() noexcept { return usb_; }
+
+private:
+    UsbResult request(FtdiRequest r, uint16_t value) noexcept {
+        return usb_.control(uint8_t(r), value, 0, kFtdiControlTimeout_ms);
+    }
+
+    UsbTransport& usb_;
+    uint8_t status_[2] = {0, 0};
+};
+
+/// Strips the status bytes from raw IN data of `raw_bytes` bytes (packets of
+/// kUsbPacketBytes, each starting with 2 status bytes; a short last packet
+/// is allowed) into out; returns the data byte count. out must hold at
+/// least raw_bytes bytes. status (2 bytes, may be null) receives the last
+/// packet's status bytes.
+size_t stripFtdiStatus(std::span<const uint8_t> raw, std::span<uint8_t> out, uint8_t* status) noexcept;
+
+}  // namespace tsf::haptics

@@ -1,0 +1,71 @@
+#include "haptics/printed_relief.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tsf::haptics {
+
+double printedHeightFraction(const Scene& scene, size_t k) {
+    const double max_mm = scene.mapping.max_height_mm;
+    if (!(max_mm > 0.0)) return 0.0;
+    const int64_t units = snapUnits(scene.mapping.heightMm(scene.value[k]), scene.z_snap_mm);
+    return std::clamp(scene.zMm(units) / max_mm, 0.0, 1.0);
+}
+
+HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
+    const double width_p = gridWidth(scene.grid, 1.0), depth_p = gridDepth(scene.grid, 1.0);  // in pitches
+    int per_pitch = kReliefSamplesPerPitch;
+    while (per_pitch > 1 && std::max(width_p, depth_p) * per_pitch > kMaxReliefSamples) --per_pitch;
+    const double side_p = 1.0 / per_pitch;
+    const auto cols = int32_t(std::max(1.0, std::ceil(width_p * per_pitch - 1e-9)));
+    const auto rows = int32_t(std::max(1.0, std::ceil(depth_p * per_pitch - 1e-9)));
+
+    std::vector<float> kept_height(scene.keptCount());
+    for (size_t k = 0; k < kept_height.size(); ++k) kept_height[k] = float(printedHeightFraction(scene, k));
+
+    HeightGrid g;
+    g.cols = cols;
+    g.rows = rows;
+    g.heights.assign(size_t(cols) * size_t(rows), 0.0f);
+    for (int32_t j = 0; j < rows; ++j)
+        for (int32_t i = 0; i < cols; ++i) {
+            int32_t c = 0, r = 0;
+            if (!hexCellAt(scene.grid, (i + 0.5) * side_p, (j + 0.5) * side_p, c, r)) continue;
+            const int32_t k = scene.keptAt(c, r);
+            if (k >= 0) g.at(i, j) = kept_height[size_t(k)];
+        }
+    if (info) {
+        info->samples_per_pitch = per_pitch;
+        info->sample_mm = scene.pitch_mm * side_p;
+        info->exact_at_centres = per_pitch >= kReliefSamplesPerPitch;
+    }
+    return g;
+}
+
+GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, int samples_per_pitch) {
+    const LatticePoint c = hexCentre(scene.grid, col, row);
+    // Sample i covers [i, i + 1) / samples_per_pitch pitches; its centre is grid coordinate i.
+    return {latticeX(c, 1.0) * samples_per_pitch - 0.5, latticeY(c, 1.0) * samples_per_pitch - 0.5};
+}
+
+std::vector<SweepLine> reliefRowLines(const Scene& scene, const ReliefInfo& info, const FieldMapping& mapping) {
+    std::vector<SweepLine> lines;
+    // A hair less than half a pitch: inside the hexagon on its centre line.
+    const double reach = 0.45 * info.samples_per_pitch;  // grid units
+    for (int32_t r = 0; r < scene.grid.rows; ++r) {
+        int32_t first = -1, last = -1;
+        for (int32_t c = 0; c < scene.grid.cols; ++c)
+            if (scene.keptAt(c, r) >= 0) {
+                if (first < 0) first = c;
+                last = c;
+            }
+        if (first < 0) continue;
+        const GridPoint a = reliefCellCentre(scene, first, r, info.samples_per_pitch);
+        const GridPoint b = reliefCellCentre(scene, last, r, info.samples_per_pitch);
+        lines.push_back({gridToDevice(mapping, a.gi, a.gj, 0.0).z, gridToDevice(mapping, a.gi - reach, a.gj, 0.0).x,
+                         gridToDevice(mapping, b.gi + reach, b.gj, 0.0).x});
+    }
+    return lines;
+}
+
+}  // namespace tsf::haptics

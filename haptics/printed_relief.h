@@ -1,0 +1,66 @@
+// The relief a Scene prints, as the HeightGrid the haptic renderer samples,
+// so that `tsf feel` and `tsf gen` given the same input and options make
+// the same relief: one value -> height rule (gen/scene.h: baseline, value
+// max, transfer, snap), one set of cells (culling), one footprint.
+//
+// Sampling: square samples of side pitch / samples_per_pitch over the
+// model's bounding box (Scene frame: x east, y north, origin at the
+// south-west corner; HeightGrid rows run south to north, so row j is
+// y = (j + 0.5) * side). Each sample takes the printed height of the kept
+// hexagonal cell it lies in - the snapped height of ValueMapping::heightMm,
+// divided by the height of the largest value (max_height_mm) - or 0, the
+// floor, outside every kept cell (culled cells, the bounding box's corners)
+// and for no-data cells, as printed. The felt surface is thus the pillars'
+// tops, their edges rounded only by the renderer's interpolation.
+//
+// With kReliefSamplesPerPitch samples per pitch, every tap the bicubic or
+// bilinear sampler takes around a cell's centre lies inside that cell (a
+// square of half-side 2 samples fits in a pointy-top hexagon when the side is
+// at most 0.18 pitch), so the surface at each centre is exactly the cell's
+// printed height: the felt order of the cells is the printed order. Fields
+// too wide for kMaxReliefSamples get fewer samples per pitch (reported),
+// and that exactness at centres is lost.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gen/scene.h"
+#include "haptics/field_mapping.h"
+#include "haptics/height_grid.h"
+#include "haptics/sim_device.h"
+
+namespace tsf::haptics {
+
+/// Samples per pitch (hexagon width): see the file comment for why 6.
+inline constexpr int kReliefSamplesPerPitch = 6;
+/// Longest side of the relief grid, samples: about 50 um on a Falcon's
+/// 54 mm footprint, finer than its encoders resolve.
+inline constexpr int32_t kMaxReliefSamples = 1024;
+
+struct ReliefInfo {
+    int samples_per_pitch = kReliefSamplesPerPitch;
+    double sample_mm = 0.0;        ///< side of one sample in the printed model, mm
+    bool exact_at_centres = true;  ///< samples_per_pitch >= kReliefSamplesPerPitch
+};
+
+/// The printed relief of `scene` (see the file comment). Heights are in
+/// [0, 1]: printed height above the floor / max_height_mm (all 0 when
+/// max_height_mm is 0).
+HeightGrid printedRelief(const Scene& scene, ReliefInfo* info = nullptr);
+
+/// Where the centre of hex cell (col, row) lies in the relief grid's
+/// continuous coordinates (height_grid.h) for the given samples per pitch.
+GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, int samples_per_pitch);
+
+/// One sweep line per row of kept cells, along the row's centre line from
+/// just inside its west-most to just inside its east-most cell (device
+/// frame), so a sweep crosses every cell through its centre and never the
+/// notches between the rows' ends.
+std::vector<SweepLine> reliefRowLines(const Scene& scene, const ReliefInfo& info, const FieldMapping& mapping);
+
+/// The printed height of kept cell k as a fraction of max_height_mm (the
+/// same number printedRelief puts under the cell).
+double printedHeightFraction(const Scene& scene, size_t k);
+
+}  // namespace tsf::haptics
