@@ -8,8 +8,12 @@ namespace tsf::haptics {
 double printedHeightFraction(const Scene& scene, size_t k) {
     const double max_mm = scene.mapping.max_height_mm;
     if (!(max_mm > 0.0)) return 0.0;
-    const int64_t units = snapUnits(scene.mapping.heightMm(scene.value[k]), scene.z_snap_mm);
-    return std::clamp(scene.zMm(units) / max_mm, 0.0, 1.0);
+    // The top the mesher builds at the cell's centre, above the floor (flat)
+    // or above the top of a zero (mirrored): a cell without data is a pit
+    // below 0, a cell under the orientation triangle stands its height higher.
+    const int64_t zero = scene.params.bottom == Bottom::Mirrored ? scene.mirror_thickness_units : scene.floor_units;
+    const int64_t units = scene.top[k] + markRaiseAtCentre(scene, k) - zero;
+    return std::clamp(scene.zMm(units) / max_mm, -1.0, 2.0);
 }
 
 HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {

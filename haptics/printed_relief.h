@@ -60,7 +60,9 @@ GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, int sam
 std::vector<SweepLine> reliefRowLines(const Scene& scene, const ReliefInfo& info, const FieldMapping& mapping);
 
 /// The printed height of kept cell k as a fraction of max_height_mm (the
-/// same number printedRelief puts under the cell).
+/// same number printedRelief puts under the cell): its top at its centre
+/// above the floor, so a cell without data (a pit) is below 0 and a cell
+/// under the orientation triangle is raised by it (gen/marks.h).
 double printedHeightFraction(const Scene& scene, size_t k);
 
 }  // namespace tsf::haptics

@@ -107,7 +107,7 @@ TEST(PrintedRelief, ARawMinMaxNormalisationWouldFeelADifferentOrder) {
     EXPECT_GT(orderMismatches(printed, raw, 0.5, 1e-9), 0);
 }
 
-TEST(PrintedRelief, CulledAndNoDataCellsAreTheFloorAndTheFootprintKeepsTheModelsShape) {
+TEST(PrintedRelief, CulledCellsAreTheFloorNoDataCellsArePitsAndTheFootprintKeepsTheModelsShape) {
     // A diagonal band of data in a field of zeros: the hull culls the corners.
     const HexField field = fieldFromFunction(12, 9, [](int c, int r) {
         if (c == 6 && r == 4) return kNaN;
@@ -122,7 +122,8 @@ TEST(PrintedRelief, CulledAndNoDataCellsAreTheFloorAndTheFootprintKeepsTheModels
     // The grid covers the printed model's bounding box.
     EXPECT_NEAR(grid.cols * info.sample_mm, gridWidth(scene.grid, scene.pitch_mm), info.sample_mm);
     EXPECT_NEAR(grid.rows * info.sample_mm, gridDepth(scene.grid, scene.pitch_mm), info.sample_mm);
-    // Every sample is the height of the kept cell it lies in, or the floor.
+    // Every sample is the height of the kept cell it lies in, or the floor;
+    // a cell without data is the pit the print has (1 mm of the 10 mm relief).
     for (int32_t j = 0; j < grid.rows; ++j)
         for (int32_t i = 0; i < grid.cols; ++i) {
             int32_t c = 0, r = 0;
@@ -130,6 +131,7 @@ TEST(PrintedRelief, CulledAndNoDataCellsAreTheFloorAndTheFootprintKeepsTheModels
             if (hexCellAt(scene.grid, (i + 0.5) / info.samples_per_pitch, (j + 0.5) / info.samples_per_pitch, c, r)) {
                 const int32_t k = scene.keptAt(c, r);
                 if (k >= 0 && std::isfinite(scene.value[size_t(k)])) expect = float(scene.value[size_t(k)] / 50.0);
+                if (k >= 0 && !std::isfinite(scene.value[size_t(k)])) expect = float(-1.0 / 10.0);
             }
             ASSERT_EQ(grid.at(i, j), expect) << i << " " << j;
         }
