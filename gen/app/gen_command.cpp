@@ -6,6 +6,7 @@
 #include "gen/app/commands.h"
 #include "gen/app/gen_options.h"
 #include "gen/app/gen_summary.h"
+#include "gen/app/input_report.h"
 #include "gen/app/stage_timer.h"
 #include "gen/app/preview.h"
 #include "gen/direct_mesher.h"
@@ -188,10 +189,13 @@ void addInfoCommand(CLI::App& app) {
         if (*json) {
             nlohmann::json j = sceneFactsJson(scene);
             j["input"] = opts->input;
+            j["read"] = fieldInputJson(field.input);
             j["field"] = {{"how", field.how}, {"pitch_data_units", field.pitch_data}};
             std::cout << j.dump(2) << "\n";
         } else {
-            std::cout << "tsf info: " << opts->input << "\n  input     " << field.how << "\n" << formatSceneFacts(scene);
+            std::cout << "tsf info: " << opts->input << "\n"
+                      << formatFieldInput(field.input) << "  input     " << field.how << "\n"
+                      << formatSceneFacts(scene);
         }
     });
 }

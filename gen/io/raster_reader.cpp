@@ -77,7 +77,7 @@ Raster parseRaster(std::string_view bytes, const std::string& path, const Raster
         case RasterFormat::Png: return parsePng(bytes, path);
         case RasterFormat::Pgm: return parsePgm(bytes, path);
         case RasterFormat::EsriAscii: return parseEsriAscii(bytes, path);
-        default: return parseCsvGrid(bytes, path, opts.delimiter);
+        default: return parseCsvGrid(bytes, path, opts.delimiter, opts.decimal);
     }
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "gen/io/decimal_mark.h"
 #include "gen/raster.h"
 
 namespace tsf {
@@ -24,6 +25,8 @@ struct RasterReadOptions {
     RasterFormat format = RasterFormat::Auto;
     /// Grid CSV only: 0 = detect, else ',', ';', '\t' or ' ' (runs of blanks).
     char delimiter = 0;
+    /// Grid CSV only: Detect, or Comma for "1,5" (decimal_mark.h).
+    DecimalMark decimal = DecimalMark::Detect;
 };
 
 /// Reads `path`. Throws InputError for a missing file or any format error.
