@@ -25,6 +25,7 @@
 #include "haptics/haptic_loop.h"
 #include "haptics/height_grid.h"
 #include "haptics/loop_clock.h"
+#include "gen/util/output_paths.h"
 #include "haptics/replay_device.h"
 #include "haptics/scale_space.h"
 #include "haptics/sim_device.h"
@@ -156,6 +157,8 @@ void runFeel(const FeelOptions& o) {
     if (!is_sim && !is_replay)
         throw InputError("--device must be sim, replay:FILE or falcon (got '" + spec + "')");
     if (is_replay && spec.size() == 7) throw InputError("--device replay: needs a file name, as in replay:session.csv");
+    checkOutputPaths({{o.field, "the field"}, {is_replay ? spec.substr(7) : std::string(), "the recording replayed"}},
+                     {{o.log, "--log"}, {o.plot, "--plot"}});
     const SimTrajectory trajectory = parseSimTrajectory(o.trajectory);
 
     HeightGridInfo info;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "gen/util/temp_files.h"
 #include "verify/render/openscad_runner.h"
 
 namespace tsf::cli {
@@ -12,14 +13,14 @@ namespace tsf::cli {
 void writeModelPreview(const std::string& model_path, const std::string& png_path, int width_px, int height_px) {
     namespace fs = std::filesystem;
     const fs::path model = fs::absolute(model_path);
-    const fs::path scad = fs::temp_directory_path() / ("tsf-preview-" + std::to_string(::getpid()) + ".scad");
+    const ScopedTempFile scad("tsf-preview-", ".scad");  // removed on every exit, signals included
     {
-        std::ofstream out(scad);
+        std::ofstream out(scad.path());
         // A warm colour and the default light show steps between pillars clearly.
         out << "color(\"#e8a33d\") import(\"" << model.generic_string() << "\");\n";
     }
     ScadRenderRequest rq;
-    rq.scad_path = scad.string();
+    rq.scad_path = scad.path();
     rq.output_path = png_path;
     rq.format = ScadExportFormat::Png;
     rq.png.width_px = width_px;
@@ -27,8 +28,6 @@ void writeModelPreview(const std::string& model_path, const std::string& png_pat
     rq.timeout_s = 300;
     const auto engine = makeOpenScadEngine();
     const ScadRenderResult result = renderScad(*engine, rq);
-    std::error_code ignored;
-    fs::remove(scad, ignored);
     if (!result.ok()) {
         std::string lines;
         for (const ScadMessage& m : result.errors()) lines += "\n  " + m.text;

@@ -20,6 +20,8 @@
 #include "verify/render/engine_select.h"
 #include "verify/render/openscad_runner.h"
 #include "gen/scad/scad_variables.h"
+#include "gen/util/output_paths.h"
+#include "gen/util/temp_files.h"
 
 namespace tsf::cli {
 namespace {
@@ -129,30 +131,18 @@ std::string scadString(const std::string& s) {
 // picture then shows exactly the file that will be printed).
 class ImportWrapper {
 public:
-    explicit ImportWrapper(const std::string& mesh_path) {
-        const char* tmp = std::getenv("TMPDIR");
-        std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/tsf-preview-XXXXXX.scad";
-        std::vector<char> buf(pattern.begin(), pattern.end());
-        buf.push_back('\0');
-        const int fd = mkstemps(buf.data(), 5);
-        if (fd < 0) throw std::runtime_error("cannot create a temporary file for the PNG preview in " + pattern);
-        close(fd);
-        path_ = buf.data();
-        std::ofstream out(path_);
+    explicit ImportWrapper(const std::string& mesh_path) : file_("tsf-preview-", ".scad") {
+        std::ofstream out(file_.path());
         // The same warm colour as tsf gen --preview: steps between pillars show clearly.
         out << "color(\"#e8a33d\") import(" << scadString(fs::absolute(mesh_path).string()) << ", convexity = 10);\n";
-        if (!out) throw std::runtime_error("cannot write " + path_);
-    }
-    ~ImportWrapper() {
-        std::error_code ec;
-        fs::remove(path_, ec);
+        if (!out) throw std::runtime_error("cannot write " + file_.path());
     }
     ImportWrapper(const ImportWrapper&) = delete;
     ImportWrapper& operator=(const ImportWrapper&) = delete;
-    const std::string& path() const { return path_; }
+    const std::string& path() const { return file_.path(); }
 
 private:
-    std::string path_;
+    ScopedTempFile file_;  // removed on every exit, signals included
 };
 
 std::string readText(const std::string& path) {
@@ -188,6 +178,8 @@ void runRender(const RenderOptions& o) {
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.amf and/or --png PREVIEW.png");
     if (o.imgsize.size() != 2 || o.imgsize[0] < 16 || o.imgsize[1] < 16 || o.imgsize[0] > 8192 || o.imgsize[1] > 8192)
         throw InputError("--imgsize expects WIDTH,HEIGHT in pixels, each 16..8192");
+    checkOutputPaths({{o.scad, "the model to render"}, {o.params, "the parameter file (-p)"}},
+                     {{o.output, "-o"}, {o.png, "--png"}});
     ScadRenderRequest base;
     base.scad_path = o.scad;
     base.parameter_file = o.params;
