@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "gen/error.h"
 #include "gen/util/atomic_file.h"
 #include "haptics/force_model.h"
 #include "haptics/height_sampling.h"
@@ -62,7 +63,7 @@ void text(Image& img, int x, int y, const char* s, int scale, uint32_t c) {
 
 void writePng(const std::string& path, const Image& img) {
     FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+    if (!f) throw OutputError(path, std::string("cannot write: ") + std::strerror(errno));
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!png || !info) {
@@ -73,7 +74,7 @@ void writePng(const std::string& path, const Image& img) {
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
         std::fclose(f);
-        throw std::runtime_error("libpng failed while writing " + path);
+        throw OutputError(path, "writing failed (is the disk full?)");
     }
     png_init_io(png, f);
     png_set_IHDR(png, info, png_uint_32(img.w), png_uint_32(img.h), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
@@ -83,7 +84,7 @@ void writePng(const std::string& path, const Image& img) {
         png_write_row(png, const_cast<png_bytep>(&img.rgb[size_t(y) * size_t(img.w) * 3]));
     png_write_end(png, info);
     png_destroy_write_struct(&png, &info);
-    if (std::fclose(f) != 0) throw std::runtime_error("cannot finish writing " + path);
+    if (std::fclose(f) != 0) throw OutputError(path, std::string("cannot finish writing: ") + std::strerror(errno));
 }
 
 }  // namespace
