@@ -29,8 +29,9 @@ void parseBaseline(const std::string& text, SceneParams& p) {
 void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     if (with_input)
         cmd->add_option("input", o.input,
-                        "Field file: grid CSV, PGM (P2/P5), PNG (grey), ESRI ASCII grid (.asc), or a CSV of points "
-                        "with --points. Row 0 of a raster is its top (north) edge.")
+                        "Field file: grid CSV, PGM (P2/P5), PNG (grey), ESRI ASCII grid (.asc), GeoTIFF or any other "
+                        "raster GDAL reads, or a CSV of points with --points. Row 0 of a raster is its top (north) "
+                        "edge.")
             ->required();
     auto* in = "Input";
     cmd->add_option("--points", o.points,
