@@ -3,6 +3,8 @@
 // log and a picture of the path.
 #include <signal.h>
 
+#include <filesystem>
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -218,7 +220,12 @@ void runFeel(const FeelOptions& o) {
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall).count();
 
     if (!o.log.empty()) writeForceLogCsv(o.log, log);
-    if (!o.plot.empty()) writeForcePlotPng(o.plot, grid, mapping, log, o.max_force_N);
+    if (!o.plot.empty()) {
+        haptics::PlotOptions po;
+        po.title = "tsf feel: " + std::filesystem::path(o.field).filename().string() + ", " + o.device + ", " +
+                   std::to_string(log.size()) + " ticks";
+        writeForcePlotPng(o.plot, grid, mapping, log, o.max_force_N, po);
+    }
 
     const RendererCounters& c = renderer.counters();
     const double contact_pct = c.ticks ? 100.0 * double(c.contact_ticks) / double(c.ticks) : 0.0;
