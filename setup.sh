@@ -57,7 +57,7 @@ cmake --build build -j"$(nproc)"
 mkdir -p out
 set -x
 ./build/tsf gen examples/airports-europe.csv --points x=lon,y=lat --bins 40 --mirror \
-    -o out/airports-europe.stl --scad out/airports-europe.scad
+    -o out/airports-europe.stl --scad out/airports-europe.scad --preview out/airports-europe.png
 ./build/tsf render out/airports-europe.scad -o out/airports-europe.openscad.stl
 ./build/tsf verify out/airports-europe.openscad.stl --scene out/airports-europe.stl.scene.json \
     --reference out/airports-europe.stl

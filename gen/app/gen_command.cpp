@@ -119,6 +119,8 @@ void runGen(const GenCommandOptions& o) {
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
     const ScadOptions so = scadOptions(o);
     checkOutputs(o, so);
+    if (!o.preview.empty() && lowerCaseExtension(o.preview) != ".png")
+        throw InputError(o.preview, 0, 0, "--preview writes a PNG picture: give a name ending in .png");
     StageTimer timer(o.progress);
     GenSummary summary;
     summary.input = o.gen.input;
@@ -168,10 +170,8 @@ void runGen(const GenCommandOptions& o) {
         summary.outputs.push_back({o.output, "model"});
     }
     if (!o.preview.empty()) {
-        if (o.output.empty() || lowerCaseExtension(o.output) == ".obj")
-            throw InputError("--preview draws the written model: give -o MODEL.stl, .3mf or .off");
         timer.begin("drawing preview");
-        writeModelPreview(o.output, o.preview);
+        writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
         summary.outputs.push_back({o.preview, "preview picture"});
     }
     if (!o.scad.empty()) {
@@ -211,7 +211,9 @@ void addGenCommand(CLI::App& app) {
     cmd->add_option("-o,--output", opts->output, "Model file: .stl (binary), .3mf, .off or .obj");
     cmd->add_option("--scad", opts->scad, "Also write a parametric OpenSCAD file");
     cmd->add_flag("--ascii", opts->ascii, "Write ASCII STL instead of binary");
-    cmd->add_option("--preview", opts->preview, "Also draw the written model to this PNG (needs openscad; xvfb-run when there is no display)");
+    cmd->add_option("--preview", opts->preview,
+                    "Also draw the model to this PNG: framed to fill it, coloured by height, north arrow, scale bar "
+                    "and size in mm; with --mirror the underside beside the top (drawn by tsf, no OpenSCAD needed)");
     cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
     cmd->add_flag("--verify-full", opts->verify_full,
                   "Run every check even on very large models (self-intersections, printability; minutes)");

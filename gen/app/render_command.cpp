@@ -19,7 +19,11 @@
 #include "verify/render/engine_output_check.h"
 #include "verify/render/engine_select.h"
 #include "verify/render/openscad_runner.h"
+#include "gen/mesh_io/mesh_reader.h"
+#include "gen/mesh_io/mesh_writer.h"
+#include "gen/mesh_picture.h"
 #include "gen/scad/scad_variables.h"
+#include "gen/util/rgb_image.h"
 #include "gen/util/output_paths.h"
 #include "gen/util/temp_files.h"
 
@@ -253,8 +257,21 @@ void runRender(const RenderOptions& o) {
                              o.output.c_str(), check.triangles, check.volume_mm3);
         }
     }
-    if (!o.png.empty()) {
-        // Pictures need OpenGL: only the desktop OpenSCAD draws them.
+    const std::string out_ext = lowerCaseExtension(o.output);
+    if (!o.png.empty() && o.camera == kDefaultPngCamera &&
+        (out_ext == ".stl" || out_ext == ".3mf" || out_ext == ".off")) {
+        // The exported file, drawn by tsf as tsf gen --preview draws it:
+        // framed, coloured by height, north and scale, the underside too.
+        const Mesh mesh = readMesh(o.output);
+        MeshPictureOptions po;
+        po.width_px = o.imgsize[0];
+        po.height_px = o.imgsize[1];
+        po.underside = hasRaisedUnderside(mesh);
+        writePng(o.png, drawMeshPicture(mesh, po));
+        if (!o.quiet) std::fprintf(stderr, "tsf: wrote %s\n", o.png.c_str());
+    } else if (!o.png.empty()) {
+        // A camera of the user's (or no exported mesh): OpenSCAD draws it; only
+        // the desktop OpenSCAD can (pictures need OpenGL).
         std::unique_ptr<ScadEngine> engine;
         try {
             engine = makeOpenScadEngine(o.openscad);
@@ -271,6 +288,11 @@ void runRender(const RenderOptions& o) {
             // Picture the exported file itself; parameters are already applied.
             wrapper = std::make_unique<ImportWrapper>(o.output);
             rq.scad_path = wrapper->path();
+            if (out_ext == ".stl" || out_ext == ".3mf" || out_ext == ".off") {
+                const Bounds b = meshBounds(readMesh(o.output));
+                rq.png.camera = cameraLookingAt(rq.png.camera, (b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2,
+                                                (b.min.z + b.max.z) / 2);
+            }
             rq.defines.clear();
             rq.parameter_file.clear();
             rq.parameter_set.clear();
@@ -299,7 +321,9 @@ void addRenderCommand(CLI::App& app) {
         "3 OpenSCAD missing, failed, timed out or wrote a broken mesh, 130 interrupted.");
     cmd->add_option("model", o->scad, "OpenSCAD file to render")->required();
     cmd->add_option("-o,--output", o->output, "Output: .stl (binary), .3mf, .off, .amf or .png");
-    cmd->add_option("--png", o->png, "Also write a preview picture of the result (.png)");
+    cmd->add_option("--png", o->png,
+                    "Also write a preview picture of the result (.png): framed, coloured by height, north arrow, "
+                    "scale bar, and the underside of a mirrored model");
     cmd->add_option("-D", o->defines,
                     "Override a parameter: NAME=VALUE, e.g. -D height=25 (repeatable; a bare word is a "
                     "string: -D transfer=log; NAME must be a variable the file assigns)");
@@ -316,7 +340,9 @@ void addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--imgsize", o->imgsize, "PNG size in pixels: WIDTH,HEIGHT")->delimiter(',')->expected(2)->capture_default_str();
     cmd->add_option("--camera", o->camera,
-                    "PNG camera as OpenSCAD --camera: translate x,y,z, rotate x,y,z (degrees), distance")
+                    "PNG camera as OpenSCAD --camera: translate x,y,z, rotate x,y,z (degrees), distance (mm; "
+                    "0 = frame the model), or eye x,y,z, centre x,y,z. Given, OpenSCAD draws the picture; by "
+                    "default tsf draws the exported model like tsf gen --preview")
         ->capture_default_str();
     cmd->add_flag("--no-check", o->no_check,
                   "Do not read the exported mesh back to check it is a closed solid (keeps a broken mesh for tsf verify)");
