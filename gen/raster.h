@@ -36,6 +36,12 @@ struct Raster {
     double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(cols) + size_t(col)]; }
     double& at(int32_t col, int32_t row) { return values[size_t(row) * size_t(cols) + size_t(col)]; }
     bool empty() const { return cols == 0 || rows == 0; }
+    /// The value of the first fact named `name`; "" when there is none.
+    std::string fact(const std::string& name) const {
+        for (const ReadFact& f : facts)
+            if (f.name == name) return f.value;
+        return "";
+    }
 };
 
 }  // namespace tsf

@@ -11,12 +11,6 @@
 namespace tsf {
 namespace {
 
-std::string factOf(const Raster& r, const std::string& name) {
-    for (const ReadFact& f : r.facts)
-        if (f.name == name) return f.value;
-    return "";
-}
-
 TEST(CsvDialect, PlaceholdersAreNoData) {
     const Raster r = parseCsvGrid("1,N/A,3\nNA,-,n/a\n", "p.csv");
     ASSERT_EQ(r.cols, 3);
@@ -37,15 +31,15 @@ TEST(CsvDialect, DecimalCommaWithSemicolonsIsDetected) {
     EXPECT_EQ(r.at(0, 0), 1.5);
     EXPECT_EQ(r.at(2, 0), -3.25);
     EXPECT_EQ(r.at(1, 1), 5.5);
-    EXPECT_EQ(factOf(r, "delimiter"), "semicolon (detected)");
-    EXPECT_EQ(factOf(r, "decimal mark"), "comma (detected)");
+    EXPECT_EQ(r.fact("delimiter"), "semicolon (detected)");
+    EXPECT_EQ(r.fact("decimal mark"), "comma (detected)");
     // A header above decimal-comma values is still a header; the values are not one.
     const Raster h = parseCsvGrid("a;b\n1,5;2,5\n", "de.csv");
     EXPECT_EQ(h.rows, 1);
     EXPECT_EQ(h.at(1, 0), 2.5);
     const Raster first_row_values = parseCsvGrid("1,5;2,5\n3;4\n", "de.csv");
     EXPECT_EQ(first_row_values.rows, 2);
-    EXPECT_EQ(factOf(first_row_values, "header"), "");
+    EXPECT_EQ(first_row_values.fact("header"), "");
 }
 
 TEST(CsvDialect, DecimalCommaGivenAndItsMistakes) {
@@ -53,14 +47,14 @@ TEST(CsvDialect, DecimalCommaGivenAndItsMistakes) {
     const Raster one = parseCsvGrid("1,5\n2,5\n", "c.csv", 0, DecimalMark::Comma);
     ASSERT_EQ(one.cols, 1);
     EXPECT_EQ(one.at(0, 1), 2.5);
-    EXPECT_EQ(factOf(one, "decimal mark"), "comma");
+    EXPECT_EQ(one.fact("decimal mark"), "comma");
     // Thousands separators are refused, not misread.
     EXPECT_INPUT_ERROR_AT(parseCsvGrid("1,5;2\n1.234,5;3\n", "c.csv"), 2, 1, "decimal point in a table read with decimal commas");
     EXPECT_INPUT_ERROR(parseCsvGrid("1;2\n", "c.csv", ',', DecimalMark::Comma), "needs another delimiter");
     // Comma-separated files keep the decimal point.
     const Raster plain = parseCsvGrid("1,5\n2,5\n", "c.csv");
     EXPECT_EQ(plain.cols, 2);
-    EXPECT_EQ(factOf(plain, "decimal mark"), "");
+    EXPECT_EQ(plain.fact("decimal mark"), "");
 }
 
 TEST(CsvDialect, PandasIndexColumnIsDropped) {
@@ -70,8 +64,8 @@ TEST(CsvDialect, PandasIndexColumnIsDropped) {
     ASSERT_EQ(r.rows, 2);
     EXPECT_EQ(r.at(0, 0), 1.5);
     EXPECT_EQ(r.at(2, 1), 6.0);
-    EXPECT_EQ(factOf(r, "header"), "line 1 skipped");
-    EXPECT_NE(factOf(r, "index column"), "");
+    EXPECT_EQ(r.fact("header"), "line 1 skipped");
+    EXPECT_NE(r.fact("index column"), "");
     // Text column names and text row labels ("2020-01-01") too.
     const Raster t = parseCsvGrid(",a,b\n2020-01-01,1,2\n2020-01-02,3,4\n", "pd.csv");
     ASSERT_EQ(t.cols, 2);
@@ -86,8 +80,8 @@ TEST(CsvDialect, PandasIndexColumnIsDropped) {
 TEST(CsvDialect, AnIndexWithoutHeaderIsNamedWithTheFix) {
     const Raster r = parseCsvGrid("0,5,6\n1,7,8\n2,9,9\n", "ix.csv");
     EXPECT_EQ(r.cols, 3) << "kept: it cannot be told from data";
-    EXPECT_NE(factOf(r, "note").find("index=False"), std::string::npos);
-    EXPECT_EQ(factOf(parseCsvGrid("0,5,6\n3,7,8\n2,9,9\n", "ix.csv"), "note"), "");
+    EXPECT_NE(r.fact("note").find("index=False"), std::string::npos);
+    EXPECT_EQ(parseCsvGrid("0,5,6\n3,7,8\n2,9,9\n", "ix.csv").fact("note"), "");
 }
 
 }  // namespace

@@ -16,12 +16,6 @@
 namespace tsf {
 namespace {
 
-std::string factOf(const Raster& r, const std::string& name) {
-    for (const ReadFact& f : r.facts)
-        if (f.name == name) return f.value;
-    return "";
-}
-
 // 4 x 3 values 1..12, -9999 at (1, 0) and (3, 2).
 test::GeoTiffSpec demSpec() {
     test::GeoTiffSpec s;
@@ -52,10 +46,10 @@ TEST(GdalReader, ProjectedGeoTiffWithNoData) {
     EXPECT_TRUE(std::isnan(r.at(3, 2)));
     EXPECT_EQ(r.at(2, 2), 11.0);
     EXPECT_EQ(r.cell_size, 30.0);
-    EXPECT_NE(factOf(r, "crs").find("EPSG:32633"), std::string::npos) << factOf(r, "crs");
-    EXPECT_NE(factOf(r, "crs").find("projected: true aspect"), std::string::npos);
-    EXPECT_EQ(factOf(r, "pixel"), "30 x 30 metre");
-    EXPECT_EQ(factOf(r, "no-data value"), "-9999 (from the file)");
+    EXPECT_NE(r.fact("crs").find("EPSG:32633"), std::string::npos) << r.fact("crs");
+    EXPECT_NE(r.fact("crs").find("projected: true aspect"), std::string::npos);
+    EXPECT_EQ(r.fact("pixel"), "30 x 30 metre");
+    EXPECT_EQ(r.fact("no-data value"), "-9999 (from the file)");
 }
 
 TEST(GdalReader, OblongPixelsAreMadeSquareOnTheGround) {
@@ -71,7 +65,7 @@ TEST(GdalReader, OblongPixelsAreMadeSquareOnTheGround) {
     EXPECT_EQ(r.rows, 6);
     EXPECT_EQ(r.cell_size, 30.0);
     EXPECT_EQ(r.at(0, 1), 1.0) << "nearest neighbour repeats the row";
-    EXPECT_NE(factOf(r, "resampled"), "");
+    EXPECT_NE(r.fact("resampled"), "");
 }
 
 TEST(GdalReader, GeographicLongitudeIsScaledByCosLatitude) {
@@ -86,7 +80,7 @@ TEST(GdalReader, GeographicLongitudeIsScaledByCosLatitude) {
     const Raster r = readRaster(path);
     EXPECT_EQ(r.cols, 4);
     EXPECT_EQ(r.rows, 6) << "4 x 3 pixels of 0.005 x 0.01 degrees of latitude on the ground";
-    EXPECT_NE(factOf(r, "crs").find("cos(60 deg) = 0.5"), std::string::npos) << factOf(r, "crs");
+    EXPECT_NE(r.fact("crs").find("cos(60 deg) = 0.5"), std::string::npos) << r.fact("crs");
 }
 
 TEST(GdalReader, LoadFieldReportsWhatWasRead) {
