@@ -177,3 +177,21 @@ TEST(FeelCli, CtrlCRampsDownZeroesAndExitsWith130) {
     EXPECT_LT(std::stod(rows.back()[0]), 5.0);
     EXPECT_LT(std::stod(rows.back()[7]), 0.05);
 }
+
+TEST(FeelCli, ThePlotOfAVeryWideFieldStaysBounded) {
+    // 3000 x 4 cells: the picture is sized by the plot, not by the grid.
+    const fs::path field = scratchFile("wide.csv"), plot = scratchFile("wide.png");
+    {
+        std::ofstream f(field);
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 3000; ++c) f << (r + c) % 9 << (c + 1 < 3000 ? "," : "\n");
+    }
+    const auto r = tsf::test::runTsf("feel " + field.string() + " --duration 1 --plot " + plot.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream in(plot, std::ios::binary);
+    unsigned char ihdr[24] = {};
+    in.read(reinterpret_cast<char*>(ihdr), sizeof ihdr);
+    const uint32_t width = (uint32_t(ihdr[16]) << 24) | (uint32_t(ihdr[17]) << 16) | (uint32_t(ihdr[18]) << 8) | ihdr[19];
+    EXPECT_GT(width, 700u);
+    EXPECT_LT(width, 2400u);
+}
