@@ -14,7 +14,7 @@ DEPS=(
   build-essential cmake ninja-build pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
   libglm-dev libusb-1.0-0-dev libpng-dev lib3mf-dev libzip-dev
-  libcli11-dev nlohmann-json3-dev
+  libcli11-dev nlohmann-json3-dev libgdal-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   openscad admesh xvfb xauth
 )
@@ -58,7 +58,7 @@ cmake --build build -j"$(nproc)" --target tsf
 mkdir -p out
 set -x
 ./build/tsf gen examples/airports-europe.csv --points x=lon,y=lat --bins 40 --mirror \
-    -o out/airports-europe.stl --scad out/airports-europe.scad
+    -o out/airports-europe.stl --scad out/airports-europe.scad --preview out/airports-europe.png
 ./build/tsf render out/airports-europe.scad -o out/airports-europe.openscad.stl
 ./build/tsf verify out/airports-europe.openscad.stl --scene out/airports-europe.stl.scene.json \
     --reference out/airports-europe.stl

@@ -32,4 +32,13 @@ private:
     std::string detail_;
 };
 
+/// An output file could not be written where the user asked: its folder is
+/// missing or not writable, the disk is full, or a file-size limit was hit.
+/// The user can fix it, so it is bad input (exit 2), not a failed tool.
+class OutputError : public InputError {
+public:
+    /// path: the output the user named; what: the reason (the OS message).
+    OutputError(const std::string& path, const std::string& what) : InputError(path, 0, 0, what) {}
+};
+
 }  // namespace tsf

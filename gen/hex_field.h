@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "gen/field_input.h"
 #include "gen/hex_grid.h"
 
 namespace tsf {
@@ -25,6 +26,8 @@ struct HexField {
     /// True when every cell holds one input value as read (no averaging,
     /// no interpolation, no cell repeated): one pillar per value.
     bool one_to_one = false;
+    /// What was read from the file (filled by loadField, gen/io/load_field.h).
+    FieldInput input;
 
     double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }
     double& at(int32_t col, int32_t row) { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }

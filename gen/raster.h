@@ -12,6 +12,13 @@
 
 namespace tsf {
 
+/// One thing a reader detected or assumed about a file, for `tsf info`:
+/// ("delimiter", "semicolon (detected)"), ("header", "line 1 skipped").
+struct ReadFact {
+    std::string name;
+    std::string value;
+};
+
 struct Raster {
     int32_t cols = 0;
     int32_t rows = 0;
@@ -23,10 +30,18 @@ struct Raster {
     /// Lower-left corner of the lower-left cell in data units (ESRI xllcorner/yllcorner).
     double x_origin = 0.0;
     double y_origin = 0.0;
+    /// What the reader detected (dialect, header, no-data value, ...), in reading order.
+    std::vector<ReadFact> facts;
 
     double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(cols) + size_t(col)]; }
     double& at(int32_t col, int32_t row) { return values[size_t(row) * size_t(cols) + size_t(col)]; }
     bool empty() const { return cols == 0 || rows == 0; }
+    /// The value of the first fact named `name`; "" when there is none.
+    std::string fact(const std::string& name) const {
+        for (const ReadFact& f : facts)
+            if (f.name == name) return f.value;
+        return "";
+    }
 };
 
 }  // namespace tsf

@@ -1,7 +1,5 @@
 #include "haptics/force_plot.h"
 
-#include <png.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,80 +9,17 @@
 
 #include <glm/geometric.hpp>
 
-#include "gen/util/atomic_file.h"
+#include "gen/error.h"
+#include "gen/util/rgb_image.h"
 #include "haptics/force_model.h"
 #include "haptics/height_sampling.h"
 
 namespace tsf::haptics {
 namespace {
 
-struct Image {
-    int w = 0, h = 0;
-    std::vector<uint8_t> rgb;
-    void set(int x, int y, uint32_t c) {
-        if (x < 0 || y < 0 || x >= w || y >= h) return;
-        uint8_t* p = &rgb[(size_t(y) * size_t(w) + size_t(x)) * 3];
-        p[0] = uint8_t(c >> 16);
-        p[1] = uint8_t(c >> 8);
-        p[2] = uint8_t(c);
-    }
-    void dot(int x, int y, int r, uint32_t c) {
-        for (int dy = -r; dy <= r; ++dy)
-            for (int dx = -r; dx <= r; ++dx)
-                if (dx * dx + dy * dy <= r * r) set(x + dx, y + dy, c);
-    }
-};
-
-/// 3 x 5 glyphs for the labels: digits, '.', 'N', ' '. Each row is 3 bits.
-const uint8_t* glyph(char ch) {
-    static const uint8_t kDigits[10][5] = {{7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7},
-                                           {5, 5, 7, 1, 1}, {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1},
-                                           {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7}};
-    static const uint8_t kDot[5] = {0, 0, 0, 0, 2};
-    static const uint8_t kN[5] = {5, 7, 7, 7, 5};
-    static const uint8_t kSpace[5] = {0, 0, 0, 0, 0};
-    if (ch >= '0' && ch <= '9') return kDigits[ch - '0'];
-    if (ch == '.') return kDot;
-    if (ch == 'N') return kN;
-    return kSpace;
-}
-
-void text(Image& img, int x, int y, const char* s, int scale, uint32_t c) {
-    for (; *s; ++s, x += 4 * scale) {
-        const uint8_t* g = glyph(*s);
-        for (int row = 0; row < 5; ++row)
-            for (int col = 0; col < 3; ++col)
-                if (g[row] & (4 >> col))
-                    for (int sy = 0; sy < scale; ++sy)
-                        for (int sx = 0; sx < scale; ++sx) img.set(x + col * scale + sx, y + row * scale + sy, c);
-    }
-}
-
-void writePng(const std::string& path, const Image& img) {
-    FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!png || !info) {
-        png_destroy_write_struct(&png, &info);
-        std::fclose(f);
-        throw std::runtime_error("libpng could not start writing " + path);
-    }
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        std::fclose(f);
-        throw std::runtime_error("libpng failed while writing " + path);
-    }
-    png_init_io(png, f);
-    png_set_IHDR(png, info, png_uint_32(img.w), png_uint_32(img.h), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    for (int y = 0; y < img.h; ++y)
-        png_write_row(png, const_cast<png_bytep>(&img.rgb[size_t(y) * size_t(img.w) * 3]));
-    png_write_end(png, info);
-    png_destroy_write_struct(&png, &info);
-    if (std::fclose(f) != 0) throw std::runtime_error("cannot finish writing " + path);
-}
+constexpr uint32_t kInk = 0x202020;
+constexpr uint32_t kAirColour = 0x7fb2ff;  // light blue: the probe in the air
+constexpr int kMaxFieldPx = 2048;          // the field part's longer side, at most
 
 }  // namespace
 
@@ -101,15 +36,19 @@ uint32_t forceColour(double fraction) {
 
 void writeForcePlotPng(const std::string& path, const HeightGrid& grid, const FieldMapping& mapping,
                        const ForceLog& log, double max_force_N, const PlotOptions& options) {
+    // The field part's longer side is max_field_px whatever the grid's size,
+    // so the picture stays bounded (a 20000-column grid is drawn smaller, not
+    // 20000 pixels wide).
     const int longest = std::max(grid.cols, grid.rows);
-    const double px_per_cell = std::max(1.0, double(std::max(64, options.max_field_px)) / longest);
+    const int max_px = std::clamp(options.max_field_px, 64, kMaxFieldPx);
+    const double px_per_cell = double(max_px) / std::max(1, longest);
     const int fw = std::max(1, int(std::lround(grid.cols * px_per_cell)));
     const int fh = std::max(1, int(std::lround(grid.rows * px_per_cell)));
-    constexpr int kMargin = 12, kBarW = 18, kLegendW = 70;
-    Image img;
-    img.w = kMargin + fw + kMargin + kBarW + kLegendW;
-    img.h = std::max(fh + 2 * kMargin, 160);
-    img.rgb.assign(size_t(img.w) * size_t(img.h) * 3, 255);
+    constexpr int kMargin = 12, kBarW = 18, kLegendW = 230, kScale = 2;
+    const int title_h = options.title.empty() ? 0 : textHeight(kScale) + kMargin;
+    const int top = kMargin + title_h;
+    RgbImage img(kMargin + fw + kMargin + kBarW + kLegendW, std::max(top + fh + kMargin, top + 150), 0xffffff);
+    if (!options.title.empty()) drawText(img, kMargin, kMargin, options.title, kScale, kInk);
     // Field: grey relief, north up.
     for (int y = 0; y < fh; ++y)
         for (int x = 0; x < fw; ++x) {
@@ -117,14 +56,14 @@ void writeForcePlotPng(const std::string& path, const HeightGrid& grid, const Fi
             const double gj = (grid.rows - (y + 0.5) / px_per_cell) - 0.5;
             const double h = std::clamp(sampleHeightOnly(grid, gi, gj, Interpolation::kBilinear), 0.0, 1.0);
             const uint32_t g = uint32_t(std::lround(60 + 170 * h));
-            img.set(kMargin + x, kMargin + y, (g << 16) | (g << 8) | g);
+            img.set(kMargin + x, top + y, (g << 16) | (g << 8) | g);
         }
     // Path.
     auto toPixel = [&](const Vec3& p, int& x, int& y) {
         const GridPoint g = deviceToGrid(mapping, p);
         const double fx = (g.gi + 0.5) * px_per_cell, fy = (grid.rows - (g.gj + 0.5)) * px_per_cell;
         x = kMargin + int(std::lround(std::clamp(fx, 0.0, double(fw - 1))));
-        y = kMargin + int(std::lround(std::clamp(fy, 0.0, double(fh - 1))));
+        y = top + int(std::lround(std::clamp(fy, 0.0, double(fh - 1))));
     };
     const double limit = max_force_N > 0.0 ? max_force_N : 1.0;
     for (size_t i = 0; i < log.size(); ++i) {
@@ -132,7 +71,7 @@ void writeForcePlotPng(const std::string& path, const HeightGrid& grid, const Fi
         if (r.flags & kFlagContact) continue;
         int x, y;
         toPixel(r.position_m, x, y);
-        img.set(x, y, 0x9ec9ff);
+        img.set(x, y, kAirColour);
     }
     for (size_t i = 0; i < log.size(); ++i) {
         const LogRecord& r = log[i];
@@ -141,19 +80,26 @@ void writeForcePlotPng(const std::string& path, const HeightGrid& grid, const Fi
         toPixel(r.position_m, x, y);
         img.dot(x, y, 2, forceColour(glm::length(r.force_N) / limit));
     }
-    // Colour bar and labels.
-    const int bx = kMargin + fw + kMargin, top = kMargin, bottom = img.h - kMargin - 1;
+    // Colour bar, labelled in newtons.
+    const int bx = kMargin + fw + kMargin, bottom = top + std::max(fh, 150 - kMargin) - 1;
     for (int y = top; y <= bottom; ++y) {
-        const uint32_t c = forceColour(double(bottom - y) / double(bottom - top));
+        const uint32_t c = forceColour(double(bottom - y) / double(std::max(1, bottom - top)));
         for (int x = 0; x < kBarW; ++x) img.set(bx + x, y, c);
     }
     char label[32];
     std::snprintf(label, sizeof label, "%.1f N", max_force_N);
-    text(img, bx + kBarW + 4, top, label, 2, 0x202020);
-    text(img, bx + kBarW + 4, bottom - 9, "0 N", 2, 0x202020);
-    AtomicFile out(path);
-    writePng(out.tempPath(), img);
-    out.commit();
+    const int lx = bx + kBarW + 6;
+    drawText(img, lx, top, label, kScale, kInk);
+    drawText(img, lx, bottom - textHeight(kScale), "0 N", kScale, kInk);
+    // Legend: what the marks mean.
+    const int ly = top + (bottom - top) / 2 - 3 * textHeight(kScale);
+    img.line(lx, ly + 4, lx + 16, ly + 4, 1, kAirColour);
+    drawText(img, lx + 22, ly, "path in the air", kScale, kInk);
+    img.dot(lx + 8, ly + 4 + 3 * textHeight(kScale), 3, forceColour(0.75));
+    drawText(img, lx + 22, ly + 3 * textHeight(kScale), "touch: force", kScale, kInk);
+    drawText(img, lx + 22, ly + 5 * textHeight(kScale), "(colour bar)", kScale, kInk);
+    drawText(img, lx + 22, ly + 7 * textHeight(kScale), "north is up", kScale, kInk);
+    writePng(path, img);
 }
 
 }  // namespace tsf::haptics

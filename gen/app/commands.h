@@ -14,7 +14,7 @@ namespace tsf::cli {
 /// Exit codes shared by all subcommands.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitCheckFailed = 1;   ///< a requested check (verify) did not pass
-inline constexpr int kExitBadInput = 2;      ///< bad input file or parameter
+inline constexpr int kExitBadInput = 2;      ///< bad input file or parameter, or an output that cannot be written
 inline constexpr int kExitToolFailed = 3;    ///< an external tool (openscad, ...) failed or is missing
 inline constexpr int kExitDeviceFailed = 4;  ///< a haptic device could not be used
 inline constexpr int kExitInterrupted = 130; ///< SIGINT

@@ -4,6 +4,8 @@
 // as tsf gen and feels the relief gen prints (haptics/printed_relief.h).
 #include <signal.h>
 
+#include <filesystem>
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -33,6 +35,7 @@
 #include "haptics/height_grid.h"
 #include "haptics/loop_clock.h"
 #include "haptics/printed_relief.h"
+#include "gen/util/output_paths.h"
 #include "haptics/replay_device.h"
 #include "haptics/scale_space.h"
 #include "haptics/sim_device.h"
@@ -226,6 +229,10 @@ void runFeel(const FeelOptions& o) {
         throw InputError("--device must be sim, replay:FILE or falcon (got '" + spec + "')");
     if (is_replay && spec.size() == 7) throw InputError("--device replay: needs a file name, as in replay:session.csv");
     if (!o.firmware.empty() && !is_falcon) throw InputError("--firmware is for --device falcon");
+    checkOutputPaths({{o.gen.input, "the field"},
+                      {is_replay ? spec.substr(7) : std::string(), "the recording replayed"},
+                      {o.firmware, "--firmware"}},
+                     {{o.log, "--log"}, {o.plot, "--plot"}});
     const SimTrajectory trajectory = parseSimTrajectory(o.trajectory);
     FalconOptions falcon_options;
     if (is_falcon && !o.firmware.empty()) falcon_options.firmware = readFalconFirmware(o.firmware);
@@ -305,7 +312,12 @@ void runFeel(const FeelOptions& o) {
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall).count();
 
     if (!o.log.empty()) writeForceLogCsv(o.log, log);
-    if (!o.plot.empty()) writeForcePlotPng(o.plot, grid, mapping, log, o.max_force_N);
+    if (!o.plot.empty()) {
+        haptics::PlotOptions po;
+        po.title = "tsf feel: " + std::filesystem::path(o.gen.input).filename().string() + ", " + o.device + ", " +
+                   std::to_string(log.size()) + " ticks";
+        writeForcePlotPng(o.plot, grid, mapping, log, o.max_force_N, po);
+    }
 
     const RendererCounters& c = renderer.counters();
     const double contact_pct = c.ticks ? 100.0 * double(c.contact_ticks) / double(c.ticks) : 0.0;

@@ -1,11 +1,13 @@
 // tsf gen: field in, model out (mesh file, OpenSCAD, scene sidecar), verified.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 
 #include "gen/app/commands.h"
 #include "gen/app/gen_options.h"
 #include "gen/app/gen_summary.h"
+#include "gen/app/input_report.h"
 #include "gen/app/stage_timer.h"
 #include "gen/app/preview.h"
 #include "gen/direct_mesher.h"
@@ -13,6 +15,8 @@
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/scad/scad_emitter.h"
 #include "gen/scene_json.h"
+#include "gen/util/file_bytes.h"
+#include "gen/util/output_paths.h"
 #include "verify/verify_model.h"
 
 namespace tsf::cli {
@@ -32,7 +36,57 @@ struct GenCommandOptions {
     std::string command_line;
     std::string preview;
     bool verify_full = false;
+    bool force = false;
 };
+
+// Largest existing file read to decide whether tsf wrote it (parameter sets, scene sidecar).
+constexpr int64_t kMaxOwnFileBytes = 64 << 20;
+
+std::string sidecarPath(const GenCommandOptions& o) { return (o.output.empty() ? o.scad : o.output) + ".scene.json"; }
+
+ScadOptions scadOptions(const GenCommandOptions& o) {
+    ScadOptions so;
+    parseScadStrategy(o.scad_strategy, so.strategy);
+    so.inline_library = !o.scad_library_beside;
+    so.source = o.gen.input;
+    so.command = o.command_line;
+    return so;
+}
+
+// A file tsf names itself (not given on the command line) that exists and
+// was not written by tsf is refused unless --force.
+void refuseForeignFile(const std::string& path, bool (*ours)(const std::string&), const std::string& what,
+                       const std::string& alternative) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return;
+    if (ours(readFileBytes(path, kMaxOwnFileBytes))) return;
+    throw InputError(path, 0, 0,
+                     "exists and was not written by tsf; it would be replaced by " + what +
+                         ". Give --force to replace it, or " + alternative);
+}
+
+bool isTsfScene(const std::string& text) {
+    return text.find("\"" + std::string(kSceneJsonFormat) + "\"") != std::string::npos;
+}
+
+// No output may be the input or another output, and files the user did not
+// name (the parameter sets beside --scad, the scene sidecar) replace only
+// what tsf wrote before, unless --force.
+void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
+    std::vector<NamedPath> outputs{{o.output, "-o"}, {o.preview, "--preview"}};
+    const std::vector<std::string> scad_paths = o.scad.empty() ? std::vector<std::string>() : scadOutputPaths(so, o.scad);
+    if (!o.scad.empty()) outputs.push_back({o.scad, "--scad"});
+    if (so.write_parameter_sets && !o.scad.empty())
+        outputs.push_back({scad_paths[1], "the OpenSCAD parameter sets written beside --scad"});
+    if (!o.no_sidecar) outputs.push_back({sidecarPath(o), "the scene sidecar (--no-scene leaves it out)"});
+    checkOutputPaths({{o.gen.input, "the input"}}, outputs);
+    if (o.force) return;
+    if (so.write_parameter_sets && !o.scad.empty())
+        refuseForeignFile(scad_paths[1], isTsfParameterSetFile, "the OpenSCAD parameter sets of --scad " + o.scad,
+                          "choose another --scad name");
+    if (!o.no_sidecar)
+        refuseForeignFile(sidecarPath(o), isTsfScene, "the scene sidecar", "give --no-scene");
+}
 
 // Grids above this many cells print progress lines without being asked.
 constexpr int64_t kProgressCells = 250000;
@@ -63,6 +117,10 @@ std::string verifyLines(const VerifyReport& r) {
 void runGen(const GenCommandOptions& o) {
     if (o.output.empty() && o.scad.empty())
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
+    const ScadOptions so = scadOptions(o);
+    checkOutputs(o, so);
+    if (!o.preview.empty() && lowerCaseExtension(o.preview) != ".png")
+        throw InputError(o.preview, 0, 0, "--preview writes a PNG picture: give a name ending in .png");
     StageTimer timer(o.progress);
     GenSummary summary;
     summary.input = o.gen.input;
@@ -112,25 +170,22 @@ void runGen(const GenCommandOptions& o) {
         summary.outputs.push_back({o.output, "model"});
     }
     if (!o.preview.empty()) {
-        if (o.output.empty() || lowerCaseExtension(o.output) == ".obj")
-            throw InputError("--preview draws the written model: give -o MODEL.stl, .3mf or .off");
         timer.begin("drawing preview");
-        writeModelPreview(o.output, o.preview);
+        writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
         summary.outputs.push_back({o.preview, "preview picture"});
     }
     if (!o.scad.empty()) {
         timer.begin("writing OpenSCAD");
-        ScadOptions so;
-        parseScadStrategy(o.scad_strategy, so.strategy);
-        so.inline_library = !o.scad_library_beside;
-        so.source = o.gen.input;
-        so.command = o.command_line;
         writeScad(scene, so, o.scad);
-        for (const std::string& path : scadOutputPaths(so, o.scad)) summary.outputs.push_back({path, "OpenSCAD"});
+        const std::vector<std::string> paths = scadOutputPaths(so, o.scad);
+        for (size_t k = 0; k < paths.size(); ++k)
+            summary.outputs.push_back({paths[k], k == 0 ? "OpenSCAD"
+                                                 : so.write_parameter_sets && k == 1 ? "OpenSCAD parameter sets, openscad -p"
+                                                                                     : "OpenSCAD library"});
     }
     if (!o.no_sidecar) {
         // The scene sidecar lets `tsf verify --scene` check any mesh of this model later.
-        const std::string sidecar = (o.output.empty() ? o.scad : o.output) + ".scene.json";
+        const std::string sidecar = sidecarPath(o);
         writeSceneJson(scene, sidecar);
         summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
     }
@@ -156,13 +211,18 @@ void addGenCommand(CLI::App& app) {
     cmd->add_option("-o,--output", opts->output, "Model file: .stl (binary), .3mf, .off or .obj");
     cmd->add_option("--scad", opts->scad, "Also write a parametric OpenSCAD file");
     cmd->add_flag("--ascii", opts->ascii, "Write ASCII STL instead of binary");
-    cmd->add_option("--preview", opts->preview, "Also draw the written model to this PNG (needs openscad; xvfb-run when there is no display)");
+    cmd->add_option("--preview", opts->preview,
+                    "Also draw the model to this PNG: framed to fill it, coloured by height, north arrow, scale bar "
+                    "and size in mm; with --mirror the underside beside the top (drawn by tsf, no OpenSCAD needed)");
     cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
     cmd->add_flag("--verify-full", opts->verify_full,
                   "Run every check even on very large models (self-intersections, printability; minutes)");
     cmd->add_flag("--json", opts->json, "Print the summary as JSON");
     cmd->add_flag("--progress", opts->progress, "Print each stage and its time on stderr");
     cmd->add_flag("--no-scene", opts->no_sidecar, "Do not write the MODEL.scene.json sidecar");
+    cmd->add_flag("--force", opts->force,
+                  "Replace MODEL.json (parameter sets beside --scad) and MODEL.scene.json even when they exist "
+                  "and were not written by tsf");
     cmd->add_option("--scad-strategy", opts->scad_strategy,
                     "polyhedron: one polyhedron() built from the values (fast, default) | csg: union of one prism "
                     "per cell (slow, tolerant of hand-added geometry); see docs/openscad.md")
@@ -188,10 +248,13 @@ void addInfoCommand(CLI::App& app) {
         if (*json) {
             nlohmann::json j = sceneFactsJson(scene);
             j["input"] = opts->input;
+            j["read"] = fieldInputJson(field.input);
             j["field"] = {{"how", field.how}, {"pitch_data_units", field.pitch_data}};
             std::cout << j.dump(2) << "\n";
         } else {
-            std::cout << "tsf info: " << opts->input << "\n  input     " << field.how << "\n" << formatSceneFacts(scene);
+            std::cout << "tsf info: " << opts->input << "\n"
+                      << formatFieldInput(field.input) << "  input     " << field.how << "\n"
+                      << formatSceneFacts(scene);
         }
     });
 }

@@ -29,8 +29,9 @@ void parseBaseline(const std::string& text, SceneParams& p) {
 void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     if (with_input)
         cmd->add_option("input", o.input,
-                        "Field file: grid CSV, PGM (P2/P5), PNG (grey), ESRI ASCII grid (.asc), or a CSV of points "
-                        "with --points. Row 0 of a raster is its top (north) edge.")
+                        "Field file: grid CSV, PGM (P2/P5), PNG (grey), ESRI ASCII grid (.asc), GeoTIFF or any other "
+                        "raster GDAL reads, or a CSV of points with --points. Row 0 of a raster is its top (north) "
+                        "edge.")
             ->required();
     auto* in = "Input";
     cmd->add_option("--points", o.points,
@@ -46,9 +47,14 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--sample", o.sample, "Raster -> hexagons: mean (of the pixels in a hexagon) | nearest | bilinear")
         ->check(CLI::IsMember({"mean", "nearest", "bilinear"}))->capture_default_str()->group(in);
     cmd->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; tab space (default: detect)")->group(in);
+    cmd->add_flag("--decimal-comma", o.decimal_comma,
+                  "Grid CSV: read 1,5 as 1.5 (spreadsheet exports; default: detected when the delimiter is ; "
+                  "tab or space)")
+        ->group(in);
     cmd->add_option_function<double>(
            "--nodata", [&o](double v) { o.nodata = v; },
-           "This value means 'no data' (e.g. -9999): such cells become pits, never heights")
+           "This value means 'no data' (e.g. -9999): such cells become pits, never heights. Empty cells, "
+           "nan, NA, N/A and - are always no data")
         ->group(in);
     cmd->add_option("--project", o.project,
                     "Points: auto (equirectangular when the columns are named lon/lat), none, equirect "

@@ -5,6 +5,7 @@
 
 #include "gen/app/commands.h"
 #include "gen/error.h"
+#include "gen/util/temp_files.h"
 
 namespace tsf::cli {
 namespace {
@@ -23,14 +24,17 @@ void setInvocation(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     tsf::cli::setInvocation(argc, argv);
+    tsf::installTempFileCleanup();  // no temporary file outlives a signal or a file-size limit
     CLI::App app{"tsf " TSF_VERSION " - turn a 2D scalar field into something you can feel:\n"
                  "a 3D-printable model of hexagonal pillars (STL, 3MF, OpenSCAD) or a surface\n"
                  "rendered on a force-feedback device."};
     app.require_subcommand(1);
     app.set_version_flag("--version", "tsf " TSF_VERSION);
     app.footer("Run 'tsf <command> --help' for the options of one command.\n"
-               "Exit codes: 0 ok, 1 a check failed, 2 bad input, 3 external tool failed,\n"
-               "4 device failed, 130 interrupted.");
+               "Exit codes: 0 ok; 1 a check failed; 2 bad input, a bad option, or an output\n"
+               "that cannot be written (missing folder, no permission, disk full, an output\n"
+               "that would overwrite an input or another output); 3 only when an external\n"
+               "tool (openscad, node) failed or is missing; 4 a device failed; 130 interrupted.");
     tsf::cli::addGenCommand(app);
     tsf::cli::addInfoCommand(app);
     tsf::cli::addRenderCommand(app);

@@ -1,39 +1,16 @@
 #include "gen/app/preview.h"
 
-#include <filesystem>
-#include <fstream>
-#include <stdexcept>
-#include <unistd.h>
-
-#include "verify/render/openscad_runner.h"
+#include "gen/mesh_picture.h"
+#include "gen/util/rgb_image.h"
 
 namespace tsf::cli {
 
-void writeModelPreview(const std::string& model_path, const std::string& png_path, int width_px, int height_px) {
-    namespace fs = std::filesystem;
-    const fs::path model = fs::absolute(model_path);
-    const fs::path scad = fs::temp_directory_path() / ("tsf-preview-" + std::to_string(::getpid()) + ".scad");
-    {
-        std::ofstream out(scad);
-        // A warm colour and the default light show steps between pillars clearly.
-        out << "color(\"#e8a33d\") import(\"" << model.generic_string() << "\");\n";
-    }
-    ScadRenderRequest rq;
-    rq.scad_path = scad.string();
-    rq.output_path = png_path;
-    rq.format = ScadExportFormat::Png;
-    rq.png.width_px = width_px;
-    rq.png.height_px = height_px;
-    rq.timeout_s = 300;
-    const auto engine = makeOpenScadEngine();
-    const ScadRenderResult result = renderScad(*engine, rq);
-    std::error_code ignored;
-    fs::remove(scad, ignored);
-    if (!result.ok()) {
-        std::string lines;
-        for (const ScadMessage& m : result.errors()) lines += "\n  " + m.text;
-        throw std::runtime_error("the preview picture could not be drawn: " + result.summary + lines);
-    }
+void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, int width_px, int height_px) {
+    MeshPictureOptions po;
+    po.width_px = width_px;
+    po.height_px = height_px;
+    po.underside = underside;
+    writePng(png_path, drawMeshPicture(mesh, po));
 }
 
 }  // namespace tsf::cli

@@ -1,16 +1,19 @@
-// A preview picture of a written model, so a sighted helper can check it
-// before hours of printing. Drawn by OpenSCAD (under a virtual display when
-// there is none) from the model file itself, so it shows what was written.
+// A preview picture of a generated model, so a sighted helper can check it
+// before hours of printing: drawn by tsf from the mesh it writes
+// (gen/mesh_picture.h), framed to fill the picture, coloured by height, with
+// north and a scale bar, and the underside beside the top for a mirrored
+// model. Needs no OpenSCAD and no display.
 #pragma once
 
 #include <string>
 
+#include "gen/mesh.h"
+
 namespace tsf::cli {
 
-/// Renders model_path (STL, 3MF or OFF) to png_path (width x height pixels).
-/// Throws std::runtime_error with OpenSCAD's error lines on failure, and
-/// ScadEngineMissing (verify/render/openscad_runner.h) when OpenSCAD is missing.
-void writeModelPreview(const std::string& model_path, const std::string& png_path, int width_px = 1024,
-                       int height_px = 768);
+/// Draws `mesh` to png_path (width x height pixels); `underside` adds the
+/// view from below. Throws tsf::OutputError when the file cannot be written.
+void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, int width_px = 1200,
+                       int height_px = 800);
 
 }  // namespace tsf::cli

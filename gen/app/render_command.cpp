@@ -19,7 +19,13 @@
 #include "verify/render/engine_output_check.h"
 #include "verify/render/engine_select.h"
 #include "verify/render/openscad_runner.h"
+#include "gen/mesh_io/mesh_reader.h"
+#include "gen/mesh_io/mesh_writer.h"
+#include "gen/mesh_picture.h"
 #include "gen/scad/scad_variables.h"
+#include "gen/util/rgb_image.h"
+#include "gen/util/output_paths.h"
+#include "gen/util/temp_files.h"
 
 namespace tsf::cli {
 namespace {
@@ -129,30 +135,18 @@ std::string scadString(const std::string& s) {
 // picture then shows exactly the file that will be printed).
 class ImportWrapper {
 public:
-    explicit ImportWrapper(const std::string& mesh_path) {
-        const char* tmp = std::getenv("TMPDIR");
-        std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/tsf-preview-XXXXXX.scad";
-        std::vector<char> buf(pattern.begin(), pattern.end());
-        buf.push_back('\0');
-        const int fd = mkstemps(buf.data(), 5);
-        if (fd < 0) throw std::runtime_error("cannot create a temporary file for the PNG preview in " + pattern);
-        close(fd);
-        path_ = buf.data();
-        std::ofstream out(path_);
+    explicit ImportWrapper(const std::string& mesh_path) : file_("tsf-preview-", ".scad") {
+        std::ofstream out(file_.path());
         // The same warm colour as tsf gen --preview: steps between pillars show clearly.
         out << "color(\"#e8a33d\") import(" << scadString(fs::absolute(mesh_path).string()) << ", convexity = 10);\n";
-        if (!out) throw std::runtime_error("cannot write " + path_);
-    }
-    ~ImportWrapper() {
-        std::error_code ec;
-        fs::remove(path_, ec);
+        if (!out) throw std::runtime_error("cannot write " + file_.path());
     }
     ImportWrapper(const ImportWrapper&) = delete;
     ImportWrapper& operator=(const ImportWrapper&) = delete;
-    const std::string& path() const { return path_; }
+    const std::string& path() const { return file_.path(); }
 
 private:
-    std::string path_;
+    ScopedTempFile file_;  // removed on every exit, signals included
 };
 
 std::string readText(const std::string& path) {
@@ -188,6 +182,8 @@ void runRender(const RenderOptions& o) {
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.amf and/or --png PREVIEW.png");
     if (o.imgsize.size() != 2 || o.imgsize[0] < 16 || o.imgsize[1] < 16 || o.imgsize[0] > 8192 || o.imgsize[1] > 8192)
         throw InputError("--imgsize expects WIDTH,HEIGHT in pixels, each 16..8192");
+    checkOutputPaths({{o.scad, "the model to render"}, {o.params, "the parameter file (-p)"}},
+                     {{o.output, "-o"}, {o.png, "--png"}});
     ScadRenderRequest base;
     base.scad_path = o.scad;
     base.parameter_file = o.params;
@@ -261,8 +257,21 @@ void runRender(const RenderOptions& o) {
                              o.output.c_str(), check.triangles, check.volume_mm3);
         }
     }
-    if (!o.png.empty()) {
-        // Pictures need OpenGL: only the desktop OpenSCAD draws them.
+    const std::string out_ext = lowerCaseExtension(o.output);
+    if (!o.png.empty() && o.camera == kDefaultPngCamera &&
+        (out_ext == ".stl" || out_ext == ".3mf" || out_ext == ".off")) {
+        // The exported file, drawn by tsf as tsf gen --preview draws it:
+        // framed, coloured by height, north and scale, the underside too.
+        const Mesh mesh = readMesh(o.output);
+        MeshPictureOptions po;
+        po.width_px = o.imgsize[0];
+        po.height_px = o.imgsize[1];
+        po.underside = hasRaisedUnderside(mesh);
+        writePng(o.png, drawMeshPicture(mesh, po));
+        if (!o.quiet) std::fprintf(stderr, "tsf: wrote %s\n", o.png.c_str());
+    } else if (!o.png.empty()) {
+        // A camera of the user's (or no exported mesh): OpenSCAD draws it; only
+        // the desktop OpenSCAD can (pictures need OpenGL).
         std::unique_ptr<ScadEngine> engine;
         try {
             engine = makeOpenScadEngine(o.openscad);
@@ -279,6 +288,11 @@ void runRender(const RenderOptions& o) {
             // Picture the exported file itself; parameters are already applied.
             wrapper = std::make_unique<ImportWrapper>(o.output);
             rq.scad_path = wrapper->path();
+            if (out_ext == ".stl" || out_ext == ".3mf" || out_ext == ".off") {
+                const Bounds b = meshBounds(readMesh(o.output));
+                rq.png.camera = cameraLookingAt(rq.png.camera, (b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2,
+                                                (b.min.z + b.max.z) / 2);
+            }
             rq.defines.clear();
             rq.parameter_file.clear();
             rq.parameter_set.clear();
@@ -307,7 +321,9 @@ void addRenderCommand(CLI::App& app) {
         "3 OpenSCAD missing, failed, timed out or wrote a broken mesh, 130 interrupted.");
     cmd->add_option("model", o->scad, "OpenSCAD file to render")->required();
     cmd->add_option("-o,--output", o->output, "Output: .stl (binary), .3mf, .off, .amf or .png");
-    cmd->add_option("--png", o->png, "Also write a preview picture of the result (.png)");
+    cmd->add_option("--png", o->png,
+                    "Also write a preview picture of the result (.png): framed, coloured by height, north arrow, "
+                    "scale bar, and the underside of a mirrored model");
     cmd->add_option("-D", o->defines,
                     "Override a parameter: NAME=VALUE, e.g. -D height=25 (repeatable; a bare word is a "
                     "string: -D transfer=log; NAME must be a variable the file assigns)");
@@ -324,7 +340,9 @@ void addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--imgsize", o->imgsize, "PNG size in pixels: WIDTH,HEIGHT")->delimiter(',')->expected(2)->capture_default_str();
     cmd->add_option("--camera", o->camera,
-                    "PNG camera as OpenSCAD --camera: translate x,y,z, rotate x,y,z (degrees), distance")
+                    "PNG camera as OpenSCAD --camera: translate x,y,z, rotate x,y,z (degrees), distance (mm; "
+                    "0 = frame the model), or eye x,y,z, centre x,y,z. Given, OpenSCAD draws the picture; by "
+                    "default tsf draws the exported model like tsf gen --preview")
         ->capture_default_str();
     cmd->add_flag("--no-check", o->no_check,
                   "Do not read the exported mesh back to check it is a closed solid (keeps a broken mesh for tsf verify)");

@@ -11,6 +11,22 @@
 #include "gen/resample.h"
 
 namespace tsf {
+namespace {
+
+// Values GIS tools and loggers write for "no data"; a raster whose smallest
+// value is one of them almost certainly means it as no data.
+bool looksLikeNoDataPlaceholder(double v) {
+    return v == -9999.0 || v == -99999.0 || v == -32768.0 || v == -32767.0 || v == -3.4028234663852886e38 ||
+           v == -1e30;
+}
+
+std::string formatValue(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+}  // namespace
 
 HexField loadField(const FieldLoadOptions& o) {
     if (!o.delimiter.empty() && o.delimiter != "," && o.delimiter != ";" && o.delimiter != "tab" &&
@@ -32,11 +48,15 @@ HexField loadField(const FieldLoadOptions& o) {
         const std::string projected = projectPoints(points, parseProjection(o.project));
         HexField f = binPoints(points, b);
         f.source = o.input;
+        f.input.kind = "points";
+        describeValues(table.weight, f.input);
+        f.input.values = int64_t(table.size());
         if (!projected.empty()) f.how += "; " + projected;
         return f;
     }
     RasterReadOptions ro;
     ro.delimiter = delimiter;
+    ro.decimal = o.decimal_comma ? DecimalMark::Comma : DecimalMark::Detect;
     Raster raster = readRaster(o.input, ro);
     int64_t nodata_cells = 0;
     if (o.nodata)
@@ -45,6 +65,22 @@ HexField loadField(const FieldLoadOptions& o) {
                 v = NAN;
                 ++nodata_cells;
             }
+    FieldInput input;
+    input.kind = raster.kind;
+    input.cols = raster.cols;
+    input.rows = raster.rows;
+    input.facts = raster.facts;
+    describeValues(raster.values, input);
+    std::string placeholder_note;
+    if (o.nodata) {
+        input.facts.push_back({"no-data value", formatValue(*o.nodata) + " (--nodata), " +
+                                                    std::to_string(nodata_cells) + " cells"});
+    } else if (looksLikeNoDataPlaceholder(input.min)) {
+        placeholder_note = "; the smallest value " + formatValue(input.min) +
+                           " looks like a no-data placeholder: give --nodata " + formatValue(input.min) +
+                           " if it is one";
+        input.facts.push_back({"note", placeholder_note.substr(2)});
+    }
     RasterPlacement pl;
     pl.hex_cols = o.bins;
     pl.method = parseResampleMethod(o.sample);
@@ -53,6 +89,8 @@ HexField loadField(const FieldLoadOptions& o) {
     pl.fit_depth_mm = o.fit_depth_mm;
     HexField f = placeRaster(raster, pl);
     f.source = o.input;
+    f.input = std::move(input);
+    f.how += placeholder_note;
     if (o.nodata) {
         std::ostringstream s;
         s << "; " << nodata_cells << " values equal to --nodata " << *o.nodata << " are no data";

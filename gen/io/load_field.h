@@ -32,6 +32,7 @@ struct FieldLoadOptions {
     int bins = 0;               ///< target number of hex columns (points and rasters); 0 = default
     std::string sample = "mean";  ///< raster -> hexes: mean | nearest | bilinear
     std::string delimiter;      ///< CSV delimiter: "," ";" "tab" "space" (or the character); "" = detect
+    bool decimal_comma = false; ///< grid CSV: "1,5" is 1.5 (default: detected, gen/io/decimal_mark.h)
     std::optional<double> nodata;  ///< rasters: this value means "no data" (e.g. -9999)
     std::string project = "auto";  ///< points: auto | none | equirect (point_projection.h)
     // Where the model goes: decides one pillar per value or resampling (RasterPlacement).
@@ -41,7 +42,11 @@ struct FieldLoadOptions {
 };
 
 /// Reads the input named in opts and builds its hex field (rasters are
-/// resampled, points are binned); HexField::source is opts.input. Throws
+/// resampled, points are binned); HexField::source is opts.input and
+/// HexField::input says what was read (the reader's detections, the raw
+/// values' range and no-data count; for points the weights' range). When a
+/// raster's smallest value is a common no-data placeholder (-9999, -32768,
+/// ...) and no --nodata was given, a fact and HexField::how say so. Throws
 /// tsf::InputError for a missing or malformed file and for a bad option.
 HexField loadField(const FieldLoadOptions& opts);
 

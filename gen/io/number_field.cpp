@@ -25,7 +25,7 @@ bool equalsNoCase(std::string_view a, std::string_view b) {
 }
 
 bool isNoDataSpelling(std::string_view s) {
-    return s.empty() || equalsNoCase(s, "nan") || equalsNoCase(s, "na");
+    return s.empty() || s == "-" || equalsNoCase(s, "nan") || equalsNoCase(s, "na") || equalsNoCase(s, "n/a");
 }
 
 // Number grammar only: from_chars would also accept "inf"/"nan" words, which

@@ -15,7 +15,7 @@ namespace tsf {
 
 enum class NumberField {
     Number,     ///< a finite number; value set
-    NoData,     ///< empty, "nan", "NaN", "NA" (any case) or another NaN spelling; value = NaN
+    NoData,     ///< empty, "-", "nan", "NA", "N/A" (any case) or another NaN spelling; value = NaN
     NotNumber,  ///< text that is not a number
     Infinite,   ///< "inf", "Infinity", or a number too large for a double ("1e999")
 };

@@ -6,6 +6,8 @@
 #include "gen/error.h"
 #include "gen/io/csv_grid_reader.h"
 #include "gen/io/esri_ascii_reader.h"
+#include "gen/io/file_magic.h"
+#include "gen/io/gdal_reader.h"
 #include "gen/io/number_field.h"
 #include "gen/io/pgm_reader.h"
 #include "gen/io/png_reader.h"
@@ -30,6 +32,22 @@ bool startsWithNoCase(std::string_view text, std::string_view word) {
     return lowerCase(std::string(text.substr(0, word.size()))) == word;
 }
 
+// Bytes enough to recognise any format by its magic number.
+constexpr size_t kMagicBytes = 4096;
+
+// Runs a GDAL read; its error says first what the file's magic bytes say it
+// is ("is a ZIP archive (an .xlsx or .ods spreadsheet?); GDAL cannot ...").
+template <class Read>
+Raster withMagicInErrors(std::string_view head, Read read) {
+    try {
+        return read();
+    } catch (const InputError& e) {
+        const std::string kind = binaryFileKind(head.substr(0, kMagicBytes));
+        if (kind.empty()) throw;
+        throw InputError(e.path(), e.line(), e.column(), "is " + kind + "; " + e.detail());
+    }
+}
+
 }  // namespace
 
 RasterFormat detectRasterFormat(std::string_view bytes, const std::string& path) {
@@ -38,6 +56,7 @@ RasterFormat detectRasterFormat(std::string_view bytes, const std::string& path)
     if (bytes.size() >= 3 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '7' &&
         (bytes[2] == ' ' || bytes[2] == '\t' || bytes[2] == '\n' || bytes[2] == '\r' || bytes[2] == '#'))
         return RasterFormat::Pgm;
+    if (!binaryFileKind(bytes.substr(0, kMagicBytes)).empty()) return RasterFormat::Gdal;
     std::string_view text = bytes;
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\n' || text.front() == '\r'))
@@ -47,6 +66,9 @@ RasterFormat detectRasterFormat(std::string_view bytes, const std::string& path)
     if (ext == ".png") return RasterFormat::Png;
     if (ext == ".pgm" || ext == ".pnm") return RasterFormat::Pgm;
     if (ext == ".asc") return RasterFormat::EsriAscii;
+    for (const char* gdal_ext : {".tif", ".tiff", ".hgt", ".img", ".vrt", ".nc", ".jp2", ".bil", ".flt", ".dem",
+                                 ".dt0", ".dt1", ".dt2"})
+        if (ext == gdal_ext) return RasterFormat::Gdal;
     return RasterFormat::Csv;
 }
 
@@ -56,6 +78,7 @@ const char* rasterFormatName(RasterFormat format) {
         case RasterFormat::Pgm: return "pgm";
         case RasterFormat::Png: return "png";
         case RasterFormat::EsriAscii: return "esri-ascii";
+        case RasterFormat::Gdal: return "gdal";
         default: return "auto";
     }
 }
@@ -67,7 +90,9 @@ RasterFormat parseRasterFormat(const std::string& name) {
     if (n == "pgm") return RasterFormat::Pgm;
     if (n == "png") return RasterFormat::Png;
     if (n == "esri-ascii" || n == "asc" || n == "esri") return RasterFormat::EsriAscii;
-    throw InputError("unknown raster format " + quoteForMessage(name) + "; expected auto, csv, pgm, png or esri-ascii");
+    if (n == "gdal" || n == "geotiff" || n == "tif" || n == "tiff") return RasterFormat::Gdal;
+    throw InputError("unknown raster format " + quoteForMessage(name) +
+                     "; expected auto, csv, pgm, png, esri-ascii or gdal");
 }
 
 Raster parseRaster(std::string_view bytes, const std::string& path, const RasterReadOptions& opts) {
@@ -77,14 +102,20 @@ Raster parseRaster(std::string_view bytes, const std::string& path, const Raster
         case RasterFormat::Png: return parsePng(bytes, path);
         case RasterFormat::Pgm: return parsePgm(bytes, path);
         case RasterFormat::EsriAscii: return parseEsriAscii(bytes, path);
-        default: return parseCsvGrid(bytes, path, opts.delimiter);
+        case RasterFormat::Gdal: return withMagicInErrors(bytes, [&] { return parseGdalRaster(bytes, path); });
+        default: return parseCsvGrid(bytes, path, opts.delimiter, opts.decimal);
     }
 }
 
 Raster readRaster(const std::string& path, const RasterReadOptions& opts) {
     checkCsvDelimiter(opts.delimiter);
+    const std::string head = readFileHead(path, kMagicBytes);
+    RasterReadOptions o = opts;
+    if (o.format == RasterFormat::Auto) o.format = detectRasterFormat(head, path);
+    // GDAL reads the file itself (and any sidecar: .prj, .hdr, .aux.xml).
+    if (o.format == RasterFormat::Gdal) return withMagicInErrors(head, [&] { return readGdalRaster(path); });
     const std::string bytes = readFileBytes(path, kMaxInputFileBytes);
-    return parseRaster(bytes, path, opts);
+    return parseRaster(bytes, path, o);
 }
 
 }  // namespace tsf

@@ -87,7 +87,7 @@ void write3mf(const Mesh& mesh, const std::string& path, const MeshWriteOptions&
 
     const int result = NMR::lib3mf_writer_writetofileutf8(writer.get(), file.tempPath().c_str());
     if (result != LIB3MF_OK) {
-        throw std::runtime_error("writing '" + path + "' failed: " + lib3mfErrorText(result, writer.get()));
+        throw OutputError(path, "writing failed: " + lib3mfErrorText(result, writer.get()));
     }
     file.commit();
 }

@@ -323,6 +323,15 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     return o;
 }
 
+namespace {
+// The parameter sets tsf writes; any other name in the file was saved by a person.
+constexpr const char* kSetAsGenerated = "as generated";
+constexpr const char* kSetLayerSteps = "layer steps 0.2 mm";
+constexpr const char* kSetFlatBottom = "flat bottom";
+constexpr const char* kSetMirroredBottom = "mirrored bottom";
+constexpr const char* kSetHalfSize = "half size";
+}  // namespace
+
 std::string emitScadParameterSets(const Scene& scene) {
     const Parameters p = parametersOf(scene);
     nlohmann::ordered_json all;
@@ -354,14 +363,24 @@ std::string emitScadParameterSets(const Scene& scene) {
     half["base"] = number(std::max(p.base_mm / 2, p.z_step_mm));
 
     nlohmann::ordered_json sets;
-    sets["as generated"] = all;
-    sets["layer steps 0.2 mm"] = layers;
-    sets[p.mirrored ? "flat bottom" : "mirrored bottom"] = flip;
-    sets["half size"] = half;
+    sets[kSetAsGenerated] = all;
+    sets[kSetLayerSteps] = layers;
+    sets[p.mirrored ? kSetFlatBottom : kSetMirroredBottom] = flip;
+    sets[kSetHalfSize] = half;
     nlohmann::ordered_json doc;
     doc["parameterSets"] = sets;
     doc["fileFormatVersion"] = "1";
     return doc.dump(4) + "\n";
+}
+
+bool isTsfParameterSetFile(const std::string& json_text) {
+    const nlohmann::json doc = nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
+    if (!doc.is_object() || !doc.contains("parameterSets") || !doc["parameterSets"].is_object()) return false;
+    for (const auto& [name, set] : doc["parameterSets"].items())
+        if (name != kSetAsGenerated && name != kSetLayerSteps && name != kSetFlatBottom &&
+            name != kSetMirroredBottom && name != kSetHalfSize)
+            return false;
+    return true;
 }
 
 std::vector<std::string> scadOutputPaths(const ScadOptions& opts, const std::string& path) {

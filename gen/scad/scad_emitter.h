@@ -63,6 +63,11 @@ std::string emitScadParameterSets(const Scene& scene);
 /// unusable folder or an empty Scene, std::runtime_error for I/O failures.
 void writeScad(const Scene& scene, const ScadOptions& opts, const std::string& path);
 
+/// True when `json_text` is a parameter-set file holding only sets tsf
+/// writes (emitScadParameterSets), so replacing it loses nothing the user
+/// saved: no set added in OpenSCAD's customizer, no other kind of JSON.
+bool isTsfParameterSetFile(const std::string& json_text);
+
 /// The paths writeScad(scene, opts, path) writes, the .scad first.
 std::vector<std::string> scadOutputPaths(const ScadOptions& opts, const std::string& path);
 

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "gen/error.h"
+#include "gen/util/temp_files.h"
 
 namespace tsf {
 namespace {
@@ -61,6 +62,7 @@ AtomicFile::AtomicFile(const std::string& target_path) : target_path_(target_pat
         if (fd >= 0) {
             ::close(fd);
             temp_path_ = std::move(candidate);
+            cleanup_slot_ = registerTempFile(temp_path_);
             return;
         }
         if (errno == EEXIST) continue;  // a leftover from a crashed run with a recycled pid
@@ -70,24 +72,27 @@ AtomicFile::AtomicFile(const std::string& target_path) : target_path_(target_pat
 
 AtomicFile::~AtomicFile() {
     if (!committed_ && !temp_path_.empty()) ::unlink(temp_path_.c_str());
+    unregisterTempFile(cleanup_slot_);
 }
 
 void AtomicFile::commit() {
     if (committed_) throw std::logic_error("AtomicFile::commit called twice for " + target_path_);
     const int fd = ::open(temp_path_.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
-        throw std::runtime_error("cannot reopen temporary file '" + temp_path_ + "': " + osMessage(errno));
+        throw OutputError(target_path_, "cannot reopen the temporary file '" + temp_path_ + "': " + osMessage(errno));
     }
     if (::fsync(fd) != 0) {
         const int error_number = errno;
         ::close(fd);
-        throw std::runtime_error("cannot flush '" + temp_path_ + "' to disk: " + osMessage(error_number));
+        throw OutputError(target_path_, "cannot flush '" + temp_path_ + "' to disk: " + osMessage(error_number));
     }
     ::close(fd);
     if (::rename(temp_path_.c_str(), target_path_.c_str()) != 0) {
-        throw std::runtime_error("cannot replace '" + target_path_ + "': " + osMessage(errno));
+        throw OutputError(target_path_, "cannot replace the file: " + osMessage(errno));
     }
     committed_ = true;
+    unregisterTempFile(cleanup_slot_);
+    cleanup_slot_ = -1;
     syncFolder(folderOf(target_path_));
 }
 
@@ -96,7 +101,7 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     {
         std::ofstream out(file.tempPath(), std::ios::binary | std::ios::trunc);
         if (!out) {
-            throw std::runtime_error("cannot open '" + file.tempPath() + "' for writing: " + osMessage(errno));
+            throw OutputError(path, "cannot open '" + file.tempPath() + "' for writing: " + osMessage(errno));
         }
         write(out);
         errno = 0;
@@ -104,7 +109,7 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
         out.close();
         if (out.fail()) {
             const std::string reason = errno != 0 ? osMessage(errno) : std::string("write error (is the disk full?)");
-            throw std::runtime_error("writing '" + path + "' failed: " + reason);
+            throw OutputError(path, "writing failed: " + reason);
         }
     }
     file.commit();

@@ -9,7 +9,10 @@
 // fsyncs the temporary file, renames it over the target (atomic on POSIX file
 // systems because both are in one folder) and fsyncs the folder. If commit()
 // is never reached (an exception, an early return), the destructor removes
-// the temporary file and an existing target is left untouched.
+// the temporary file and an existing target is left untouched. While it
+// exists the temporary file is registered with temp_files.h, so SIGINT,
+// SIGTERM and SIGHUP remove it too, and a file-size limit (SIGXFSZ) is an
+// ordinary write failure.
 //
 // Caveats: the new file gets default permissions (0666 minus umask), not the
 // old target's; a symbolic link at the target is replaced by the file rather
@@ -40,7 +43,7 @@ public:
     bool committed() const { return committed_; }
 
     /// fsync the temporary file, rename it over the target, fsync the folder.
-    /// Throws std::runtime_error with the OS message when the sync or the
+    /// Throws tsf::OutputError with the OS message when the sync or the
     /// rename fails (the temporary file is then still removed by the
     /// destructor). Calling it twice is a bug.
     void commit();
@@ -49,6 +52,7 @@ private:
     std::string target_path_;
     std::string temp_path_;
     bool committed_ = false;
+    int cleanup_slot_ = -1;  ///< registerTempFile slot while the temporary file exists
 };
 
 /// Writes path atomically through a stream: opens the temporary file as a
@@ -56,7 +60,8 @@ private:
 /// disk shows up here), then commits. If write throws, the exception
 /// propagates and no file appears at path (an existing one is untouched).
 /// Throws tsf::InputError for an unusable folder (see AtomicFile) and
-/// std::runtime_error for I/O failures.
+/// tsf::OutputError (also an InputError) for I/O failures: a full disk, a
+/// file-size limit.
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace tsf

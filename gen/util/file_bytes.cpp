@@ -17,15 +17,31 @@ namespace {
                          std::to_string(max_bytes >> 20) + " MiB");
 }
 
-}  // namespace
-
-std::string readFileBytes(const std::string& path, int64_t max_bytes) {
+// stat()s path; throws InputError when it is missing, unreadable or a folder.
+struct stat statInput(const std::string& path) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0) {
         if (errno == ENOENT) throw InputError(path, 0, 0, std::string("file not found (") + std::strerror(errno) + ")");
         throw InputError(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
     }
     if (S_ISDIR(st.st_mode)) throw InputError(path, 0, 0, "is a folder, expected a file");
+    return st;
+}
+
+}  // namespace
+
+std::string readFileHead(const std::string& path, size_t head_bytes) {
+    statInput(path);
+    std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!file) throw InputError(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
+    std::string bytes(head_bytes, '\0');
+    bytes.resize(std::fread(bytes.data(), 1, head_bytes, file.get()));
+    if (std::ferror(file.get())) throw InputError(path, 0, 0, std::string("cannot read: ") + std::strerror(errno));
+    return bytes;
+}
+
+std::string readFileBytes(const std::string& path, int64_t max_bytes) {
+    const struct stat st = statInput(path);
     if (max_bytes > 0 && S_ISREG(st.st_mode) && int64_t(st.st_size) > max_bytes) tooLarge(path, st.st_size, max_bytes);
 
     std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);

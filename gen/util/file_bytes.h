@@ -14,4 +14,9 @@ namespace tsf {
 /// they expected. Works for pipes and other files without a size too.
 std::string readFileBytes(const std::string& path, int64_t max_bytes = 0);
 
+/// At most the first `head_bytes` bytes of the file, for telling its format
+/// from its magic bytes without reading all of it. Same errors as
+/// readFileBytes.
+std::string readFileHead(const std::string& path, size_t head_bytes);
+
 }  // namespace tsf

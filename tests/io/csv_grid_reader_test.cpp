@@ -132,7 +132,8 @@ TEST(CsvGridReader, BadNumberNamesLineColumnAndText) {
     // Column of the field's first non-blank character.
     EXPECT_INPUT_ERROR_AT(parseCsvGrid("1,2,3\n4,  7x,6\n", "b.csv"), 2, 5, "found \"7x\"");
     EXPECT_INPUT_ERROR_AT(parseCsvGrid("1,2\n\"é\",2\n", "b.csv"), 2, 1, "found \"é\"");
-    EXPECT_INPUT_ERROR_AT(parseCsvGrid("1;2\n3;1,5\n", "b.csv"), 2, 3, "decimal comma? write 1.5");
+    // Once a decimal point has been seen, a decimal comma is a mistake (decimal_mark.h).
+    EXPECT_INPUT_ERROR_AT(parseCsvGrid("1.5;2\n3;1,5\n", "b.csv"), 2, 3, "decimal comma? write 1.5");
     // Other readers' sloppiness is not accepted: thousands separators, units.
     EXPECT_INPUT_ERROR_AT(parseCsvGrid("1,2\n1 000,3\n", "b.csv", ','), 2, 1, "found \"1 000\"");
     EXPECT_INPUT_ERROR_AT(parseCsvGrid("1\n12m\n", "b.csv"), 2, 1, "\"12m\"");

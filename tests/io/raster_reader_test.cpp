@@ -46,7 +46,8 @@ TEST(RasterReader, FormatAndDelimiterOptions) {
     EXPECT_EQ(parseRasterFormat("ASC"), RasterFormat::EsriAscii);
     EXPECT_EQ(parseRasterFormat("png"), RasterFormat::Png);
     EXPECT_STREQ(rasterFormatName(RasterFormat::EsriAscii), "esri-ascii");
-    EXPECT_THROW(parseRasterFormat("tiff"), InputError);
+    EXPECT_EQ(parseRasterFormat("tiff"), RasterFormat::Gdal);
+    EXPECT_THROW(parseRasterFormat("jpeg"), InputError);
 }
 
 TEST(RasterReader, MissingFileNamesThePath) {

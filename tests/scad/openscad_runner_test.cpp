@@ -220,3 +220,22 @@ TEST(OpenScadRunner, TimeLimitStopsALongRender) {
 
 }  // namespace
 }  // namespace tsf
+
+namespace tsf {
+namespace {
+
+TEST(OpenScadRunner, ACameraWithADistanceIsHonoured) {
+    // Distance 0 (the default) lets OpenSCAD frame the model; any distance,
+    // or an eye and a centre, is the user's camera and is passed as given.
+    using Flags = std::vector<std::string>;
+    EXPECT_EQ(cameraFramingFlags(kDefaultPngCamera), (Flags{"--autocenter", "--viewall"}));
+    EXPECT_EQ(cameraFramingFlags("0,0,0,55,0,25,500"), Flags{}) << "at 500 mm";
+    EXPECT_EQ(cameraFramingFlags("100,100,100,0,0,0"), Flags{});
+    // A distance with translate 0,0,0 looks at the model's centre.
+    EXPECT_EQ(cameraLookingAt("0,0,0,55,0,25,500", 75, 60, 10), "75,60,10,55,0,25,500");
+    EXPECT_EQ(cameraLookingAt("5,0,0,55,0,25,500", 75, 60, 10), "5,0,0,55,0,25,500");
+    EXPECT_EQ(cameraLookingAt(kDefaultPngCamera, 75, 60, 10), kDefaultPngCamera);
+}
+
+}  // namespace
+}  // namespace tsf

@@ -74,7 +74,10 @@ public:
         if (!rq.parameter_set.empty()) argv.insert(argv.end(), {"-P", rq.parameter_set});
         if (rq.format == ScadExportFormat::Png) {
             argv.push_back("--imgsize=" + std::to_string(rq.png.width_px) + "," + std::to_string(rq.png.height_px));
-            argv.insert(argv.end(), {"--autocenter", "--viewall", "--camera=" + rq.png.camera});
+            // A camera with its own distance (or an eye and centre) is taken as
+            // given; only a distance of 0 asks OpenSCAD to frame the model.
+            for (const std::string& flag : cameraFramingFlags(rq.png.camera)) argv.push_back(flag);
+            argv.push_back("--camera=" + rq.png.camera);
         }
         argv.push_back(rq.scad_path);
 
@@ -154,6 +157,39 @@ const char* toString(ScadExportFormat f) {
 }
 
 const char* exportFormatArg(ScadExportFormat f) { return f == ScadExportFormat::Stl ? "binstl" : toString(f); }
+
+namespace {
+// The numbers of a --camera text; empty when one is not a number.
+std::vector<double> cameraValues(const std::string& camera) {
+    std::vector<double> v;
+    size_t start = 0;
+    for (;;) {
+        const size_t comma = camera.find(',', start);
+        const std::string part = camera.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        char* end = nullptr;
+        v.push_back(std::strtod(part.c_str(), &end));
+        if (end == part.c_str()) return {};  // not a number: OpenSCAD will say so
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return v;
+}
+}  // namespace
+
+std::vector<std::string> cameraFramingFlags(const std::string& camera) {
+    const std::vector<double> v = cameraValues(camera);
+    if (v.size() == 7 && v[6] == 0) return {"--autocenter", "--viewall"};
+    return {};
+}
+
+std::string cameraLookingAt(const std::string& camera, double x, double y, double z) {
+    const std::vector<double> v = cameraValues(camera);
+    if (v.size() != 7 || v[6] == 0 || v[0] != 0 || v[1] != 0 || v[2] != 0) return camera;
+    std::ostringstream s;
+    s << x << "," << y << "," << z;
+    for (size_t k = 3; k < 7; ++k) s << "," << v[k];
+    return s.str();
+}
 
 ScadDefine parseScadDefine(const std::string& text) {
     const size_t eq = text.find('=');

@@ -49,9 +49,20 @@ struct ScadDefine {
 ScadDefine parseScadDefine(const std::string& text);
 
 /// Camera for PNG previews (OpenSCAD --camera: translate x,y,z, rotate x,y,z
-/// in degrees, distance; --autocenter and --viewall then frame the model):
-/// seen from the south-south-west, 35 degrees above the horizon.
+/// in degrees, distance; distance 0 lets --autocenter and --viewall frame
+/// the model): seen from the south-south-west, 35 degrees above the horizon.
 inline constexpr const char* kDefaultPngCamera = "0,0,0,55,0,25,0";
+
+/// The OpenSCAD framing flags that go with `camera` (--camera text): seven
+/// values with distance 0 -> {"--autocenter", "--viewall"} (OpenSCAD frames
+/// the model); otherwise (a distance, or the six-value eye,centre form) none:
+/// the camera is taken exactly as given.
+std::vector<std::string> cameraFramingFlags(const std::string& camera);
+
+/// `camera` with its translate set to (x, y, z) mm when it is the seven-value
+/// form with translate 0,0,0 and a distance: the camera looks at that point
+/// (the model's centre) from the distance given. Otherwise unchanged.
+std::string cameraLookingAt(const std::string& camera, double x, double y, double z);
 
 struct PngView {
     int width_px = 1024;

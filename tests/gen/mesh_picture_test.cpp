@@ -1,0 +1,70 @@
+// drawMeshPicture: the preview shows the model, framed to fill the picture,
+// and a mirrored model's underside differs from its top.
+#include "gen/mesh_picture.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "gen/direct_mesher.h"
+#include "gen/scene.h"
+#include "tests/support/fields.h"
+
+namespace tsf {
+namespace {
+
+// Bounding box of the pixels of [x0, x1) that are not background.
+struct Box {
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+};
+Box drawnBox(const RgbImage& img, int from_x, int to_x) {
+    Box b;
+    for (int y = 0; y < img.h; ++y)
+        for (int x = from_x; x < to_x; ++x)
+            if (img.get(x, y) != kPictureBackground) {
+                b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x);
+                b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
+            }
+    return b;
+}
+
+Mesh bumpMesh(Bottom bottom) {
+    const HexField f = test::fieldFromFunction(6, 5, [](int c, int r) { return double((c * 3 + r * 5) % 7); });
+    return meshScene(buildScene(f, test::smallParams(bottom)));
+}
+
+TEST(MeshPicture, TheModelFillsMostOfTheFrame) {
+    MeshPictureOptions o;
+    const RgbImage img = drawMeshPicture(bumpMesh(Bottom::Flat), o);
+    ASSERT_EQ(img.w, o.width_px);
+    const Box b = drawnBox(img, 0, img.w);
+    const double wide = double(b.x1 - b.x0) / img.w, tall = double(b.y1 - b.y0) / img.h;
+    EXPECT_GT(std::max(wide, tall), 0.8) << wide << " x " << tall;
+    // Relief reads: many distinct colours, not one flat tone.
+    std::set<uint32_t> colours;
+    for (int y = 0; y < img.h; y += 3)
+        for (int x = 0; x < img.w; x += 3) colours.insert(img.get(x, y));
+    EXPECT_GT(colours.size(), 50u);
+}
+
+TEST(MeshPicture, TheUndersideViewDiffersFromTheTop) {
+    MeshPictureOptions o;
+    o.underside = true;
+    const RgbImage img = drawMeshPicture(bumpMesh(Bottom::Mirrored), o);
+    const int half = img.w / 2;
+    const Box top = drawnBox(img, 0, half), under = drawnBox(img, half, img.w);
+    EXPECT_GT(double(top.x1 - top.x0) / half, 0.7);
+    EXPECT_GT(double(under.x1 - under.x0) / half, 0.7);
+    int differ = 0, total = 0;
+    for (int y = 0; y < img.h; ++y)
+        for (int x = 0; x < half; ++x, ++total) differ += img.get(x, y) != img.get(x + half, y);
+    EXPECT_GT(double(differ) / total, 0.1);
+}
+
+TEST(MeshPicture, AnEmptyMeshIsABlankPicture) {
+    const RgbImage img = drawMeshPicture(Mesh{});
+    EXPECT_EQ(drawnBox(img, 0, img.w).x1, -1);
+}
+
+}  // namespace
+}  // namespace tsf

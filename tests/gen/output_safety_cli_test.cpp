@@ -1,0 +1,102 @@
+// End-to-end: no combination of paths makes tsf overwrite an input or one of
+// its own outputs; files the user did not name are replaced only when tsf
+// wrote them; a write that fails is the user's to fix (exit 2) and leaves no
+// temporary file, a file-size limit included.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+using test::kExitBadInput;
+using test::readText;
+using test::runCommand;
+using test::runTsf;
+using test::scratchDir;
+using test::writeText;
+
+const char* kField = "1,2,3\n4,5,6\n7,8,9\n";
+
+// Files in dir whose name marks a temporary file.
+int temporaryFiles(const std::filesystem::path& dir) {
+    int n = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        if (e.path().filename().string().find(".tmp-") != std::string::npos) ++n;
+    return n;
+}
+
+TEST(OutputSafety, AnOutputThatIsTheInputIsRefused) {
+    const auto dir = scratchDir();
+    writeText(dir / "f.csv", kField);
+    const auto r = runTsf("gen " + (dir / "f.csv").string() + " -o " + (dir / "." / "f.csv").string());
+    EXPECT_EQ(r.exit_code, kExitBadInput) << r.output;
+    EXPECT_NE(r.output.find("is the input and would be overwritten by -o"), std::string::npos) << r.output;
+    EXPECT_EQ(readText(dir / "f.csv"), kField);
+    // The same through --scad, the preview and the sidecar name.
+    EXPECT_EQ(runTsf("gen " + (dir / "f.csv").string() + " -o " + (dir / "m.stl").string() + " --preview " +
+                     (dir / "f.csv").string()).exit_code, kExitBadInput);
+    writeText(dir / "m.stl.scene.json", "");
+    EXPECT_EQ(runTsf("gen " + (dir / "m.stl.scene.json").string() + " -o " + (dir / "m.stl").string()).exit_code,
+              kExitBadInput);
+}
+
+TEST(OutputSafety, TwoOutputsWithOneNameAreRefused) {
+    const auto dir = scratchDir();
+    writeText(dir / "f.csv", kField);
+    const auto r = runTsf("gen " + (dir / "f.csv").string() + " -o " + (dir / "s.stl").string() + " --preview " +
+                          (dir / "s.stl").string());
+    EXPECT_EQ(r.exit_code, kExitBadInput) << r.output;
+    EXPECT_NE(r.output.find("named twice as an output (-o and --preview)"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "s.stl"));
+    // --scad m.scad writes m.json: an -o of that name is refused too.
+    const auto j = runTsf("gen " + (dir / "f.csv").string() + " --scad " + (dir / "m.scad").string() + " -o " +
+                          (dir / "m.json").string());
+    EXPECT_EQ(j.exit_code, kExitBadInput) << j.output;
+    EXPECT_NE(j.output.find("parameter sets"), std::string::npos) << j.output;
+}
+
+TEST(OutputSafety, AParameterSetFileTsfDidNotWriteNeedsForce) {
+    const auto dir = scratchDir();
+    writeText(dir / "f.csv", kField);
+    const std::string mine = "{\"parameterSets\": {\"my print\": {\"height\": \"30\"}}, \"fileFormatVersion\": \"1\"}\n";
+    writeText(dir / "m.json", mine);
+    const std::string gen = "gen " + (dir / "f.csv").string() + " --scad " + (dir / "m.scad").string();
+    const auto refused = runTsf(gen);
+    EXPECT_EQ(refused.exit_code, kExitBadInput) << refused.output;
+    EXPECT_NE(refused.output.find("--force"), std::string::npos) << refused.output;
+    EXPECT_EQ(readText(dir / "m.json"), mine);
+    EXPECT_FALSE(std::filesystem::exists(dir / "m.scad"));
+    const auto forced = runTsf(gen + " --force");
+    ASSERT_EQ(forced.exit_code, 0) << forced.output;
+    EXPECT_NE(forced.output.find("m.json (OpenSCAD parameter sets"), std::string::npos) << forced.output;
+    // Its own parameter sets tsf replaces without asking: running again just works.
+    EXPECT_EQ(runTsf(gen + " --height 30").exit_code, 0);
+}
+
+TEST(OutputSafety, AMissingFolderIsTheUsersToFix) {
+    const auto dir = scratchDir();
+    writeText(dir / "f.csv", kField);
+    const auto r = runTsf("gen " + (dir / "f.csv").string() + " -o " + (dir / "no" / "m.stl").string());
+    EXPECT_EQ(r.exit_code, kExitBadInput) << r.output;
+    EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+}
+
+TEST(OutputSafety, AFileSizeLimitFailsCleanly) {
+    const auto dir = scratchDir();
+    std::string big;
+    for (int r = 0; r < 30; ++r)
+        for (int c = 0; c < 30; ++c) big += std::to_string((r * c) % 7) + (c + 1 < 30 ? "," : "\n");
+    writeText(dir / "f.csv", big);
+    // 8 blocks of 1024 bytes: the field can be read, the STL cannot be written.
+    const auto r = runCommand("bash -c 'ulimit -f 8; exec " + std::string(TSF_BINARY) + " gen " +
+                              (dir / "f.csv").string() + " -o " + (dir / "m.stl").string() + "'");
+    EXPECT_EQ(r.exit_code, kExitBadInput) << r.output;
+    EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "m.stl"));
+    EXPECT_EQ(temporaryFiles(dir), 0);
+}
+
+}  // namespace
+}  // namespace tsf
