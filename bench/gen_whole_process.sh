@@ -20,7 +20,7 @@ with open(sys.argv[2], "w") as f:
 PY
   for mode in flat mirror; do
     extra=""; [ "$mode" = mirror ] && extra="--mirror"
-    /usr/bin/time -f "%e %U %M" -o "$work/time" "$tsf" gen "$work/f$n.csv" --cull none $extra \
+    /usr/bin/time -f "%e %U %M" -o "$work/time" "$tsf" gen "$work/f$n.csv" --bins "$n" --cull none $extra \
         -o "$work/m.stl" --json --no-verify > "$work/out.json"
     read -r wall user kb < "$work/time"
     python3 - "$n" "$mode" "$wall" "$user" "$kb" "$work/out.json" "$work/m.stl" <<'PY'
