@@ -56,7 +56,10 @@ Vec3 Scene::point(const LatticePoint& p, int64_t z_units) const {
 Vec3 Scene::planarPoint(int64_t id, int64_t z_units) const {
     const int64_t lattice = latticeVertexIdCount(grid);
     if (id < lattice) return point(latticeVertexPoint(grid, id), z_units);
-    const PlanarPoint& p = faces.extra[size_t(id - lattice)];
+    return point(faces.extra[size_t(id - lattice)], z_units);
+}
+
+Vec3 Scene::point(const PlanarPoint& p, int64_t z_units) const {
     return {snapXy(planarX(p, pitch_mm)), snapXy(planarY(p, pitch_mm)), zMm(z_units)};
 }
 

@@ -149,6 +149,8 @@ struct Scene {
     double zMm(int64_t units) const { return double(units) * z_snap_mm; }
     /// Snapped position (mm) of a lattice point at height `units`.
     Vec3 point(const LatticePoint& p, int64_t z_units) const;
+    /// Snapped position (mm) of a point in lattice coordinates at height `units`.
+    Vec3 point(const PlanarPoint& p, int64_t z_units) const;
     /// Snapped position (mm) of a planar vertex (gen/marks.h) at height `units`.
     Vec3 planarPoint(int64_t planar_id, int64_t z_units) const;
     /// The z span [bottom, top] of a face (its anchor cell's, top raised by the face's raise).

@@ -75,9 +75,7 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& c
         c.col = scene.col[k];
         c.row = scene.row[k];
         // The centre, or where a pillar the notch cuts is read (gen/marks.h).
-        const PlanarPoint at = readPoint(scene, k);
-        const Vec3 centre{std::round(planarX(at, scene.pitch_mm) / kXYSnapMm) * kXYSnapMm,
-                          std::round(planarY(at, scene.pitch_mm) / kXYSnapMm) * kXYSnapMm, 0.0};
+        const Vec3 centre = scene.point(readPoint(scene, k), 0);
         c.x_mm = centre.x;
         c.y_mm = centre.y;
         c.surface = top ? "top" : "bottom";
