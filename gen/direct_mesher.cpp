@@ -23,6 +23,15 @@
 // face's own triangulation, rings and what lies across each ring edge. Their
 // extra vertices (where a mark's edge crosses a hex edge) have planar ids after
 // the lattice's, so everything above holds for them unchanged.
+//
+// Shaped tops (gen/top_shapes.h). A tilted or dimpled cell's top (and
+// mirrored bottom) is a fan from its centre vertex over its corners and the
+// crossing points on its edges; each corner has the cell's own height there,
+// so the heights used at a lattice vertex are its cells' corner heights. A
+// wall is the part of the owner's span that the neighbour's does not cover,
+// taken at both ends of the edge (the tops are straight lines along it); where
+// the two tops cross, the wall is a triangle on each side of the crossing
+// point, which has planar id of its own and one height.
 #include "gen/direct_mesher.h"
 
 #include <algorithm>
@@ -48,7 +57,7 @@ class MeshBuilder {
 public:
     explicit MeshBuilder(const Scene& scene)
         : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat), lattice_ids_(latticeVertexIdCount(g_)) {
-        const int64_t ids = lattice_ids_ + int64_t(s_.faces.extra.size());
+        const int64_t ids = lattice_ids_ + int64_t(s_.faces.extra.size()) + int64_t(s_.shapes.extra.size());
         first_index_.assign(size_t(ids) + 1, 0);
         const auto& faces = s_.faces.faces;
         for (size_t f = 0; f < faces.size(); ++f)
@@ -82,6 +91,10 @@ private:
     // Sorted distinct heights (snap units) of the mesh vertices at planar vertex id.
     int usedHeights(int64_t id, int64_t out[kMaxHeightsPerVertex]) const {
         int n = 0;
+        if (!s_.shapes.empty() && id >= s_.shapes.first_id) {
+            out[0] = s_.shapes.extra_z[size_t(id - s_.shapes.first_id)];  // a fan centre or a crossing: one height
+            return 1;
+        }
         // Most models have a handful of face vertices: skip the lookup when there are none.
         const auto faces = faces_at_.empty() ? faces_at_.end() : faces_at_.find(id);
         const bool touched = faces != faces_at_.end();
@@ -92,8 +105,8 @@ private:
             rim = touched ? rim_.count(id) > 0 : (cells[0] < 0 || cells[1] < 0 || cells[2] < 0);
             for (int32_t c : cells) {
                 if (c < 0 || drawnByFace(c)) continue;
-                out[n++] = s_.top[size_t(c)];
-                if (!flat_ || rim) out[n++] = s_.bottom[size_t(c)];
+                out[n++] = cornerTopAt(s_, size_t(c), id);
+                if (!flat_ || rim) out[n++] = cornerBottomAt(s_, size_t(c), id);
             }
         } else {
             rim = rim_.count(id) > 0;
@@ -132,16 +145,82 @@ private:
 
     void tri(uint32_t a, uint32_t b, uint32_t c) { mesh_.triangles.push_back({a, b, c}); }
 
-    // Walls along edge v -> w of a cell or face spanning [bottom, top], where
-    // the neighbour's span [obot, otop] does not cover it (no neighbour: all of it).
-    void addWalls(int64_t v, int64_t w, int64_t bottom, int64_t top, bool has_neighbour, int64_t obot, int64_t otop) {
+    struct Span {
+        int64_t bottom, top;  // z units at one end of an edge
+    };
+
+    int64_t extraZ(int64_t id) const { return s_.shapes.extra_z[size_t(id - s_.shapes.first_id)]; }
+
+    // Walls along edge v -> w of a cell or face spanning a_v at v and a_w at
+    // w, where the neighbour's spans (b_v, b_w) do not cover it (no
+    // neighbour: all of it). Where the tops (bottoms) cross, the crossing
+    // point xt (xb) splits the wall; -1 where they do not.
+    void addWalls(int64_t v, int64_t w, Span a_v, Span a_w, bool has_neighbour, Span b_v, Span b_w, int64_t xt = -1,
+                  int64_t xb = -1) {
         if (!has_neighbour) {
-            addWall(v, w, bottom, top);
+            addWall(v, a_v.bottom, a_v.top, w, a_w.bottom, a_w.top);
             return;
         }
-        assert(obot < top && bottom < otop && "neighbouring pillars must overlap in z");
-        if (otop < top) addWall(v, w, otop, top);
-        if (bottom < obot) addWall(v, w, bottom, obot);
+        assert(b_v.bottom < a_v.top && a_v.bottom < b_v.top && b_w.bottom < a_w.top && a_w.bottom < b_w.top &&
+               "neighbouring pillars must overlap in z");
+        // Above the neighbour's top.
+        const int64_t dv = a_v.top - b_v.top, dw = a_w.top - b_w.top;
+        if (dv >= 0 && dw >= 0) {
+            if (dv > 0 || dw > 0) addWall(v, b_v.top, a_v.top, w, b_w.top, a_w.top);
+        } else if (dv > 0 || dw > 0) {
+            assert(xt >= 0 && "crossing tops need their crossing point");
+            const int64_t z = extraZ(xt);
+            if (dv > 0) addWall(v, b_v.top, a_v.top, xt, z, z);
+            else addWall(xt, z, z, w, b_w.top, a_w.top);
+        }
+        // Below the neighbour's bottom.
+        const int64_t ev = b_v.bottom - a_v.bottom, ew = b_w.bottom - a_w.bottom;
+        if (ev >= 0 && ew >= 0) {
+            if (ev > 0 || ew > 0) addWall(v, a_v.bottom, b_v.bottom, w, a_w.bottom, b_w.bottom);
+        } else if (ev > 0 || ew > 0) {
+            assert(xb >= 0 && "crossing bottoms need their crossing point");
+            const int64_t z = extraZ(xb);
+            if (ev > 0) addWall(v, a_v.bottom, b_v.bottom, xb, z, z);
+            else addWall(xb, z, z, w, a_w.bottom, b_w.bottom);
+        }
+    }
+
+    Span cornerSpan(size_t k, int e) const { return {cornerBottom(s_, k, e), cornerTop(s_, k, e)}; }
+    Span spanAt(size_t k, int64_t id) const { return {cornerBottomAt(s_, k, id), cornerTopAt(s_, k, id)}; }
+
+    // A tilted or dimpled cell: fans from its centre, walls by corner.
+    void addShapedCell(size_t k) {
+        const int32_t c = s_.col[k], r = s_.row[k];
+        const TopShapes& t = s_.shapes;
+        int64_t id[kHexCorners];
+        for (int e = 0; e < kHexCorners; ++e) id[e] = hexCornerId(g_, c, r, e);
+        for (int part = 0; part < (flat_ ? 1 : 2); ++part) {
+            const bool top = part == 0;
+            const auto& crossing = top ? t.crossing_top : t.crossing_bottom;
+            const int64_t centre = top ? t.centre_top_id[k] : t.centre_bottom_id[k];
+            const uint32_t cv = vertexIndex(centre, extraZ(centre));
+            // The ring, counter-clockwise from above: corners, and crossings on the edges.
+            uint32_t ring[2 * kHexCorners];
+            int n = 0;
+            for (int e = 0; e < kHexCorners; ++e) {
+                ring[n++] = vertexIndex(id[e], top ? cornerTop(s_, k, e) : cornerBottom(s_, k, e));
+                const int64_t x = crossing[kHexCorners * k + size_t(e)];
+                if (x >= 0) ring[n++] = vertexIndex(x, extraZ(x));
+            }
+            for (int i = 0; i < n; ++i) {
+                if (top) tri(cv, ring[i], ring[(i + 1) % n]);  // CCW from above
+                else tri(cv, ring[(i + 1) % n], ring[i]);      // CCW from below
+            }
+        }
+        for (int e = 0; e < kHexCorners; ++e) {
+            const int32_t other = s_.keptNeighbour(k, e);
+            const int e1 = (e + 1) % kHexCorners;
+            const bool has = other >= 0;
+            const Span none{0, 0};
+            addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), has, has ? spanAt(size_t(other), id[e]) : none,
+                     has ? spanAt(size_t(other), id[e1]) : none, t.crossing_top[kHexCorners * k + size_t(e)],
+                     flat_ ? -1 : t.crossing_bottom[kHexCorners * k + size_t(e)]);
+        }
     }
 
     void addCell(size_t k) {
@@ -149,6 +228,10 @@ private:
         int64_t id[kHexCorners];
         for (int e = 0; e < kHexCorners; ++e) id[e] = hexCornerId(g_, c, r, e);
         const int64_t top = s_.top[k], bottom = s_.bottom[k];
+        if (isShaped(s_.shapes, k)) {
+            addShapedCell(k);
+            return;
+        }
         uint32_t t[kHexCorners];
         for (int e = 0; e < kHexCorners; ++e) t[e] = vertexIndex(id[e], top);
         for (int e = 2; e < kHexCorners; ++e) tri(t[0], t[e - 1], t[e]);  // CCW from above
@@ -162,8 +245,11 @@ private:
             hexNeighbour(c, r, e, nc, nr);
             const int32_t other = s_.keptAt(nc, nr);
             const bool has = other >= 0;
-            addWalls(id[e], id[(e + 1) % kHexCorners], bottom, top, has, has ? s_.bottom[size_t(other)] : 0,
-                     has ? s_.top[size_t(other)] : 0);
+            const int64_t v = id[e], w = id[(e + 1) % kHexCorners];
+            const Span none{0, 0};
+            // A level cell beside a tilted one meets its corners where they are.
+            addWalls(v, w, {bottom, top}, {bottom, top}, has, has ? spanAt(size_t(other), v) : none,
+                     has ? spanAt(size_t(other), w) : none);
         }
     }
 
@@ -177,30 +263,32 @@ private:
             const auto& ring = f.rings[r];
             for (size_t n = 0; n < ring.size(); ++n) {
                 const Across& a = f.across[r][n];
-                int64_t obot = 0, otop = 0;
+                const int64_t v = ring[n], w = ring[(n + 1) % ring.size()];
+                Span ov{0, 0}, ow{0, 0};
                 if (a.kind == Across::Kind::Face) {
-                    obot = s_.faceBottom(s_.faces.faces[size_t(a.index)]);
-                    otop = s_.faceTop(s_.faces.faces[size_t(a.index)]);
+                    ov = ow = {s_.faceBottom(s_.faces.faces[size_t(a.index)]), s_.faceTop(s_.faces.faces[size_t(a.index)])};
                 } else if (a.kind == Across::Kind::Cell) {
-                    obot = s_.bottom[size_t(a.index)];
-                    otop = s_.top[size_t(a.index)];
+                    // A plain cell meets a face along a whole hex edge (lattice corners).
+                    ov = spanAt(size_t(a.index), v);
+                    ow = spanAt(size_t(a.index), w);
                 }
-                addWalls(ring[n], ring[(n + 1) % ring.size()], bottom, top, a.kind != Across::Kind::Outside, obot, otop);
+                addWalls(v, w, {bottom, top}, {bottom, top}, a.kind != Across::Kind::Outside, ov, ow);
             }
         }
     }
 
     // Wall over edge v -> w (counter-clockwise around the cell that owns it,
-    // so the outward normal is (w - v) x up) from z0 to z1.
-    void addWall(int64_t v, int64_t w, int64_t z0, int64_t z1) {
+    // so the outward normal is (w - v) x up) from zv0 to zv1 at v and from
+    // zw0 to zw1 at w (one side may be a single point: a crossing).
+    void addWall(int64_t v, int64_t zv0, int64_t zv1, int64_t w, int64_t zw0, int64_t zw1) {
         int64_t zl[kMaxHeightsPerVertex], zr[kMaxHeightsPerVertex];
         const int nl = usedHeights(v, zl), nr = usedHeights(w, zr);
-        int li = int(std::lower_bound(zl, zl + nl, z0) - zl);
-        int ri = int(std::lower_bound(zr, zr + nr, z0) - zr);
-        const int lend = int(std::lower_bound(zl, zl + nl, z1) - zl);
-        const int rend = int(std::lower_bound(zr, zr + nr, z1) - zr);
-        assert(li < nl && zl[li] == z0 && ri < nr && zr[ri] == z0);
-        assert(lend < nl && zl[lend] == z1 && rend < nr && zr[rend] == z1);
+        int li = int(std::lower_bound(zl, zl + nl, zv0) - zl);
+        int ri = int(std::lower_bound(zr, zr + nr, zw0) - zr);
+        const int lend = int(std::lower_bound(zl, zl + nl, zv1) - zl);
+        const int rend = int(std::lower_bound(zr, zr + nr, zw1) - zr);
+        assert(li < nl && zl[li] == zv0 && ri < nr && zr[ri] == zw0);
+        assert(lend < nl && zl[lend] == zv1 && rend < nr && zr[rend] == zw1);
         const uint32_t lbase = first_index_[size_t(v)], rbase = first_index_[size_t(w)];
         while (li < lend || ri < rend) {
             // Advance the side whose next point is lower (left on ties): the

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "gen/bin_regression.h"
 #include "gen/field_input.h"
 #include "gen/hex_grid.h"
 
@@ -28,6 +29,11 @@ struct HexField {
     bool one_to_one = false;
     /// What was read from the file (filled by loadField, gen/io/load_field.h).
     FieldInput input;
+    /// Point input (gen/io/point_binning.h): per cell, the sums of its points'
+    /// offsets from the centre (and weights), for the tilt of its top
+    /// (gen/tilt.h). Empty for rasters.
+    std::vector<BinMoments> moments;
+    BinStatistic statistic = BinStatistic::Density;  ///< what a cell's value is, with moments
 
     double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }
     double& at(int32_t col, int32_t row) { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }

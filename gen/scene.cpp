@@ -56,6 +56,7 @@ Vec3 Scene::point(const LatticePoint& p, int64_t z_units) const {
 Vec3 Scene::planarPoint(int64_t id, int64_t z_units) const {
     const int64_t lattice = latticeVertexIdCount(grid);
     if (id < lattice) return point(latticeVertexPoint(grid, id), z_units);
+    if (!shapes.empty() && id >= shapes.first_id) return point(shapes.extra[size_t(id - shapes.first_id)], z_units);
     return point(faces.extra[size_t(id - lattice)], z_units);
 }
 
@@ -130,6 +131,8 @@ void validate(const HexField& field, const SceneParams& p) {
     if (p.baseline_mode == BaselineMode::Value && !std::isfinite(p.baseline_value))
         throw InputError("baseline value must be finite");
     if (p.value_max && !std::isfinite(*p.value_max)) throw InputError("value at maximum height must be finite");
+    if (!std::isfinite(p.steepness) || p.steepness <= 0)
+        throw InputError("steepness must be a finite number > 0 (got " + std::to_string(p.steepness) + ")");
 }
 
 ValueMapping resolveMapping(const HexField& field, const SceneParams& p, std::vector<std::string>& notes) {
@@ -348,6 +351,18 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         s.notes.push_back(note.str());
     }
     placeMarks(s);
+    if (params.tilt != TiltSource::None || params.structural_texture) {
+        // Structural: a kept cell at the floor that is not one input value as
+        // read (an empty bin, a resampled cell at the baseline): kept only
+        // because the hull holds the model together there. Not when nothing
+        // rises above the floor (the whole model is then such cells).
+        std::vector<uint8_t> structural(kept, 0);
+        if (params.structural_texture && s.cells_nonempty > 0 && !field.one_to_one)
+            for (size_t k = 0; k < kept; ++k)
+                structural[k] = s.kind[k] == CellKind::Data && h_units[size_t(g.index(s.col[k], s.row[k]))] == 0 &&
+                                (s.drawn_by_face.empty() || !s.drawn_by_face[k]);
+        resolveTopShapes(s, tiltSlopes(field, s, params.tilt), params.steepness, structural);
+    }
     return s;
 }
 

@@ -29,6 +29,8 @@
 #include "gen/hex_grid.h"
 #include "gen/marks.h"
 #include "gen/mesh.h"
+#include "gen/tilt.h"
+#include "gen/top_shapes.h"
 
 namespace tsf {
 
@@ -83,6 +85,10 @@ struct SceneParams {
     Bottom bottom = Bottom::Flat;
     // --- marks (gen/marks.h) ---
     MarkParams marks;
+    // --- shaped tops (gen/tilt.h, gen/top_shapes.h) ---
+    TiltSource tilt = TiltSource::None;
+    double steepness = 1.0;        ///< multiplies every tilt's slope (> 0)
+    bool structural_texture = false;  ///< dimple the cells kept only to hold the model together
 };
 
 /// What a kept cell stands for.
@@ -132,6 +138,9 @@ struct Scene {
     /// Per kept cell: 1 if its top/bottom/walls are drawn through `faces`
     /// instead of as a plain hexagonal prism.
     std::vector<uint8_t> drawn_by_face;
+    /// Tilted tops and the dimples of structural cells (empty: every top a
+    /// level hexagon). Planar ids after the faces' (gen/top_shapes.h).
+    TopShapes shapes;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)
@@ -185,7 +194,10 @@ struct Scene {
 ///     (mirrored: also above the underside), so touch never reads them as the
 ///     lowest value;
 ///   - the orientation marks (notch, triangle) are placed as MarkParams asks,
-///     where they fit; a note says when one does not.
+///     where they fit; a note says when one does not;
+///   - tops tilt as params.tilt asks (gen/tilt.h), clamped so no corner goes
+///     below the floor; structural cells (params.structural_texture) get a
+///     dimple; a note says when a tilt was clamped.
 Scene buildScene(const HexField& field, const SceneParams& params);
 
 /// Snap a millimetre value to the z grid (round half away from zero).

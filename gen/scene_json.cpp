@@ -1,6 +1,7 @@
 // Scene <-> JSON sidecar. See scene_json.h.
 #include "gen/scene_json.h"
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -126,8 +127,30 @@ std::string withoutPrefix(const std::string& what) {
 
 namespace {
 json cellJson(const Scene& s, size_t k) {
-    return {{"col", s.col[k]}, {"row", s.row[k]}, {"value", numberOrNull(s.value[k])}, {"top", s.top[k]},
-            {"bottom", s.bottom[k]}};
+    json c = {{"col", s.col[k]}, {"row", s.row[k]}, {"value", numberOrNull(s.value[k])}, {"top", s.top[k]},
+              {"bottom", s.bottom[k]}};
+    const TopShapes& t = s.shapes;
+    if (t.empty()) return c;
+    bool any = t.top_centre_dz[k] != 0 || t.structural[k];
+    for (int32_t dz : t.top_dz[k]) any = any || dz != 0;
+    if (!any) return c;
+    json shape = {{"top_dz", t.top_dz[k]}, {"centre_dz", t.top_centre_dz[k]}, {"slope", {t.slope_x[k], t.slope_y[k]}},
+                  {"structural", bool(t.structural[k])}};
+    if (!t.bottom_dz.empty()) {
+        shape["bottom_dz"] = t.bottom_dz[k];
+        shape["bottom_centre_dz"] = t.bottom_centre_dz[k];
+    }
+    c["shape"] = std::move(shape);
+    return c;
+}
+
+json shapesJson(const Scene& s) {
+    const TopShapes& t = s.shapes;
+    if (t.empty()) return nullptr;
+    return {{"tilt", toString(s.params.tilt)}, {"steepness", s.params.steepness},
+            {"structural_texture", s.params.structural_texture}, {"cells_tilted", t.cells_tilted},
+            {"cells_clamped", t.cells_clamped}, {"cells_clamped_level", t.cells_flat_clamped},
+            {"cells_textured", t.cells_textured}, {"dimple_units", t.dimple_units}};
 }
 
 json pointJson(const PlanarPoint& p) { return json::array({p.i, p.j}); }
@@ -227,6 +250,7 @@ json sceneHeadJson(const Scene& s) {
         {"nodata_pit_units", s.nodata_pit_units},
         {"one_to_one", s.one_to_one},
         {"marks", marksJson(s.marks)},
+        {"shapes", shapesJson(s)},
         {"hull", hull},
         {"notes", s.notes},
     };
@@ -241,12 +265,74 @@ json sceneToJson(const Scene& s) {
     return j;
 }
 
+namespace {
+std::array<int32_t, 6> getCorners(const json& obj, const std::string& path, const char* key) {
+    const json& a = getArray(obj, path, key);
+    const std::string p = path + "." + key;
+    if (a.size() != 6) fail(p, "expected 6 corner offsets");
+    std::array<int32_t, 6> out{};
+    for (size_t e = 0; e < 6; ++e) {
+        const int64_t v = toInt(a[e], p + "[" + std::to_string(e) + "]");
+        if (v < -(int64_t(1) << 30) || v > (int64_t(1) << 30)) fail(p, "corner offset out of range");
+        out[e] = int32_t(v);
+    }
+    return out;
+}
+
+// Shaped tops (version 3): per-cell offsets, then the geometry made from them.
+void readShapes(const json& j, const json& cells, Scene& s) {
+    const auto it = j.find("shapes");
+    if (it == j.end() || it->is_null()) return;
+    const json& h = *it;
+    if (!h.is_object()) fail("shapes", "expected an object or null");
+    const std::string tilt = getString(h, "shapes", "tilt");
+    s.params.tilt = tilt == "points" ? TiltSource::Points : tilt == "gradient" ? TiltSource::Gradient : TiltSource::None;
+    s.params.steepness = toNumber(member(h, "shapes", "steepness"), "shapes.steepness");
+    TopShapes& t = s.shapes;
+    const size_t n = s.keptCount();
+    const bool mirrored = s.params.bottom == Bottom::Mirrored;
+    t.top_dz.assign(n, {});
+    t.top_centre_dz.assign(n, 0);
+    if (mirrored) {
+        t.bottom_dz.assign(n, {});
+        t.bottom_centre_dz.assign(n, 0);
+    }
+    t.slope_x.assign(n, 0.0);
+    t.slope_y.assign(n, 0.0);
+    t.structural.assign(n, 0);
+    t.cells_tilted = getInt(h, "shapes", "cells_tilted");
+    t.cells_clamped = getInt(h, "shapes", "cells_clamped");
+    t.cells_flat_clamped = getInt(h, "shapes", "cells_clamped_level");
+    t.cells_textured = getInt(h, "shapes", "cells_textured");
+    t.dimple_units = getInt(h, "shapes", "dimple_units");
+    for (size_t k = 0; k < n; ++k) {
+        const auto sh = cells[k].find("shape");
+        if (sh == cells[k].end()) continue;
+        const std::string cp = "cells[" + std::to_string(k) + "].shape";
+        t.top_dz[k] = getCorners(*sh, cp, "top_dz");
+        t.top_centre_dz[k] = int32_t(getInt32(*sh, cp, "centre_dz", -(int64_t(1) << 30), int64_t(1) << 30));
+        if (mirrored) {
+            t.bottom_dz[k] = getCorners(*sh, cp, "bottom_dz");
+            t.bottom_centre_dz[k] = int32_t(getInt32(*sh, cp, "bottom_centre_dz", -(int64_t(1) << 30), int64_t(1) << 30));
+        }
+        const json& slope = getArray(*sh, cp, "slope");
+        if (slope.size() != 2) fail(cp + ".slope", "expected [x, y]");
+        t.slope_x[k] = toNumber(slope[0], cp + ".slope[0]");
+        t.slope_y[k] = toNumber(slope[1], cp + ".slope[1]");
+        const json& st = member(*sh, cp, "structural");
+        if (!st.is_boolean()) fail(cp + ".structural", "expected true or false");
+        t.structural[k] = st.get<bool>();
+    }
+    buildTopShapeGeometry(s);
+}
+}  // namespace
+
 Scene sceneFromJson(const json& j) {
     if (!j.is_object()) fail("", std::string("expected an object, found ") + typeName(j));
     const std::string format = getString(j, "", "format");
     if (format != kSceneJsonFormat) fail("format", "expected \"" + std::string(kSceneJsonFormat) + "\", found \"" + format + "\"");
     const int64_t version = getInt(j, "", "version");
-    if (version != kSceneJsonVersion && version != 1)
+    if (version != kSceneJsonVersion && version != 1 && version != 2)
         fail("version", "unsupported version " + std::to_string(version) + " (this tsf reads version " +
                             std::to_string(kSceneJsonVersion) + ")");
 
@@ -342,6 +428,7 @@ Scene sceneFromJson(const json& j) {
     if (s.marks.triangle && size_t(s.marks.triangle->anchor) >= s.keptCount())
         fail("marks.triangle.anchor", "is not the index of a cell");
     buildMarkFaces(s);
+    readShapes(j, cells, s);
     return s;
 }
 

@@ -14,8 +14,13 @@
 //                         depth_mm, width_mm, opening_deg},
 //          triangle: null | {corner, east, north: [i, j], leg_x_mm, leg_y_mm,
 //                            raise_units, anchor (kept index)}},
+//   shapes: null | {tilt, steepness, structural_texture, cells_tilted, cells_clamped,
+//                   cells_clamped_level, cells_textured, dimple_units},
 //   hull [[i, j], ...], notes [...],
-//   cells [{col, row, value (null = no data), top, bottom}, ...]   -- ordered by (row, col)
+//   cells [{col, row, value (null = no data), top, bottom,
+//           shape (only a tilted or structural cell): {top_dz [6], centre_dz,
+//                  bottom_dz [6], bottom_centre_dz (mirrored), slope [x, y] mm/mm,
+//                  structural}}, ...]   -- ordered by (row, col)
 // Heights (top, bottom, floor_units, ...) are integers in z_snap_mm units;
 // lengths are millimetres; doubles are written in their shortest form that
 // reads back to the same bits, so a Scene round-trips exactly.
@@ -32,7 +37,7 @@
 namespace tsf {
 
 inline constexpr const char* kSceneJsonFormat = "tsf-scene";
-inline constexpr int kSceneJsonVersion = 2;  // 2: marks, nodata_pit_units, one_to_one (1 is still read)
+inline constexpr int kSceneJsonVersion = 3;  // 3: shapes; 2: marks, nodata_pit_units, one_to_one (1 and 2 are still read)
 /// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
 /// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
 inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;

@@ -82,8 +82,11 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& c
         // Under the orientation triangle the top stands higher by the mark's
         // height and carries no value.
         const int64_t raise = top ? markRaiseAtCentre(scene, k) : 0;
-        c.expected_mm = scene.zMm(top ? scene.top[k] + raise : scene.bottom[k]);
-        c.value = raise ? std::numeric_limits<double>::quiet_NaN() : scene.value[k];
+        // A tilted top passes through its value at the centre; a structural
+        // cell's dimple is lowest there and carries no value (gen/top_shapes.h).
+        c.expected_mm = scene.zMm(top ? centreTop(scene, k) + raise : centreBottom(scene, k));
+        const bool no_value = raise || isStructural(scene.shapes, k);
+        c.value = no_value ? std::numeric_limits<double>::quiet_NaN() : scene.value[k];
         const auto hit = top ? caster.firstHit({c.x_mm, c.y_mm, z_above}, {0, 0, -1})
                              : caster.firstHit({c.x_mm, c.y_mm, z_below}, {0, 0, 1});
         const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -207,6 +207,13 @@ nlohmann::json toJson(const VerifyReport& r) {
             {"worst", worst},
         };
     }
+    if (r.tilt) {
+        const TiltReadbackFigures& t = *r.tilt;
+        j["tilt"] = {{"cells_checked", t.cells_checked}, {"missed", t.missed}, {"over_tolerance", t.over_tolerance},
+                     {"max_error_top", t.max_error_top}, {"max_error_bottom", t.max_error_bottom},
+                     {"max_top_bottom", t.max_top_bottom}, {"max_tolerance", t.max_tolerance},
+                     {"max_slope", t.max_slope}, {"worst", t.worst}};
+    }
     if (r.agreement) {
         const AgreementFigures& a = *r.agreement;
         j["agreement"] = {

@@ -100,6 +100,19 @@ struct ReadbackFigures {
     std::vector<CellReadback> worst;   ///< largest |error_mm| first (missed rays first of all)
 };
 
+/// Tilted tops read back (verify/tilt_readback.h).
+struct TiltReadbackFigures {
+    size_t cells_checked = 0;          ///< cells with a tilted top
+    size_t missed = 0;                 ///< rays that met no surface
+    size_t over_tolerance = 0;         ///< surfaces whose slope is off by more than the cell's tolerance
+    double max_error_top = 0;          ///< max |measured - Scene slope| on the tops, mm per mm
+    double max_error_bottom = 0;       ///< the same on mirrored bottoms (0 when flat)
+    double max_top_bottom = 0;         ///< max |top slope - bottom slope| as measured (mirrored)
+    double max_tolerance = 0;          ///< the largest per-cell tolerance used, mm per mm
+    double max_slope = 0;              ///< steepest Scene slope, mm per mm
+    std::vector<std::string> worst;    ///< the worst cells, described
+};
+
 struct AgreementFigures {
     std::string reference;             ///< reference mesh name
     size_t reference_triangles = 0;
@@ -146,6 +159,7 @@ struct VerifyReport {
     bool exact = false;                     ///< exact-construction kernel used
     std::vector<Check> checks;              ///< in the order they ran
     std::optional<ReadbackFigures> readback;
+    std::optional<TiltReadbackFigures> tilt;
     std::optional<AgreementFigures> agreement;
     std::optional<PrintabilityFigures> printability;
     std::vector<Stage> stages;              ///< in the order they ran

@@ -7,6 +7,7 @@
 #include "verify/ray_caster.h"
 #include "verify/readback.h"
 #include "verify/solid_checks.h"
+#include "verify/tilt_readback.h"
 
 namespace tsf {
 namespace {
@@ -48,6 +49,11 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
         ReadbackResult rb = readBack(mesh, *scene, *caster, ro);
         report.readback = std::move(rb.figures);
         append(report, std::move(rb));
+        TiltReadbackResult tb = readBackTilt(mesh, *scene, *caster);
+        if (!tb.checks.empty()) {
+            report.tilt = std::move(tb.figures);
+            append(report, std::move(tb));
+        }
     }
 
     if (options.reference) {

@@ -108,6 +108,21 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "Mirrored bottom: the underside shows the negated data, so cells hidden between tall neighbours "
            "can be felt from below")
         ->group(model);
+    cmd->add_option_function<std::string>(
+           "--tilt",
+           [&p](const std::string& t) {
+               p.tilt = t == "points" ? TiltSource::Points : t == "gradient" ? TiltSource::Gradient : TiltSource::None;
+           },
+           "Tilt each pillar top, still at its height at the centre: none (default) | points (each bin's "
+           "regression plane; --points input) | gradient (the field's own slope). docs/model.md")
+        ->check(CLI::IsMember({"none", "points", "gradient"}))->group(model);
+    cmd->add_option("--steepness", p.steepness, "Multiplies every tilt's slope (tops never go below the floor)")
+        ->check(CLI::PositiveNumber)->capture_default_str()->group(model);
+    cmd->add_flag_callback(
+           "--texture-structural", [&p] { p.structural_texture = true; },
+           "Dimple the cells kept only to hold the model together (empty bins, resampled cells at the floor), "
+           "so they are not felt as data")
+        ->group(model);
     auto* marks = "Orientation marks (docs/model.md)";
     cmd->add_flag_callback("--no-notch", [&p] { p.marks.notch = false; },
                            "Leave out the V notch at the origin (south-west) corner")->group(marks);

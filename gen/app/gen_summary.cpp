@@ -43,6 +43,11 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     if (s.params.cull == Cull::Concave)
         j["concave"] = {{"cells_convex_hull", s.cells_convex}, {"volume_saved_mm3", s.volume_saved_mm3}};
     j["nodata_pit_mm"] = s.zMm(s.nodata_pit_units);
+    j["tilt"] = {{"source", toString(s.params.tilt)}, {"steepness", s.params.steepness},
+                 {"cells_tilted", s.shapes.cells_tilted}, {"cells_clamped", s.shapes.cells_clamped},
+                 {"cells_clamped_level", s.shapes.cells_flat_clamped}};
+    j["structural_texture"] = {{"enabled", s.params.structural_texture}, {"cells", s.shapes.cells_textured},
+                               {"dimple_mm", s.zMm(s.shapes.dimple_units)}};
     nlohmann::json marks = nlohmann::json::object();
     if (s.marks.notch)
         marks["notch"] = {{"depth_mm", s.marks.notch->depth_mm}, {"width_mm", s.marks.notch->width_mm},
@@ -91,6 +96,14 @@ std::string formatSceneFacts(const Scene& s) {
           << " mm east (x) and " << fmt("%.1f", t.leg_y_mm) << " mm north (y), right angle at ("
           << fmt("%.1f", planarX(t.corner, s.pitch_mm)) << ", " << fmt("%.1f", planarY(t.corner, s.pitch_mm)) << ") mm\n";
     }
+    if (s.params.tilt != TiltSource::None)
+        o << "  tilt      " << toString(s.params.tilt) << " x " << fmt("%.3g", s.params.steepness) << ": "
+          << s.shapes.cells_tilted << " tops tilted (" << s.shapes.cells_clamped << " clamped at the floor or a mark, "
+          << s.shapes.cells_flat_clamped << " of them level); each reads its value at its centre\n";
+    if (s.shapes.cells_textured > 0)
+        o << "  texture   " << s.shapes.cells_textured << " structural cells (kept only to hold the model together, "
+          << "no data) carry a cone-shaped dimple " << fmt("%.2f", s.zMm(s.shapes.dimple_units))
+          << " mm deep at the centre\n";
     for (const std::string& n : s.notes) o << "  note      " << n << "\n";
     return o.str();
 }

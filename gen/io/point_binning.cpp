@@ -93,6 +93,7 @@ HexField binPoints(const PointTable& points, const BinOptions& opts) {
     const size_t cells = size_t(grid.cellCount());
     std::vector<double> sum(cells, 0.0);
     std::vector<int64_t> count(cells, 0);
+    std::vector<BinMoments> moments(cells);
     for (size_t k = 0; k < points.size(); ++k) {
         const double u = (points.x[k] - layout.x_min) / layout.pitch + layout.u_min;
         const double v = (points.y[k] - layout.y_min) / layout.pitch + layout.v_min;
@@ -101,11 +102,16 @@ HexField binPoints(const PointTable& points, const BinOptions& opts) {
         assert(inside && "binLayout covers every point");
         if (!inside) continue;
         const size_t cell = size_t(grid.index(c, r));
+        // Offset from the cell's centre in pitches (the frame of hexCellAt).
+        const LatticePoint centre = hexCentre(grid, c, r);
+        const double dx = u - latticeX(centre, 1.0), dy = v - latticeY(centre, 1.0);
         if (!weighted) {
             ++count[cell];
+            moments[cell].add(dx, dy);
         } else if (std::isfinite(points.weight[k])) {
             sum[cell] += points.weight[k];
             ++count[cell];
+            moments[cell].add(dx, dy, points.weight[k]);
         }
     }
 
@@ -114,6 +120,10 @@ HexField binPoints(const PointTable& points, const BinOptions& opts) {
     field.source = points.source;
     field.pitch_data = layout.pitch;
     field.values.resize(cells);
+    field.moments = std::move(moments);
+    field.statistic = opts.aggregate == BinOptions::Aggregate::Count  ? BinStatistic::Density
+                      : opts.aggregate == BinOptions::Aggregate::Sum ? BinStatistic::WeightSum
+                                                                     : BinStatistic::WeightMean;
     for (size_t k = 0; k < cells; ++k) {
         switch (opts.aggregate) {
             case BinOptions::Aggregate::Count: field.values[k] = double(count[k]); break;

@@ -313,6 +313,8 @@ std::vector<std::string> scadParameterNames() {
 
 std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::string& file_name) {
     if (scene.keptCount() == 0) throw InputError("the model has no cell to draw; nothing to write to " + file_name);
+    if (!scene.shapes.empty() && std::find(scene.shapes.shaped.begin(), scene.shapes.shaped.end(), 1) != scene.shapes.shaped.end())
+        throw InputError(kScadShapedTopsMessage);
     std::string o;
     emitHeader(o, scene, opts, file_name);
     emitParameters(o, scene);
