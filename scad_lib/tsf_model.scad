@@ -140,8 +140,7 @@ function tsf_mirrored_spans(heights, base_units) =
            "tsf_mirrored_spans: heights must be a list of rows, each a list of whole numbers >= 0 or undef")
     assert(_tsf_is_count(base_units) && base_units >= 1,
            str("tsf_mirrored_spans: base_units must be a whole number >= 1, got ", base_units))
-    let(t = _tsf_max_step(heights) + base_units)
-    [for (row = heights) [for (h = row) is_undef(h) ? undef : [h, h + t]]];
+    _tsf_mirrored_spans(heights, base_units, 0);
 
 // Function: tsf_model()
 // Usage:
@@ -176,13 +175,18 @@ function tsf_mirrored_spans(heights, base_units) =
 //   mirrored = false: flat bottom; true: the bottom shows the data negated.
 //   faces = the orientation marks written by tsf (`marks`), or [] for none. Default: [].
 //   mark_height_mm = how far the orientation triangle stands above its region, mm (> 0). Default: 1.
+//   shapes = tilted tops and dimpled structural cells written by tsf (`tops`, tsf_tilt.scad), or [] for
+//            none: every top a level hexagon. Default: [].
+//   min_thickness_units = mirrored: the slab is at least this many z steps thick (tsf writes the
+//            thickness its tilted corners need). Default: 0.
 // Example(echo):
 //   m = tsf_model([[1, 2], [undef, "nodata"]], cell_mm=10, max_height_mm=10, base_mm=2,
 //                 transfer="linear", baseline=0, value_max=2, z_step_mm=0.5, mirrored=false);
 //   echo(tsf_model_spans(m));
 //   // ECHO: [[[0, 14], [0, 24]], [undef, [0, 2]]]
 function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear", baseline = 0, value_max,
-                   z_step_mm = 0.001, mirrored = false, faces = [], mark_height_mm = 1) =
+                   z_step_mm = 0.001, mirrored = false, faces = [], mark_height_mm = 1, shapes = [],
+                   min_thickness_units = 0) =
     assert(is_list(values) && len(values) >= 1 && is_list(values[0]) && len(values[0]) >= 1,
            "tsf_model: values must be a list of rows (north row first), each a list of cell values")
     assert(_tsf_is_finite(cell_mm) && cell_mm > 0, str("tsf_model: cell_mm must be a number > 0 (mm), got ", cell_mm))
@@ -200,6 +204,10 @@ function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear",
     assert(is_list(faces), str("tsf_model: faces must be a list (the marks written by tsf), got ", faces))
     assert(_tsf_is_finite(mark_height_mm) && mark_height_mm > 0,
            str("tsf_model: mark_height_mm must be a number > 0 (mm), got ", mark_height_mm))
+    assert(is_list(shapes) && (len(shapes) == 0 || len(shapes) == len(values)),
+           "tsf_model: shapes must be [] or one row per row of values (the tops written by tsf)")
+    assert(_tsf_is_count(min_thickness_units),
+           str("tsf_model: min_thickness_units must be a whole number >= 0, got ", min_thickness_units))
     let(rows = len(values), cols = len(values[0]),
         bad_row = [for (r = [0:rows - 1]) if (!is_list(values[r]) || len(values[r]) != cols) r])
     assert(len(bad_row) == 0,
@@ -216,14 +224,14 @@ function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear",
                        [for (v = row) is_undef(v) ? undef
                                       : round(_tsf_height_mm(v, transfer, baseline, value_max, max_height_mm) / z_step_mm)]],
         base_units = round(base_mm / z_step_mm),
-        plain = mirrored ? tsf_mirrored_spans(heights, base_units) : tsf_flat_spans(heights, base_units),
+        plain = mirrored ? _tsf_mirrored_spans(heights, base_units, min_thickness_units) : tsf_flat_spans(heights, base_units),
         // Same rule as tsf's Scene (nodata_pit_units): half the base, at most 1 mm, at least one step.
         pit = min(floor(base_units / 2), max(1, round(1 / z_step_mm))),
         spans = [for (r = [0:rows - 1]) [for (c = [0:cols - 1])
                      values[r][c] == "nodata" ? [plain[r][c][0] + (mirrored ? pit : 0), plain[r][c][1] - pit]
                                               : plain[r][c]]])
     ["tsf_model", rows, cols, cell_mm, z_step_mm, spans, base_units, mirrored,
-     faces, tsf_marks_cells(faces, rows), max(1, round(mark_height_mm / z_step_mm))];
+     faces, tsf_marks_cells(faces, rows), max(1, round(mark_height_mm / z_step_mm)), shapes];
 
 // Function: tsf_model_spans()
 // Usage:
@@ -334,11 +342,16 @@ function _tsf_max_step(heights) =
                              let(n = _tsf_neighbour(c, r, k), hn = _tsf_at(heights, n[0], n[1]))
                              if (!is_undef(hn)) abs(h - hn)]));
 
+// tsf_mirrored_spans() with a slab at least min_t steps thick.
+function _tsf_mirrored_spans(heights, base_units, min_t) =
+    let(t = max(_tsf_max_step(heights) + base_units, min_t))
+    [for (row = heights) [for (h = row) is_undef(h) ? undef : [h, h + t]]];
+
 function _tsf_is_height_grid(h) =
     is_list(h) && len([for (row = h) if (!is_list(row) || len([for (v = row) if (!is_undef(v) && !_tsf_is_count(v)) 1]) > 0) 1]) == 0;
 
 function _tsf_is_marked(mask, col, row) = len([for (c = mask[row]) if (c == col) 1]) > 0;
 
 function _tsf_check_model(m, who) =
-    assert(is_list(m) && len(m) == 11 && m[0] == "tsf_model", str(who, ": expected a model made by tsf_model()"))
+    assert(is_list(m) && len(m) == 12 && m[0] == "tsf_model", str(who, ": expected a model made by tsf_model()"))
     m;

@@ -43,7 +43,7 @@
 //   tsf_terrain_polyhedron(m);
 module tsf_terrain_polyhedron(m) {
     model = _tsf_check_model(m, "tsf_terrain_polyhedron");
-    _tsf_polyhedron(_tsf_model_points(model, model[5], model[10]));
+    _tsf_polyhedron(_tsf_model_points(model, model[5], model[10], model[11]));
 }
 
 // Module: tsf_hull_base()
@@ -65,7 +65,7 @@ module tsf_terrain_polyhedron(m) {
 module tsf_hull_base(m) {
     model = _tsf_check_model(m, "tsf_hull_base");
     slab = [for (row = model[5]) [for (s = row) is_undef(s) ? undef : [0, min(s[1], model[6])]]];
-    _tsf_polyhedron(_tsf_model_points(model, slab, 0));
+    _tsf_polyhedron(_tsf_model_points(model, slab, 0, []));
 }
 
 // ---------------------------------------------------------------------------
@@ -83,11 +83,13 @@ module _tsf_polyhedron(points) {
 
 // The boundary of a model whose cells have the given spans: plain cells as
 // hexagons, the cells of the marks' faces (model[8], tsf_marks.scad) through
-// those faces, the triangle raised by raise_units.
-function _tsf_model_points(model, spans, raise_units) =
-    concat(_tsf_span_points(model[1], model[2], model[3], model[4], spans, model[9]),
+// those faces, the triangle raised by raise_units; with shapes (tsf_tilt.scad)
+// tilted and dimpled tops as tsf resolved them.
+function _tsf_model_points(model, spans, raise_units, shapes) =
+    concat(len(shapes) > 0 ? _tsf_shaped_span_points(model[1], model[2], model[3], model[4], spans, shapes, model[9])
+                           : _tsf_span_points(model[1], model[2], model[3], model[4], spans, model[9]),
            [for (f = [0:1:len(model[8]) - 1])
-               each _tsf_face_points(model[8], f, spans, raise_units, model[3], model[4])]);
+               each _tsf_face_points(model[8], f, spans, raise_units, model[3], model[4], shapes, model[1])]);
 
 // The boundary of the union of the prisms spans[row][col] = [bottom, top]
 // (z steps) or undef, as triangles counter-clockwise from outside, in a flat

@@ -117,8 +117,6 @@ std::string verifyLines(const VerifyReport& r) {
 void runGen(const GenCommandOptions& o) {
     if (o.output.empty() && o.scad.empty())
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
-    if (!o.scad.empty() && (o.gen.scene.tilt != TiltSource::None || o.gen.scene.structural_texture))
-        throw InputError(kScadShapedTopsMessage);
     const ScadOptions so = scadOptions(o);
     checkOutputs(o, so);
     if (!o.preview.empty() && lowerCaseExtension(o.preview) != ".png")

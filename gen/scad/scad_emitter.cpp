@@ -1,6 +1,7 @@
 #include "gen/scad/scad_emitter.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -61,11 +62,17 @@ Parameters parametersOf(const Scene& s) {
 }
 
 // Library parts a strategy needs, in the order they are pasted.
-std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks) {
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped) {
     std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
-    if (strategy == ScadOptions::Strategy::Csg) parts.push_back("tsf_csg.scad");
+    if (strategy == ScadOptions::Strategy::Csg && !shaped) parts.push_back("tsf_csg.scad");
     if (marks) parts.push_back("tsf_marks.scad");
+    if (shaped) parts.push_back("tsf_tilt.scad");
     return parts;
+}
+
+// True when some top is tilted or dimpled (gen/top_shapes.h).
+bool hasShapedTops(const Scene& s) {
+    return std::find(s.shapes.shaped.begin(), s.shapes.shaped.end(), uint8_t(1)) != s.shapes.shaped.end();
 }
 
 std::string stemOf(const std::string& file_name) { return fs::path(file_name).stem().string(); }
@@ -226,6 +233,65 @@ void emitMarks(std::string& o, const Scene& s) {
     o += "];\n\n";
 }
 
+std::string cornerList(const std::array<int32_t, 6>& dz) {
+    std::string t = "[";
+    for (size_t e = 0; e < 6; ++e) t += (e ? ", " : "") + std::to_string(dz[e]);
+    return t + "]";
+}
+
+std::string crossingList(const Scene& s, const std::vector<int64_t>& crossing, size_t k) {
+    std::string t = "[";
+    for (size_t e = 0; e < 6; ++e) {
+        const int64_t id = crossing[6 * k + e];
+        t += e ? ", " : "";
+        if (id < 0) {
+            t += "undef";
+            continue;
+        }
+        const size_t n = size_t(id - s.shapes.first_id);
+        t += "[" + number(s.shapes.extra[n].i) + ", " + number(s.shapes.extra[n].j) + ", " +
+             std::to_string(s.shapes.extra_z[n]) + "]";
+    }
+    return t + "]";
+}
+
+// Tilted and dimpled tops as data for tsf_tilt.scad (see there), one grid row per line.
+void emitTops(std::string& o, const Scene& s) {
+    if (!hasShapedTops(s)) return;
+    const TopShapes& t = s.shapes;
+    const bool mirrored = s.params.bottom == Bottom::Mirrored;
+    const Parameters p = parametersOf(s);
+    o += "// ------------------------------------------------------------------ Tops ---\n"
+         "// Tilted tops and dimpled structural cells, resolved by tsf (docs/model.md):\n"
+         "// per cell undef (a level hexagon) or [corner offsets of the top (z steps),\n"
+         "// centre offset, the same for a mirrored bottom, where the top crosses each\n"
+         "// neighbour [i, j, z], the same for the bottoms] (format: tsf_tilt.scad).\n"
+         "// They hold for the values and parameters above: run tsf gen again to change those.\n"
+         "tops_made_for = [" + number(p.cell_mm) + ", " + number(p.max_height_mm) + ", \"" + p.transfer + "\", " +
+         number(p.baseline) + ", " + number(p.value_max) + ", " + number(p.z_step_mm) + ", " + number(p.base_mm) + ", " +
+         (p.mirrored ? "true" : "false") + "];\n"
+         "tops_thickness = " + std::to_string(mirrored ? s.mirror_thickness_units : 0) + ";\n"
+         "tops = [\n";
+    for (int32_t r = 0; r < s.grid.rows; ++r) {
+        std::string line = "    [";
+        for (int32_t c = 0; c < s.grid.cols; ++c) {
+            const int32_t k = s.keptAt(c, r);
+            line += c ? ", " : "";
+            if (k < 0 || !t.shaped[size_t(k)] || (!s.drawn_by_face.empty() && s.drawn_by_face[size_t(k)])) {
+                line += "undef";
+                continue;
+            }
+            const size_t kk = size_t(k);
+            line += "[" + cornerList(t.top_dz[kk]) + ", " + std::to_string(t.top_centre_dz[kk]) + ", " +
+                    (mirrored ? cornerList(t.bottom_dz[kk]) + ", " + std::to_string(t.bottom_centre_dz[kk]) : "[], 0") + ", " +
+                    crossingList(s, t.crossing_top, kk) + ", " + (mirrored ? crossingList(s, t.crossing_bottom, kk) : "[]") +
+                    "]";
+        }
+        o += line + (r + 1 < s.grid.rows ? "],\n" : "]\n");
+    }
+    o += "];\n\n";
+}
+
 void emitValues(std::string& o, const Scene& s) {
     const HexGrid& g = s.grid;
     std::vector<std::string> cells(size_t(g.cellCount()));
@@ -270,13 +336,25 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
     o += "model = tsf_model(values, cell_mm = cell, max_height_mm = height, base_mm = base,\n"
          "                  transfer = transfer, baseline = baseline, value_max = value_max,\n"
          "                  z_step_mm = snap, mirrored = mirror";
-    o += s.faces.empty() ? ");\n" : ",\n                  faces = orientation_marks ? marks : [], mark_height_mm = mark_height);\n";
+    if (!s.faces.empty()) o += ",\n                  faces = orientation_marks ? marks : [], mark_height_mm = mark_height";
+    const bool shaped = hasShapedTops(s);
+    if (shaped) o += ",\n                  shapes = tops, min_thickness_units = tops_thickness";
+    o += ");\n";
+    if (shaped) {
+        o += "assert([cell, height, transfer, baseline, value_max, snap, base, mirror] == tops_made_for,\n"
+             "       \"the tilted tops were resolved by tsf for the parameters it wrote; run tsf gen again to change them\");\n";
+        // The CSG strategy's prisms have level tops: a shaped model is one polyhedron.
+        if (opts.strategy == ScadOptions::Strategy::Csg)
+            o += "// Tilted tops are drawn as one polyhedron (the CSG strategy's prisms have level tops).\n";
+        o += "tsf_terrain_polyhedron(model);\n";
+        return;
+    }
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
 void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts) {
     const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
-    const std::vector<std::string> parts = libraryParts(opts.strategy, !s.faces.empty());
+    const std::vector<std::string> parts = libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s));
     std::string list;
     for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
     o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
@@ -313,13 +391,12 @@ std::vector<std::string> scadParameterNames() {
 
 std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::string& file_name) {
     if (scene.keptCount() == 0) throw InputError("the model has no cell to draw; nothing to write to " + file_name);
-    if (!scene.shapes.empty() && std::find(scene.shapes.shaped.begin(), scene.shapes.shaped.end(), 1) != scene.shapes.shaped.end())
-        throw InputError(kScadShapedTopsMessage);
     std::string o;
     emitHeader(o, scene, opts, file_name);
     emitParameters(o, scene);
     emitValues(o, scene);
     emitMarks(o, scene);
+    emitTops(o, scene);
     emitCall(o, scene, opts);
     if (opts.inline_library) emitInlineLibrary(o, scene, opts);
     return o;

@@ -49,14 +49,9 @@ struct ScadOptions {
 /// Name of the folder the library is copied to when it is not inlined.
 inline constexpr const char* kScadLibraryCopyDir = "tsf_lib";
 
-/// Why a Scene with tilted or dimpled tops (gen/top_shapes.h) is not written
-/// as OpenSCAD: scad_lib draws level hexagon tops only.
-inline constexpr const char* kScadShapedTopsMessage =
-    "tilted tops (--tilt) and dimpled structural cells (--texture-structural) are not drawn by the OpenSCAD "
-    "library yet; write the model with -o (STL, 3MF, OFF, OBJ)";
-
-/// Text of the .scad file for `scene`. Throws InputError (kScadShapedTopsMessage) for a Scene
-/// with tilted or dimpled tops. file_name (e.g. "model.scad") is used in
+/// Text of the .scad file for `scene`. A Scene with tilted or dimpled tops (gen/top_shapes.h)
+/// is written with its resolved tops (`tops`, scad_lib/tsf_tilt.scad) and
+/// drawn as one polyhedron whatever the strategy. file_name (e.g. "model.scad") is used in
 /// the header's render commands and to name the parameter-set file. Reads the
 /// library text when inline_library is set. Throws InputError for an empty
 /// Scene (no kept cell) and std::runtime_error when the library is missing.
