@@ -6,6 +6,7 @@
 
 #include "gen/error.h"
 #include "gen/hex_grid.h"
+#include "gen/top_shapes.h"
 
 namespace tsf {
 namespace {
@@ -94,6 +95,7 @@ void checkScene(const Scene& s) {
                          "); a flat bottom needs a region without holes");
             }
     }
+    checkTopShapes(s);
 }
 
 }  // namespace tsf

@@ -14,6 +14,7 @@
 //   - the kept cells form one edge-connected piece;
 //   - flat bottom: every bottom is 0 and the kept region has no holes (its
 //     bottom is one polygon).
+//   - shaped tops (gen/top_shapes.h): checkTopShapes.
 #pragma once
 
 #include "gen/scene.h"

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <sstream>
 #include <utility>
 
@@ -106,11 +105,7 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
     t.slope_y.assign(n, 0.0);
     t.structural = structural.empty() ? std::vector<uint8_t>(n, 0) : structural;
 
-    // Which face lies across a directed edge (v -> w) of a face ring.
-    std::map<std::pair<int64_t, int64_t>, int32_t> face_on_edge;
-    for (size_t f = 0; f < s.faces.faces.size(); ++f)
-        for (const auto& ring : s.faces.faces[f].rings)
-            for (size_t i = 0; i < ring.size(); ++i) face_on_edge[{ring[i], ring[(i + 1) % ring.size()]}] = int32_t(f);
+    const auto face_on_edge = facesOnEdges(s);  // which face lies across a directed ring edge
 
     const double unit_per_mm = 1.0 / s.z_snap_mm;
     for (size_t k = 0; k < n; ++k) {

@@ -28,6 +28,8 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "gen/marks.h"
@@ -80,6 +82,16 @@ int64_t centreBottom(const Scene& s, size_t k);
 inline bool isShaped(const TopShapes& t, size_t k) { return !t.shaped.empty() && t.shaped[k]; }
 /// True when kept cell k is structural (kept only to connect the model).
 inline bool isStructural(const TopShapes& t, size_t k) { return !t.structural.empty() && t.structural[k]; }
+
+/// Which face lies across each directed edge (v, w) of a face ring (planar ids).
+std::map<std::pair<int64_t, int64_t>, int32_t> facesOnEdges(const Scene& scene);
+
+/// Throws InputError (scene_check.h) when scene.shapes is not what the
+/// mesher builds on: lists of the wrong length, a corner or centre whose
+/// bottom is not below its top, neighbours whose spans do not overlap at a
+/// shared corner, tops (or bottoms) that cross without their crossing point,
+/// or a shaped top that crosses a mark's face. Empty shapes pass.
+void checkTopShapes(const Scene& scene);
 
 /// From the per-cell corner and centre offsets of scene.shapes, makes the
 /// crossings, the fan centres and their planar ids (shaped, centre_*_id,

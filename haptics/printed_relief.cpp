@@ -16,6 +16,31 @@ double printedHeightFraction(const Scene& scene, size_t k) {
     return std::clamp(scene.zMm(units) / max_mm, -1.0, 2.0);
 }
 
+namespace {
+
+// Height (mm) of kept cell k's printed top at (dx, dy) mm from its centre,
+// relative to the centre: a tilted top's plane, a structural cell's cone
+// rising from its lowered centre to the hexagon's edge (gen/top_shapes.h).
+double shapedTopOffsetMm(const Scene& scene, size_t k, double dx, double dy) {
+    const TopShapes& t = scene.shapes;
+    if (t.empty()) return 0.0;
+    double z = t.slope_x[k] * dx + t.slope_y[k] * dy;
+    if (t.top_centre_dz[k] != 0) {
+        // How far out the point is, 0 at the centre and 1 on the edge: the
+        // largest projection on the six edge normals (0, 60, ... 300 degrees)
+        // over the inradius (half the pitch).
+        double out = 0;
+        for (int e = 0; e < 6; ++e) {
+            const double a = e * (3.14159265358979323846 / 3.0);  // radians
+            out = std::max(out, (dx * std::cos(a) + dy * std::sin(a)) / (0.5 * scene.pitch_mm));
+        }
+        z -= scene.zMm(t.top_centre_dz[k]) * (std::min(1.0, out) - 1.0);
+    }
+    return z;
+}
+
+}  // namespace
+
 HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
     const double width_p = gridWidth(scene.grid, 1.0), depth_p = gridDepth(scene.grid, 1.0);  // in pitches
     int per_pitch = kReliefSamplesPerPitch;
@@ -36,7 +61,15 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
             int32_t c = 0, r = 0;
             if (!hexCellAt(scene.grid, (i + 0.5) * side_p, (j + 0.5) * side_p, c, r)) continue;
             const int32_t k = scene.keptAt(c, r);
-            if (k >= 0) g.at(i, j) = kept_height[size_t(k)];
+            if (k < 0) continue;
+            g.at(i, j) = kept_height[size_t(k)];
+            if (!scene.shapes.empty() && scene.shapes.shaped[size_t(k)] && scene.mapping.max_height_mm > 0) {
+                const LatticePoint centre = hexCentre(scene.grid, c, r);
+                const double dx = ((i + 0.5) * side_p - latticeX(centre, 1.0)) * scene.pitch_mm;
+                const double dy = ((j + 0.5) * side_p - latticeY(centre, 1.0)) * scene.pitch_mm;
+                const double h = kept_height[size_t(k)] + shapedTopOffsetMm(scene, size_t(k), dx, dy) / scene.mapping.max_height_mm;
+                g.at(i, j) = float(std::clamp(h, -1.0, 2.0));
+            }
         }
     if (info) {
         info->samples_per_pitch = per_pitch;

@@ -11,7 +11,9 @@
 // divided by the height of the largest value (max_height_mm) - or 0, the
 // floor, outside every kept cell (culled cells, the bounding box's corners)
 // and for no-data cells, as printed. The felt surface is thus the pillars'
-// tops, their edges rounded only by the renderer's interpolation.
+// tops, their edges rounded only by the renderer's interpolation. A tilted
+// top (gen/tilt.h) is sampled on its plane and a structural cell's dimple as
+// its cone (gen/top_shapes.h), so they are felt as printed.
 //
 // With kReliefSamplesPerPitch samples per pitch, every tap the bicubic or
 // bilinear sampler takes around a cell's centre lies inside that cell (a

@@ -4,12 +4,14 @@
 // self-intersection, heights and tilts read back).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
 
 #include "gen/bin_regression.h"
 #include "gen/direct_mesher.h"
+#include "gen/error.h"
 #include "gen/scene.h"
 #include "gen/scene_json.h"
 #include "tests/support/fields.h"
@@ -108,6 +110,22 @@ TEST(Tilt, CrossingTopsAreSplitAtTheCrossingAndVerify) {
         // Every crossing point keeps kMinCrossingMm from both ends of its edge.
         expectVerified(s, "crossing");
     }
+}
+
+TEST(Tilt, AShapedSceneTheMesherCannotBuildIsRefused) {
+    Scene s = buildScene(fieldFromFunction(6, 2, [](int, int) { return 5.0; }), test::smallParams());
+    std::vector<PlaneSlope> slopes(s.keptCount());
+    for (size_t k = 0; k < s.keptCount(); ++k) slopes[k] = {s.col[k] % 2 ? 0.3 : -0.3, s.col[k] % 2 ? -0.2 : 0.2};
+    resolveTopShapes(s, slopes, 1.0, {});
+    Scene no_crossing = s;
+    std::fill(no_crossing.shapes.crossing_top.begin(), no_crossing.shapes.crossing_top.end(), -1);
+    EXPECT_THROW(meshScene(no_crossing), InputError);
+    Scene through_floor = s;
+    through_floor.shapes.top_dz[0][0] = -int32_t(through_floor.top[0]);  // a corner down to z = 0
+    EXPECT_THROW(meshScene(through_floor), InputError);
+    Scene short_lists = s;
+    short_lists.shapes.slope_x.pop_back();
+    EXPECT_THROW(meshScene(short_lists), InputError);
 }
 
 TEST(Tilt, ExtremeSlopesAreClampedAtTheFloorAndStillVerify) {

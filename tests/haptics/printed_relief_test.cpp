@@ -174,3 +174,41 @@ TEST(PrintedRelief, SweepLinesRunAlongEveryRowInsideItsCells) {
         if (r > 0) EXPECT_NEAR(l.z_m - lines[r - 1].z_m, pitch_m * std::sqrt(3.0) / 2.0, 1e-9);  // north to south
     }
 }
+
+namespace {
+
+// The relief of a tilted top leans as printed: on a ramp rising east, inside
+// one cell the samples east of its centre stand higher than those west of it,
+// by the slope the Scene drew; a structural cell's dimple is lowest at its centre.
+TEST(PrintedRelief, TiltedTopsAndDimplesAreFeltAsPrinted) {
+    SceneParams p = tsf::test::smallParams(Bottom::Flat, Cull::None);
+    p.tilt = TiltSource::Gradient;
+    const Scene s = buildScene(fieldFromFunction(9, 7, [](int c, int) { return 1.0 + c; }), p);
+    ReliefInfo info;
+    const HeightGrid g = printedRelief(s, &info);
+    const int32_t k = s.keptAt(4, 3);
+    ASSERT_GE(k, 0);
+    const double slope = s.shapes.slope_x[size_t(k)];
+    ASSERT_GT(slope, 0.1);
+    const GridPoint c = reliefCellCentre(s, 4, 3, info.samples_per_pitch);
+    const int32_t i = int32_t(std::lround(c.gi)), j = int32_t(std::lround(c.gj));
+    const double rise = (g.at(i + 2, j) - g.at(i - 2, j)) * s.mapping.max_height_mm;  // mm over 4 samples
+    EXPECT_NEAR(rise, slope * 4 * info.sample_mm, 1e-3);
+
+    // Structural cells: empty cells among islands, not one value per cell.
+    HexField f = fieldFromFunction(9, 7, [](int col, int row) { return (col < 2 || col > 6) && row < 3 ? 5.0 : 0.0; });
+    f.one_to_one = false;
+    SceneParams q = tsf::test::smallParams(Bottom::Flat, Cull::Hull);
+    q.structural_texture = true;
+    const Scene d = buildScene(f, q);
+    const HeightGrid h = printedRelief(d, &info);
+    const int32_t m = d.keptAt(4, 1);
+    ASSERT_GE(m, 0);
+    ASSERT_TRUE(isStructural(d.shapes, size_t(m)));
+    const GridPoint e = reliefCellCentre(d, 4, 1, info.samples_per_pitch);
+    const int32_t ei = int32_t(std::lround(e.gi)), ej = int32_t(std::lround(e.gj));
+    EXPECT_LT(h.at(ei, ej), h.at(ei + 2, ej));
+    EXPECT_LT(h.at(ei, ej), 0.0);  // below the floor at the centre
+}
+
+}  // namespace

@@ -142,8 +142,8 @@ TEST(SceneJson, MalformedMembersNameTheirPath) {
     }
     {
         auto j = good;
-        j["version"] = 3;
-        expectError(j, "version: unsupported version 3");
+        j["version"] = 4;
+        expectError(j, "version: unsupported version 4");
     }
     {
         auto j = good;
