@@ -352,15 +352,18 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     }
     placeMarks(s);
     if (params.tilt != TiltSource::None || params.structural_texture) {
-        // Structural: a kept cell at the floor that is not one input value as
-        // read (an empty bin, a resampled cell at the baseline): kept only
-        // because the hull holds the model together there. Not when nothing
-        // rises above the floor (the whole model is then such cells).
+        // Structural: a kept cell at the floor that no input value fell in (a
+        // bin without points): kept only because the hull holds the model
+        // together there. A raster cell always holds pixels, so at the floor
+        // it is a value (0 rain is data) and is never dimpled. Not when
+        // nothing rises above the floor (the whole model is then such cells).
         std::vector<uint8_t> structural(kept, 0);
-        if (params.structural_texture && s.cells_nonempty > 0 && !field.one_to_one)
-            for (size_t k = 0; k < kept; ++k)
-                structural[k] = s.kind[k] == CellKind::Data && h_units[size_t(g.index(s.col[k], s.row[k]))] == 0 &&
+        if (params.structural_texture && s.cells_nonempty > 0 && !field.moments.empty())
+            for (size_t k = 0; k < kept; ++k) {
+                const size_t idx = size_t(g.index(s.col[k], s.row[k]));
+                structural[k] = s.kind[k] == CellKind::Data && h_units[idx] == 0 && field.moments[idx].n == 0 &&
                                 (s.drawn_by_face.empty() || !s.drawn_by_face[k]);
+            }
         resolveTopShapes(s, tiltSlopes(field, s, params.tilt), params.steepness, structural);
     }
     return s;

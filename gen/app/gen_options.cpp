@@ -118,10 +118,13 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
         ->check(CLI::IsMember({"none", "points", "gradient"}))->group(model);
     cmd->add_option("--steepness", p.steepness, "Multiplies every tilt's slope (tops never go below the floor)")
         ->check(CLI::PositiveNumber)->capture_default_str()->group(model);
-    cmd->add_flag_callback(
-           "--texture-structural", [&p] { p.structural_texture = true; },
-           "Dimple the cells kept only to hold the model together (empty bins, resampled cells at the floor), "
-           "so they are not felt as data")
+    // On by default on the command line (thesis 7.1.2): a reader must never take
+    // a cell kept only to hold the model together for a value. The library's
+    // SceneParams default stays off so a bare Scene is the plain model.
+    p.structural_texture = true;
+    cmd->add_flag("--texture-structural,!--no-texture-structural", p.structural_texture,
+                  "Dimple the cells kept only to hold the model together (empty bins, resampled cells at the "
+                  "floor), so they are not felt as data (default on; --no-texture-structural: level tops)")
         ->group(model);
     auto* marks = "Orientation marks (docs/model.md)";
     cmd->add_flag_callback("--no-notch", [&p] { p.marks.notch = false; },

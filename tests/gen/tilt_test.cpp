@@ -192,8 +192,7 @@ HexField binnedIslands() {
         const bool island = (c < 3 && r < 3) || (c > 10 && r > 10) || (c > 10 && r < 3);
         return island ? 1.0 + (c + r) % 3 : 0.0;
     });
-    f.one_to_one = false;
-    return f;
+    return test::asBinnedPoints(f);
 }
 
 TEST(StructuralTexture, OnlyCellsKeptToConnectAreDimpled) {
@@ -213,12 +212,16 @@ TEST(StructuralTexture, OnlyCellsKeptToConnectAreDimpled) {
             }
             expectVerified(s, "texture");
         }
-    // One value per cell: a typed 0 is data, never textured.
+    // A raster's cells all hold values: a 0 is data, never textured, whether
+    // one value per cell or resampled.
     SceneParams p = test::smallParams();
     p.structural_texture = true;
-    HexField one = binnedIslands();
-    one.one_to_one = true;
-    EXPECT_EQ(buildScene(one, p).shapes.cells_textured, 0);
+    HexField raster = binnedIslands();
+    raster.moments.clear();
+    for (bool one_to_one : {true, false}) {
+        raster.one_to_one = one_to_one;
+        EXPECT_EQ(buildScene(raster, p).shapes.cells_textured, 0);
+    }
 }
 
 TEST(Tilt, AirportsRegressionPlanesMirroredVerifyFromBothFaces) {

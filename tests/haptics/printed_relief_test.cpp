@@ -196,8 +196,8 @@ TEST(PrintedRelief, TiltedTopsAndDimplesAreFeltAsPrinted) {
     EXPECT_NEAR(rise, slope * 4 * info.sample_mm, 1e-3);
 
     // Structural cells: empty cells among islands, not one value per cell.
-    HexField f = fieldFromFunction(9, 7, [](int col, int row) { return (col < 2 || col > 6) && row < 3 ? 5.0 : 0.0; });
-    f.one_to_one = false;
+    const HexField f = tsf::test::asBinnedPoints(
+        fieldFromFunction(9, 7, [](int col, int row) { return (col < 2 || col > 6) && row < 3 ? 5.0 : 0.0; }));
     SceneParams q = tsf::test::smallParams(Bottom::Flat, Cull::Hull);
     q.structural_texture = true;
     const Scene d = buildScene(f, q);

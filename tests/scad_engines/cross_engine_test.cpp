@@ -154,7 +154,7 @@ TEST_P(CrossEngineTilt, RendersTheSameSolidAsTheDirectMesher) {
     for (int32_t r = 0; r < field.grid.rows; ++r)
         for (int32_t c = 7; c < field.grid.cols; ++c) field.at(c, r) = terrain.at(c - 7, r % terrain.grid.rows);
     field.source = "floor and terrain";
-    field.one_to_one = false;  // cells at the floor are structural, as empty bins are
+    field = test::asBinnedPoints(field);  // cells at the floor are empty bins: structural
     SceneParams p = test::terrainParams(bottom);
     p.marks = MarkParams{};
     p.pitch_mm = 6.0;

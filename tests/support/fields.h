@@ -31,6 +31,16 @@ inline HexField fieldFromFunction(int cols, int rows, const std::function<double
     return f;
 }
 
+/// `f` as binned points would give it: one point at the centre of every cell
+/// above zero, none in the others (the empty bins a hull keeps are structural).
+inline HexField asBinnedPoints(HexField f) {
+    f.one_to_one = false;
+    f.moments.assign(f.values.size(), BinMoments{});
+    for (size_t i = 0; i < f.values.size(); ++i)
+        if (f.values[i] != 0.0 && !std::isnan(f.values[i])) f.moments[i].add(0.0, 0.0);
+    return f;
+}
+
 /// 5 mm cells, 10 mm relief on a 2 mm base, 1 um height snap, no
 /// orientation marks (the pillar rules alone; marks have their own tests).
 inline SceneParams smallParams(Bottom bottom = Bottom::Flat, Cull cull = Cull::Hull) {
