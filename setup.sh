@@ -16,7 +16,7 @@ DEPS=(
   libglm-dev libusb-1.0-0-dev libpng-dev lib3mf-dev libzip-dev
   libcli11-dev nlohmann-json3-dev libgdal-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  openscad admesh xvfb xauth
+  openscad admesh xvfb xauth prusa-slicer
 )
 
 mode="${1:-all}"
