@@ -110,6 +110,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
     for (const auto& [path, what] : s.outputs) j["outputs"].push_back({{"path", path}, {"kind", what}});
     for (const auto& [stage, ms] : s.timings_ms) j["timings_ms"][stage] = ms;
     if (!s.verify.is_null()) j["verify"] = s.verify;
+    j["printer"] = s.printer_notes;
     return j;
 }
 
@@ -117,6 +118,7 @@ std::string formatSummary(const GenSummary& s) {
     std::ostringstream o;
     o << "tsf gen: " << s.input << "\n";
     if (s.field) o << "  input     " << s.field->how << "\n";
+    for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
     if (s.scene) o << formatSceneFacts(*s.scene);
     if (s.mesh)
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
