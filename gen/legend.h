@@ -53,6 +53,27 @@ struct LegendLayout {
     double width_mm = 0, depth_mm = 0;           ///< the area the legend needs, margins included
 };
 
+/// What the user asks the legend to say (tsf gen --title, --units,
+/// --braille-table). No title and no units: no legend.
+struct LegendRequest {
+    std::string title;                      ///< first line, UTF-8
+    std::string units;                      ///< after the value range ("0 to 27 airports")
+    std::string table = "en-us-g1.ctb";     ///< liblouis table
+    bool wanted() const { return !title.empty() || !units.empty(); }
+};
+
+/// The legend as placed on a model (gen/legend_scene.h): a plate north of
+/// the pillars, its top at the floor, the braille on it.
+struct SceneLegend {
+    LegendLayout layout;          ///< the braille, in the legend's frame
+    double x0_mm = 0, y0_mm = 0;  ///< where the legend frame's origin is in the model frame
+    int32_t reach_row = 0;        ///< the southmost grid row the plate reaches under (its north tips)
+    double plate_south_mm = 0;    ///< y (model frame) of the plate's south edge: the upper side corners of reach_row
+    double plate_north_mm = 0;    ///< y of its north edge
+    double plate_east_mm = 0;     ///< x of its east edge (its west edge is x = 0)
+    int64_t plate_top_units = 0;  ///< z of its top (the floor), z snap units
+};
+
 /// Lays the legend out as described above. Throws InputError for a table
 /// liblouis cannot load or a word wider than max_cells.
 LegendLayout layoutLegend(const LegendParams& params);

@@ -19,6 +19,7 @@
 #include "gen/concave_hull.h"
 #include "gen/convex_hull.h"
 #include "gen/error.h"
+#include "gen/legend_scene.h"
 #include "gen/resample.h"
 
 namespace tsf {
@@ -348,6 +349,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         s.notes.push_back(note.str());
     }
     placeMarks(s);
+    placeLegend(s);
     return s;
 }
 

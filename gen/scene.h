@@ -27,6 +27,7 @@
 
 #include "gen/hex_field.h"
 #include "gen/hex_grid.h"
+#include "gen/legend.h"
 #include "gen/marks.h"
 #include "gen/mesh.h"
 
@@ -83,6 +84,8 @@ struct SceneParams {
     Bottom bottom = Bottom::Flat;
     // --- marks (gen/marks.h) ---
     MarkParams marks;
+    // --- braille legend (gen/legend_scene.h) ---
+    LegendRequest legend;
 };
 
 /// What a kept cell stands for.
@@ -132,6 +135,8 @@ struct Scene {
     /// Per kept cell: 1 if its top/bottom/walls are drawn through `faces`
     /// instead of as a plain hexagonal prism.
     std::vector<uint8_t> drawn_by_face;
+    /// The braille legend's plate north of the pillars (gen/legend_scene.h); none unless asked for.
+    std::optional<SceneLegend> legend;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)

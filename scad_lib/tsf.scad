@@ -13,6 +13,7 @@
 //   tsf_polyhedron.scad  tsf_terrain_polyhedron(), tsf_hull_base()
 //   tsf_csg.scad         tsf_hex_pillar(), tsf_terrain_csg()
 //   tsf_marks.scad       drawing of the orientation marks (notch, triangle) that tsf places
+//   tsf_legend.scad      tsf_with_legend(): the braille legend plate that tsf meshes
 //
 // Names starting with _tsf are private. The library defines no variables, so
 // it adds nothing to the OpenSCAD customizer. See docs/openscad.md in the tsf
@@ -21,3 +22,4 @@ include <tsf_model.scad>
 include <tsf_polyhedron.scad>
 include <tsf_csg.scad>
 include <tsf_marks.scad>
+include <tsf_legend.scad>

@@ -1,5 +1,7 @@
 #include "gen/app/gen_summary.h"
 
+#include "gen/braille.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -58,6 +60,22 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     else
         marks["triangle"] = nullptr;
     j["marks"] = marks;
+    if (s.legend) {
+        const SceneLegend& l = *s.legend;
+        const BrailleStandard& st = l.layout.standard;
+        size_t cells = 0;
+        for (const auto& line : l.layout.cells) cells += line.size();
+        nlohmann::json lines = nlohmann::json::array();
+        for (size_t k = 0; k < l.layout.text.size(); ++k)
+            lines.push_back({{"text", l.layout.text[k]}, {"braille", brailleUnicode(l.layout.cells[k])}});
+        j["legend"] = {{"lines", lines}, {"table", s.params.legend.table}, {"cells", cells}, {"dots", l.layout.dots.size()},
+                       {"plate_mm", {{0, l.plate_south_mm}, {l.plate_east_mm, l.plate_north_mm}}},
+                       {"standard", st.name}, {"dot_base_mm", st.dot_base_mm}, {"dot_height_mm", st.dot_height_mm},
+                       {"dot_pitch_mm", st.dot_pitch_mm}, {"cell_pitch_mm", st.cell_pitch_mm},
+                       {"line_pitch_mm", st.line_pitch_mm}};
+    } else {
+        j["legend"] = nullptr;
+    }
     j["notes"] = s.notes;
     return j;
 }
@@ -90,6 +108,16 @@ std::string formatSceneFacts(const Scene& s) {
         o << "  triangle  raised " << fmt("%.2f", s.zMm(t.raise_units)) << " mm, legs " << fmt("%.1f", t.leg_x_mm)
           << " mm east (x) and " << fmt("%.1f", t.leg_y_mm) << " mm north (y), right angle at ("
           << fmt("%.1f", planarX(t.corner, s.pitch_mm)) << ", " << fmt("%.1f", planarY(t.corner, s.pitch_mm)) << ") mm\n";
+    }
+    if (s.legend) {
+        const SceneLegend& l = *s.legend;
+        const BrailleStandard& st = l.layout.standard;
+        o << "  legend    braille (" << s.params.legend.table << ") on a plate " << fmt("%.1f", l.plate_east_mm) << " x "
+          << fmt("%.1f", l.plate_north_mm - l.plate_south_mm) << " mm north of the pillars, " << l.layout.dots.size()
+          << " dots " << fmt("%.2f", st.dot_base_mm) << " mm across, " << fmt("%.2f", st.dot_height_mm) << " mm high ("
+          << st.name << ")\n";
+        for (size_t k = 0; k < l.layout.text.size(); ++k)
+            o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
     }
     for (const std::string& n : s.notes) o << "  note      " << n << "\n";
     return o.str();

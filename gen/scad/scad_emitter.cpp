@@ -1,5 +1,7 @@
 #include "gen/scad/scad_emitter.h"
 
+#include "gen/scad/scad_legend.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -61,10 +63,11 @@ Parameters parametersOf(const Scene& s) {
 }
 
 // Library parts a strategy needs, in the order they are pasted.
-std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks) {
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool legend) {
     std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
     if (strategy == ScadOptions::Strategy::Csg) parts.push_back("tsf_csg.scad");
     if (marks) parts.push_back("tsf_marks.scad");
+    if (legend) parts.push_back("tsf_legend.scad");
     return parts;
 }
 
@@ -271,12 +274,13 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
          "                  transfer = transfer, baseline = baseline, value_max = value_max,\n"
          "                  z_step_mm = snap, mirrored = mirror";
     o += s.faces.empty() ? ");\n" : ",\n                  faces = orientation_marks ? marks : [], mark_height_mm = mark_height);\n";
+    o += legendCallPrefix(s);
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
 void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts) {
     const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
-    const std::vector<std::string> parts = libraryParts(opts.strategy, !s.faces.empty());
+    const std::vector<std::string> parts = libraryParts(opts.strategy, !s.faces.empty(), s.legend.has_value());
     std::string list;
     for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
     o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
@@ -318,6 +322,7 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     emitParameters(o, scene);
     emitValues(o, scene);
     emitMarks(o, scene);
+    emitLegendData(o, scene);
     emitCall(o, scene, opts);
     if (opts.inline_library) emitInlineLibrary(o, scene, opts);
     return o;
