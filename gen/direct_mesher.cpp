@@ -46,6 +46,7 @@
 
 #include "gen/cdt_parity.h"
 
+#include "gen/legend_scene.h"
 #include "gen/scene_check.h"
 
 namespace tsf {
@@ -385,7 +386,8 @@ private:
 Mesh meshScene(const Scene& scene) {
     checkScene(scene);
     if (scene.keptCount() == 0) return {};
-    return MeshBuilder(scene).build();
+    Mesh mesh = MeshBuilder(scene).build();
+    return scene.legend ? unionWithLegend(mesh, scene) : mesh;
 }
 
 }  // namespace tsf

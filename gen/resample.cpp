@@ -181,21 +181,23 @@ HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
     const HexGrid grid{raster.cols, raster.rows};
     if (pl.pitch_mm > 0) return rasterOneToOne(raster);
     const double pitch = std::min(pl.fit_width_mm / gridWidth(grid, 1.0), pl.fit_depth_mm / gridDepth(grid, 1.0));
-    if (pitch >= kMinTactileCellMm) return rasterOneToOne(raster);
+    const double min_cell_mm = std::max(kMinTactileCellMm, pl.min_cell_mm);
+    if (pitch >= min_cell_mm) return rasterOneToOne(raster);
     // Too many values for pillars a finger can tell apart: the most columns
-    // whose cells are still kMinTactileCellMm wide, in both directions.
-    int cols = std::max(1, int(std::floor(pl.fit_width_mm / kMinTactileCellMm - 0.5)));
+    // whose cells are still min_cell_mm wide, in both directions.
+    int cols = std::max(1, int(std::floor(pl.fit_width_mm / min_cell_mm - 0.5)));
     cols = std::min<int>(cols, raster.cols);
     for (; cols > 1; --cols) {
         const ResampleLayout l = resampleLayout(raster.cols, raster.rows, cols);
         const double p = std::min(pl.fit_width_mm / gridWidth(l.grid, 1.0), pl.fit_depth_mm / gridDepth(l.grid, 1.0));
-        if (p >= kMinTactileCellMm) break;
+        if (p >= min_cell_mm) break;
     }
     rs.hex_cols = cols;
     HexField f = resampleRaster(raster, rs);
     f.how += "; resampled because one pillar per value would be " + formatNumber(pitch) +
-             " mm across, below the " + formatNumber(kMinTactileCellMm) +
-             " mm a fingertip tells apart (--bins N or --cell MM to choose)";
+             " mm across, below the " + formatNumber(min_cell_mm) +
+             (min_cell_mm > kMinTactileCellMm ? " mm the nozzle prints as pillars" : " mm a fingertip tells apart") +
+             " (--bins N or --cell MM to choose)";
     return f;
 }
 

@@ -91,11 +91,12 @@ struct RasterPlacement {
     double pitch_mm = 0;        ///< --cell; 0 = fit the box
     double fit_width_mm = 150;  ///< the box the model must fit (printer bed)
     double fit_depth_mm = 150;
+    double min_cell_mm = kMinTactileCellMm;  ///< smallest default cell; never below kMinTactileCellMm (a wide nozzle raises it)
 };
 
 /// One pillar per value when the grid fits the box at kMinTactileCellMm or
 /// more (or a cell size was given); otherwise resampled to the most columns
-/// that keep cells at least kMinTactileCellMm, and `how` says from what to
+/// that keep cells at least kMinTactileCellMm (or min_cell_mm when larger), and `how` says from what to
 /// what and why. hex_cols > 0 always resamples to that many columns.
 HexField placeRaster(const Raster& raster, const RasterPlacement& placement);
 

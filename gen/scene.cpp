@@ -19,6 +19,7 @@
 #include "gen/concave_hull.h"
 #include "gen/convex_hull.h"
 #include "gen/error.h"
+#include "gen/legend_scene.h"
 #include "gen/resample.h"
 
 namespace tsf {
@@ -366,6 +367,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             }
         resolveTopShapes(s, tiltSlopes(field, s, params.tilt), params.steepness, structural);
     }
+    placeLegend(s);
     return s;
 }
 

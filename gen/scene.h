@@ -27,6 +27,7 @@
 
 #include "gen/hex_field.h"
 #include "gen/hex_grid.h"
+#include "gen/legend.h"
 #include "gen/marks.h"
 #include "gen/mesh.h"
 #include "gen/tilt.h"
@@ -89,6 +90,8 @@ struct SceneParams {
     TiltSource tilt = TiltSource::None;
     double steepness = 1.0;        ///< multiplies every tilt's slope (> 0)
     bool structural_texture = false;  ///< dimple the cells kept only to hold the model together
+    // --- braille legend (gen/legend_scene.h) ---
+    LegendRequest legend;
 };
 
 /// What a kept cell stands for.
@@ -141,6 +144,8 @@ struct Scene {
     /// Tilted tops and the dimples of structural cells (empty: every top a
     /// level hexagon). Planar ids after the faces' (gen/top_shapes.h).
     TopShapes shapes;
+    /// The braille legend's plate north of the pillars (gen/legend_scene.h); none unless asked for.
+    std::optional<SceneLegend> legend;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)

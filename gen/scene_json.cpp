@@ -2,6 +2,8 @@
 #include "gen/scene_json.h"
 
 #include <array>
+#include "gen/legend_scene.h"
+
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -251,6 +253,10 @@ json sceneHeadJson(const Scene& s) {
         {"one_to_one", s.one_to_one},
         {"marks", marksJson(s.marks)},
         {"shapes", shapesJson(s)},
+        // The braille legend as asked for; placeLegend places it again on reading.
+        {"legend", s.legend ? json{{"title", s.params.legend.title}, {"units", s.params.legend.units},
+                                   {"table", s.params.legend.table}}
+                            : json(nullptr)},
         {"hull", hull},
         {"notes", s.notes},
     };
@@ -429,6 +435,15 @@ Scene sceneFromJson(const json& j) {
         fail("marks.triangle.anchor", "is not the index of a cell");
     buildMarkFaces(s);
     readShapes(j, cells, s);
+    if (j.contains("legend") && !j["legend"].is_null()) {
+        const json& l = j["legend"];
+        for (const char* key : {"title", "units", "table"})
+            if (!l.contains(key) || !l[key].is_string()) fail(std::string("legend.") + key, "expected a string");
+        s.params.legend.title = l["title"].get<std::string>();
+        s.params.legend.units = l["units"].get<std::string>();
+        s.params.legend.table = l["table"].get<std::string>();
+        placeLegend(s);
+    }
     return s;
 }
 

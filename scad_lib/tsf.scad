@@ -14,6 +14,7 @@
 //   tsf_csg.scad         tsf_hex_pillar(), tsf_terrain_csg()
 //   tsf_marks.scad       drawing of the orientation marks (notch, triangle) that tsf places
 //   tsf_tilt.scad        drawing of tilted tops and dimpled structural cells that tsf resolves
+//   tsf_legend.scad      tsf_with_legend(): the braille legend plate that tsf meshes
 //
 // Names starting with _tsf are private. The library defines no variables, so
 // it adds nothing to the OpenSCAD customizer. See docs/openscad.md in the tsf
@@ -23,3 +24,4 @@ include <tsf_polyhedron.scad>
 include <tsf_csg.scad>
 include <tsf_marks.scad>
 include <tsf_tilt.scad>
+include <tsf_legend.scad>

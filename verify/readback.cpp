@@ -167,6 +167,13 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& c
                 ++f.outside_cells_checked;
                 const Vec3 centre = scene.point(hexCentre(scene.grid, col, row), 0);
                 const auto hit = caster.firstHit({centre.x, centre.y, z_above}, {0, 0, -1});
+                // Under the braille legend's plate (gen/legend_scene.h) a culled cell
+                // meets the plate's top and nothing above it.
+                const bool under_plate = scene.legend && centre.y >= scene.legend->plate_south_mm &&
+                                         centre.x <= scene.legend->plate_east_mm;
+                if (under_plate && hit &&
+                    std::fabs(hit->point_mm.z - scene.zMm(scene.legend->plate_top_units)) <= scene.z_snap_mm / 2)
+                    continue;
                 if (!hit) continue;
                 ++f.outside_cells_hit;
                 if (out.worst.size() < options.max_offenders)

@@ -28,5 +28,6 @@ void addInfoCommand(CLI::App& app);    // gen_command.cpp
 void addRenderCommand(CLI::App& app);  // render_command.cpp
 void addVerifyCommand(CLI::App& app);  // verify_command.cpp
 void addFeelCommand(CLI::App& app);    // feel_command.cpp
+void addPrintCheckCommand(CLI::App& app);  // print_check_command.cpp
 
 }  // namespace tsf::cli

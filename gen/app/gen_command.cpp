@@ -10,6 +10,7 @@
 #include "gen/app/input_report.h"
 #include "gen/app/stage_timer.h"
 #include "gen/app/preview.h"
+#include "gen/app/printer_fit.h"
 #include "gen/direct_mesher.h"
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_writer.h"
@@ -37,6 +38,8 @@ struct GenCommandOptions {
     std::string preview;
     bool verify_full = false;
     bool force = false;
+    PrinterSpec printer;  ///< --bed, --nozzle, --layer (printer_fit.h)
+    GivenOptions given;   ///< model options the user gave himself
 };
 
 // Largest existing file read to decide whether tsf wrote it (parameter sets, scene sidecar).
@@ -114,7 +117,7 @@ std::string verifyLines(const VerifyReport& r) {
     return out + other;
 }
 
-void runGen(const GenCommandOptions& o) {
+void runGen(GenCommandOptions o) {
     if (o.output.empty() && o.scad.empty())
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
     const ScadOptions so = scadOptions(o);
@@ -124,6 +127,7 @@ void runGen(const GenCommandOptions& o) {
     StageTimer timer(o.progress);
     GenSummary summary;
     summary.input = o.gen.input;
+    summary.printer_notes = applyPrinterFit(o.printer, o.given, o.gen);
 
     timer.begin("reading");
     const HexField field = loadField(o.gen);
@@ -133,15 +137,20 @@ void runGen(const GenCommandOptions& o) {
     timer.begin("scene");
     const Scene scene = buildScene(field, o.gen.scene);
     summary.scene = &scene;
+    if (const std::string note = cellNozzleNote(scene.pitch_mm, o.printer); !note.empty())
+        summary.printer_notes.push_back(note);
     timer.begin("meshing");
     const Mesh mesh = meshScene(scene);
     summary.mesh = &mesh;
+    checkFitsBed(mesh, scene.pitch_mm, o.printer);
 
     std::optional<VerifyReport> report;
     if (!o.no_verify) {
         timer.begin("verifying");
         VerifyOptions vo;
         vo.name = o.output.empty() ? o.scad : o.output;
+        if (o.printer.nozzle_mm > 0) vo.nozzle_mm = o.printer.nozzle_mm;
+        if (o.printer.layer_mm > 0) vo.layer_mm = o.printer.layer_mm;
         if (!o.verify_full && mesh.triangleCount() > kQuickVerifyTriangles) {
             vo.self_intersections = false;
             vo.printability = false;
@@ -229,9 +238,23 @@ void addGenCommand(CLI::App& app) {
         ->check(CLI::IsMember({"polyhedron", "csg"}))->capture_default_str();
     cmd->add_flag("--scad-library-beside", opts->scad_library_beside,
                   "Copy the OpenSCAD library into a folder beside the .scad instead of inlining it");
-    cmd->callback([opts] {
+    auto* printer = "Printer (docs/printing.md)";
+    cmd->add_option("--bed", opts->printer.bed,
+                    "Bed WIDTHxDEPTH, mm: the model is fitted into it less 5 mm on each side (unless --width/--depth); "
+                    "a larger model is refused")
+        ->group(printer);
+    cmd->add_option("--nozzle", opts->printer.nozzle_mm,
+                    "Nozzle diameter, mm: raster cells at least 4 nozzle widths; thin walls flagged")
+        ->check(CLI::Range(0.05, 3.0))->group(printer);
+    cmd->add_option("--layer", opts->printer.layer_mm,
+                    "Layer height, mm: heights snap to whole layers (unless --snap)")
+        ->check(CLI::Range(0.01, 2.0))->group(printer);
+    cmd->callback([cmd, opts] {
         // The command line goes into the OpenSCAD header so a file says how it was made.
         opts->command_line = invocation();
+        opts->given.width = cmd->get_option("--width")->count() > 0;
+        opts->given.depth = cmd->get_option("--depth")->count() > 0;
+        opts->given.snap = cmd->get_option("--snap")->count() > 0;
         runGen(*opts);
     });
 }

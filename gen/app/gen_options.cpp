@@ -133,6 +133,15 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                            "Leave out the raised right triangle (x leg east, the longer; y leg north)")->group(marks);
     cmd->add_option("--notch-depth", p.marks.notch_depth_mm, "How far the notch reaches into the corner, mm")
         ->check(CLI::Range(0.5, 100.0))->capture_default_str()->group(marks);
+    auto* legend = "Braille legend (docs/printing.md)";
+    cmd->add_option("--title", p.legend.title,
+                    "Title embossed in braille on a plate grown north of the pillars, with the value range")
+        ->group(legend);
+    cmd->add_option("--units", p.legend.units, "Units of the values, after the range in the legend (e.g. airports)")
+        ->group(legend);
+    cmd->add_option("--braille-table", p.legend.table,
+                    "liblouis table for the legend (uncontracted US English by default; e.g. en-ueb-g1.ctb, de-g0.utb)")
+        ->capture_default_str()->group(legend);
     cmd->add_option("--triangle-leg", p.marks.triangle_leg_mm, "Preferred east leg of the triangle, mm (north leg 0.6 of it)")
         ->check(CLI::Range(5.0, 200.0))->capture_default_str()->group(marks);
 }

@@ -1,5 +1,7 @@
 #include "gen/app/gen_summary.h"
 
+#include "gen/braille.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -63,6 +65,22 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     else
         marks["triangle"] = nullptr;
     j["marks"] = marks;
+    if (s.legend) {
+        const SceneLegend& l = *s.legend;
+        const BrailleStandard& st = l.layout.standard;
+        size_t cells = 0;
+        for (const auto& line : l.layout.cells) cells += line.size();
+        nlohmann::json lines = nlohmann::json::array();
+        for (size_t k = 0; k < l.layout.text.size(); ++k)
+            lines.push_back({{"text", l.layout.text[k]}, {"braille", brailleUnicode(l.layout.cells[k])}});
+        j["legend"] = {{"lines", lines}, {"table", s.params.legend.table}, {"cells", cells}, {"dots", l.layout.dots.size()},
+                       {"plate_mm", {{0, l.plate_south_mm}, {l.plate_east_mm, l.plate_north_mm}}},
+                       {"standard", st.name}, {"dot_base_mm", st.dot_base_mm}, {"dot_height_mm", st.dot_height_mm},
+                       {"dot_pitch_mm", st.dot_pitch_mm}, {"cell_pitch_mm", st.cell_pitch_mm},
+                       {"line_pitch_mm", st.line_pitch_mm}};
+    } else {
+        j["legend"] = nullptr;
+    }
     j["notes"] = s.notes;
     return j;
 }
@@ -104,6 +122,16 @@ std::string formatSceneFacts(const Scene& s) {
         o << "  texture   " << s.shapes.cells_textured << " structural cells (kept only to hold the model together, "
           << "no data) carry a cone-shaped dimple " << fmt("%.2f", s.zMm(s.shapes.dimple_units))
           << " mm deep at the centre\n";
+    if (s.legend) {
+        const SceneLegend& l = *s.legend;
+        const BrailleStandard& st = l.layout.standard;
+        o << "  legend    braille (" << s.params.legend.table << ") on a plate " << fmt("%.1f", l.plate_east_mm) << " x "
+          << fmt("%.1f", l.plate_north_mm - l.plate_south_mm) << " mm north of the pillars, " << l.layout.dots.size()
+          << " dots " << fmt("%.2f", st.dot_base_mm) << " mm across, " << fmt("%.2f", st.dot_height_mm) << " mm high ("
+          << st.name << ")\n";
+        for (size_t k = 0; k < l.layout.text.size(); ++k)
+            o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
+    }
     for (const std::string& n : s.notes) o << "  note      " << n << "\n";
     return o.str();
 }
@@ -123,6 +151,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
     for (const auto& [path, what] : s.outputs) j["outputs"].push_back({{"path", path}, {"kind", what}});
     for (const auto& [stage, ms] : s.timings_ms) j["timings_ms"][stage] = ms;
     if (!s.verify.is_null()) j["verify"] = s.verify;
+    j["printer"] = s.printer_notes;
     return j;
 }
 
@@ -130,6 +159,7 @@ std::string formatSummary(const GenSummary& s) {
     std::ostringstream o;
     o << "tsf gen: " << s.input << "\n";
     if (s.field) o << "  input     " << s.field->how << "\n";
+    for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
     if (s.scene) o << formatSceneFacts(*s.scene);
     if (s.mesh)
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "

@@ -21,6 +21,7 @@ struct GenSummary {
     std::vector<std::pair<std::string, double>> timings_ms;    ///< stage -> ms
     nlohmann::json verify;  ///< verifier report, null when not run
     std::string verify_text;
+    std::vector<std::string> printer_notes;  ///< what --bed, --nozzle, --layer changed (printer_fit.h)
 };
 
 /// Human-readable summary (several lines, each "label  text").

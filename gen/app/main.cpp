@@ -34,12 +34,13 @@ int main(int argc, char** argv) {
                "Exit codes: 0 ok; 1 a check failed; 2 bad input, a bad option, or an output\n"
                "that cannot be written (missing folder, no permission, disk full, an output\n"
                "that would overwrite an input or another output); 3 only when an external\n"
-               "tool (openscad, node) failed or is missing; 4 a device failed; 130 interrupted.");
+               "tool (openscad, node, prusa-slicer) failed or is missing; 4 a device failed; 130 interrupted.");
     tsf::cli::addGenCommand(app);
     tsf::cli::addInfoCommand(app);
     tsf::cli::addRenderCommand(app);
     tsf::cli::addVerifyCommand(app);
     tsf::cli::addFeelCommand(app);
+    tsf::cli::addPrintCheckCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {

@@ -1,12 +1,11 @@
 // tsf verify: is a mesh a printable solid, does it hold the data, is it the
 // same solid as another mesh? See docs/verifier.md.
-#include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "gen/app/bed_size.h"
 #include "gen/app/commands.h"
 #include "gen/app/gen_options.h"
 #include "gen/error.h"
@@ -47,18 +46,6 @@ std::vector<std::string> readNotes(const MeshReadReport& r, const std::string& p
     return notes;
 }
 
-// "220x220x250" (mm) -> (220, 220, 250).
-Vec3 parseBed(const std::string& text) {
-    double x = 0, y = 0, z = 0;
-    char c1 = 0, c2 = 0;
-    int used = 0;
-    if (std::sscanf(text.c_str(), "%lf%c%lf%c%lf%n", &x, &c1, &y, &c2, &z, &used) != 5 || size_t(used) != text.size() ||
-        (c1 != 'x' && c1 != 'X') || (c2 != 'x' && c2 != 'X') || !(x > 0) || !(y > 0) || !(z > 0) || !std::isfinite(x) ||
-        !std::isfinite(y) || !std::isfinite(z))
-        throw InputError("--bed: expected WIDTHxDEPTHxHEIGHT in mm, e.g. 220x220x250, got '" + text + "'");
-    return {x, y, z};
-}
-
 void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     // Model options only make sense with a field to rebuild the Scene from.
     if (o.against.empty()) {
@@ -91,7 +78,10 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     vo.printability = !o.no_printability;
     vo.nozzle_mm = o.nozzle_mm;
     vo.layer_mm = o.layer_mm;
-    if (!o.bed.empty()) vo.bed_mm = parseBed(o.bed);
+    if (!o.bed.empty()) {
+        const BedSize bed = parseBedSize(o.bed, "--bed", /*need_height=*/true);
+        vo.bed_mm = {bed.width_mm, bed.depth_mm, bed.height_mm};
+    }
     vo.fail_on_warnings = o.strict;
 
     Mesh reference;

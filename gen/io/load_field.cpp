@@ -87,6 +87,7 @@ HexField loadField(const FieldLoadOptions& o) {
     pl.pitch_mm = o.cell_mm;
     pl.fit_width_mm = o.fit_width_mm;
     pl.fit_depth_mm = o.fit_depth_mm;
+    pl.min_cell_mm = o.min_cell_mm;
     HexField f = placeRaster(raster, pl);
     f.source = o.input;
     f.input = std::move(input);

@@ -39,6 +39,7 @@ struct FieldLoadOptions {
     double cell_mm = 0;         ///< the cell size asked for (mm); 0 = fit the box
     double fit_width_mm = 150;  ///< the box the model must fit (mm)
     double fit_depth_mm = 150;
+    double min_cell_mm = 3.0;   ///< smallest default cell for rasters (kMinTactileCellMm; a wide nozzle raises it)
 };
 
 /// Reads the input named in opts and builds its hex field (rasters are

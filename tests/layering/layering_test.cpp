@@ -7,6 +7,7 @@
 //             files, OpenSCAD emitter
 //   verify    verify/ except verify/render/
 //   render    verify/render/: OpenSCAD engines, their output judged by the verifier
+//   slicer    verify/slicer/: PrusaSlicer run on a model (uses render's process runner)
 //   haptics   haptics/ (beside verify and render, after gen)
 //   app       gen/app/: main, exit codes, every subcommand
 #include <gtest/gtest.h>
@@ -24,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-enum class Layer { Base, Gen, Verify, Render, Haptics, App, Tests, Unknown };
+enum class Layer { Base, Gen, Verify, Render, Slicer, Haptics, App, Tests, Unknown };
 
 const char* name(Layer l) {
     switch (l) {
@@ -32,6 +33,7 @@ const char* name(Layer l) {
         case Layer::Gen: return "gen";
         case Layer::Verify: return "verify";
         case Layer::Render: return "render (verify/render)";
+        case Layer::Slicer: return "slicer (verify/slicer)";
         case Layer::Haptics: return "haptics";
         case Layer::App: return "app (gen/app)";
         case Layer::Tests: return "tests and bench";
@@ -47,6 +49,7 @@ Layer layerOf(const std::string& path) {
     if (startsWith(path, "gen/app/")) return Layer::App;
     if (startsWith(path, "gen/")) return Layer::Gen;
     if (startsWith(path, "verify/render/")) return Layer::Render;
+    if (startsWith(path, "verify/slicer/")) return Layer::Slicer;
     if (startsWith(path, "verify/")) return Layer::Verify;
     if (startsWith(path, "haptics/")) return Layer::Haptics;
     if (startsWith(path, "tests/") || startsWith(path, "bench/")) return Layer::Tests;
@@ -59,9 +62,10 @@ const std::map<Layer, std::set<Layer>> kMayInclude = {
     {Layer::Gen, {Layer::Base}},
     {Layer::Verify, {Layer::Base, Layer::Gen}},
     {Layer::Render, {Layer::Base, Layer::Gen, Layer::Verify}},
+    {Layer::Slicer, {Layer::Base, Layer::Gen, Layer::Verify, Layer::Render}},
     {Layer::Haptics, {Layer::Base, Layer::Gen}},
-    {Layer::App, {Layer::Base, Layer::Gen, Layer::Verify, Layer::Render, Layer::Haptics}},
-    {Layer::Tests, {Layer::Base, Layer::Gen, Layer::Verify, Layer::Render, Layer::Haptics}},
+    {Layer::App, {Layer::Base, Layer::Gen, Layer::Verify, Layer::Render, Layer::Slicer, Layer::Haptics}},
+    {Layer::Tests, {Layer::Base, Layer::Gen, Layer::Verify, Layer::Render, Layer::Slicer, Layer::Haptics}},
 };
 
 struct Include {

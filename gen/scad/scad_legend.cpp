@@ -1,0 +1,43 @@
+#include "gen/scad/scad_legend.h"
+
+#include "gen/legend_scene.h"
+#include "gen/mesh_io/number_text.h"
+#include "gen/scene.h"
+
+namespace tsf {
+
+void emitLegendData(std::string& o, const Scene& s) {
+    if (!s.legend) return;
+    const Mesh plate = legendPlateMesh(s);
+    o += "/* [Braille legend] */\n"
+         "// Title and value range in braille on a plate north of the pillars (docs/printing.md).\n"
+         "braille_legend = true;\n\n"
+         "/* [Hidden] */\n"
+         "// The legend plate and its dots as tsf meshed them, in mm, for the parameters as\n"
+         "// generated (the plate does not follow cell, base or mirror; regenerate with tsf\n"
+         "// gen to change it). Lines:";
+    for (const std::string& line : s.legend->layout.text) o += " \"" + line + "\"";
+    o += "\nlegend_plate = [[\n";
+    for (size_t k = 0; k < plate.positions.size(); ++k) {
+        const Vec3& p = plate.positions[k];
+        o += "  [";
+        mesh_io::appendShortest(o, p.x);
+        o += ", ";
+        mesh_io::appendShortest(o, p.y);
+        o += ", ";
+        mesh_io::appendShortest(o, p.z);
+        o += k + 1 < plate.positions.size() ? "],\n" : "]\n";
+    }
+    o += "], [\n";
+    for (size_t k = 0; k < plate.triangles.size(); ++k) {
+        const auto& t = plate.triangles[k];
+        // polyhedron() wants faces clockwise seen from outside: reversed.
+        o += "  [" + std::to_string(t[0]) + ", " + std::to_string(t[2]) + ", " + std::to_string(t[1]) +
+             (k + 1 < plate.triangles.size() ? "],\n" : "]\n");
+    }
+    o += "]];\n\n";
+}
+
+std::string legendCallPrefix(const Scene& s) { return s.legend ? "tsf_with_legend(legend_plate, braille_legend) " : ""; }
+
+}  // namespace tsf

@@ -1,0 +1,96 @@
+// tsf gen --title/--units/--braille-table: the braille legend on a plate
+// north of the pillars, joined into one solid, known to the verifier
+// through the scene sidecar, and refused where it cannot stand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/mesh_io/mesh_reader.h"
+#include "tests/support/mesh_invariants.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+// Three floor rows in the north (culled: outside the hull), a small relief south of them.
+const char* kField =
+    "0,0,0,0,0,0,0,0,0,0,0,0\n"
+    "0,0,0,0,0,0,0,0,0,0,0,0\n"
+    "0,0,0,0,0,0,0,0,0,0,0,0\n"
+    "0,1,2.5,3,1.5,0,1,2.5,3,1.5,0,1\n"
+    "1,4,2,2,0.5,1,4,2,2,0.5,1,4\n"
+    "2,3.5,5,4.5,1,2,3.5,5,4.5,1,2,3.5\n"
+    "0.5,2,1,3,2,0.5,2,1,3,2,0.5,2\n";
+
+TEST(LegendCli, TitleAndRangeInBrailleOnAPlateNorthOfThePillars) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", kField);
+    const std::string model = (dir / "m.stl").string();
+    const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --title Depth --units m --json -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const auto& legend = j["scene"]["legend"];
+    ASSERT_TRUE(legend.is_object()) << j["scene"].dump(2);
+    ASSERT_EQ(legend["lines"].size(), 2u);
+    EXPECT_EQ(legend["lines"][0]["text"], "Depth");
+    EXPECT_EQ(legend["lines"][1]["text"], "0 to 5 m");
+    // "Depth" in uncontracted braille: capital sign (dot 6), d (1-4-5), e (1-5), p (1-2-3-4), t (2-3-4-5), h (1-2-5).
+    EXPECT_EQ(legend["lines"][0]["braille"], "\u2820\u2819\u2811\u280f\u281e\u2813");
+    EXPECT_DOUBLE_EQ(legend["dot_base_mm"].get<double>(), 1.44);
+    EXPECT_DOUBLE_EQ(legend["dot_height_mm"].get<double>(), 0.48);
+
+    const Mesh m = readMesh(model);
+    const test::Invariants inv = test::checkInvariants(m);
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+    // The plate reaches north of the grid; the dots stand 0.48 mm on the 2 mm floor there.
+    const Bounds b = meshBounds(m);
+    EXPECT_GT(b.max.y, j["scene"]["size_mm"][1].get<double>() + 10.0);
+    size_t dot_tops = 0;
+    for (const Vec3& p : m.positions)
+        dot_tops += std::fabs(p.z - 2.48) < 1e-5 && p.y > j["scene"]["size_mm"][1].get<double>();  // STL: float32
+    EXPECT_EQ(dot_tops, legend["dots"].get<size_t>());
+
+    const auto ok = test::runTsf("verify " + model + " --scene " + model + ".scene.json", dir);
+    EXPECT_EQ(ok.exit_code, test::kExitOk) << ok.out << ok.err;
+}
+
+TEST(LegendCli, TheVerifierKnowsThePlateCoversCulledCellsFromTheSidecar) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "m.stl").string();
+    const auto r = test::runTsf("gen " + test::sourcePath("examples/airports-europe.csv") +
+                                    " --points x=lon,y=lat --bins 20 --title Airports --no-verify -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const auto ok = test::runTsf("verify " + model + " --scene " + model + ".scene.json --no-printability", dir);
+    EXPECT_EQ(ok.exit_code, test::kExitOk) << ok.out << ok.err;
+    // Without the legend in the sidecar the plate is material over culled cells.
+    auto scene = nlohmann::json::parse(test::readText(model + ".scene.json"));
+    scene["legend"] = nullptr;
+    test::writeText(dir / "nolegend.json", scene.dump());
+    const auto planted =
+        test::runTsf("verify " + model + " --scene " + (dir / "nolegend.json").string() + " --no-printability", dir);
+    EXPECT_EQ(planted.exit_code, test::kExitCheckFailed) << planted.out;
+    EXPECT_NE(planted.out.find("FAIL  no material outside the kept cells"), std::string::npos) << planted.out;
+}
+
+TEST(LegendCli, WhereTheLegendCannotStandTheCommandSaysWhatToChange) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", kField);
+    const std::string field = (dir / "f.csv").string(), model = (dir / "m.stl").string();
+    const auto mirrored = test::runTsf("gen " + field + " --cell 6 --mirror --title Depth -o " + model, dir);
+    EXPECT_EQ(mirrored.exit_code, test::kExitBadInput) << mirrored.err;
+    EXPECT_NE(mirrored.err.find("Leave out --mirror"), std::string::npos) << mirrored.err;
+    const auto table = test::runTsf("gen " + field + " --cell 6 --title Depth --braille-table nope.ctb -o " + model, dir);
+    EXPECT_EQ(table.exit_code, test::kExitBadInput) << table.err;
+    EXPECT_NE(table.err.find("nope.ctb"), std::string::npos) << table.err;
+    const auto wide = test::runTsf("gen " + field + " --cell 6 --title Pneumonoultramicroscopicsilicovolcanoconiosis -o " +
+                                       model, dir);
+    EXPECT_EQ(wide.exit_code, test::kExitBadInput) << wide.err;
+    EXPECT_NE(wide.err.find("give a shorter --title"), std::string::npos) << wide.err;
+    EXPECT_FALSE(std::filesystem::exists(model));
+}
+
+}  // namespace
+}  // namespace tsf

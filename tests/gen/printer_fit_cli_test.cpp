@@ -1,0 +1,100 @@
+// tsf gen --bed / --nozzle / --layer: the model is shaped for one printer
+// (fitted into the bed less its margins, heights on whole layers, raster
+// cells a nozzle prints as pillars), and a model larger than the bed is
+// refused with the --cell that would fit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/mesh_io/mesh_reader.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+const std::string kAirports = "--points x=lon,y=lat --bins 40";
+
+std::string airports() { return test::sourcePath("examples/airports-europe.csv"); }
+
+TEST(PrinterFitCli, BedWithoutWidthFitsTheModelInsideTheMargins) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "m.stl").string();
+    const auto r = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --json -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const Bounds b = meshBounds(readMesh(model));
+    EXPECT_LE(b.max.x - b.min.x, 110.0 + 1e-9);  // 120 less 5 mm on each side
+    EXPECT_LE(b.max.y - b.min.y, 90.0 + 1e-9);
+    // It fills the bed in one direction: the default 150 mm box would not fit.
+    EXPECT_GT(std::max(b.max.x - b.min.x - 105.0, b.max.y - b.min.y - 85.0), 0.0);
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["printer"].size(), 1u) << j["printer"].dump();
+    EXPECT_NE(j["printer"][0].get<std::string>().find("110 x 90 mm"), std::string::npos);
+}
+
+TEST(PrinterFitCli, LayerSnapsEveryHeightToWholeLayersUnlessSnapIsGiven) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "m.stl").string();
+    const auto r = test::runTsf("gen " + airports() + " " + kAirports + " --layer 0.25 --no-verify -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const Mesh m = readMesh(model);
+    size_t off_layer = 0, levels_above_base = 0;
+    for (const Vec3& p : m.positions) {
+        const double layers = p.z / 0.25;
+        if (std::fabs(layers - std::round(layers)) > 1e-6) ++off_layer;
+        if (p.z > 2.0 + 1e-9) ++levels_above_base;
+    }
+    EXPECT_EQ(off_layer, 0u);
+    EXPECT_GT(levels_above_base, 0u);
+
+    // --snap wins over --layer.
+    const auto snapped = test::runTsf("gen " + airports() + " " + kAirports + " --layer 0.25 --snap 0.1 --no-verify -o " + model, dir);
+    ASSERT_EQ(snapped.exit_code, test::kExitOk) << snapped.out << snapped.err;
+    size_t off = 0;
+    for (const Vec3& p : readMesh(model).positions) off += std::fabs(p.z / 0.25 - std::round(p.z / 0.25)) > 1e-6;
+    EXPECT_GT(off, 0u);
+}
+
+TEST(PrinterFitCli, AModelLargerThanTheBedIsRefusedWithACellThatFits) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "m.stl").string();
+    const auto big = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --cell 4 -o " + model, dir);
+    EXPECT_EQ(big.exit_code, test::kExitBadInput) << big.out << big.err;
+    EXPECT_NE(big.err.find("larger than the 120 x 100 mm bed"), std::string::npos) << big.err;
+    EXPECT_NE(big.err.find("give --cell 2.45 or less"), std::string::npos) << big.err;
+    EXPECT_FALSE(std::filesystem::exists(model));
+    // The suggestion works.
+    const auto fits = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --cell 2.45 --no-verify -o " + model, dir);
+    EXPECT_EQ(fits.exit_code, test::kExitOk) << fits.out << fits.err;
+
+    const auto wide = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --width 150 -o " + model, dir);
+    EXPECT_EQ(wide.exit_code, test::kExitBadInput) << wide.err;
+    EXPECT_NE(wide.err.find("give --width 110 or less"), std::string::npos) << wide.err;
+
+    const auto bad = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120 -o " + model, dir);
+    EXPECT_EQ(bad.exit_code, test::kExitBadInput) << bad.err;
+    EXPECT_NE(bad.err.find("--bed: expected WIDTHxDEPTH"), std::string::npos) << bad.err;
+}
+
+TEST(PrinterFitCli, AWideNozzleMakesRasterCellsFourNozzleWidthsAcross) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "m.stl").string();
+    const std::string volcano = test::sourcePath("examples/volcano.csv");
+    const auto plain = test::runTsf("gen " + volcano + " --no-verify --json -o " + model, dir);
+    ASSERT_EQ(plain.exit_code, test::kExitOk) << plain.err;
+    const double plain_cell = nlohmann::json::parse(plain.out)["scene"]["pitch_mm"].get<double>();
+    const auto wide = test::runTsf("gen " + volcano + " --nozzle 1.0 --no-verify --json -o " + model, dir);
+    ASSERT_EQ(wide.exit_code, test::kExitOk) << wide.err;
+    const double wide_cell = nlohmann::json::parse(wide.out)["scene"]["pitch_mm"].get<double>();
+    EXPECT_LT(plain_cell, 4.0);
+    EXPECT_GE(wide_cell, 4.0);
+
+    // Cells asked for narrower than that are noted, not refused.
+    const auto narrow = test::runTsf("gen " + volcano + " --nozzle 1.0 --cell 2 --no-verify -o " + model, dir);
+    EXPECT_EQ(narrow.exit_code, test::kExitOk) << narrow.err;
+    EXPECT_NE(narrow.out.find("narrower than 4 widths of the 1 mm nozzle"), std::string::npos) << narrow.out;
+}
+
+}  // namespace
+}  // namespace tsf
