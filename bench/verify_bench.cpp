@@ -14,7 +14,7 @@
 #include "gen/scene.h"
 #include "verify/agreement.h"
 #include "verify/printability.h"
-#include "verify/ray_caster.h"
+#include "verify/triangle_bvh.h"
 #include "verify/readback.h"
 #include "verify/solid_checks.h"
 #include "verify/verify_model.h"
@@ -68,20 +68,20 @@ void BM_VerifySolid(benchmark::State& state) {
 
 void BM_VerifyRayTree(benchmark::State& state) {
     const Model& m = model(int(state.range(0)));
-    for (auto _ : state) benchmark::DoNotOptimize(std::make_unique<tsf::RayCaster>(m.mesh));
+    for (auto _ : state) benchmark::DoNotOptimize(std::make_unique<tsf::TriangleBvh>(m.mesh));
     label(state, m);
 }
 
 void BM_VerifyReadback(benchmark::State& state) {
     const Model& m = model(int(state.range(0)));
-    const tsf::RayCaster caster(m.mesh);
+    const tsf::TriangleBvh caster(m.mesh);
     for (auto _ : state) benchmark::DoNotOptimize(tsf::readBack(m.mesh, m.scene, caster, {}));
     label(state, m);
 }
 
 void BM_VerifyPrintability(benchmark::State& state) {
     const Model& m = model(int(state.range(0)));
-    const tsf::RayCaster caster(m.mesh);
+    const tsf::TriangleBvh caster(m.mesh);
     for (auto _ : state) benchmark::DoNotOptimize(tsf::checkPrintability(m.mesh, true, caster, {}));
     label(state, m);
 }

@@ -123,7 +123,7 @@ Check thinnest(const char* id, const char* title, std::vector<Sample>& samples, 
 
 }  // namespace
 
-PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const RayCaster& caster,
+PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const TriangleBvh& caster,
                                      const PrintabilityOptions& o) {
     PrintabilityResult r;
     PrintabilityFigures& f = r.figures;

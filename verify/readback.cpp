@@ -41,7 +41,7 @@ std::string describe(const CellReadback& c) {
 
 }  // namespace
 
-ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& caster, const ReadbackOptions& options) {
+ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster, const ReadbackOptions& options) {
     ReadbackResult r;
     ReadbackFigures& f = r.figures;
     const auto t0 = std::chrono::steady_clock::now();

@@ -14,6 +14,7 @@
 //   geometry with CGAL (Epick by default; Epeck when exact):
 //     [degenerate_faces]       no triangle with a repeated index or three collinear points
 //     [self_intersections]     no two triangles meeting other than at a shared vertex or edge
+//                              (broad phase: the verifier's tree, verify/triangle_bvh.h)
 //     [outward_orientation]    every component has positive volume (needs a closed,
 //                              consistently oriented manifold; else skipped)
 // Positions are millimetres in the model frame; offenders carry mm positions.
@@ -24,6 +25,7 @@
 
 #include "gen/mesh.h"
 #include "verify/report.h"
+#include "verify/triangle_bvh.h"
 
 namespace tsf {
 
@@ -33,6 +35,10 @@ struct SolidOptions {
     /// Test for self-intersections (CGAL; about 4 us per triangle). Skipping
     /// it is reported as a skipped check, never as a pass.
     bool self_intersections = true;
+    /// The verifier's tree of this mesh, when the caller has one (verifyModel
+    /// shares it with the ray checks); else checkSolid builds one for the
+    /// self-intersection test.
+    const TriangleBvh* bvh = nullptr;
 };
 
 struct SolidResult {

@@ -15,6 +15,7 @@
 #include <CGAL/intersections.h>
 
 #include "verify/detail/cgal_checks.h"
+#include "verify/triangle_bvh.h"
 
 // On near-degenerate contacts CGAL's preconditions fail in the filtered
 // kernel and throw; solid_checks.cpp catches that and redoes the check with
@@ -28,36 +29,63 @@ inline double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// A point (mm) on the intersection of two triangles, for locating it.
+// Do the triangles a and b of a closed, manifold, consistently oriented
+// soup meet other than in the vertices or the edge they share by index?
+// The same predicates, in the same cases, as CGAL 5.5's
+// PMP::self_intersections on the Surface_mesh of that soup
+// (do_faces_intersect): in such a soup two triangles share an edge exactly
+// when they share two vertex indices, and a vertex exactly when they share
+// one index. Neither triangle may have three collinear corners.
 template <class K>
-Vec3 intersectionPoint(const typename K::Triangle_3& a, const typename K::Triangle_3& b) {
-    using P = typename K::Point_3;
-    auto toVec = [](const P& p) { return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}; };
-    auto mean = [&](const auto& pts) {
-        Vec3 c;
-        for (const P& p : pts) {
-            const Vec3 v = toVec(p);
-            c = {c.x + v.x, c.y + v.y, c.z + v.z};
+bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::array<uint32_t, 3>& a,
+                   const std::array<uint32_t, 3>& b) {
+    using Triangle = typename K::Triangle_3;
+    using Segment = typename K::Segment_3;
+    int ia = -1, ib = -1, shared = 0;  // the first shared corner, in a and in b
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (a[i] == b[j]) {
+                if (shared++ == 0) {
+                    ia = i;
+                    ib = j;
+                }
+                break;
+            }
+    if (shared >= 2) {
+        // A shared edge u-v: they overlap only when the four corners are
+        // coplanar and the opposite corners lie on the same side of u-v.
+        auto inB = [&](uint32_t x) { return x == b[0] || x == b[1] || x == b[2]; };
+        uint32_t common[3] = {0, 0, 0}, c = a[0];
+        int k = 0;
+        for (int i = 0; i < 3; ++i) {
+            if (inB(a[i])) common[k++] = a[i];
+            else c = a[i];
         }
-        const double n = double(pts.size());
-        return Vec3{c.x / n, c.y / n, c.z / n};
-    };
-    const auto result = CGAL::intersection(a, b);
-    if (result) {
-        if (const P* p = boost::get<P>(&*result)) return toVec(*p);
-        if (const auto* s = boost::get<typename K::Segment_3>(&*result)) return mean(std::vector<P>{s->source(), s->target()});
-        if (const auto* t = boost::get<typename K::Triangle_3>(&*result))
-            return mean(std::vector<P>{t->vertex(0), t->vertex(1), t->vertex(2)});
-        if (const auto* poly = boost::get<std::vector<P>>(&*result)) return mean(*poly);
+        const uint32_t u = common[0], v = common[1];
+        // Three shared corners: the opposite corners coincide, and the
+        // triangles overlap (as CGAL finds across any of their edges).
+        if (shared == 3) c = common[2];
+        uint32_t d = c;
+        for (int j = 0; j < 3; ++j)
+            if (b[j] != u && b[j] != v) d = b[j];
+        const auto &pu = points[u], &pv = points[v], &pc = points[c], &pd = points[d];
+        return CGAL::coplanar(pu, pv, pc, pd) && CGAL::coplanar_orientation(pu, pv, pc, pd) == CGAL::POSITIVE;
     }
-    // Touching at a vertex or edge that the two triangles do not share by
-    // index: the intersection is degenerate; fall back to the centroids' midpoint.
-    std::vector<P> all{a.vertex(0), a.vertex(1), a.vertex(2), b.vertex(0), b.vertex(1), b.vertex(2)};
-    return mean(all);
+    const Triangle ta(points[a[0]], points[a[1]], points[a[2]]);
+    const Triangle tb(points[b[0]], points[b[1]], points[b[2]]);
+    if (shared == 1) {
+        // A shared corner: they meet elsewhere only if the edge opposite it in
+        // one triangle meets the other triangle.
+        const Segment sa(points[a[(ia + 1) % 3]], points[a[(ia + 2) % 3]]);
+        const Segment sb(points[b[(ib + 1) % 3]], points[b[(ib + 2) % 3]]);
+        return CGAL::do_intersect(ta, sb) || CGAL::do_intersect(tb, sa);
+    }
+    return CGAL::do_intersect(ta, tb);
 }
 
 template <class K>
-GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs, bool self_intersections) {
+GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs, bool self_intersections,
+                                  const TriangleBvh* bvh, unsigned workers) {
     using P = typename K::Point_3;
     using SM = CGAL::Surface_mesh<P>;
     namespace PMP = CGAL::Polygon_mesh_processing;
@@ -95,64 +123,79 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
 
     out.self_intersections_requested = self_intersections;
     if (self_intersections) {
-        // Build the Surface_mesh. A soup our own edge analysis found valid is
-        // added as is; anything else goes through orient_polygon_soup, which
-        // flips triangles and duplicates points at non-manifold places (the
-        // repair is reported, never used for the verdict of the topology checks).
         t0 = std::chrono::steady_clock::now();
         const bool valid_soup =
             topo.nonmanifold_edges.empty() && topo.misoriented_edges.empty() && topo.nonmanifold_vertices.empty();
-        if (!valid_soup) {
-            const size_t before = points.size();
-            PMP::orient_polygon_soup(points, polygons);
-            out.soup_repaired = true;
-            out.points_duplicated = points.size() - before;
-        }
-        SM sm;
-        sm.reserve(typename SM::size_type(points.size()), typename SM::size_type(3 * polygons.size()),
-                   typename SM::size_type(polygons.size()));
-        std::vector<typename SM::Vertex_index> vid;
-        vid.reserve(points.size());
-        for (const P& p : points) vid.push_back(sm.add_vertex(p));
-        bool all_added = true;
-        for (const auto& q : polygons) {
-            if (sm.add_face(vid[q[0]], vid[q[1]], vid[q[2]]) == SM::null_face()) {
-                all_added = false;
-                break;
+        std::vector<std::pair<uint32_t, uint32_t>> ids;  // intersecting pairs, original ids, first < second
+        if (valid_soup && bvh) {
+            // Broad phase: the pairs whose boxes overlap, from the verifier's
+            // tree; exact predicates on those only, on `workers` threads.
+            // Triangles with collinear corners are left out, as CGAL leaves
+            // them out (they are counted as zero-area triangles).
+            std::vector<uint8_t> tested(mesh.triangles.size(), 0);
+            for (uint32_t t : original) tested[t] = 1;
+            for (uint32_t t : out.zero_area_triangles) tested[t] = 0;
+            std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found(TriangleBvh::workerCount(workers));
+            bvh->forEachOverlappingPair(
+                [&](unsigned w, uint32_t a, uint32_t b) {
+                    if (!tested[a] || !tested[b]) return;
+                    if (trianglesMeet<K>(points, mesh.triangles[a], mesh.triangles[b]))
+                        found[w].emplace_back(std::min(a, b), std::max(a, b));
+                },
+                workers);
+            for (const auto& f : found) ids.insert(ids.end(), f.begin(), f.end());
+            out.mesh_built = true;
+        } else {
+            // Build a Surface_mesh. A soup our own edge analysis found valid is
+            // added as is; anything else goes through orient_polygon_soup, which
+            // flips triangles and duplicates points at non-manifold places (the
+            // repair is reported, never used for the verdict of the topology checks).
+            if (!valid_soup) {
+                const size_t before = points.size();
+                PMP::orient_polygon_soup(points, polygons);
+                out.soup_repaired = true;
+                out.points_duplicated = points.size() - before;
             }
-        }
-        out.mesh_built = all_added;
-        out.build_ms = msSince(t0);
-
-        // Self-intersections: pairs of triangles that meet other than in a shared
-        // vertex or edge. CGAL lists a degenerate face f as (f, f); those are
-        // already counted as zero-area triangles and are dropped here.
-        if (out.mesh_built) {
+            SM sm;
+            sm.reserve(typename SM::size_type(points.size()), typename SM::size_type(3 * polygons.size()),
+                       typename SM::size_type(polygons.size()));
+            std::vector<typename SM::Vertex_index> vid;
+            vid.reserve(points.size());
+            for (const P& p : points) vid.push_back(sm.add_vertex(p));
+            bool all_added = true;
+            for (const auto& q : polygons) {
+                if (sm.add_face(vid[q[0]], vid[q[1]], vid[q[2]]) == SM::null_face()) {
+                    all_added = false;
+                    break;
+                }
+            }
+            out.mesh_built = all_added;
+            out.cgal_mesh_used = true;
+            out.build_ms = msSince(t0);
             t0 = std::chrono::steady_clock::now();
-            std::vector<std::pair<typename SM::Face_index, typename SM::Face_index>> pairs;
-            PMP::self_intersections(sm, std::back_inserter(pairs));
-            std::vector<std::pair<uint32_t, uint32_t>> ids;
-            ids.reserve(pairs.size());
-            for (const auto& [f, g] : pairs) {
-                if (f == g) continue;
-                uint32_t a = original[size_t(f)], b = original[size_t(g)];
-                if (a > b) std::swap(a, b);
-                ids.emplace_back(a, b);
+            // CGAL lists a degenerate face f as (f, f); those are already
+            // counted as zero-area triangles and are dropped here.
+            if (out.mesh_built) {
+                std::vector<std::pair<typename SM::Face_index, typename SM::Face_index>> pairs;
+                PMP::self_intersections(sm, std::back_inserter(pairs));
+                ids.reserve(pairs.size());
+                for (const auto& [f, g] : pairs) {
+                    if (f == g) continue;
+                    uint32_t a = original[size_t(f)], b = original[size_t(g)];
+                    if (a > b) std::swap(a, b);
+                    ids.emplace_back(a, b);
+                }
             }
+        }
+        if (out.mesh_built) {
             std::sort(ids.begin(), ids.end());
             ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
             out.intersecting_pair_count = ids.size();
             if (ids.size() > max_pairs) ids.resize(max_pairs);
-            auto triangle = [&](uint32_t t) {
-                const auto& tri = mesh.triangles[t];
-                const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
-                return typename K::Triangle_3(P(a.x, a.y, a.z), P(b.x, b.y, b.z), P(c.x, c.y, c.z));
-            };
-            for (const auto& [a, b] : ids) out.intersection_points.push_back(intersectionPoint<K>(triangle(a), triangle(b)));
+            for (const auto& [a, b] : ids) out.intersection_points.push_back(intersectionPoint(mesh, a, b));
             out.intersecting_pairs = std::move(ids);
             out.self_intersection_ms = msSince(t0);
         }
-
     }
 
     // Volumes: per component, as a sum of signed tetrahedra against a point of
