@@ -399,18 +399,18 @@ struct TriangleBvh::Impl {
     }
 
     // Every pair of triangles of the leaves a and b (a == b: within the leaf)
-    // whose padded boxes overlap.
+    // whose boxes overlap. A triangle's box is the min and max of its
+    // coordinates, exact: it needs no padding.
     template <class Visit>
     void leafPairs(const Node& a, const Node& b, bool same, Visit& visit) const {
-        for (uint32_t s = a.first; s < a.first + a.count; ++s) {
-            Box bs = triangleBox(s);
-            bs.pad();
-            for (uint32_t t = same ? s + 1 : b.first; t < b.first + b.count; ++t) {
-                Box bt = triangleBox(t);
-                bt.pad();
-                if (bs.overlaps(bt)) visit(mesh_index[s], mesh_index[t]);
-            }
-        }
+        Box ba[kLeafSize], bb[kLeafSize];
+        for (uint32_t s = 0; s < a.count; ++s) ba[s] = triangleBox(a.first + s);
+        if (!same)
+            for (uint32_t t = 0; t < b.count; ++t) bb[t] = triangleBox(b.first + t);
+        const Box* other = same ? ba : bb;
+        for (uint32_t s = 0; s < a.count; ++s)
+            for (uint32_t t = same ? s + 1 : 0; t < b.count; ++t)
+                if (ba[s].overlaps(other[t])) visit(mesh_index[a.first + s], mesh_index[b.first + t]);
     }
 
     // Pairs between the subtrees a and b (a != b), or within a (a == b).

@@ -86,8 +86,8 @@ public:
 
     /// Calls visit(worker, a, b) once for every unordered pair of distinct
     /// triangles in the tree (mesh indices a != b, in either order) whose
-    /// closed, padded boxes overlap: a superset of the pairs that touch or
-    /// intersect. Runs on up to `workers` threads (0: one per core); `worker`
+    /// closed bounding boxes overlap (touching counts): every pair that
+    /// touches or intersects is among them. Runs on up to `workers` threads (0: one per core); `worker`
     /// is the calling thread's number in [0, workers), so a visitor can keep
     /// its results per worker without locks. An exception thrown by `visit`
     /// stops the traversal and is rethrown here once every thread is done.

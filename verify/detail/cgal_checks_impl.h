@@ -7,8 +7,10 @@
 #include <cassert>
 #include <chrono>
 #include <iterator>
+#include <optional>
 #include <vector>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
@@ -29,16 +31,115 @@ inline double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Exact shortcuts for the planes a terrain mesh is made of: horizontal
+// tops and bottoms (and any plane x_k = const), and vertical walls (a
+// triangle with two corners at one (x, y)). In such planes the general
+// predicates are degenerate, and CGAL's filtered kernel falls back to exact
+// arithmetic for each of them. Here the side of a point comes from comparing
+// coordinates, or from CGAL's 2D orientation in plan (filtered, exact), and
+// positions within the plane from the 2D orientation in a projection onto
+// two axes that maps the plane one-to-one (it may mirror the plane, which
+// flips every orientation alike and changes no answer below).
+namespace flat {
+
+using P2 = CGAL::Exact_predicates_inexact_constructions_kernel::Point_2;
+
+inline double coord(const Vec3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
+
+inline int orient2(const Vec3& p, const Vec3& q, const Vec3& r, int i, int j) {
+    return int(CGAL::orientation(P2(coord(p, i), coord(p, j)), P2(coord(q, i), coord(q, j)),
+                                 P2(coord(r, i), coord(r, j))));
+}
+
+struct Plane {
+    int axis = -1;    // x_axis = c, or -1: the vertical plane through p and q (in plan)
+    double c = 0;
+    Vec3 p, q;        // vertical plane: two points of different (x, y)
+    int i = 0, j = 1;  // the projection for orientations within the plane
+
+    // -1, 0, +1: below, in, above the plane (the sign is consistent, its meaning arbitrary).
+    int side(const Vec3& r) const {
+        if (axis >= 0) {
+            const double x = coord(r, axis);
+            return x > c ? 1 : (x < c ? -1 : 0);
+        }
+        if ((r.x == p.x && r.y == p.y) || (r.x == q.x && r.y == q.y)) return 0;
+        return orient2(p, q, r, 0, 1);
+    }
+    int orient(const Vec3& a, const Vec3& b, const Vec3& r) const { return orient2(a, b, r, i, j); }
+};
+
+// The plane of the triangle (a, b, c), if it is one of those; a triangle with
+// area is in at most one axis plane.
+inline std::optional<Plane> planeOf(const Vec3& a, const Vec3& b, const Vec3& c) {
+    Plane pl;
+    for (int k : {2, 0, 1})
+        if (coord(a, k) == coord(b, k) && coord(b, k) == coord(c, k)) {
+            pl.axis = k;
+            pl.c = coord(a, k);
+            pl.i = (k + 1) % 3;
+            pl.j = (k + 2) % 3;
+            return pl;
+        }
+    auto samePlan = [](const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y; };
+    if (samePlan(a, b)) pl.p = a, pl.q = c;
+    else if (samePlan(b, c)) pl.p = b, pl.q = a;
+    else if (samePlan(c, a)) pl.p = c, pl.q = b;
+    else return std::nullopt;
+    if (samePlan(pl.p, pl.q)) return std::nullopt;  // no area (excluded before)
+    // (x, z) maps a vertical plane one-to-one unless it runs north-south (x = const).
+    pl.i = pl.p.x != pl.q.x ? 0 : 1;
+    pl.j = 2;
+    return pl;
+}
+
+// Is the direction x - v inside the closed angle of the triangle (v, a, b)
+// at v? (All four points in the plane.)
+inline bool inAngle(const Plane& pl, const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& x) {
+    const int o = pl.orient(v, a, b);
+    return pl.orient(v, a, x) * o >= 0 && pl.orient(v, x, b) * o >= 0;
+}
+
+// Triangles sharing the edge u-v, the one with far corner c in the plane:
+// they overlap only if the other's far corner d is in the plane too, on c's
+// side of u-v.
+inline bool sharedEdge(const Plane& pl, const Vec3& u, const Vec3& v, const Vec3& c, const Vec3& d) {
+    if (pl.side(d) != 0) return false;  // not coplanar
+    return pl.orient(u, v, c) == pl.orient(u, v, d);
+}
+
+// Triangles sharing the corner v, (v, a1, b1) in the plane and (v, a2, b2)
+// the other: nullopt when the other crosses the plane at v (CGAL decides).
+inline std::optional<bool> sharedCorner(const Plane& pl, const Vec3& v, const Vec3& a1, const Vec3& b1, const Vec3& a2,
+                                        const Vec3& b2) {
+    const int sa = pl.side(a2), sb = pl.side(b2);
+    if (sa != 0 && sa == sb) return false;  // touches the plane at v only
+    if (sa == 0 && sb == 0)  // coplanar: do their angles at v overlap?
+        return inAngle(pl, v, a1, b1, a2) || inAngle(pl, v, a1, b1, b2) || inAngle(pl, v, a2, b2, a1) ||
+               inAngle(pl, v, a2, b2, b1);
+    // One far corner w in the plane, the other off it: the other triangle
+    // meets the plane in the segment v-w.
+    if (sa == 0) return inAngle(pl, v, a1, b1, a2);
+    if (sb == 0) return inAngle(pl, v, a1, b1, b2);
+    return std::nullopt;
+}
+
+}  // namespace flat
+
 // Do the triangles a and b of a closed, manifold, consistently oriented
 // soup meet other than in the vertices or the edge they share by index?
-// The same predicates, in the same cases, as CGAL 5.5's
-// PMP::self_intersections on the Surface_mesh of that soup
-// (do_faces_intersect): in such a soup two triangles share an edge exactly
-// when they share two vertex indices, and a vertex exactly when they share
-// one index. Neither triangle may have three collinear corners.
+// The same answer as CGAL 5.5's PMP::self_intersections on the
+// Surface_mesh of that soup (do_faces_intersect): in such a soup two
+// triangles share an edge exactly when they share two vertex indices, and
+// a vertex exactly when they share one index; sharing an edge, they meet
+// when coplanar and folded onto each other; sharing a vertex, when the
+// edge opposite it in one meets the other (equivalently: their
+// intersection is more than that vertex). Flat triangles are decided by the
+// shortcuts above, everything else by CGAL's predicates. Neither triangle
+// may have three collinear corners.
 template <class K>
-bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::array<uint32_t, 3>& a,
-                   const std::array<uint32_t, 3>& b) {
+bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::vector<Vec3>& pos,
+                   const std::array<uint32_t, 3>& a, const std::array<uint32_t, 3>& b) {
     using Triangle = typename K::Triangle_3;
     using Segment = typename K::Segment_3;
     int ia = -1, ib = -1, shared = 0;  // the first shared corner, in a and in b
@@ -51,6 +152,8 @@ bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::ar
                 }
                 break;
             }
+    const std::optional<flat::Plane> pa = flat::planeOf(pos[a[0]], pos[a[1]], pos[a[2]]);
+    const std::optional<flat::Plane> pb = flat::planeOf(pos[b[0]], pos[b[1]], pos[b[2]]);
     if (shared >= 2) {
         // A shared edge u-v: they overlap only when the four corners are
         // coplanar and the opposite corners lie on the same side of u-v.
@@ -68,8 +171,19 @@ bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::ar
         uint32_t d = c;
         for (int j = 0; j < 3; ++j)
             if (b[j] != u && b[j] != v) d = b[j];
+        if (pa) return flat::sharedEdge(*pa, pos[u], pos[v], pos[c], pos[d]);
+        if (pb) return flat::sharedEdge(*pb, pos[u], pos[v], pos[d], pos[c]);
         const auto &pu = points[u], &pv = points[v], &pc = points[c], &pd = points[d];
         return CGAL::coplanar(pu, pv, pc, pd) && CGAL::coplanar_orientation(pu, pv, pc, pd) == CGAL::POSITIVE;
+    }
+    if (shared == 1) {
+        const Vec3& v = pos[a[ia]];
+        const Vec3 &a1 = pos[a[(ia + 1) % 3]], &b1 = pos[a[(ia + 2) % 3]];
+        const Vec3 &a2 = pos[b[(ib + 1) % 3]], &b2 = pos[b[(ib + 2) % 3]];
+        std::optional<bool> known;
+        if (pa) known = flat::sharedCorner(*pa, v, a1, b1, a2, b2);
+        if (!known && pb) known = flat::sharedCorner(*pb, v, a2, b2, a1, b1);
+        if (known) return *known;
     }
     const Triangle ta(points[a[0]], points[a[1]], points[a[2]]);
     const Triangle tb(points[b[0]], points[b[1]], points[b[2]]);
@@ -80,6 +194,13 @@ bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::ar
         const Segment sb(points[b[(ib + 1) % 3]], points[b[(ib + 2) % 3]]);
         return CGAL::do_intersect(ta, sb) || CGAL::do_intersect(tb, sa);
     }
+    // Nothing shared: a triangle strictly on one side of the other's plane is apart from it.
+    auto apart = [&](const std::optional<flat::Plane>& pl, const std::array<uint32_t, 3>& other) {
+        if (!pl) return false;
+        const int s0 = pl->side(pos[other[0]]);
+        return s0 != 0 && pl->side(pos[other[1]]) == s0 && pl->side(pos[other[2]]) == s0;
+    };
+    if (apart(pa, b) || apart(pb, a)) return false;
     return CGAL::do_intersect(ta, tb);
 }
 
@@ -139,7 +260,7 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
             bvh->forEachOverlappingPair(
                 [&](unsigned w, uint32_t a, uint32_t b) {
                     if (!tested[a] || !tested[b]) return;
-                    if (trianglesMeet<K>(points, mesh.triangles[a], mesh.triangles[b]))
+                    if (trianglesMeet<K>(points, mesh.positions, mesh.triangles[a], mesh.triangles[b]))
                         found[w].emplace_back(std::min(a, b), std::max(a, b));
                 },
                 workers);
