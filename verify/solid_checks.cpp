@@ -221,9 +221,9 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
     const bool finite = topo.nonfinite_vertices.empty();
     detail::GeometricFindings g;
     std::string exact_fallback_reason;  // non-empty: the filtered kernel failed and the exact one was used
+    std::unique_ptr<TriangleBvh> own_bvh;
     if (finite) {
         const TriangleBvh* bvh = options.bvh;
-        std::unique_ptr<TriangleBvh> own_bvh;
         if (!bvh && options.self_intersections) {
             own_bvh = std::make_unique<TriangleBvh>(mesh);
             bvh = own_bvh.get();
@@ -327,6 +327,7 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
     }
 
     r.closed_oriented_manifold = topo.isClosedOrientedManifold();
+    r.bvh = std::move(own_bvh);
     return r;
 }
 

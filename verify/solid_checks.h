@@ -21,6 +21,7 @@
 // Empty mesh: [single_piece] fails ("no triangles"); the others pass or skip.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "gen/mesh.h"
@@ -35,9 +36,10 @@ struct SolidOptions {
     /// Test for self-intersections (CGAL; about 4 us per triangle). Skipping
     /// it is reported as a skipped check, never as a pass.
     bool self_intersections = true;
-    /// The verifier's tree of this mesh, when the caller has one (verifyModel
-    /// shares it with the ray checks); else checkSolid builds one for the
-    /// self-intersection test.
+    /// The verifier's tree of this mesh, when the caller has one; else
+    /// checkSolid builds one for the self-intersection test (after the
+    /// topology, whose memory is free by then) and hands it back in
+    /// SolidResult::bvh.
     const TriangleBvh* bvh = nullptr;
 };
 
@@ -46,6 +48,7 @@ struct SolidResult {
     std::vector<Check> checks;
     std::vector<Stage> stages;
     bool closed_oriented_manifold = false;  ///< closed, manifold, consistently oriented, finite
+    std::unique_ptr<TriangleBvh> bvh;       ///< the tree checkSolid built, if it built one (for the ray checks)
 };
 
 SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options);

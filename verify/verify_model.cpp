@@ -24,25 +24,24 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
     VerifyReport report;
     report.exact = options.exact;
 
-    // One tree for every check that needs one: the self-intersections' broad
-    // phase, the values read back and the printability rays.
-    std::unique_ptr<TriangleBvh> caster;
-    if (scene || options.printability || options.self_intersections) {
-        caster = std::make_unique<TriangleBvh>(mesh);
-        report.stages.push_back({"bvh", caster->buildMs()});
-    }
-
     SolidOptions so;
     so.exact = options.exact;
     so.max_offenders = options.max_offenders;
     so.self_intersections = options.self_intersections;
-    so.bvh = caster.get();
     SolidResult solid = checkSolid(mesh, so);
     report.mesh = std::move(solid.mesh);
     report.mesh.name = options.name.empty() ? "(in memory)" : options.name;
     report.mesh.read_notes = options.read_notes;
     const bool closed_oriented = solid.closed_oriented_manifold;
+    // One tree for every check that needs one: the self-intersections' broad
+    // phase (checkSolid built it after the topology, so the two never hold
+    // memory at once), the values read back and the printability rays.
+    std::unique_ptr<TriangleBvh> caster = std::move(solid.bvh);
     append(report, std::move(solid));
+    if (!caster && (scene || options.printability)) {
+        caster = std::make_unique<TriangleBvh>(mesh);
+        report.stages.push_back({"bvh", caster->buildMs()});
+    }
 
     if (scene) {
         ReadbackOptions ro;

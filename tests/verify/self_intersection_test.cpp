@@ -42,7 +42,7 @@ TEST(SelfIntersections, SamePairsAsCgalOnRandomlyDeformedModels) {
     std::uniform_real_distribution<double> move(-pitch, pitch);
     std::uniform_int_distribution<size_t> pick(0, model.mesh.positions.size() - 1);
     size_t total = 0;
-    for (int round = 0; round < 24; ++round) {
+    for (int round = 0; round < 12; ++round) {
         Mesh m = model.mesh;
         for (int i = 0; i < 1 + round % 6; ++i) {
             Vec3& p = m.positions[pick(rng)];
@@ -70,7 +70,7 @@ TEST(SelfIntersections, SamePairsAsCgalOnRandomlyDeformedModels) {
             EXPECT_EQ(got, expected) << "round " << round << (exact ? " (exact)" : "");
         }
     }
-    EXPECT_GT(total, 24u);  // the deformations do intersect: the test is not vacuous
+    EXPECT_GT(total, 12u);  // the deformations do intersect: the test is not vacuous
 }
 
 }  // namespace

@@ -219,26 +219,17 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     points.reserve(mesh.positions.size());
     for (const Vec3& p : mesh.positions) points.emplace_back(p.x, p.y, p.z);
 
-    // The soup handed to CGAL: usable triangles, and their original ids.
-    std::vector<uint8_t> unusable(mesh.triangles.size(), 0);
-    for (uint32_t t : topo.out_of_range_triangles) unusable[t] = 1;
-    for (uint32_t t : topo.index_degenerate_triangles) unusable[t] = 1;
-    std::vector<std::array<size_t, 3>> polygons;
-    std::vector<uint32_t> original;
-    polygons.reserve(mesh.triangles.size());
-    original.reserve(mesh.triangles.size());
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        if (unusable[t]) continue;
-        const auto& tri = mesh.triangles[t];
-        polygons.push_back({tri[0], tri[1], tri[2]});
-        original.push_back(uint32_t(t));
-    }
+    // Usable triangles: indices in range and distinct.
+    std::vector<uint8_t> usable(mesh.triangles.size(), 1);
+    for (uint32_t t : topo.out_of_range_triangles) usable[t] = 0;
+    for (uint32_t t : topo.index_degenerate_triangles) usable[t] = 0;
 
     // Zero-area triangles: three collinear points, decided exactly.
     typename K::Collinear_3 collinear = K().collinear_3_object();
-    for (size_t i = 0; i < polygons.size(); ++i) {
-        const auto& q = polygons[i];
-        if (collinear(points[q[0]], points[q[1]], points[q[2]])) out.zero_area_triangles.push_back(original[i]);
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (!usable[t]) continue;
+        const auto& q = mesh.triangles[t];
+        if (collinear(points[q[0]], points[q[1]], points[q[2]])) out.zero_area_triangles.push_back(uint32_t(t));
     }
     out.degenerate_ms = msSince(t0);
 
@@ -253,8 +244,7 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
             // tree; exact predicates on those only, on `workers` threads.
             // Triangles with collinear corners are left out, as CGAL leaves
             // them out (they are counted as zero-area triangles).
-            std::vector<uint8_t> tested(mesh.triangles.size(), 0);
-            for (uint32_t t : original) tested[t] = 1;
+            std::vector<uint8_t>& tested = usable;
             for (uint32_t t : out.zero_area_triangles) tested[t] = 0;
             std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found(TriangleBvh::workerCount(workers));
             bvh->forEachOverlappingPair(
@@ -267,6 +257,15 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
             for (const auto& f : found) ids.insert(ids.end(), f.begin(), f.end());
             out.mesh_built = true;
         } else {
+            // The soup handed to CGAL: usable triangles, and their original ids.
+            std::vector<std::array<size_t, 3>> polygons;
+            std::vector<uint32_t> original;
+            for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+                if (!usable[t]) continue;
+                const auto& tri = mesh.triangles[t];
+                polygons.push_back({tri[0], tri[1], tri[2]});
+                original.push_back(uint32_t(t));
+            }
             // Build a Surface_mesh. A soup our own edge analysis found valid is
             // added as is; anything else goes through orient_polygon_soup, which
             // flips triangles and duplicates points at non-manifold places (the
