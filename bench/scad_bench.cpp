@@ -34,7 +34,7 @@
 #include "gen/scad/scad_emitter.h"
 #include "gen/scene.h"
 #include "verify/mesh_topology.h"
-#include "verify/ray_caster.h"
+#include "verify/triangle_bvh.h"
 #include "verify/readback.h"
 
 namespace {
@@ -101,7 +101,7 @@ void benchStrategy(benchmark::State& state, int side, tsf::ScadOptions::Strategy
         const tsf::Mesh mesh = tsf::readMesh(rq.output_path);
         triangles = mesh.triangleCount();
         const double v = tsf::signedVolume(mesh), v_direct = tsf::signedVolume(tsf::meshScene(scene));
-        const tsf::RayCaster caster(mesh);
+        const tsf::TriangleBvh caster(mesh);
         const tsf::ReadbackResult rb = tsf::readBack(mesh, scene, caster, {});
         const bool solid = tsf::analyzeTopology(mesh).isClosedOrientedManifold();
         const bool volume = std::fabs(v - v_direct) <= kVolumeRelTolerance * v_direct;

@@ -73,13 +73,23 @@ module tsf_hull_base(m) {
 
 // Triangles as a flat list of points, three per triangle, counter-clockwise
 // from outside, handed to polyhedron(), whose faces must be clockwise from
-// outside: reversed here.
+// outside: reversed here. The faces are listed in chunks of
+// _tsf_range_chunk(): OpenSCAD (2021.01 and 2025) refuses a range of more
+// than a million elements ("too many elements"), and a 300 x 300 grid has
+// 1.6 million triangles.
 module _tsf_polyhedron(points) {
     assert(len(points) > 0, "tsf: the model has no present cell");
+    n = len(points) / 3;
+    chunk = _tsf_range_chunk();
     polyhedron(points = points,
-               faces = [for (n = [0:len(points) / 3 - 1]) [3 * n + 2, 3 * n + 1, 3 * n]],
+               faces = [for (c = [0:chunk:n - 1])
+                            for (k = [c:min(c + chunk, n) - 1]) [3 * k + 2, 3 * k + 1, 3 * k]],
                convexity = 10);
 }
+
+// Elements per range in long lists (see _tsf_polyhedron); a function, as
+// the library defines no top-level variables.
+function _tsf_range_chunk() = 500000;
 
 // The boundary of a model whose cells have the given spans: plain cells as
 // hexagons, the cells of the marks' faces (model[8], tsf_marks.scad) through

@@ -12,7 +12,7 @@
 #include <unordered_set>
 
 #include "gen/error.h"
-#include "verify/closest_point_tree.h"
+#include "verify/triangle_bvh.h"
 #include "verify/detail/format.h"
 #include "verify/surface_chains.h"
 #include "verify/triangle_samples.h"
@@ -122,14 +122,14 @@ struct Direction {
 class LazyTree {
 public:
     explicit LazyTree(const Mesh& mesh) : mesh_(mesh) {}
-    const ClosestPointTree& get() {
-        if (!tree_) tree_ = std::make_unique<ClosestPointTree>(mesh_);
+    const TriangleBvh& get() {
+        if (!tree_) tree_ = std::make_unique<TriangleBvh>(mesh_);
         return *tree_;
     }
 
 private:
     const Mesh& mesh_;
-    std::unique_ptr<ClosestPointTree> tree_;
+    std::unique_ptr<TriangleBvh> tree_;
 };
 
 // The exact positions of the corners of a mesh's usable triangles (a corner
@@ -265,7 +265,7 @@ double chooseRadius(const Direction& a, size_t a_vertices, const Direction& b, s
 // first triangle nearer than the largest distance so far, or than the
 // tolerance (below which no place is listed): such a sample cannot change
 // the figures, and the places above the tolerance stay exact.
-void sampleDirection(Direction& d, const std::vector<uint32_t>& vertices, const ClosestPointTree& to, double r,
+void sampleDirection(Direction& d, const std::vector<uint32_t>& vertices, const TriangleBvh& to, double r,
                      double tolerance_mm, size_t& samples) {
     const Mesh& m = *d.from;
     std::vector<double> vertex_mm(m.positions.size(), 0.0);

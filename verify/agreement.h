@@ -17,7 +17,7 @@
 //   2. Distances where step 1 could not prove 0: the triangles in differing
 //      planes (and zero-area ones) are sampled so that every point of them is
 //      within r of a sample (verify/triangle_samples.h), and each sample's
-//      distance to the other mesh is measured (verify/closest_point_tree.h).
+//      distance to the other mesh is measured (verify/triangle_bvh.h).
 //      The distance to a surface is 1-Lipschitz, so each direction's true
 //      Hausdorff distance h satisfies  figure <= h <= figure + r,  with
 //      figure = the largest sampled distance. r is the smallest radius whose

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 
@@ -81,21 +82,34 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
     }
     topo.unreferenced_vertices = size_t(std::count(referenced.begin(), referenced.end(), uint8_t(0)));
 
-    // Half-edges sorted by undirected edge, then triangle.
-    std::vector<HalfEdge> half;
-    half.reserve(3 * nt);
+    // Half-edges grouped by undirected edge (lo, hi), then triangle: bucketed
+    // by their lower vertex (a counting sort, linear), each bucket (a
+    // vertex's few edges) sorted by insertion.
+    std::vector<uint32_t> bucket(nv + 1, 0);
     for (size_t t = 0; t < nt; ++t) {
         if (!usable[t]) continue;
         const auto& tri = mesh.triangles[t];
-        for (uint8_t s = 0; s < 3; ++s) {
-            const uint32_t a = tri[s], b = tri[(s + 1) % 3];
-            const uint32_t lo = std::min(a, b), hi = std::max(a, b);
-            half.push_back({(uint64_t(lo) << 32) | hi, uint32_t(t), s, a < b});
+        for (int s = 0; s < 3; ++s) ++bucket[std::min(tri[s], tri[(s + 1) % 3]) + 1];
+    }
+    std::partial_sum(bucket.begin(), bucket.end(), bucket.begin());
+    std::vector<HalfEdge> half(bucket.back());
+    {
+        std::vector<uint32_t> fill(bucket.begin(), bucket.end() - 1);
+        for (size_t t = 0; t < nt; ++t) {
+            if (!usable[t]) continue;
+            const auto& tri = mesh.triangles[t];
+            for (uint8_t s = 0; s < 3; ++s) {
+                const uint32_t a = tri[s], b = tri[(s + 1) % 3];
+                const uint32_t lo = std::min(a, b), hi = std::max(a, b);
+                half[fill[lo]++] = {(uint64_t(lo) << 32) | hi, uint32_t(t), s, a < b};
+            }
         }
     }
-    std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-        return x.key != y.key ? x.key < y.key : x.tri < y.tri;
-    });
+    auto before = [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.tri < y.tri; };
+    for (size_t v = 0; v < nv; ++v)
+        for (uint32_t i = bucket[v] + 1; i < bucket[v + 1]; ++i)
+            for (uint32_t j = i; j > bucket[v] && before(half[j], half[j - 1]); --j) std::swap(half[j], half[j - 1]);
+    std::vector<uint32_t>().swap(bucket);
 
     UnionFind faces(nt);
     UnionFind corners(3 * nt);  // corner = 3 * triangle + index in triangle
@@ -186,22 +200,38 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
     std::stable_sort(topo.components.begin(), topo.components.end(),
                      [](const MeshComponent& a, const MeshComponent& b) { return a.triangles.size() > b.triangles.size(); });
 
-    // Exact duplicate positions (unmerged vertices). NaN positions are left out
-    // of the comparison (they are reported as non-finite).
-    std::vector<uint32_t> order;
-    order.reserve(nv);
-    for (size_t v = 0; v < nv; ++v)
-        if (finite(mesh.positions[v])) order.push_back(uint32_t(v));
-    auto less = [&](uint32_t a, uint32_t b) {
-        const Vec3& p = mesh.positions[a];
-        const Vec3& q = mesh.positions[b];
-        if (p.x != q.x) return p.x < q.x;
-        if (p.y != q.y) return p.y < q.y;
-        return p.z < q.z;
-    };
-    std::sort(order.begin(), order.end(), less);
-    for (size_t i = 1; i < order.size(); ++i)
-        if (mesh.positions[order[i]] == mesh.positions[order[i - 1]]) ++topo.duplicate_position_vertices;
+    // Exact duplicate positions (unmerged vertices): an open-addressing hash
+    // set of the finite positions, sized once. NaN positions are left out of
+    // the comparison (they are reported as non-finite); -0 equals +0.
+    {
+        size_t cap = 16;
+        while (cap < 2 * nv) cap *= 2;
+        std::vector<uint32_t> table(cap, UINT32_MAX);
+        auto bits = [](double d) {
+            if (d == 0) d = 0;  // one key for -0 and +0
+            uint64_t u;
+            std::memcpy(&u, &d, sizeof u);
+            return u;
+        };
+        for (size_t v = 0; v < nv; ++v) {
+            const Vec3& p = mesh.positions[v];
+            if (!finite(p)) continue;
+            uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull;
+            h = (h ^ (h >> 29) ^ bits(p.y)) * 0xBF58476D1CE4E5B9ull;
+            h = (h ^ (h >> 32) ^ bits(p.z)) * 0x94D049BB133111EBull;
+            h ^= h >> 31;
+            for (size_t slot = h & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+                if (table[slot] == UINT32_MAX) {
+                    table[slot] = uint32_t(v);
+                    break;
+                }
+                if (mesh.positions[table[slot]] == p) {
+                    ++topo.duplicate_position_vertices;
+                    break;
+                }
+            }
+        }
+    }
     return topo;
 }
 

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <thread>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -42,23 +44,34 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
         return K::Point_3(p.x, p.y, p.z);
     };
     UnionFind regions(nt);
-    // Half-edges keyed by their directed vertex pair; a consistently oriented
-    // neighbour has the reverse pair.
-    std::vector<std::pair<uint64_t, uint32_t>> half;
-    half.reserve(3 * nt);
-    for (uint32_t t = 0; t < nt; ++t) {
-        const auto& tri = mesh.triangles[t];
-        for (int s = 0; s < 3; ++s) half.push_back({(uint64_t(tri[s]) << 32) | tri[(s + 1) % 3], t});
+    // Half-edges bucketed by their first vertex (a counting sort, linear); a
+    // consistently oriented neighbour across a -> b has the half-edge b -> a,
+    // found in b's bucket of a few entries.
+    const size_t nv = mesh.positions.size();
+    std::vector<uint32_t> start(nv + 1, 0);
+    for (const auto& tri : mesh.triangles)
+        for (uint32_t v : tri) ++start[v + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    struct Out {
+        uint32_t to, tri;
+    };
+    std::vector<Out> outgoing(start.back());
+    {
+        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        for (uint32_t t = 0; t < nt; ++t) {
+            const auto& tri = mesh.triangles[t];
+            for (int s = 0; s < 3; ++s) outgoing[fill[tri[s]]++] = {tri[(s + 1) % 3], t};
+        }
     }
-    std::sort(half.begin(), half.end());
     for (uint32_t t = 0; t < nt; ++t) {
         const auto& tri = mesh.triangles[t];
         for (int s = 0; s < 3; ++s) {
             const uint32_t a = tri[s], b = tri[(s + 1) % 3], c = tri[(s + 2) % 3];
-            const uint64_t reverse = (uint64_t(b) << 32) | a;
-            auto it = std::lower_bound(half.begin(), half.end(), std::make_pair(reverse, uint32_t(0)));
-            if (it == half.end() || it->first != reverse || it->second <= t) continue;  // each pair once
-            const auto& other = mesh.triangles[it->second];
+            uint32_t other_t = UINT32_MAX;  // the triangle with b -> a (on a manifold mesh, at most one)
+            for (uint32_t i = start[b]; i < start[b + 1]; ++i)
+                if (outgoing[i].to == a) other_t = std::min(other_t, outgoing[i].tri);
+            if (other_t == UINT32_MAX || other_t <= t) continue;  // each pair once
+            const auto& other = mesh.triangles[other_t];
             uint32_t d = other[0];
             for (uint32_t v : other)
                 if (v != a && v != b) d = v;
@@ -69,7 +82,7 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
             const K::Vector_3 n = CGAL::cross_product(pb - pa, pc - pa);
             const K::Vector_3 e = CGAL::cross_product(n, pb - pa);  // in-plane, towards c's side
             if ((e * (pc - pa) > 0) == (e * (pd - pa) > 0)) continue;  // folded onto itself
-            regions.unite(t, it->second);
+            regions.unite(t, other_t);
         }
     }
     std::vector<double> best_area(nt, -1.0);
@@ -123,7 +136,7 @@ Check thinnest(const char* id, const char* title, std::vector<Sample>& samples, 
 
 }  // namespace
 
-PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const RayCaster& caster,
+PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const TriangleBvh& caster,
                                      const PrintabilityOptions& o) {
     PrintabilityResult r;
     PrintabilityFigures& f = r.figures;
@@ -140,24 +153,46 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
         // (negative volume) has it the other way round.
         const double sign = signedVolume(mesh) < 0 ? -1.0 : 1.0;
         const double gap_search_mm = kGapSearchNozzles * o.nozzle_mm;
+        // The regions in contiguous chunks, one per thread, their samples
+        // joined in chunk order: the same lists as one thread makes.
+        const std::vector<uint32_t> regions = planarRegionRepresentatives(mesh);
+        struct Samples {
+            std::vector<Sample> walls, gaps, slabs;
+        };
+        const unsigned workers = TriangleBvh::workerCount(0);
+        std::vector<Samples> parts(workers);
+        auto measure = [&](unsigned w) {
+            Samples& out = parts[w];
+            const size_t begin = regions.size() * w / workers, end = regions.size() * (w + 1) / workers;
+            for (size_t i = begin; i < end; ++i) {
+                const uint32_t t = regions[i];
+                const auto& tri = mesh.triangles[t];
+                const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+                const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+                const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+                Vec3 n{uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+                const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+                if (!(len > 0)) continue;
+                n = {sign * n.x / len, sign * n.y / len, sign * n.z / len};
+                const Vec3 centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
+                const Vec3 inward{-n.x, -n.y, -n.z};
+                const bool steep = std::fabs(n.z) < kSteepNormalZ;
+                if (const auto hit = caster.firstHit(centroid, inward, int64_t(t)))
+                    (steep ? out.walls : out.slabs).push_back({hit->distance_mm, centroid, t});
+                if (steep)
+                    if (const auto hit = caster.firstHit(centroid, n, int64_t(t), gap_search_mm))
+                        out.gaps.push_back({hit->distance_mm, centroid, t});
+            }
+        };
+        std::vector<std::thread> pool;
+        for (unsigned w = 1; w < workers; ++w) pool.emplace_back(measure, w);
+        measure(0);
+        for (std::thread& th : pool) th.join();
         std::vector<Sample> walls, gaps, slabs;
-        for (uint32_t t : planarRegionRepresentatives(mesh)) {
-            const auto& tri = mesh.triangles[t];
-            const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
-            const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-            const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-            Vec3 n{uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
-            const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-            if (!(len > 0)) continue;
-            n = {sign * n.x / len, sign * n.y / len, sign * n.z / len};
-            const Vec3 centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
-            const Vec3 inward{-n.x, -n.y, -n.z};
-            const bool steep = std::fabs(n.z) < kSteepNormalZ;
-            if (const auto hit = caster.firstHit(centroid, inward, int64_t(t)))
-                (steep ? walls : slabs).push_back({hit->distance_mm, centroid, t});
-            if (steep)
-                if (const auto hit = caster.firstHit(centroid, n, int64_t(t), gap_search_mm))
-                    gaps.push_back({hit->distance_mm, centroid, t});
+        for (const Samples& p : parts) {
+            walls.insert(walls.end(), p.walls.begin(), p.walls.end());
+            gaps.insert(gaps.end(), p.gaps.begin(), p.gaps.end());
+            slabs.insert(slabs.end(), p.slabs.begin(), p.slabs.end());
         }
         ray_checks.push_back(thinnest("wall_thickness", "walls at least a nozzle wide", walls, o.nozzle_mm,
                                       "material only", o, f.min_wall_mm));

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "gen/mesh.h"
-#include "verify/ray_caster.h"
+#include "verify/triangle_bvh.h"
 #include "verify/report.h"
 
 namespace tsf {
@@ -50,7 +50,7 @@ struct PrintabilityResult {
 
 /// `closed_oriented`: the solid checks found the mesh closed, manifold and
 /// consistently oriented (see SolidResult); `caster` is built on `mesh`.
-PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const RayCaster& caster,
+PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const TriangleBvh& caster,
                                      const PrintabilityOptions& options);
 
 }  // namespace tsf

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 #include "verify/detail/format.h"
 
@@ -41,7 +42,7 @@ std::string describe(const CellReadback& c) {
 
 }  // namespace
 
-ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& caster, const ReadbackOptions& options) {
+ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster, const ReadbackOptions& options) {
     ReadbackResult r;
     ReadbackFigures& f = r.figures;
     const auto t0 = std::chrono::steady_clock::now();
@@ -63,13 +64,7 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& c
     f.float32_rounding_mm = z_extent * kFloat32UnitRoundoff;
     f.tolerance_mm = f.height_step_tolerance_mm + f.float32_rounding_mm;
 
-    std::vector<CellReadback> all;
-    all.reserve(2 * scene.keptCount());
-    double sum_err = 0, sum_verr = 0;
-    size_t n_err = 0, n_verr = 0;
-    f.max_error_mm = 0;
-    f.max_value_error = 0;
-
+    const size_t keep = options.max_offenders;
     auto measure = [&](size_t k, bool top) {
         CellReadback c;
         c.col = scene.col[k];
@@ -100,36 +95,92 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const RayCaster& c
             c.value_read = map.valueAt(h);
             c.value_error = c.value_read - std::clamp(c.value, map.baseline, map.value_max);
         }
-        ++f.surfaces_checked;
-        if (!hit) {
-            ++f.missed;
-        } else {
-            const double e = std::fabs(c.error_mm);
-            f.max_error_mm = std::max(f.max_error_mm, e);
-            sum_err += e;
-            ++n_err;
-            if (e > f.tolerance_mm) ++f.over_tolerance;
-            if (!std::isnan(c.value_error)) {
-                f.max_value_error = std::max(f.max_value_error, std::fabs(c.value_error));
-                sum_verr += std::fabs(c.value_error);
-                ++n_verr;
-            }
-        }
-        all.push_back(std::move(c));
+        return c;
     };
-    for (size_t k = 0; k < scene.keptCount(); ++k) {
-        measure(k, true);
-        measure(k, false);
+
+    // The cells in contiguous chunks, one per thread. Each keeps its sums and
+    // its `keep` worst surfaces (a bounded heap, ties to the earlier surface),
+    // so memory does not grow with the model.
+    struct Ranked {
+        size_t seq;  // 2 * cell + (bottom ? 1 : 0)
+        CellReadback c;
+    };
+    auto rankedWorse = [](const Ranked& a, const Ranked& b) {
+        if (worse(a.c, b.c)) return true;
+        if (worse(b.c, a.c)) return false;
+        return a.seq < b.seq;
+    };
+    struct Part {
+        size_t surfaces = 0, missed = 0, over = 0, n_err = 0, n_verr = 0;
+        double sum_err = 0, sum_verr = 0, max_err = 0, max_verr = 0;
+        std::vector<Ranked> worst;  // heap: front = the least bad kept
+    };
+    const unsigned workers = TriangleBvh::workerCount(0);
+    std::vector<Part> parts(workers);
+    const size_t cells = scene.keptCount();
+    auto work = [&](unsigned w) {
+        Part& p = parts[w];
+        for (size_t k = cells * w / workers; k < cells * (w + 1) / workers; ++k)
+            for (bool top : {true, false}) {
+                Ranked r{2 * k + (top ? 0 : 1), measure(k, top)};
+                const CellReadback& c = r.c;
+                ++p.surfaces;
+                if (std::isnan(c.measured_mm)) {
+                    ++p.missed;
+                } else {
+                    const double e = std::fabs(c.error_mm);
+                    p.max_err = std::max(p.max_err, e);
+                    p.sum_err += e;
+                    ++p.n_err;
+                    if (e > f.tolerance_mm) ++p.over;
+                    if (!std::isnan(c.value_error)) {
+                        p.max_verr = std::max(p.max_verr, std::fabs(c.value_error));
+                        p.sum_verr += std::fabs(c.value_error);
+                        ++p.n_verr;
+                    }
+                }
+                if (keep == 0) continue;
+                if (p.worst.size() < keep) {
+                    p.worst.push_back(std::move(r));
+                    std::push_heap(p.worst.begin(), p.worst.end(), rankedWorse);
+                } else if (rankedWorse(r, p.worst.front())) {
+                    std::pop_heap(p.worst.begin(), p.worst.end(), rankedWorse);
+                    p.worst.back() = std::move(r);
+                    std::push_heap(p.worst.begin(), p.worst.end(), rankedWorse);
+                }
+            }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work, w);
+    work(0);
+    for (std::thread& t : pool) t.join();
+
+    double sum_err = 0, sum_verr = 0;
+    size_t n_err = 0, n_verr = 0;
+    f.max_error_mm = 0;
+    f.max_value_error = 0;
+    std::vector<Ranked> all;
+    for (Part& p : parts) {
+        f.surfaces_checked += p.surfaces;
+        f.missed += p.missed;
+        f.over_tolerance += p.over;
+        sum_err += p.sum_err;
+        sum_verr += p.sum_verr;
+        n_err += p.n_err;
+        n_verr += p.n_verr;
+        f.max_error_mm = std::max(f.max_error_mm, p.max_err);
+        f.max_value_error = std::max(f.max_value_error, p.max_verr);
+        for (Ranked& r : p.worst) all.push_back(std::move(r));
     }
     f.cells_checked = scene.keptCount();
     f.mean_error_mm = n_err ? sum_err / double(n_err) : 0.0;
     f.mean_value_error = n_verr ? sum_verr / double(n_verr) : 0.0;
     if (!n_verr) f.max_value_error = f.mean_value_error = std::numeric_limits<double>::quiet_NaN();
 
-    const size_t keep = std::min(all.size(), options.max_offenders);
-    std::partial_sort(all.begin(), all.begin() + std::ptrdiff_t(keep), all.end(), worse);
-    all.resize(keep);
-    f.worst = all;
+    std::sort(all.begin(), all.end(), rankedWorse);
+    if (all.size() > keep) all.resize(keep);
+    f.worst.clear();
+    for (Ranked& r : all) f.worst.push_back(std::move(r.c));
 
     const Stage values_stage{"readback", msSince(t0)};
     r.stages.push_back(values_stage);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 
 #include "gen/util/union_find.h"
@@ -220,24 +221,31 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
     const bool finite = topo.nonfinite_vertices.empty();
     detail::GeometricFindings g;
     std::string exact_fallback_reason;  // non-empty: the filtered kernel failed and the exact one was used
+    std::unique_ptr<TriangleBvh> own_bvh;
     if (finite) {
+        const TriangleBvh* bvh = options.bvh;
+        if (!bvh && options.self_intersections) {
+            own_bvh = std::make_unique<TriangleBvh>(mesh);
+            bvh = own_bvh.get();
+            r.stages.push_back({"bvh", own_bvh->buildMs()});
+        }
         if (options.exact) {
-            g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections);
+            g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections, bvh);
         } else {
             try {
-                g = detail::geometricChecksEpick(mesh, topo, max_off, options.self_intersections);
+                g = detail::geometricChecksEpick(mesh, topo, max_off, options.self_intersections, bvh);
             } catch (const std::exception& e) {
                 // The filtered kernel constructs intersection points in doubles;
                 // on near-degenerate contacts (a corner touching a face) CGAL's
                 // own preconditions can fail there. The exact kernel decides
                 // those cases, so the check is redone with it rather than lost.
-                g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections);
+                g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections, bvh);
                 exact_fallback_reason = e.what();
                 exact_fallback_reason = exact_fallback_reason.substr(0, exact_fallback_reason.find('\n'));
             }
         }
         r.stages.push_back({"degenerate", g.degenerate_ms});
-        r.stages.push_back({"cgal_mesh", g.build_ms});
+        if (g.cgal_mesh_used) r.stages.push_back({"cgal_mesh", g.build_ms});
         if (g.mesh_built) r.stages.push_back({"self_intersections", g.self_intersection_ms});
         if (g.volumes_computed) r.stages.push_back({"volume", g.volume_ms});
     }
@@ -319,6 +327,7 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
     }
 
     r.closed_oriented_manifold = topo.isClosedOrientedManifold();
+    r.bvh = std::move(own_bvh);
     return r;
 }
 

@@ -14,16 +14,19 @@
 //   geometry with CGAL (Epick by default; Epeck when exact):
 //     [degenerate_faces]       no triangle with a repeated index or three collinear points
 //     [self_intersections]     no two triangles meeting other than at a shared vertex or edge
+//                              (broad phase: the verifier's tree, verify/triangle_bvh.h)
 //     [outward_orientation]    every component has positive volume (needs a closed,
 //                              consistently oriented manifold; else skipped)
 // Positions are millimetres in the model frame; offenders carry mm positions.
 // Empty mesh: [single_piece] fails ("no triangles"); the others pass or skip.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "gen/mesh.h"
 #include "verify/report.h"
+#include "verify/triangle_bvh.h"
 
 namespace tsf {
 
@@ -33,6 +36,11 @@ struct SolidOptions {
     /// Test for self-intersections (CGAL; about 4 us per triangle). Skipping
     /// it is reported as a skipped check, never as a pass.
     bool self_intersections = true;
+    /// The verifier's tree of this mesh, when the caller has one; else
+    /// checkSolid builds one for the self-intersection test (after the
+    /// topology, whose memory is free by then) and hands it back in
+    /// SolidResult::bvh.
+    const TriangleBvh* bvh = nullptr;
 };
 
 struct SolidResult {
@@ -40,6 +48,7 @@ struct SolidResult {
     std::vector<Check> checks;
     std::vector<Stage> stages;
     bool closed_oriented_manifold = false;  ///< closed, manifold, consistently oriented, finite
+    std::unique_ptr<TriangleBvh> bvh;       ///< the tree checkSolid built, if it built one (for the ray checks)
 };
 
 SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options);

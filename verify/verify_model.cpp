@@ -4,7 +4,7 @@
 #include <chrono>
 #include <memory>
 
-#include "verify/ray_caster.h"
+#include "verify/triangle_bvh.h"
 #include "verify/readback.h"
 #include "verify/solid_checks.h"
 #include "verify/tilt_readback.h"
@@ -34,12 +34,14 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
     report.mesh.name = options.name.empty() ? "(in memory)" : options.name;
     report.mesh.read_notes = options.read_notes;
     const bool closed_oriented = solid.closed_oriented_manifold;
+    // One tree for every check that needs one: the self-intersections' broad
+    // phase (checkSolid built it after the topology, so the two never hold
+    // memory at once), the values read back and the printability rays.
+    std::unique_ptr<TriangleBvh> caster = std::move(solid.bvh);
     append(report, std::move(solid));
-
-    std::unique_ptr<RayCaster> caster;
-    if (scene || options.printability) {
-        caster = std::make_unique<RayCaster>(mesh);
-        report.stages.push_back({"ray_tree", caster->buildMs()});
+    if (!caster && (scene || options.printability)) {
+        caster = std::make_unique<TriangleBvh>(mesh);
+        report.stages.push_back({"bvh", caster->buildMs()});
     }
 
     if (scene) {

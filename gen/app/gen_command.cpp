@@ -15,6 +15,7 @@
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/scad/scad_emitter.h"
+#include "gen/scad/scad_render_cost.h"
 #include "gen/scene_json.h"
 #include "gen/util/file_bytes.h"
 #include "gen/util/output_paths.h"
@@ -186,6 +187,8 @@ void runGen(GenCommandOptions o) {
     if (!o.scad.empty()) {
         timer.begin("writing OpenSCAD");
         writeScad(scene, so, o.scad);
+        const std::string slow = scadRenderWarning(estimateScadRender(scene, so.strategy), o.scad);
+        if (!slow.empty()) std::fprintf(stderr, "tsf: warning: %s\n", slow.c_str());
         const std::vector<std::string> paths = scadOutputPaths(so, o.scad);
         for (size_t k = 0; k < paths.size(); ++k)
             summary.outputs.push_back({paths[k], k == 0 ? "OpenSCAD"

@@ -9,7 +9,7 @@
 #include <random>
 
 #include "tests/verify/verify_test_support.h"
-#include "verify/closest_point_tree.h"
+#include "verify/triangle_bvh.h"
 #include "verify/triangle_samples.h"
 
 namespace tsf {
@@ -157,9 +157,9 @@ double bruteDistance(const Mesh& m, const Vec3& p) {
     return best;
 }
 
-TEST(ClosestPointTree, MatchesBruteForceOnASmallModel) {
+TEST(TriangleBvh, MatchesBruteForceOnASmallModel) {
     const vtest::Model m = vtest::smallModel(Bottom::Mirrored);
-    const ClosestPointTree tree(m.mesh);
+    const TriangleBvh tree(m.mesh);
     EXPECT_EQ(tree.triangleCount(), m.mesh.triangles.size());
     const Bounds b = meshBounds(m.mesh);
     std::mt19937 rng(11);
@@ -179,9 +179,9 @@ TEST(ClosestPointTree, MatchesBruteForceOnASmallModel) {
     }
 }
 
-TEST(ClosestPointTree, EnoughStopsEarlyWithAnUpperBound) {
+TEST(TriangleBvh, EnoughStopsEarlyWithAnUpperBound) {
     const Mesh box = vtest::box({0, 0, 0}, {10, 10, 10});
-    const ClosestPointTree tree(box);
+    const TriangleBvh tree(box);
     const Vec3 p{5, 5, 11};  // 1 mm above the top
     EXPECT_NEAR(tree.closest(p).distance_mm, 1.0, 1e-12);
     // With enough = 20 any triangle within 20 mm will do: at least the true
@@ -191,11 +191,11 @@ TEST(ClosestPointTree, EnoughStopsEarlyWithAnUpperBound) {
     EXPECT_LE(c.distance_mm, 20.0);
 }
 
-TEST(ClosestPointTree, EmptyMeshAndBadQueries) {
-    const ClosestPointTree empty(Mesh{});
+TEST(TriangleBvh, EmptyMeshAndBadQueries) {
+    const TriangleBvh empty(Mesh{});
     EXPECT_TRUE(std::isinf(empty.closest({0, 0, 0}).distance_mm));
     EXPECT_EQ(empty.closest({0, 0, 0}).triangle, -1);
-    const ClosestPointTree box(vtest::box({0, 0, 0}, {1, 1, 1}));
+    const TriangleBvh box(vtest::box({0, 0, 0}, {1, 1, 1}));
     EXPECT_TRUE(std::isinf(box.closest({NAN, 0, 0}).distance_mm));
     EXPECT_NEAR(box.closest({0.5, 0.5, 0.5}).distance_mm, 0.5, 1e-15);  // inside: to the nearest face
 }

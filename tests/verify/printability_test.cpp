@@ -3,13 +3,13 @@
 
 #include "tests/verify/verify_test_support.h"
 #include "verify/printability.h"
-#include "verify/ray_caster.h"
+#include "verify/triangle_bvh.h"
 
 namespace tsf {
 namespace {
 
 PrintabilityResult run(const Mesh& m, PrintabilityOptions o = {}, bool closed = true) {
-    const RayCaster caster(m);
+    const TriangleBvh caster(m);
     return checkPrintability(m, closed, caster, o);
 }
 

@@ -7,14 +7,14 @@
 #include <cmath>
 
 #include "tests/verify/verify_test_support.h"
-#include "verify/ray_caster.h"
+#include "verify/triangle_bvh.h"
 #include "verify/readback.h"
 
 namespace tsf {
 namespace {
 
 ReadbackResult readBackModel(const Mesh& mesh, const Scene& scene, ReadbackOptions o = {}) {
-    const RayCaster caster(mesh);
+    const TriangleBvh caster(mesh);
     return readBack(mesh, scene, caster, o);
 }
 

@@ -13,6 +13,10 @@
 #include "gen/mesh.h"
 #include "verify/mesh_topology.h"
 
+namespace tsf {
+class TriangleBvh;
+}
+
 namespace tsf::detail {
 
 struct GeometricFindings {
@@ -21,7 +25,11 @@ struct GeometricFindings {
     /// built; the self-intersection test ran on that repaired copy.
     bool soup_repaired = false;
     size_t points_duplicated = 0;  ///< by orient_polygon_soup, to split non-manifold places
-    bool mesh_built = false;       ///< a CGAL Surface_mesh was built (else self-intersections not tested)
+    /// Self-intersections were tested: on the triangles as given (a valid
+    /// soup, with the verifier's tree) or on a CGAL Surface_mesh that could be
+    /// built from them. False: not tested.
+    bool mesh_built = false;
+    bool cgal_mesh_used = false;   ///< the test ran on a CGAL Surface_mesh (build_ms is its build time)
     bool self_intersections_requested = true;  ///< false: the caller skipped the test on purpose
 
     std::vector<uint32_t> zero_area_triangles;  ///< three collinear points (exact predicate); ascending
@@ -42,11 +50,23 @@ struct GeometricFindings {
 /// Runs the geometric checks on the usable triangles of `mesh` (those not in
 /// topo's out-of-range or index-degenerate lists). Requires every position to
 /// be finite (topo.nonfinite_vertices empty).
-/// self_intersections = false skips building the CGAL mesh and the
-/// self-intersection test (the slowest part); mesh_built stays false.
+/// self_intersections = false skips the self-intersection test (the slowest
+/// part); mesh_built stays false. With the mesh's tree (`bvh`, built from
+/// the same mesh) a closed, manifold, consistently oriented soup is tested
+/// directly: the tree's overlapping boxes, then CGAL's exact predicates on
+/// those pairs only, on every core with the filtered kernel (the lazy exact
+/// numbers of Epeck are not shared across threads). Otherwise, or without a
+/// tree, CGAL's PMP::self_intersections runs on a Surface_mesh of the soup,
+/// repaired by orient_polygon_soup when needed. Both find the same pairs.
+/// A point (mm) on the intersection of mesh triangles a and b, to locate a
+/// pair that intersects; always constructed with the exact kernel (the
+/// filtered one can construct a NaN point for nearly parallel edges, which
+/// its exact fallback then cannot convert).
+Vec3 intersectionPoint(const Mesh& mesh, uint32_t a, uint32_t b);
+
 GeometricFindings geometricChecksEpick(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
-                                       bool self_intersections = true);
+                                       bool self_intersections = true, const TriangleBvh* bvh = nullptr);
 GeometricFindings geometricChecksEpeck(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
-                                       bool self_intersections = true);
+                                       bool self_intersections = true, const TriangleBvh* bvh = nullptr);
 
 }  // namespace tsf::detail

@@ -7,14 +7,17 @@
 #include <cassert>
 #include <chrono>
 #include <iterator>
+#include <optional>
 #include <vector>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/intersections.h>
 
 #include "verify/detail/cgal_checks.h"
+#include "verify/triangle_bvh.h"
 
 // On near-degenerate contacts CGAL's preconditions fail in the filtered
 // kernel and throw; solid_checks.cpp catches that and redoes the check with
@@ -28,36 +31,182 @@ inline double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// A point (mm) on the intersection of two triangles, for locating it.
-template <class K>
-Vec3 intersectionPoint(const typename K::Triangle_3& a, const typename K::Triangle_3& b) {
-    using P = typename K::Point_3;
-    auto toVec = [](const P& p) { return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}; };
-    auto mean = [&](const auto& pts) {
-        Vec3 c;
-        for (const P& p : pts) {
-            const Vec3 v = toVec(p);
-            c = {c.x + v.x, c.y + v.y, c.z + v.z};
+// Exact shortcuts for the planes a terrain mesh is made of: horizontal
+// tops and bottoms (and any plane x_k = const), and vertical walls (a
+// triangle with two corners at one (x, y)). In such planes the general
+// predicates are degenerate, and CGAL's filtered kernel falls back to exact
+// arithmetic for each of them. Here the side of a point comes from comparing
+// coordinates, or from CGAL's 2D orientation in plan (filtered, exact), and
+// positions within the plane from the 2D orientation in a projection onto
+// two axes that maps the plane one-to-one (it may mirror the plane, which
+// flips every orientation alike and changes no answer below).
+namespace flat {
+
+using P2 = CGAL::Exact_predicates_inexact_constructions_kernel::Point_2;
+
+inline double coord(const Vec3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
+
+inline int orient2(const Vec3& p, const Vec3& q, const Vec3& r, int i, int j) {
+    return int(CGAL::orientation(P2(coord(p, i), coord(p, j)), P2(coord(q, i), coord(q, j)),
+                                 P2(coord(r, i), coord(r, j))));
+}
+
+struct Plane {
+    int axis = -1;    // x_axis = c, or -1: the vertical plane through p and q (in plan)
+    double c = 0;
+    Vec3 p, q;        // vertical plane: two points of different (x, y)
+    int i = 0, j = 1;  // the projection for orientations within the plane
+
+    // -1, 0, +1: below, in, above the plane (the sign is consistent, its meaning arbitrary).
+    int side(const Vec3& r) const {
+        if (axis >= 0) {
+            const double x = coord(r, axis);
+            return x > c ? 1 : (x < c ? -1 : 0);
         }
-        const double n = double(pts.size());
-        return Vec3{c.x / n, c.y / n, c.z / n};
-    };
-    const auto result = CGAL::intersection(a, b);
-    if (result) {
-        if (const P* p = boost::get<P>(&*result)) return toVec(*p);
-        if (const auto* s = boost::get<typename K::Segment_3>(&*result)) return mean(std::vector<P>{s->source(), s->target()});
-        if (const auto* t = boost::get<typename K::Triangle_3>(&*result))
-            return mean(std::vector<P>{t->vertex(0), t->vertex(1), t->vertex(2)});
-        if (const auto* poly = boost::get<std::vector<P>>(&*result)) return mean(*poly);
+        if ((r.x == p.x && r.y == p.y) || (r.x == q.x && r.y == q.y)) return 0;
+        return orient2(p, q, r, 0, 1);
     }
-    // Touching at a vertex or edge that the two triangles do not share by
-    // index: the intersection is degenerate; fall back to the centroids' midpoint.
-    std::vector<P> all{a.vertex(0), a.vertex(1), a.vertex(2), b.vertex(0), b.vertex(1), b.vertex(2)};
-    return mean(all);
+    int orient(const Vec3& a, const Vec3& b, const Vec3& r) const { return orient2(a, b, r, i, j); }
+};
+
+// The plane of the triangle (a, b, c), if it is one of those; a triangle with
+// area is in at most one axis plane.
+inline std::optional<Plane> planeOf(const Vec3& a, const Vec3& b, const Vec3& c) {
+    Plane pl;
+    for (int k : {2, 0, 1})
+        if (coord(a, k) == coord(b, k) && coord(b, k) == coord(c, k)) {
+            pl.axis = k;
+            pl.c = coord(a, k);
+            pl.i = (k + 1) % 3;
+            pl.j = (k + 2) % 3;
+            return pl;
+        }
+    auto samePlan = [](const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y; };
+    if (samePlan(a, b)) pl.p = a, pl.q = c;
+    else if (samePlan(b, c)) pl.p = b, pl.q = a;
+    else if (samePlan(c, a)) pl.p = c, pl.q = b;
+    else return std::nullopt;
+    if (samePlan(pl.p, pl.q)) return std::nullopt;  // no area (excluded before)
+    // (x, z) maps a vertical plane one-to-one unless it runs north-south (x = const).
+    pl.i = pl.p.x != pl.q.x ? 0 : 1;
+    pl.j = 2;
+    return pl;
+}
+
+// Is the direction x - v inside the closed angle of the triangle (v, a, b)
+// at v? (All four points in the plane.)
+inline bool inAngle(const Plane& pl, const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& x) {
+    const int o = pl.orient(v, a, b);
+    return pl.orient(v, a, x) * o >= 0 && pl.orient(v, x, b) * o >= 0;
+}
+
+// Triangles sharing the edge u-v, the one with far corner c in the plane:
+// they overlap only if the other's far corner d is in the plane too, on c's
+// side of u-v.
+inline bool sharedEdge(const Plane& pl, const Vec3& u, const Vec3& v, const Vec3& c, const Vec3& d) {
+    if (pl.side(d) != 0) return false;  // not coplanar
+    return pl.orient(u, v, c) == pl.orient(u, v, d);
+}
+
+// Triangles sharing the corner v, (v, a1, b1) in the plane and (v, a2, b2)
+// the other: nullopt when the other crosses the plane at v (CGAL decides).
+inline std::optional<bool> sharedCorner(const Plane& pl, const Vec3& v, const Vec3& a1, const Vec3& b1, const Vec3& a2,
+                                        const Vec3& b2) {
+    const int sa = pl.side(a2), sb = pl.side(b2);
+    if (sa != 0 && sa == sb) return false;  // touches the plane at v only
+    if (sa == 0 && sb == 0)  // coplanar: do their angles at v overlap?
+        return inAngle(pl, v, a1, b1, a2) || inAngle(pl, v, a1, b1, b2) || inAngle(pl, v, a2, b2, a1) ||
+               inAngle(pl, v, a2, b2, b1);
+    // One far corner w in the plane, the other off it: the other triangle
+    // meets the plane in the segment v-w.
+    if (sa == 0) return inAngle(pl, v, a1, b1, a2);
+    if (sb == 0) return inAngle(pl, v, a1, b1, b2);
+    return std::nullopt;
+}
+
+}  // namespace flat
+
+// Do the triangles a and b of a closed, manifold, consistently oriented
+// soup meet other than in the vertices or the edge they share by index?
+// The same answer as CGAL 5.5's PMP::self_intersections on the
+// Surface_mesh of that soup (do_faces_intersect): in such a soup two
+// triangles share an edge exactly when they share two vertex indices, and
+// a vertex exactly when they share one index; sharing an edge, they meet
+// when coplanar and folded onto each other; sharing a vertex, when the
+// edge opposite it in one meets the other (equivalently: their
+// intersection is more than that vertex). Flat triangles are decided by the
+// shortcuts above, everything else by CGAL's predicates. Neither triangle
+// may have three collinear corners.
+template <class K>
+bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::vector<Vec3>& pos,
+                   const std::array<uint32_t, 3>& a, const std::array<uint32_t, 3>& b) {
+    using Triangle = typename K::Triangle_3;
+    using Segment = typename K::Segment_3;
+    int ia = -1, ib = -1, shared = 0;  // the first shared corner, in a and in b
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (a[i] == b[j]) {
+                if (shared++ == 0) {
+                    ia = i;
+                    ib = j;
+                }
+                break;
+            }
+    const std::optional<flat::Plane> pa = flat::planeOf(pos[a[0]], pos[a[1]], pos[a[2]]);
+    const std::optional<flat::Plane> pb = flat::planeOf(pos[b[0]], pos[b[1]], pos[b[2]]);
+    if (shared >= 2) {
+        // A shared edge u-v: they overlap only when the four corners are
+        // coplanar and the opposite corners lie on the same side of u-v.
+        auto inB = [&](uint32_t x) { return x == b[0] || x == b[1] || x == b[2]; };
+        uint32_t common[3] = {0, 0, 0}, c = a[0];
+        int k = 0;
+        for (int i = 0; i < 3; ++i) {
+            if (inB(a[i])) common[k++] = a[i];
+            else c = a[i];
+        }
+        const uint32_t u = common[0], v = common[1];
+        // Three shared corners: the opposite corners coincide, and the
+        // triangles overlap (as CGAL finds across any of their edges).
+        if (shared == 3) c = common[2];
+        uint32_t d = c;
+        for (int j = 0; j < 3; ++j)
+            if (b[j] != u && b[j] != v) d = b[j];
+        if (pa) return flat::sharedEdge(*pa, pos[u], pos[v], pos[c], pos[d]);
+        if (pb) return flat::sharedEdge(*pb, pos[u], pos[v], pos[d], pos[c]);
+        const auto &pu = points[u], &pv = points[v], &pc = points[c], &pd = points[d];
+        return CGAL::coplanar(pu, pv, pc, pd) && CGAL::coplanar_orientation(pu, pv, pc, pd) == CGAL::POSITIVE;
+    }
+    if (shared == 1) {
+        const Vec3& v = pos[a[ia]];
+        const Vec3 &a1 = pos[a[(ia + 1) % 3]], &b1 = pos[a[(ia + 2) % 3]];
+        const Vec3 &a2 = pos[b[(ib + 1) % 3]], &b2 = pos[b[(ib + 2) % 3]];
+        std::optional<bool> known;
+        if (pa) known = flat::sharedCorner(*pa, v, a1, b1, a2, b2);
+        if (!known && pb) known = flat::sharedCorner(*pb, v, a2, b2, a1, b1);
+        if (known) return *known;
+    }
+    const Triangle ta(points[a[0]], points[a[1]], points[a[2]]);
+    const Triangle tb(points[b[0]], points[b[1]], points[b[2]]);
+    if (shared == 1) {
+        // A shared corner: they meet elsewhere only if the edge opposite it in
+        // one triangle meets the other triangle.
+        const Segment sa(points[a[(ia + 1) % 3]], points[a[(ia + 2) % 3]]);
+        const Segment sb(points[b[(ib + 1) % 3]], points[b[(ib + 2) % 3]]);
+        return CGAL::do_intersect(ta, sb) || CGAL::do_intersect(tb, sa);
+    }
+    // Nothing shared: a triangle strictly on one side of the other's plane is apart from it.
+    auto apart = [&](const std::optional<flat::Plane>& pl, const std::array<uint32_t, 3>& other) {
+        if (!pl) return false;
+        const int s0 = pl->side(pos[other[0]]);
+        return s0 != 0 && pl->side(pos[other[1]]) == s0 && pl->side(pos[other[2]]) == s0;
+    };
+    if (apart(pa, b) || apart(pb, a)) return false;
+    return CGAL::do_intersect(ta, tb);
 }
 
 template <class K>
-GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs, bool self_intersections) {
+GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs, bool self_intersections,
+                                  const TriangleBvh* bvh, unsigned workers) {
     using P = typename K::Point_3;
     using SM = CGAL::Surface_mesh<P>;
     namespace PMP = CGAL::Polygon_mesh_processing;
@@ -70,89 +219,103 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     points.reserve(mesh.positions.size());
     for (const Vec3& p : mesh.positions) points.emplace_back(p.x, p.y, p.z);
 
-    // The soup handed to CGAL: usable triangles, and their original ids.
-    std::vector<uint8_t> unusable(mesh.triangles.size(), 0);
-    for (uint32_t t : topo.out_of_range_triangles) unusable[t] = 1;
-    for (uint32_t t : topo.index_degenerate_triangles) unusable[t] = 1;
-    std::vector<std::array<size_t, 3>> polygons;
-    std::vector<uint32_t> original;
-    polygons.reserve(mesh.triangles.size());
-    original.reserve(mesh.triangles.size());
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        if (unusable[t]) continue;
-        const auto& tri = mesh.triangles[t];
-        polygons.push_back({tri[0], tri[1], tri[2]});
-        original.push_back(uint32_t(t));
-    }
+    // Usable triangles: indices in range and distinct.
+    std::vector<uint8_t> usable(mesh.triangles.size(), 1);
+    for (uint32_t t : topo.out_of_range_triangles) usable[t] = 0;
+    for (uint32_t t : topo.index_degenerate_triangles) usable[t] = 0;
 
     // Zero-area triangles: three collinear points, decided exactly.
     typename K::Collinear_3 collinear = K().collinear_3_object();
-    for (size_t i = 0; i < polygons.size(); ++i) {
-        const auto& q = polygons[i];
-        if (collinear(points[q[0]], points[q[1]], points[q[2]])) out.zero_area_triangles.push_back(original[i]);
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (!usable[t]) continue;
+        const auto& q = mesh.triangles[t];
+        if (collinear(points[q[0]], points[q[1]], points[q[2]])) out.zero_area_triangles.push_back(uint32_t(t));
     }
     out.degenerate_ms = msSince(t0);
 
     out.self_intersections_requested = self_intersections;
     if (self_intersections) {
-        // Build the Surface_mesh. A soup our own edge analysis found valid is
-        // added as is; anything else goes through orient_polygon_soup, which
-        // flips triangles and duplicates points at non-manifold places (the
-        // repair is reported, never used for the verdict of the topology checks).
         t0 = std::chrono::steady_clock::now();
         const bool valid_soup =
             topo.nonmanifold_edges.empty() && topo.misoriented_edges.empty() && topo.nonmanifold_vertices.empty();
-        if (!valid_soup) {
-            const size_t before = points.size();
-            PMP::orient_polygon_soup(points, polygons);
-            out.soup_repaired = true;
-            out.points_duplicated = points.size() - before;
-        }
-        SM sm;
-        sm.reserve(typename SM::size_type(points.size()), typename SM::size_type(3 * polygons.size()),
-                   typename SM::size_type(polygons.size()));
-        std::vector<typename SM::Vertex_index> vid;
-        vid.reserve(points.size());
-        for (const P& p : points) vid.push_back(sm.add_vertex(p));
-        bool all_added = true;
-        for (const auto& q : polygons) {
-            if (sm.add_face(vid[q[0]], vid[q[1]], vid[q[2]]) == SM::null_face()) {
-                all_added = false;
-                break;
+        std::vector<std::pair<uint32_t, uint32_t>> ids;  // intersecting pairs, original ids, first < second
+        if (valid_soup && bvh) {
+            // Broad phase: the pairs whose boxes overlap, from the verifier's
+            // tree; exact predicates on those only, on `workers` threads.
+            // Triangles with collinear corners are left out, as CGAL leaves
+            // them out (they are counted as zero-area triangles).
+            std::vector<uint8_t>& tested = usable;
+            for (uint32_t t : out.zero_area_triangles) tested[t] = 0;
+            std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found(TriangleBvh::workerCount(workers));
+            bvh->forEachOverlappingPair(
+                [&](unsigned w, uint32_t a, uint32_t b) {
+                    if (!tested[a] || !tested[b]) return;
+                    if (trianglesMeet<K>(points, mesh.positions, mesh.triangles[a], mesh.triangles[b]))
+                        found[w].emplace_back(std::min(a, b), std::max(a, b));
+                },
+                workers);
+            for (const auto& f : found) ids.insert(ids.end(), f.begin(), f.end());
+            out.mesh_built = true;
+        } else {
+            // The soup handed to CGAL: usable triangles, and their original ids.
+            std::vector<std::array<size_t, 3>> polygons;
+            std::vector<uint32_t> original;
+            for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+                if (!usable[t]) continue;
+                const auto& tri = mesh.triangles[t];
+                polygons.push_back({tri[0], tri[1], tri[2]});
+                original.push_back(uint32_t(t));
             }
-        }
-        out.mesh_built = all_added;
-        out.build_ms = msSince(t0);
-
-        // Self-intersections: pairs of triangles that meet other than in a shared
-        // vertex or edge. CGAL lists a degenerate face f as (f, f); those are
-        // already counted as zero-area triangles and are dropped here.
-        if (out.mesh_built) {
+            // Build a Surface_mesh. A soup our own edge analysis found valid is
+            // added as is; anything else goes through orient_polygon_soup, which
+            // flips triangles and duplicates points at non-manifold places (the
+            // repair is reported, never used for the verdict of the topology checks).
+            if (!valid_soup) {
+                const size_t before = points.size();
+                PMP::orient_polygon_soup(points, polygons);
+                out.soup_repaired = true;
+                out.points_duplicated = points.size() - before;
+            }
+            SM sm;
+            sm.reserve(typename SM::size_type(points.size()), typename SM::size_type(3 * polygons.size()),
+                       typename SM::size_type(polygons.size()));
+            std::vector<typename SM::Vertex_index> vid;
+            vid.reserve(points.size());
+            for (const P& p : points) vid.push_back(sm.add_vertex(p));
+            bool all_added = true;
+            for (const auto& q : polygons) {
+                if (sm.add_face(vid[q[0]], vid[q[1]], vid[q[2]]) == SM::null_face()) {
+                    all_added = false;
+                    break;
+                }
+            }
+            out.mesh_built = all_added;
+            out.cgal_mesh_used = true;
+            out.build_ms = msSince(t0);
             t0 = std::chrono::steady_clock::now();
-            std::vector<std::pair<typename SM::Face_index, typename SM::Face_index>> pairs;
-            PMP::self_intersections(sm, std::back_inserter(pairs));
-            std::vector<std::pair<uint32_t, uint32_t>> ids;
-            ids.reserve(pairs.size());
-            for (const auto& [f, g] : pairs) {
-                if (f == g) continue;
-                uint32_t a = original[size_t(f)], b = original[size_t(g)];
-                if (a > b) std::swap(a, b);
-                ids.emplace_back(a, b);
+            // CGAL lists a degenerate face f as (f, f); those are already
+            // counted as zero-area triangles and are dropped here.
+            if (out.mesh_built) {
+                std::vector<std::pair<typename SM::Face_index, typename SM::Face_index>> pairs;
+                PMP::self_intersections(sm, std::back_inserter(pairs));
+                ids.reserve(pairs.size());
+                for (const auto& [f, g] : pairs) {
+                    if (f == g) continue;
+                    uint32_t a = original[size_t(f)], b = original[size_t(g)];
+                    if (a > b) std::swap(a, b);
+                    ids.emplace_back(a, b);
+                }
             }
+        }
+        if (out.mesh_built) {
             std::sort(ids.begin(), ids.end());
             ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
             out.intersecting_pair_count = ids.size();
             if (ids.size() > max_pairs) ids.resize(max_pairs);
-            auto triangle = [&](uint32_t t) {
-                const auto& tri = mesh.triangles[t];
-                const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
-                return typename K::Triangle_3(P(a.x, a.y, a.z), P(b.x, b.y, b.z), P(c.x, c.y, c.z));
-            };
-            for (const auto& [a, b] : ids) out.intersection_points.push_back(intersectionPoint<K>(triangle(a), triangle(b)));
+            for (const auto& [a, b] : ids) out.intersection_points.push_back(intersectionPoint(mesh, a, b));
             out.intersecting_pairs = std::move(ids);
             out.self_intersection_ms = msSince(t0);
         }
-
     }
 
     // Volumes: per component, as a sum of signed tetrahedra against a point of

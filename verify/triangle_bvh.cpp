@@ -1,0 +1,619 @@
+// TriangleBvh: binned-SAH bounding-volume hierarchy with a bounded depth; the
+// watertight ray/triangle test, Ericson's closest point on a triangle, and the
+// tree's self-traversal for overlapping boxes. See triangle_bvh.h.
+#include "verify/triangle_bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cassert>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace tsf {
+namespace {
+
+// Triangles per leaf: fewer means more boxes to test, more means more
+// triangle tests; 4 is the usual balance.
+constexpr uint32_t kLeafSize = 4;
+// Boxes are padded by this many units in the last place of their largest
+// coordinate, so rounding in the box tests cannot reject a ray, a point or a
+// pair that the triangle tests would accept.
+constexpr double kBoxPadUlps = 8.0;
+// The surface-area heuristic chooses splits down to this depth; below it
+// nodes are halved, so the depth is at most kSahDepth + log2(2^32 / kLeafSize).
+constexpr int kSahDepth = 32;
+constexpr int kMaxDepth = 64;
+// Every traversal pops one node and pushes at most two, so it never holds
+// more than one pending node per level plus one.
+constexpr int kStackSize = kMaxDepth + 2;
+constexpr int kSahBins = 16;
+// Below this many triangles a second build thread costs more than it saves.
+constexpr size_t kParallelBuildMin = 200000;
+constexpr uint32_t kNone = UINT32_MAX;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+using V3 = std::array<double, 3>;
+
+struct Box {
+    V3 lo{kInf, kInf, kInf};
+    V3 hi{-kInf, -kInf, -kInf};
+    void add(const V3& p) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    }
+    void add(const Box& b) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], b.lo[k]);
+            hi[k] = std::max(hi[k], b.hi[k]);
+        }
+    }
+    double halfArea() const {
+        const double dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+        return dx * dy + dy * dz + dz * dx;
+    }
+    bool overlaps(const Box& b) const {
+        return lo[0] <= b.hi[0] && b.lo[0] <= hi[0] && lo[1] <= b.hi[1] && b.lo[1] <= hi[1] && lo[2] <= b.hi[2] &&
+               b.lo[2] <= hi[2];
+    }
+    // Squared distance from p to the box (0 inside).
+    double distance2(const V3& p) const {
+        double s = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double d = std::max({lo[k] - p[k], 0.0, p[k] - hi[k]});
+            s += d * d;
+        }
+        return s;
+    }
+    void pad() {
+        for (int k = 0; k < 3; ++k) {
+            const double scale = std::max({std::fabs(lo[k]), std::fabs(hi[k]), 1.0});
+            const double p = kBoxPadUlps * scale * std::numeric_limits<double>::epsilon();
+            lo[k] -= p;
+            hi[k] += p;
+        }
+    }
+};
+
+struct Node {
+    Box box;
+    uint32_t first = 0;  // leaf: first triangle slot; inner: index of the left child (right = left + 1)
+    uint32_t count = 0;  // leaf: number of triangles; inner: 0
+};
+
+// What the build needs of a triangle, kept together so that the passes over
+// a node's triangles read memory in order.
+struct Item {
+    Box box;
+    uint32_t tri;  // index into the accepted triangles, before reordering
+};
+
+double centre(const Item& it, int axis) { return 0.5 * (it.box.lo[axis] + it.box.hi[axis]); }
+
+int longestAxis(const Box& b) {
+    const double ex = b.hi[0] - b.lo[0], ey = b.hi[1] - b.lo[1], ez = b.hi[2] - b.lo[2];
+    return ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
+}
+
+// Builds the subtree of items[begin, end) into `nodes`, its root at nodes[0].
+struct SubtreeBuilder {
+    std::vector<Item>& items;
+    std::vector<Node> nodes;
+    int depth = 0;  // deepest level reached, counted from the whole tree's root
+
+    // Split point of items[begin, end) (reordered), strictly inside.
+    uint32_t split(uint32_t begin, uint32_t end, int level) {
+        Box cb;  // bounds of the box centres
+        for (uint32_t i = begin; i < end; ++i) cb.add(V3{centre(items[i], 0), centre(items[i], 1), centre(items[i], 2)});
+        const int axis = longestAxis(cb);
+        const double lo = cb.lo[axis], extent = cb.hi[axis] - lo;
+        if (level < kSahDepth && extent > 0 && std::isfinite(extent)) {
+            // Surface-area heuristic over the bins: the split minimising
+            // area(left) * n_left + area(right) * n_right.
+            Box bins[kSahBins];
+            uint32_t counts[kSahBins] = {};
+            const double scale = kSahBins / extent;
+            auto binOf = [&](const Item& it) { return std::clamp(int((centre(it, axis) - lo) * scale), 0, kSahBins - 1); };
+            for (uint32_t i = begin; i < end; ++i) {
+                const int b = binOf(items[i]);
+                bins[b].add(items[i].box);
+                ++counts[b];
+            }
+            double right_area[kSahBins];
+            uint32_t right_count[kSahBins];
+            Box acc;
+            uint32_t cnt = 0;
+            for (int b = kSahBins - 1; b > 0; --b) {
+                acc.add(bins[b]);
+                cnt += counts[b];
+                right_area[b] = cnt ? acc.halfArea() : 0.0;
+                right_count[b] = cnt;
+            }
+            acc = Box{};
+            cnt = 0;
+            double best_cost = kInf;
+            int best_bin = -1;
+            for (int b = 0; b < kSahBins - 1; ++b) {
+                acc.add(bins[b]);
+                cnt += counts[b];
+                if (cnt == 0 || right_count[b + 1] == 0) continue;
+                const double cost = acc.halfArea() * cnt + right_area[b + 1] * right_count[b + 1];
+                if (cost < best_cost) {
+                    best_cost = cost;
+                    best_bin = b;
+                }
+            }
+            if (best_bin >= 0) {
+                const auto mid = std::partition(items.begin() + begin, items.begin() + end,
+                                                [&](const Item& it) { return binOf(it) <= best_bin; });
+                const uint32_t m = uint32_t(mid - items.begin());
+                if (m != begin && m != end) return m;
+            }
+        }
+        // Deep, or no useful split: halve at the median.
+        const uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                         [&](const Item& a, const Item& b) { return centre(a, axis) < centre(b, axis); });
+        return mid;
+    }
+
+    void build(uint32_t begin, uint32_t end, int level) {
+        struct Job {
+            uint32_t node, begin, end;
+            int level;
+        };
+        nodes.reserve(2 * size_t(end - begin) / kLeafSize + 2);
+        nodes.push_back({});
+        std::vector<Job> jobs{{0, begin, end, level}};
+        while (!jobs.empty()) {
+            const Job j = jobs.back();
+            jobs.pop_back();
+            depth = std::max(depth, j.level);
+            if (j.end - j.begin <= kLeafSize) {
+                nodes[j.node].first = j.begin;
+                nodes[j.node].count = j.end - j.begin;
+                continue;
+            }
+            const uint32_t mid = split(j.begin, j.end, j.level);
+            const uint32_t left = uint32_t(nodes.size());
+            nodes.push_back({});
+            nodes.push_back({});
+            nodes[j.node].first = left;
+            nodes[j.node].count = 0;
+            jobs.push_back({left, j.begin, mid, j.level + 1});
+            jobs.push_back({left + 1, mid, j.end, j.level + 1});
+        }
+    }
+};
+
+// Appends the subtree `sub` (root at sub[0]) to `nodes`, its root going to
+// nodes[root_at] and the rest at the end.
+void splice(std::vector<Node>& nodes, uint32_t root_at, const std::vector<Node>& sub) {
+    const uint32_t offset = uint32_t(nodes.size()) - 1;  // sub index i >= 1 goes to offset + i
+    auto relocate = [&](Node n) {
+        if (n.count == 0) n.first += offset;
+        return n;
+    };
+    nodes[root_at] = relocate(sub[0]);
+    for (size_t i = 1; i < sub.size(); ++i) nodes.push_back(relocate(sub[i]));
+}
+
+// Watertight ray/triangle test. kx, ky, kz and the shear (sx, sy, sz) are per ray.
+struct RaySetup {
+    V3 o, d;
+    int kx, ky, kz;
+    double sx, sy, sz;
+};
+
+RaySetup setup(const V3& o, const V3& d) {
+    RaySetup r{o, d, 0, 0, 0, 0, 0, 0};
+    int kz = 0;
+    for (int k = 1; k < 3; ++k)
+        if (std::fabs(d[k]) > std::fabs(d[kz])) kz = k;
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (d[kz] < 0) std::swap(kx, ky);  // keep the winding of the triangles
+    r.kx = kx;
+    r.ky = ky;
+    r.kz = kz;
+    r.sx = d[kx] / d[kz];
+    r.sy = d[ky] / d[kz];
+    r.sz = 1.0 / d[kz];
+    return r;
+}
+
+// Parameter interval of the ray inside the box starts at t_enter <= t_max, or false.
+bool rayBox(const V3& o, const V3& d, const Box& b, double t_max, double& t_enter) {
+    double t0 = 0.0, t1 = t_max;
+    for (int k = 0; k < 3; ++k) {
+        if (d[k] == 0.0) {
+            if (o[k] < b.lo[k] || o[k] > b.hi[k]) return false;
+            continue;
+        }
+        double ta = (b.lo[k] - o[k]) / d[k];
+        double tb = (b.hi[k] - o[k]) / d[k];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        if (t0 > t1) return false;
+    }
+    t_enter = t0;
+    return true;
+}
+
+// Ray parameter of the hit, or a negative number for no hit; on a hit, the
+// hit point from the triangle's own corners (barycentric), kept inside the
+// triangle's bounding box so that a hit on a face parallel to an axis plane
+// has exactly that face's coordinate (a top at z = 12.4 reads 12.4, not
+// 12.4 plus the rounding of origin + t * direction).
+double hitTriangle(const RaySetup& r, const V3& a, const V3& b, const V3& c, double t_max, V3& point) {
+    const V3 A{a[0] - r.o[0], a[1] - r.o[1], a[2] - r.o[2]};
+    const V3 B{b[0] - r.o[0], b[1] - r.o[1], b[2] - r.o[2]};
+    const V3 C{c[0] - r.o[0], c[1] - r.o[1], c[2] - r.o[2]};
+    const double Ax = A[r.kx] - r.sx * A[r.kz], Ay = A[r.ky] - r.sy * A[r.kz];
+    const double Bx = B[r.kx] - r.sx * B[r.kz], By = B[r.ky] - r.sy * B[r.kz];
+    const double Cx = C[r.kx] - r.sx * C[r.kz], Cy = C[r.ky] - r.sy * C[r.kz];
+    const double U = Cx * By - Cy * Bx;
+    const double V = Ax * Cy - Ay * Cx;
+    const double W = Bx * Ay - By * Ax;
+    if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return -1.0;
+    const double det = U + V + W;
+    if (det == 0.0) return -1.0;  // the ray lies in the triangle's plane, or the triangle has no area
+    const double T = U * (r.sz * A[r.kz]) + V * (r.sz * B[r.kz]) + W * (r.sz * C[r.kz]);
+    const double tt = T / det;
+    if (!(tt >= 0.0) || tt > t_max) return -1.0;
+    for (int k = 0; k < 3; ++k) {
+        const double p = (U * a[k] + V * b[k] + W * c[k]) / det;
+        const double lo = std::min({a[k], b[k], c[k]}), hi = std::max({a[k], b[k], c[k]});
+        point[k] = std::clamp(p, lo, hi);
+    }
+    return tt;
+}
+
+V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+V3 addScaled(const V3& a, double s, const V3& b) { return {a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]}; }
+double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+V3 closestOnSegment(const V3& p, const V3& a, const V3& b) {
+    const V3 ab = sub(b, a);
+    const double len2 = dot(ab, ab);
+    if (!(len2 > 0)) return a;
+    const double t = std::clamp(dot(sub(p, a), ab) / len2, 0.0, 1.0);
+    return addScaled(a, t, ab);
+}
+
+// Ericson, Real-Time Collision Detection, 5.1.5: the Voronoi region of p
+// decides between a corner, an edge and the inside. A triangle without area
+// (collinear corners) is the union of its edges.
+V3 closestOnTriangle(const V3& p, const V3& a, const V3& b, const V3& c) {
+    const V3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return a;
+    const V3 bp = sub(p, b);
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return addScaled(a, d1 / (d1 - d3), ab);
+    const V3 cp = sub(p, c);
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return addScaled(a, d2 / (d2 - d6), ac);
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return addScaled(b, (d4 - d3) / ((d4 - d3) + (d5 - d6)), sub(c, b));
+    const double sum = va + vb + vc;
+    if (!(sum > 0)) {
+        // No area: the nearest of the three edges.
+        V3 best = closestOnSegment(p, a, b);
+        double best2 = dot(sub(p, best), sub(p, best));
+        for (const V3& q : {closestOnSegment(p, b, c), closestOnSegment(p, c, a)}) {
+            const double d2q = dot(sub(p, q), sub(p, q));
+            if (d2q < best2) {
+                best2 = d2q;
+                best = q;
+            }
+        }
+        return best;
+    }
+    return addScaled(addScaled(a, vb / sum, ab), vc / sum, ac);
+}
+
+bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+}  // namespace
+
+struct TriangleBvh::Impl {
+    std::vector<V3> positions;                     // copied from the mesh
+    std::vector<std::array<uint32_t, 3>> corners;  // per slot: indices into positions
+    std::vector<uint32_t> mesh_index;              // per slot: the mesh triangle
+    std::vector<uint32_t> slot_of;                 // per mesh triangle: its slot, or kNone
+    std::vector<Node> nodes;
+    int depth = 0;
+    double build_ms = 0;
+
+    const V3& corner(uint32_t slot, int i) const { return positions[corners[slot][i]]; }
+    Box triangleBox(uint32_t slot) const {
+        Box b;
+        for (int i = 0; i < 3; ++i) b.add(corner(slot, i));
+        return b;
+    }
+
+    void build() {
+        const size_t n = corners.size();
+        if (n == 0) return;
+        std::vector<Item> items(n);
+        for (size_t i = 0; i < n; ++i) items[i] = {triangleBox(uint32_t(i)), uint32_t(i)};
+
+        const unsigned threads = workerCount(0);
+        if (n >= kParallelBuildMin && threads >= 2) {
+            // The root's split here, its two subtrees on two threads.
+            SubtreeBuilder root{items, {}, 0};
+            const uint32_t mid = root.split(0, uint32_t(n), 0);
+            SubtreeBuilder left{items, {}, 0}, right{items, {}, 0};
+            std::thread other([&] { right.build(mid, uint32_t(n), 1); });
+            left.build(0, mid, 1);
+            other.join();
+            nodes.reserve(1 + left.nodes.size() + right.nodes.size());
+            nodes.resize(3);
+            nodes[0].first = 1;
+            nodes[0].count = 0;
+            splice(nodes, 1, left.nodes);
+            splice(nodes, 2, right.nodes);
+            depth = std::max(left.depth, right.depth);
+        } else {
+            SubtreeBuilder all{items, {}, 0};
+            all.build(0, uint32_t(n), 0);
+            nodes = std::move(all.nodes);
+            depth = all.depth;
+        }
+        assert(depth <= kMaxDepth);
+
+        // Store the triangles in leaf order.
+        std::vector<std::array<uint32_t, 3>> sorted_corners(n);
+        std::vector<uint32_t> sorted_index(n);
+        for (size_t i = 0; i < n; ++i) {
+            sorted_corners[i] = corners[items[i].tri];
+            sorted_index[i] = mesh_index[items[i].tri];
+        }
+        corners.swap(sorted_corners);
+        mesh_index.swap(sorted_index);
+        for (size_t i = 0; i < n; ++i) slot_of[mesh_index[i]] = uint32_t(i);
+
+        // Boxes bottom-up (children always come after their parent), then padded.
+        for (size_t i = nodes.size(); i-- > 0;) {
+            Node& nd = nodes[i];
+            nd.box = Box{};
+            if (nd.count > 0) {
+                for (uint32_t s = nd.first; s < nd.first + nd.count; ++s) nd.box.add(items[s].box);
+            } else {
+                nd.box.add(nodes[nd.first].box);
+                nd.box.add(nodes[nd.first + 1].box);
+            }
+        }
+        for (Node& nd : nodes) nd.box.pad();
+    }
+
+    // Every pair of triangles of the leaves a and b (a == b: within the leaf)
+    // whose boxes overlap. A triangle's box is the min and max of its
+    // coordinates, exact: it needs no padding.
+    template <class Visit>
+    void leafPairs(const Node& a, const Node& b, bool same, Visit& visit) const {
+        Box ba[kLeafSize], bb[kLeafSize];
+        for (uint32_t s = 0; s < a.count; ++s) ba[s] = triangleBox(a.first + s);
+        if (!same)
+            for (uint32_t t = 0; t < b.count; ++t) bb[t] = triangleBox(b.first + t);
+        const Box* other = same ? ba : bb;
+        for (uint32_t s = 0; s < a.count; ++s)
+            for (uint32_t t = same ? s + 1 : 0; t < b.count; ++t)
+                if (ba[s].overlaps(other[t])) visit(mesh_index[a.first + s], mesh_index[b.first + t]);
+    }
+
+    // Pairs between the subtrees a and b (a != b), or within a (a == b).
+    template <class Visit>
+    void pairs(uint32_t a, uint32_t b, Visit& visit) const {
+        const Node& na = nodes[a];
+        const Node& nb = nodes[b];
+        if (a == b) {
+            if (na.count > 0) return leafPairs(na, na, true, visit);
+            pairs(na.first, na.first, visit);
+            pairs(na.first + 1, na.first + 1, visit);
+            pairs(na.first, na.first + 1, visit);
+            return;
+        }
+        if (!na.box.overlaps(nb.box)) return;
+        if (na.count > 0 && nb.count > 0) return leafPairs(na, nb, false, visit);
+        // Descend the larger (or the only inner) node.
+        if (nb.count > 0 || (na.count == 0 && na.box.halfArea() >= nb.box.halfArea())) {
+            pairs(na.first, b, visit);
+            pairs(na.first + 1, b, visit);
+        } else {
+            pairs(a, nb.first, visit);
+            pairs(a, nb.first + 1, visit);
+        }
+    }
+};
+
+TriangleBvh::TriangleBvh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Impl& im = *impl_;
+    const size_t nv = mesh.positions.size();
+    im.positions.resize(nv);
+    for (size_t v = 0; v < nv; ++v) im.positions[v] = {mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z};
+    im.slot_of.assign(mesh.triangles.size(), kNone);
+    im.corners.reserve(mesh.triangles.size());
+    im.mesh_index.reserve(mesh.triangles.size());
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& tri = mesh.triangles[t];
+        if (tri[0] >= nv || tri[1] >= nv || tri[2] >= nv) continue;
+        if (!finite(mesh.positions[tri[0]]) || !finite(mesh.positions[tri[1]]) || !finite(mesh.positions[tri[2]])) continue;
+        im.corners.push_back(tri);
+        im.mesh_index.push_back(uint32_t(t));
+    }
+    im.build();
+    im.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+TriangleBvh::~TriangleBvh() = default;
+
+size_t TriangleBvh::triangleCount() const { return impl_->corners.size(); }
+int TriangleBvh::depth() const { return impl_->depth; }
+double TriangleBvh::buildMs() const { return impl_->build_ms; }
+
+unsigned TriangleBvh::workerCount(unsigned workers) {
+    if (workers > 0) return workers;
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+std::optional<RayHit> TriangleBvh::firstHit(const Vec3& origin, const Vec3& direction, int64_t skip,
+                                            double max_distance_mm) const {
+    const Impl& im = *impl_;
+    if (im.nodes.empty() || !finite(origin) || !finite(direction)) return std::nullopt;
+    if (direction.x == 0 && direction.y == 0 && direction.z == 0) return std::nullopt;
+    const V3 o{origin.x, origin.y, origin.z}, d{direction.x, direction.y, direction.z};
+    const RaySetup r = setup(o, d);
+    const uint32_t skip_slot = (skip >= 0 && size_t(skip) < im.slot_of.size()) ? im.slot_of[size_t(skip)] : kNone;
+
+    const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    // Ray parameter limit; a hit exactly at the limit still counts.
+    double best_t = max_distance_mm / len;
+    uint32_t best_slot = kNone;
+    V3 best_point{};
+    uint32_t stack[kStackSize];
+    int top = 0;
+    double t_enter = 0;
+    if (!rayBox(o, d, im.nodes[0].box, best_t, t_enter)) return std::nullopt;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& n = im.nodes[stack[--top]];
+        if (!rayBox(o, d, n.box, best_t, t_enter)) continue;
+        if (n.count > 0) {
+            for (uint32_t s = n.first; s < n.first + n.count; ++s) {
+                if (s == skip_slot) continue;
+                V3 p;
+                const double t = hitTriangle(r, im.corner(s, 0), im.corner(s, 1), im.corner(s, 2), best_t, p);
+                // Ties go to the lower mesh index, whatever the tree's order.
+                if (t >= 0 && (t < best_t || (t == best_t && (best_slot == kNone || im.mesh_index[s] < im.mesh_index[best_slot])))) {
+                    best_t = t;
+                    best_slot = s;
+                    best_point = p;
+                }
+            }
+            continue;
+        }
+        double tl = 0, tr = 0;
+        const bool hl = rayBox(o, d, im.nodes[n.first].box, best_t, tl);
+        const bool hr = rayBox(o, d, im.nodes[n.first + 1].box, best_t, tr);
+        assert(top + 2 <= kStackSize);
+        if (hl && hr) {
+            // Push the farther child first so the nearer one is visited first.
+            stack[top++] = tl <= tr ? n.first + 1 : n.first;
+            stack[top++] = tl <= tr ? n.first : n.first + 1;
+        } else if (hl) {
+            stack[top++] = n.first;
+        } else if (hr) {
+            stack[top++] = n.first + 1;
+        }
+    }
+    if (best_slot == kNone) return std::nullopt;
+    RayHit h;
+    h.point_mm = {best_point[0], best_point[1], best_point[2]};
+    h.distance_mm = best_t * len;
+    h.triangle = im.mesh_index[best_slot];
+    return h;
+}
+
+ClosestPoint TriangleBvh::closest(const Vec3& query, int64_t hint, double enough_mm) const {
+    const Impl& im = *impl_;
+    ClosestPoint out;
+    out.distance_mm = kInf;
+    if (im.nodes.empty() || !finite(query)) return out;
+    const V3 p{query.x, query.y, query.z};
+    double best2 = kInf;
+    const double enough2 = enough_mm > 0 ? enough_mm * enough_mm : -1.0;
+    uint32_t best_slot = kNone;
+    V3 best_point{};
+    auto visit = [&](uint32_t s) {
+        const V3 q = closestOnTriangle(p, im.corner(s, 0), im.corner(s, 1), im.corner(s, 2));
+        const double d2 = dot(sub(p, q), sub(p, q));
+        if (d2 < best2) {
+            best2 = d2;
+            best_slot = s;
+            best_point = q;
+        }
+    };
+    if (hint >= 0 && size_t(hint) < im.slot_of.size() && im.slot_of[size_t(hint)] != kNone)
+        visit(im.slot_of[size_t(hint)]);
+
+    uint32_t stack[kStackSize];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0 && !(best2 <= enough2)) {
+        const Node& n = im.nodes[stack[--top]];
+        if (n.box.distance2(p) >= best2) continue;
+        if (n.count > 0) {
+            for (uint32_t s = n.first; s < n.first + n.count; ++s) visit(s);
+            continue;
+        }
+        const double dl = im.nodes[n.first].box.distance2(p), dr = im.nodes[n.first + 1].box.distance2(p);
+        const uint32_t near = dl <= dr ? n.first : n.first + 1, far = dl <= dr ? n.first + 1 : n.first;
+        assert(top + 2 <= kStackSize);
+        if (std::max(dl, dr) < best2) stack[top++] = far;
+        if (std::min(dl, dr) < best2) stack[top++] = near;
+    }
+    out.distance_mm = std::sqrt(best2);
+    out.point_mm = {best_point[0], best_point[1], best_point[2]};
+    out.triangle = im.mesh_index[best_slot];
+    return out;
+}
+
+void TriangleBvh::forEachOverlappingPair(const std::function<void(unsigned, uint32_t, uint32_t)>& visit,
+                                         unsigned workers) const {
+    const Impl& im = *impl_;
+    if (im.nodes.empty()) return;
+    workers = workerCount(workers);
+    // Cut the traversal into tasks: (a, b) node pairs whose pairs are
+    // disjoint and together cover all. Splitting the within-subtree tasks
+    // of the top levels gives a few hundred tasks for the workers to share.
+    struct Task {
+        uint32_t a, b;
+    };
+    std::vector<Task> tasks{{0, 0}};
+    for (int level = 0; level < 8 && workers > 1; ++level) {
+        std::vector<Task> next;
+        for (const Task& t : tasks) {
+            const Node& n = im.nodes[t.a];
+            if (t.a != t.b || n.count > 0) {
+                next.push_back(t);
+                continue;
+            }
+            next.push_back({n.first, n.first});
+            next.push_back({n.first + 1, n.first + 1});
+            next.push_back({n.first, n.first + 1});
+        }
+        tasks.swap(next);
+    }
+    std::atomic<size_t> next_task{0};
+    std::atomic<bool> failed{false};
+    std::exception_ptr error;  // the first exception a visit threw; written once, under `failed`
+    auto work = [&](unsigned worker) {
+        auto call = [&](uint32_t a, uint32_t b) { visit(worker, a, b); };
+        try {
+            for (size_t i; !failed.load() && (i = next_task.fetch_add(1)) < tasks.size();)
+                im.pairs(tasks[i].a, tasks[i].b, call);
+        } catch (...) {
+            if (!failed.exchange(true)) error = std::current_exception();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work, w);
+    work(0);
+    for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
+}
+
+}  // namespace tsf
