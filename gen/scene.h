@@ -188,6 +188,11 @@ struct Scene {
 ///     where they fit; a note says when one does not.
 Scene buildScene(const HexField& field, const SceneParams& params);
 
+/// (v - lo) / (hi - lo) for finite v, lo < hi, also when hi - lo exceeds the
+/// largest double (then computed on the halves). The OpenSCAD library's
+/// _tsf_height_mm does the same, so both give the same heights.
+double spanFraction(double v, double lo, double hi);
+
 /// Snap a millimetre value to the z grid (round half away from zero).
 int64_t snapUnits(double mm, double snap_mm);
 
