@@ -3,10 +3,11 @@
 # it after ./run-tests.sh. Needs clang 14 (setup.sh installs it).
 #
 #   build-asan/  clang, AddressSanitizer + UndefinedBehaviorSanitizer (+ the
-#                libFuzzer coverage hooks): the fuzz targets and the test
-#                binaries of the readers, writers, Scene, mesher, verifier and
-#                haptics; LeakSanitizer on, lib3mf/libzip leaks suppressed by
-#                name (tests/sanitizers/lsan.supp).
+#                libFuzzer coverage hooks): the fuzz targets and
+#                test_library_asan, the library-level tests of the readers,
+#                writers, Scene, mesher and haptics; LeakSanitizer on,
+#                lib3mf/libzip leaks suppressed by name
+#                (tests/sanitizers/lsan.supp).
 #   build-tsan/  clang, ThreadSanitizer: the haptic loop and Falcon driver
 #                threads (test_haptics_threads).
 #
@@ -33,10 +34,6 @@ seconds=${TSF_FUZZ_SECONDS:-5}
 stamp() { date +%s; }
 t_start=$(stamp)
 
-# The test binaries built and run under ASan + UBSan: everything but the
-# OpenSCAD engine tests (test_scad_engines: minutes of OpenSCAD under a
-# sanitizer tsf's code is not in) and the layering check (no code run).
-asan_tests=(test_util test_io test_mesh_io test_gen test_verify test_haptics test_scad)
 fuzzers=(csv_grid_fuzzer point_csv_fuzzer pgm_fuzzer png_fuzzer esri_ascii_fuzzer stl_fuzzer three_mf_fuzzer
          obj_fuzzer off_fuzzer scene_json_fuzzer openscad_messages_fuzzer replay_csv_fuzzer falcon_packet_fuzzer)
 
@@ -51,7 +48,7 @@ if (( asan || fuzz )); then
         -DTSF_BUILD_FUZZERS=ON -DTSF_BUILD_BENCH=OFF >/dev/null
   targets=()
   (( fuzz )) && targets+=("${fuzzers[@]}")
-  (( asan )) && targets+=(tsf tsf_fake_libusb "${asan_tests[@]}")
+  (( asan )) && targets+=(test_library_asan)
   cmake --build build-asan -j"$jobs" --target "${targets[@]}"
   echo "run-sanitizers: ASan + UBSan build $(( $(stamp) - t_start )) s"
 fi
@@ -78,8 +75,7 @@ fi
 
 if (( asan )); then
   t0=$(stamp)
-  labels=$(printf '%s|' "${asan_tests[@]#test_}")
-  ctest --test-dir build-asan --output-on-failure -j"$jobs" -L "^(${labels%|})\$" --timeout 900
+  build-asan/tests/test_library_asan --gtest_brief=1
   echo "run-sanitizers: ASan + UBSan tests $(( $(stamp) - t0 )) s"
 fi
 
