@@ -324,8 +324,6 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     // A cell without data is a pit below the floor (half the base, at most
     // 1 mm): a finger finds a hole, never the lowest value.
     s.nodata_pit_units = std::min<int64_t>(base_units / 2, std::max<int64_t>(1, snapUnits(1.0, s.z_snap_mm)));
-    if (s.cells_nodata_kept > 0 && s.nodata_pit_units == 0)
-        s.notes.push_back("the base is one z step thick: cells without data sit at the floor, like the lowest value");
     s.top.resize(kept);
     s.bottom.resize(kept);
     if (params.bottom == Bottom::Flat) {
@@ -348,6 +346,9 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         }
         s.floor_units = 0;
         s.mirror_thickness_units = max_step + base_units;
+        // A pit is cut from both faces of the slab: leave the cell at least
+        // one step thick (a flat field's slab is only the base thick).
+        s.nodata_pit_units = std::min(s.nodata_pit_units, (s.mirror_thickness_units - 1) / 2);
         for (size_t k = 0; k < kept; ++k) {
             s.bottom[k] = h_units[size_t(g.index(s.col[k], s.row[k]))];
             s.top[k] = s.bottom[k] + s.mirror_thickness_units;
@@ -357,6 +358,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             }
         }
     }
+    if (s.cells_nodata_kept > 0 && s.nodata_pit_units == 0)
+        s.notes.push_back("the base is one z step thick: cells without data sit at the floor, like the lowest value");
     if (!dropped_by_concave.empty()) {
         // What the convex hull would have printed there: empty pillars (floor
         // height, or a pit without data) of the full slab.

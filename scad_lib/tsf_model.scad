@@ -217,8 +217,11 @@ function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear",
                                       : round(_tsf_height_mm(v, transfer, baseline, value_max, max_height_mm) / z_step_mm)]],
         base_units = round(base_mm / z_step_mm),
         plain = mirrored ? tsf_mirrored_spans(heights, base_units) : tsf_flat_spans(heights, base_units),
-        // Same rule as tsf's Scene (nodata_pit_units): half the base, at most 1 mm, at least one step.
-        pit = min(floor(base_units / 2), max(1, round(1 / z_step_mm))),
+        // Same rule as tsf's Scene (nodata_pit_units): half the base, at most 1 mm, at least one step;
+        // mirrored, at most what leaves the pit cell one step of the slab.
+        flat_pit = min(floor(base_units / 2), max(1, round(1 / z_step_mm))),
+        some = [for (row = plain) for (span = row) if (!is_undef(span)) span][0],
+        pit = mirrored ? min(flat_pit, floor((some[1] - some[0] - 1) / 2)) : flat_pit,
         spans = [for (r = [0:rows - 1]) [for (c = [0:cols - 1])
                      values[r][c] == "nodata" ? [plain[r][c][0] + (mirrored ? pit : 0), plain[r][c][1] - pit]
                                               : plain[r][c]]])

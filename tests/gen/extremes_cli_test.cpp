@@ -80,6 +80,9 @@ std::vector<Extreme> extremes() {
         {"denormals", csvOf({{"4.9e-324", "1e-323", "0"}, {"2.5e-320", "0", "4.9e-324"}}), ""},
         {"mixed_signs", csvOf({{"-3", "2", "-1"}, {"4", "-5", "6"}, {"-7", "8", "-9"}}), ""},
         {"nan_cells", csvOf({{"1", "nan", "3"}, {"nan", "5", "nan"}, {"7", "nan", "9"}}), ""},
+        // Found by the sanitizer run: a mirrored slab only the base thick had
+        // no room for a pit from both faces.
+        {"flat_mirrored_with_nan", csvOf({{"nan", "0"}, {"0", "0"}}), "--mirror --cull none"},
         {"checkerboard", [] {
              std::vector<std::vector<std::string>> g(6, std::vector<std::string>(6));
              for (int r = 0; r < 6; ++r)

@@ -150,6 +150,17 @@ TEST(Scene, ContradictoryValueOptionsAreErrors) {
     EXPECT_NO_THROW(buildScene(fieldFromRows({{2, 2}}), p));
 }
 
+TEST(Scene, AMirroredFlatFieldWithoutDataCellsKeepsThemOneStepThick) {
+    // The slab of a flat field is only the base thick; a pit from both faces
+    // of half the base each used to leave a cell with bottom == top.
+    const Scene s = buildScene(fieldFromRows({{kNaN, 0}, {0, 0}}), smallParams(Bottom::Mirrored, Cull::None));
+    const int32_t pit = s.keptAt(0, 0);
+    ASSERT_GE(pit, 0);
+    EXPECT_EQ(s.kind[size_t(pit)], CellKind::NoData);
+    EXPECT_EQ(s.top[size_t(pit)] - s.bottom[size_t(pit)], 2);  // 2000 - 2 * 999 units
+    EXPECT_EQ(s.nodata_pit_units, 999);
+}
+
 TEST(Scene, FitsTheGridIntoTheRequestedBox) {
     SceneParams p = smallParams();
     p.pitch_mm = 0;
