@@ -9,7 +9,8 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-# Everything tsf builds and tests with. Debian packages only.
+# Everything tsf builds and tests with. Debian packages only. (clang-14 and
+# its runtimes: the sanitizer and fuzzer builds of run-sanitizers.sh.)
 DEPS=(
   build-essential cmake ninja-build pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
@@ -17,6 +18,7 @@ DEPS=(
   libcli11-dev nlohmann-json3-dev libgdal-dev liblouis-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   openscad admesh xvfb xauth prusa-slicer
+  clang-14 libclang-rt-14-dev
 )
 
 mode="${1:-all}"

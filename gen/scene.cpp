@@ -26,10 +26,19 @@ namespace tsf {
 
 int64_t snapUnits(double mm, double snap_mm) { return int64_t(std::llround(mm / snap_mm)); }
 
+double spanFraction(double v, double lo, double hi) {
+    const double span = hi - lo;
+    if (std::isfinite(span)) return (v - lo) / span;
+    // Two finite values can lie further apart than the largest double
+    // (1e308 and -1e308): halve them first, which cannot overflow and is
+    // exact for every normal number.
+    return (v / 2 - lo / 2) / (hi / 2 - lo / 2);
+}
+
 double ValueMapping::heightMm(double v) const {
     if (std::isnan(v)) return 0.0;
     if (!(value_max > baseline)) return v > baseline ? max_height_mm : 0.0;  // constant field
-    const double t = std::clamp((v - baseline) / (value_max - baseline), 0.0, 1.0);
+    const double t = std::clamp(spanFraction(v, baseline, value_max), 0.0, 1.0);
     switch (transfer) {
         case Transfer::Sqrt: return max_height_mm * std::sqrt(t);
         case Transfer::Log: return max_height_mm * std::log10(1.0 + 99.0 * t) / 2.0;
@@ -43,7 +52,11 @@ double ValueMapping::valueAt(double h) const {
     double t = s;
     if (transfer == Transfer::Sqrt) t = s * s;
     if (transfer == Transfer::Log) t = (std::pow(10.0, 2.0 * s) - 1.0) / 99.0;
-    return baseline + t * (value_max - baseline);
+    const double span = value_max - baseline;
+    if (std::isfinite(span)) return baseline + t * span;
+    // A span beyond the largest double (see spanFraction): interpolate the
+    // halves, and keep rounding from stepping past the ends.
+    return std::clamp(2.0 * (baseline / 2 + t * (value_max / 2 - baseline / 2)), baseline, value_max);
 }
 
 namespace {
@@ -156,6 +169,22 @@ ValueMapping resolveMapping(const HexField& field, const SceneParams& p, std::ve
         default: m.baseline = vmin >= 0 ? 0.0 : vmin; break;
     }
     m.value_max = p.value_max ? *p.value_max : vmax;
+    // Options that contradict each other or the data are errors, not a flat
+    // block reported as a constant field.
+    if (p.value_max && !(*p.value_max > m.baseline)) {
+        std::ostringstream s;
+        s.precision(17);
+        s << "the value at full height (--value-max " << *p.value_max << ") must be above the baseline ("
+          << m.baseline << ", from --baseline " << toString(p.baseline_mode) << ")";
+        throw InputError(s.str());
+    }
+    if ((p.baseline_mode == BaselineMode::Value || p.baseline_mode == BaselineMode::Zero) && vmax < m.baseline) {
+        std::ostringstream s;
+        s.precision(17);
+        s << "every value is below the baseline (--baseline " << m.baseline << "; the largest value is " << vmax
+          << "): nothing would rise above the floor";
+        throw InputError(field.source, 0, 0, s.str());
+    }
     if (!(m.value_max > m.baseline)) {
         std::ostringstream s;
         s << "constant field (every value is " << vmin << (vmin == vmax ? "" : " or below the baseline")
@@ -299,8 +328,6 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     // A cell without data is a pit below the floor (half the base, at most
     // 1 mm): a finger finds a hole, never the lowest value.
     s.nodata_pit_units = std::min<int64_t>(base_units / 2, std::max<int64_t>(1, snapUnits(1.0, s.z_snap_mm)));
-    if (s.cells_nodata_kept > 0 && s.nodata_pit_units == 0)
-        s.notes.push_back("the base is one z step thick: cells without data sit at the floor, like the lowest value");
     s.top.resize(kept);
     s.bottom.resize(kept);
     if (params.bottom == Bottom::Flat) {
@@ -323,6 +350,9 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         }
         s.floor_units = 0;
         s.mirror_thickness_units = max_step + base_units;
+        // A pit is cut from both faces of the slab: leave the cell at least
+        // one step thick (a flat field's slab is only the base thick).
+        s.nodata_pit_units = std::min(s.nodata_pit_units, (s.mirror_thickness_units - 1) / 2);
         for (size_t k = 0; k < kept; ++k) {
             s.bottom[k] = h_units[size_t(g.index(s.col[k], s.row[k]))];
             s.top[k] = s.bottom[k] + s.mirror_thickness_units;
@@ -332,6 +362,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             }
         }
     }
+    if (s.cells_nodata_kept > 0 && s.nodata_pit_units == 0)
+        s.notes.push_back("the base is one z step thick: cells without data sit at the floor, like the lowest value");
     if (!dropped_by_concave.empty()) {
         // What the convex hull would have printed there: empty pillars (floor
         // height, or a pit without data) of the full slab.

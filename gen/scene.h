@@ -205,6 +205,11 @@ struct Scene {
 ///     dimple; a note says when a tilt was clamped.
 Scene buildScene(const HexField& field, const SceneParams& params);
 
+/// (v - lo) / (hi - lo) for finite v, lo < hi, also when hi - lo exceeds the
+/// largest double (then computed on the halves). The OpenSCAD library's
+/// _tsf_height_mm does the same, so both give the same heights.
+double spanFraction(double v, double lo, double hi);
+
 /// Snap a millimetre value to the z grid (round half away from zero).
 int64_t snapUnits(double mm, double snap_mm);
 

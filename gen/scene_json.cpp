@@ -5,6 +5,7 @@
 #include "gen/legend_scene.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -12,6 +13,7 @@
 
 #include "gen/error.h"
 #include "gen/util/atomic_file.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf {
 namespace {
@@ -447,11 +449,14 @@ Scene sceneFromJson(const json& j) {
     return s;
 }
 
-void writeSceneJson(const Scene& scene, const std::string& path) {
+void writeSceneJson(const Scene& scene, const std::string& path, const SceneModelRecord* model) {
     // Everything but the cells indented; then one cell per line, so a person
     // can find a cell with a text editor and the file stays compact. Cells are
     // streamed one at a time: a million-cell scene never exists as a JSON tree.
-    std::string head = sceneHeadJson(scene).dump(2);
+    json head_json = sceneHeadJson(scene);
+    if (model)
+        head_json["model"] = {{"file", model->file}, {"bytes", model->stamp.bytes}, {"fnv1a64", toHex(model->stamp.fnv1a64)}};
+    std::string head = head_json.dump(2);
     head.pop_back();  // the closing brace
     while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
     writeFileAtomically(path, [&](std::ostream& out) {
@@ -462,7 +467,38 @@ void writeSceneJson(const Scene& scene, const std::string& path) {
     });
 }
 
-Scene parseSceneJson(const std::string& text, const std::string& path) {
+namespace {
+
+std::optional<SceneModelRecord> modelRecordFromJson(const json& j) {
+    if (!j.is_object() || !j.contains("model")) return std::nullopt;
+    const json& m = j["model"];
+    if (!m.is_object()) fail("model", std::string("expected an object, found ") + typeName(m));
+    SceneModelRecord r;
+    r.file = getString(m, "model", "file");
+    r.stamp.bytes = getInt(m, "model", "bytes");
+    if (r.file.empty() || r.file.find('/') != std::string::npos) fail("model.file", "expected a file name without folder");
+    if (r.stamp.bytes < 0) fail("model.bytes", "must not be negative");
+    if (!parseHex64(getString(m, "model", "fnv1a64"), r.stamp.fnv1a64))
+        fail("model.fnv1a64", "expected 16 lower-case hex digits");
+    return r;
+}
+
+}  // namespace
+
+void checkSceneModelRecord(const SceneModelRecord& record, const std::string& sidecar_path,
+                           const std::string& model_path) {
+    if (std::filesystem::path(model_path).filename().string() != record.file) return;
+    const FileStamp now = stampFile(model_path);
+    if (now == record.stamp) return;
+    throw InputError(sidecar_path, 0, 0,
+                     "was written with another version of " + record.file + " (" + std::to_string(record.stamp.bytes) +
+                         " bytes, hash " + toHex(record.stamp.fnv1a64) + "; " + model_path + " has " +
+                         std::to_string(now.bytes) + " bytes, hash " + toHex(now.fnv1a64) +
+                         "): the model and its sidecar come from different runs of tsf gen (one may have been "
+                         "interrupted); run tsf gen again");
+}
+
+Scene parseSceneJson(const std::string& text, const std::string& path, std::optional<SceneModelRecord>* model) {
     json j;
     try {
         j = json::parse(text);
@@ -475,18 +511,16 @@ Scene parseSceneJson(const std::string& text, const std::string& path) {
         throw InputError(path, 0, 0, "not valid JSON: " + withoutPrefix(e.what()));
     }
     try {
-        return sceneFromJson(j);
+        Scene s = sceneFromJson(j);
+        if (model) *model = modelRecordFromJson(j);
+        return s;
     } catch (const InputError& e) {
         throw InputError(path, 0, 0, e.detail());
     }
 }
 
-Scene readSceneJson(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, 0, 0, "cannot open the scene file");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw InputError(path, 0, 0, "cannot read the scene file");
-    return parseSceneJson(text, path);
+Scene readSceneJson(const std::string& path, std::optional<SceneModelRecord>* model) {
+    return parseSceneJson(readFileBytes(path, kMaxSceneJsonBytes), path, model);
 }
 
 }  // namespace tsf

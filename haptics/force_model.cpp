@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -36,11 +37,17 @@ double approach(double value, double target, double max_step) noexcept {
 }
 
 /// Scales v down to magnitude `limit` if it is longer; keeps its direction.
+/// Guarantees glm::length(result) <= limit: v * (limit / m) can come out an
+/// ulp or two long after rounding, so it is shrunk by two ulps at a time
+/// until it is not (a few steps; 64 would shrink it by 3e-14).
 Vec3 clampMagnitude(const Vec3& v, double limit, bool* clamped = nullptr) noexcept {
     const double m = glm::length(v);
     if (m > limit && m > 0.0) {
         if (clamped) *clamped = true;
-        return v * (limit / m);
+        Vec3 r = v * (limit / m);
+        constexpr double kUlpShrink = 1.0 - 2.0 * std::numeric_limits<double>::epsilon();
+        for (int step = 0; step < 64 && glm::length(r) > limit; ++step) r *= kUlpShrink;
+        return r;
     }
     return v;
 }
@@ -340,7 +347,9 @@ ForceOutput computeForce(const ForceModel& model, const ForceState& state, const
     const double rest_mag = glm::length(rest);
     const double scale = rest_mag > room ? room / rest_mag : 1.0;
     if (scale < 1.0 || clamped) out.flags |= kFlagClamped;
-    out.force_N = rest * scale + damping;
+    // The sum of two clamped parts can still round an ulp past the limit;
+    // the header promises <= max_force_N, so the sum is clamped too.
+    out.force_N = clampMagnitude(rest * scale + damping, P.max_force_N);
     s.observed_force_N = gain * f_env * scale + damping;
     if (!isFinite(out.force_N) || !std::isfinite(s.energy_J) || !isFinite(s.stick_point_m)) {
         out.force_N = Vec3(0.0);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "gen/error.h"
+#include "gen/util/file_bytes.h"
 
 namespace tsf::haptics {
 namespace {
@@ -116,11 +117,7 @@ std::vector<ReplaySample> parseReplayCsv(const std::string& text, const std::str
 }
 
 std::vector<ReplaySample> readReplayFile(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw InputError(path, 0, 0, "cannot open the replay file");
-    std::ostringstream ss;
-    ss << f.rdbuf();
-    return parseReplayCsv(ss.str(), path);
+    return parseReplayCsv(readFileBytes(path, kMaxReplayFileBytes), path);
 }
 
 ReplayDevice::ReplayDevice(std::vector<ReplaySample> samples, std::string source, DeviceLimits limits)

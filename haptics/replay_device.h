@@ -13,6 +13,7 @@
 // move nothing: the recording is kinematic.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,14 @@ struct ReplaySample {
     uint32_t buttons = 0;
 };
 
-/// Parses a replay file. Throws tsf::InputError with file, line and column
-/// for a missing column, a bad number, time not increasing, a position
-/// outside +-1 m, or a file with no samples.
+/// Largest replay file read (bytes): a one-hour log at 1 kHz is about
+/// 250 MB; the cap keeps an endless stream from filling memory.
+inline constexpr int64_t kMaxReplayFileBytes = int64_t(1) << 30;  // 1 GiB
+
+/// Parses a replay file (at most kMaxReplayFileBytes). Throws
+/// tsf::InputError with file, line and column for a missing column, a bad
+/// number, time not increasing, a position outside +-1 m, or a file with no
+/// samples; naming the file for one that is too large or a device.
 std::vector<ReplaySample> readReplayFile(const std::string& path);
 
 /// The same from text already in memory (source names it in errors).

@@ -225,8 +225,11 @@ function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear",
                                       : round(_tsf_height_mm(v, transfer, baseline, value_max, max_height_mm) / z_step_mm)]],
         base_units = round(base_mm / z_step_mm),
         plain = mirrored ? _tsf_mirrored_spans(heights, base_units, min_thickness_units) : tsf_flat_spans(heights, base_units),
-        // Same rule as tsf's Scene (nodata_pit_units): half the base, at most 1 mm, at least one step.
-        pit = min(floor(base_units / 2), max(1, round(1 / z_step_mm))),
+        // Same rule as tsf's Scene (nodata_pit_units): half the base, at most 1 mm, at least one step;
+        // mirrored, at most what leaves the pit cell one step of the slab.
+        flat_pit = min(floor(base_units / 2), max(1, round(1 / z_step_mm))),
+        some = [for (row = plain) for (span = row) if (!is_undef(span)) span][0],
+        pit = mirrored ? min(flat_pit, floor((some[1] - some[0] - 1) / 2)) : flat_pit,
         spans = [for (r = [0:rows - 1]) [for (c = [0:cols - 1])
                      values[r][c] == "nodata" ? [plain[r][c][0] + (mirrored ? pit : 0), plain[r][c][1] - pit]
                                               : plain[r][c]]])
@@ -305,8 +308,9 @@ function _tsf_lattice_x(i, cell_mm) = i * cell_mm * 0.5;
 function _tsf_lattice_y(j, cell_mm) = j * cell_mm / (2 * sqrt(3));
 function _tsf_centre_ij(col, row, rows) = [2 * col + row % 2 + 1, 3 * (rows - 1 - row) + 2];
 
-// Largest magnitude accepted as a finite number (OpenSCAD has no isfinite()).
-function _tsf_is_finite(v) = is_num(v) && abs(v) < 1e308;
+// A finite number: at most the largest double (OpenSCAD has no isfinite();
+// inf and nan fail the comparison).
+function _tsf_is_finite(v) = is_num(v) && abs(v) <= 1.7976931348623157e308;
 function _tsf_is_count(v) = is_num(v) && v >= 0 && v == floor(v) && v < 1e15;
 
 // ValueMapping::heightMm of tsf (gen/scene.cpp), without argument checks.
@@ -314,10 +318,16 @@ function _tsf_is_count(v) = is_num(v) && v >= 0 && v == floor(v) && v < 1e15;
 function _tsf_height_mm(v, transfer, baseline, value_max, h_max) =
     !is_num(v) ? 0
     : !(value_max > baseline) ? (v > baseline ? h_max : 0)
-    : let(t = min(max((v - baseline) / (value_max - baseline), 0), 1))
+    : let(t = min(max(_tsf_span_fraction(v, baseline, value_max), 0), 1))
       transfer == "sqrt" ? h_max * sqrt(t)
     : transfer == "log" ? h_max * log(1 + 99 * t) / 2
     : h_max * t;
+
+// spanFraction of tsf (gen/scene.cpp): (v - lo) / (hi - lo), on the halves
+// when hi - lo is beyond the largest double (1e308 and -1e308).
+function _tsf_span_fraction(v, lo, hi) =
+    let(span = hi - lo)
+    _tsf_is_finite(span) ? (v - lo) / span : (v / 2 - lo / 2) / (hi / 2 - lo / 2);
 
 // Neighbour k (0 east, 1 north-east, 2 north-west, 3 west, 4 south-west,
 // 5 south-east) of (col, row) as [col, row]; may lie outside the grid.

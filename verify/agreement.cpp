@@ -446,7 +446,9 @@ AgreementResult compareMeshes(const Mesh& model, const Mesh& reference, const st
             if (p.distance_mm > tol) worst.push_back({p, false});
         std::sort(worst.begin(), worst.end(),
                   [](const auto& x, const auto& y) { return x.first.distance_mm > y.first.distance_mm; });
-        for (const auto& [p, model_side] : worst) {
+        for (const auto& [place, model_side] : worst) {
+            // A plain reference: clang 14 does not let a lambda capture a structured binding.
+            const Direction::Place& p = place;
             if (dist.worst.size() >= options.max_offenders) break;
             // Neighbouring triangles share their farthest corner: list a
             // place once (places closer than two sampling radii are one).

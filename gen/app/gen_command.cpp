@@ -94,6 +94,16 @@ void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
 
 // Grids above this many cells print progress lines without being asked.
 constexpr int64_t kProgressCells = 250000;
+// Input files above this size say so before they are read (seconds of work).
+constexpr int64_t kProgressInputBytes = int64_t(64) << 20;
+
+void announceLargeInput(const std::string& input, bool progress) {
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(input, ec);
+    if (ec || progress || int64_t(bytes) < kProgressInputBytes) return;
+    std::fprintf(stderr, "tsf: reading %s (%lld MiB), this may take a while\n", input.c_str(),
+                 static_cast<long long>(bytes >> 20));
+}
 // Above this many triangles the self-check skips CGAL's self-intersection test
 // and the printability rays (minutes at 10^7 triangles); the mesher builds no
 // intersections by construction and the test suite checks that on large
@@ -131,6 +141,7 @@ void runGen(GenCommandOptions o) {
     summary.printer_notes = applyPrinterFit(o.printer, o.given, o.gen);
 
     timer.begin("reading");
+    announceLargeInput(o.gen.input, o.progress);
     const HexField field = loadField(o.gen);
     summary.field = &field;
     if (field.grid.cellCount() > kProgressCells && !o.progress && !o.json)
@@ -196,9 +207,15 @@ void runGen(GenCommandOptions o) {
                                                                                      : "OpenSCAD library"});
     }
     if (!o.no_sidecar) {
-        // The scene sidecar lets `tsf verify --scene` check any mesh of this model later.
+        // The scene sidecar lets `tsf verify --scene` check any mesh of this
+        // model later. It is committed after the model and names the model
+        // file's size and hash: a run killed between the two leaves a new
+        // model beside an older sidecar, and `tsf verify --scene` refuses
+        // that pair instead of judging one model by another's data.
         const std::string sidecar = sidecarPath(o);
-        writeSceneJson(scene, sidecar);
+        std::optional<SceneModelRecord> model;
+        if (!o.output.empty()) model = SceneModelRecord{std::filesystem::path(o.output).filename().string(), stampFile(o.output)};
+        writeSceneJson(scene, sidecar, model ? &*model : nullptr);
         summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
     }
     timer.end();

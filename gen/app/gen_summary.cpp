@@ -19,8 +19,14 @@ std::string mappingText(const Scene& s) {
     std::ostringstream o;
     o << toString(m.transfer) << ": value " << m.baseline << " -> 0 mm, value " << m.value_max << " -> "
       << fmt("%.2f", m.max_height_mm) << " mm above the floor";
-    if (m.transfer == Transfer::Linear && m.value_max > m.baseline && m.max_height_mm > 0)
-        o << " (1 mm = " << fmt("%.4g", (m.value_max - m.baseline) / m.max_height_mm) << " data units)";
+    if (m.transfer == Transfer::Linear && m.value_max > m.baseline && m.max_height_mm > 0) {
+        // The span of two finite values can exceed the largest double
+        // (1e308 and -1e308): divide the halves, then double.
+        double per_mm = (m.value_max - m.baseline) / m.max_height_mm;
+        if (!std::isfinite(per_mm)) per_mm = 2.0 * ((m.value_max / 2 - m.baseline / 2) / m.max_height_mm);
+        o << " (1 mm = " << (std::isfinite(per_mm) ? fmt("%.4g", per_mm) : std::string("more than 1.797e+308"))
+          << " data units)";
+    }
     return o.str();
 }
 }  // namespace

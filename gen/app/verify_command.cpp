@@ -65,7 +65,11 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
         g.input = o.against;
         scene = buildScene(loadField(g), g.scene);
     } else if (!o.scene.empty()) {
-        scene = readSceneJson(o.scene);
+        std::optional<SceneModelRecord> written_with;
+        scene = readSceneJson(o.scene, &written_with);
+        // A sidecar beside a newer (or older) model of the same name: refuse
+        // rather than judge this model by another run's data.
+        if (written_with) checkSceneModelRecord(*written_with, o.scene, o.model);
     }
 
     VerifyOptions vo;

@@ -96,6 +96,10 @@ bool readPixels(png_structp png, png_bytepp rows) {
     return true;
 }
 
+// Largest expansion of deflate data (zlib's technical details: 1032:1),
+// rounded up.
+constexpr double kMaxDeflateRatio = 1040.0;
+
 struct PngGuard {
     png_structp png = nullptr;
     png_infop info = nullptr;
@@ -127,6 +131,16 @@ Raster parsePng(std::string_view bytes, const std::string& path) {
     if (layout.row_bytes < size_t(cols) * size_t(layout.channels * layout.bytes_per_sample))
         throw InputError(path, 0, 0, "invalid PNG: unexpected row size");
 
+    // Deflate expands at most about 1032 to 1: a file too small to hold the
+    // pixels its header claims is refused before they are allocated (a
+    // 235-byte PNG may claim 20000 x 5000 RGBA16, 800 MB).
+    const double pixel_bytes = double(layout.row_bytes) * double(rows);
+    if (pixel_bytes > kMaxDeflateRatio * double(bytes.size()))
+        throw InputError(path, 0, 0,
+                         "truncated or corrupt: the header claims " + std::to_string(cols) + " x " +
+                             std::to_string(rows) + " pixels (" + std::to_string(int64_t(pixel_bytes)) +
+                             " bytes), more than a file of " + std::to_string(bytes.size()) +
+                             " bytes can hold compressed");
     std::vector<unsigned char> pixels(layout.row_bytes * size_t(rows));
     std::vector<png_bytep> row_pointers(static_cast<size_t>(rows));
     for (int64_t r = 0; r < rows; ++r) row_pointers[size_t(r)] = pixels.data() + size_t(r) * layout.row_bytes;

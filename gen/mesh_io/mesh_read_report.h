@@ -3,10 +3,16 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace tsf {
+
+/// Largest mesh file any mesh reader reads (bytes): a binary STL of 80
+/// million triangles; the cap keeps a pipe that never ends from filling
+/// memory (devices such as /dev/zero are refused outright, file_bytes.h).
+inline constexpr int64_t kMaxMeshFileBytes = int64_t(4) << 30;  // 4 GiB
 
 struct MeshReadReport {
     /// "stl-binary", "stl-ascii", "3mf", "off" or "obj".

@@ -27,7 +27,7 @@ bool startsWithOffHeader(std::string_view bytes) {
 
 Mesh readMesh(const std::string& path, MeshReadReport* report) {
     const std::string ext = lowerCaseExtension(path);
-    const std::string bytes = readFileBytes(path);
+    const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
     if (ext == ".stl") return parseStl(bytes, path, report);
     if (ext == ".3mf") return parse3mf(bytes, path, report);
     if (ext == ".off") return parseOff(bytes, path, report);

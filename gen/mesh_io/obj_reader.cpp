@@ -153,7 +153,7 @@ Mesh parseObj(std::string_view text, const std::string& name, MeshReadReport* re
 }
 
 Mesh readObj(const std::string& path, MeshReadReport* report) {
-    const std::string bytes = readFileBytes(path);
+    const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
     return parseObj(bytes, path, report);
 }
 

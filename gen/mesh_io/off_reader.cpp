@@ -119,7 +119,7 @@ Mesh parseOff(std::string_view text, const std::string& name, MeshReadReport* re
 }
 
 Mesh readOff(const std::string& path, MeshReadReport* report) {
-    const std::string bytes = readFileBytes(path);
+    const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
     return parseOff(bytes, path, report);
 }
 

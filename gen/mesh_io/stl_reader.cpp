@@ -179,7 +179,7 @@ Mesh parseStl(std::string_view bytes, const std::string& name, MeshReadReport* r
 }
 
 Mesh readStl(const std::string& path, MeshReadReport* report) {
-    const std::string bytes = readFileBytes(path);
+    const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
     return parseStl(bytes, path, report);
 }
 

@@ -261,7 +261,7 @@ Mesh parse3mf(std::string_view bytes, const std::string& name, MeshReadReport* r
 }
 
 Mesh read3mf(const std::string& path, MeshReadReport* report) {
-    const std::string bytes = readFileBytes(path);
+    const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
     return parse3mf(bytes, path, report);
 }
 

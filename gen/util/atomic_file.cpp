@@ -2,12 +2,14 @@
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <sys/stat.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include "gen/error.h"
@@ -39,7 +41,56 @@ void syncFolder(const std::string& folder) {
     ::close(fd);
 }
 
+// The target's file name as its temporary files start with it (cut to
+// kMaxNameStemChars, so the temporary name fits NAME_MAX).
+std::string nameStem(const std::string& target_path) {
+    std::string stem = std::filesystem::path(target_path).filename().string();
+    if (stem.size() > kMaxNameStemChars) stem.resize(kMaxNameStemChars);
+    return stem;
+}
+
+// "<digits>-<digits>" as a pid (0 if the text is not exactly that).
+pid_t pidOfSuffix(const std::string& suffix) {
+    const size_t dash = suffix.find('-');
+    if (dash == 0 || dash == std::string::npos || dash + 1 == suffix.size() || dash > 9) return 0;
+    for (size_t k = 0; k < suffix.size(); ++k)
+        if (k != dash && (suffix[k] < '0' || suffix[k] > '9')) return 0;
+    return pid_t(std::stol(suffix.substr(0, dash)));
+}
+
+// True when `name` is a temporary file of a target named `stem`, made by
+// process `pid`: ".<stem>.tmp-<pid>-<n>", or the temporary file of such a
+// temporary file (a file staged inside another, as tsf render does).
+bool isTempNameOf(const std::string& name, const std::string& stem, pid_t& pid) {
+    const size_t at = name.rfind(".tmp-");
+    if (name.empty() || name[0] != '.' || at == std::string::npos || at == 0) return false;
+    pid = pidOfSuffix(name.substr(at + 5));
+    if (pid <= 0) return false;
+    const std::string base = name.substr(1, at - 1);
+    pid_t inner = 0;
+    return base == stem || isTempNameOf(base, stem, inner);
+}
+
+bool processExists(pid_t pid) { return ::kill(pid, 0) == 0 || errno == EPERM; }
+
 }  // namespace
+
+int removeStaleTempFiles(const std::string& target_path) {
+    if (target_path.empty()) return 0;
+    const std::string stem = nameStem(target_path);
+    int removed = 0;
+    std::error_code ec;
+    std::filesystem::directory_iterator it(folderOf(target_path), ec), end;
+    for (; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        pid_t pid = 0;
+        if (!isTempNameOf(name, stem, pid) || pid == ::getpid() || processExists(pid)) continue;
+        std::error_code file_ec;
+        if (!it->is_regular_file(file_ec) || file_ec) continue;
+        if (::unlink(it->path().c_str()) == 0) ++removed;
+    }
+    return removed;
+}
 
 AtomicFile::AtomicFile(const std::string& target_path) : target_path_(target_path) {
     if (target_path.empty()) throw InputError("output path is empty");
@@ -51,9 +102,10 @@ AtomicFile::AtomicFile(const std::string& target_path) : target_path_(target_pat
     if (::stat(target_path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
         throw InputError(target_path, 0, 0, "cannot write: this is a folder, a file name is expected");
     }
-    std::string stem = std::filesystem::path(target_path).filename().string();
-    if (stem.size() > kMaxNameStemChars) stem.resize(kMaxNameStemChars);
     const std::string prefix = (folder == "." && target_path.find('/') == std::string::npos ? std::string() : folder + "/");
+    const std::string stem = nameStem(target_path);
+    // What a killed run of this command left (SIGKILL cannot be caught).
+    removeStaleTempFiles(target_path);
 
     for (;;) {
         const unsigned n = g_temp_counter.fetch_add(1);

@@ -14,6 +14,13 @@
 // SIGTERM and SIGHUP remove it too, and a file-size limit (SIGXFSZ) is an
 // ordinary write failure.
 //
+// A run ended by SIGKILL (or a power cut) cannot remove its temporary file.
+// The next AtomicFile for the same target removes such leftovers: files named
+// exactly ".<name>.tmp-<pid>-<n>" for this target (or a temporary file of such
+// a file: tsf render stages the engine's output inside its own) whose process
+// <pid> no longer exists (removeStaleTempFiles). Nothing else is touched: not
+// another target's, not a live process's, not a file of another naming.
+//
 // Caveats: the new file gets default permissions (0666 minus umask), not the
 // old target's; a symbolic link at the target is replaced by the file rather
 // than written through.
@@ -54,6 +61,11 @@ private:
     bool committed_ = false;
     int cleanup_slot_ = -1;  ///< registerTempFile slot while the temporary file exists
 };
+
+/// Removes the temporary files a killed run left for target_path (see the
+/// file comment): ".<name>.tmp-<pid>-<n>" in its folder, <pid> not a running
+/// process. Returns how many were removed. Never throws.
+int removeStaleTempFiles(const std::string& target_path);
 
 /// Writes path atomically through a stream: opens the temporary file as a
 /// binary std::ofstream, calls write(stream), checks the stream state (a full

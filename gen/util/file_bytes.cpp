@@ -25,6 +25,10 @@ struct stat statInput(const std::string& path) {
         throw InputError(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
     }
     if (S_ISDIR(st.st_mode)) throw InputError(path, 0, 0, "is a folder, expected a file");
+    // A device (/dev/zero, /dev/urandom, a disk) can be endless: refused
+    // before a byte is read. Pipes are read, up to the caller's limit.
+    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+        throw InputError(path, 0, 0, "is a device, not a file: give a file (or a pipe)");
     return st;
 }
 

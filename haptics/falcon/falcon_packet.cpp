@@ -78,6 +78,9 @@ bool decodeFalconCommand(std::span<const uint8_t, kFalconPacketBytes> f, FalconC
 }
 
 void FalconFrameParser::push(std::span<const uint8_t> bytes) noexcept {
+    // An empty read may come with a null pointer, which memcpy must never get
+    // (UBSan found it, even for 0 bytes).
+    if (bytes.empty()) return;
     if (bytes.size() > kCapacity) {
         discarded_ += bytes.size() - kCapacity + size_;
         size_ = 0;

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "gen/error.h"
 #include "gen/scene.h"
@@ -115,6 +116,49 @@ TEST(Scene, TinyDifferencesSnapToEqualHeights) {
     const Scene s = buildScene(fieldFromRows({{1.0, 1.0 + 1e-12, 1.0 - 1e-12}}), smallParams(Bottom::Flat, Cull::None));
     EXPECT_EQ(s.top[0], s.top[1]);
     EXPECT_EQ(s.top[1], s.top[2]);
+}
+
+TEST(Scene, ValuesSpanningMoreThanTheLargestDoubleGetExactHeights) {
+    // 1e308 - -1e308 overflows to inf: heights are computed on the halves.
+    const Scene s = buildScene(fieldFromRows({{1e308, -1e308, 0}}), smallParams(Bottom::Flat, Cull::None));
+    EXPECT_EQ(s.top[s.keptAt(0, 0)], 12000);  // full 10 mm above the 2 mm base
+    EXPECT_EQ(s.top[s.keptAt(1, 0)], 2000);   // the baseline, at the floor
+    EXPECT_EQ(s.top[s.keptAt(2, 0)], 7000);   // halfway
+    EXPECT_DOUBLE_EQ(s.mapping.valueAt(5.0), 0.0);
+    EXPECT_DOUBLE_EQ(s.mapping.valueAt(10.0), 1e308);
+    const double big = std::numeric_limits<double>::max();
+    const Scene m = buildScene(fieldFromRows({{big, -big}}), smallParams(Bottom::Flat, Cull::None));
+    EXPECT_EQ(m.top[0], 12000);
+    EXPECT_EQ(m.top[1], 2000);
+    EXPECT_DOUBLE_EQ(m.mapping.valueAt(10.0), big);
+}
+
+TEST(Scene, ContradictoryValueOptionsAreErrors) {
+    SceneParams p = smallParams();
+    p.value_max = 0.0;  // at the baseline (0: no value is negative)
+    EXPECT_THROW(buildScene(fieldFromRows({{1, 2}}), p), InputError);
+    p.baseline_mode = BaselineMode::Value;
+    p.baseline_value = 5.0;
+    p.value_max = 4.0;  // below it
+    EXPECT_THROW(buildScene(fieldFromRows({{1, 9}}), p), InputError);
+    p.value_max.reset();  // the largest value, 2, is below the baseline
+    EXPECT_THROW(buildScene(fieldFromRows({{1, 2}}), p), InputError);
+    p.baseline_mode = BaselineMode::Zero;
+    EXPECT_THROW(buildScene(fieldFromRows({{-1, -2}}), p), InputError);
+    p.baseline_mode = BaselineMode::Value;
+    p.baseline_value = 2.0;  // a constant field at the baseline stays a defined flat slab
+    EXPECT_NO_THROW(buildScene(fieldFromRows({{2, 2}}), p));
+}
+
+TEST(Scene, AMirroredFlatFieldWithoutDataCellsKeepsThemOneStepThick) {
+    // The slab of a flat field is only the base thick; a pit from both faces
+    // of half the base each used to leave a cell with bottom == top.
+    const Scene s = buildScene(fieldFromRows({{kNaN, 0}, {0, 0}}), smallParams(Bottom::Mirrored, Cull::None));
+    const int32_t pit = s.keptAt(0, 0);
+    ASSERT_GE(pit, 0);
+    EXPECT_EQ(s.kind[size_t(pit)], CellKind::NoData);
+    EXPECT_EQ(s.top[size_t(pit)] - s.bottom[size_t(pit)], 2);  // 2000 - 2 * 999 units
+    EXPECT_EQ(s.nodata_pit_units, 999);
 }
 
 TEST(Scene, FitsTheGridIntoTheRequestedBox) {

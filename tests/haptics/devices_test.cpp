@@ -61,6 +61,9 @@ TEST(Replay, BadFilesNameLineAndColumn) {
     inputErrorOf([] { parseReplayCsv("", "f.csv"); });
     inputErrorOf([] { parseReplayCsv("t_s,x_m,y_m,z_m\n", "g.csv"); });
     inputErrorOf([] { readReplayFile("/nonexistent/replay.csv"); });
+    // An endless stream is refused before it is read (it used to fill memory).
+    e = inputErrorOf([] { readReplayFile("/dev/zero"); });
+    EXPECT_NE(std::string(e.what()).find("is a device, not a file"), std::string::npos) << e.what();
 }
 
 TEST(Replay, InterpolatesInTimeAndEndsAfterTheLastSample) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <zlib.h>
 
 #include "tests/support/files.h"
 #include "tests/support/input_error.h"
@@ -160,6 +161,33 @@ TEST(PngReader, OversizedImageIsRejectedBeforeDecoding) {
     s.bit_depth = 1;
     s.samples.assign(20001, 0);
     EXPECT_INPUT_ERROR_AT(parsePng(makePng(s), "wide.png"), 0, 0, "largest side");
+}
+
+// One PNG chunk: length, type, data, CRC (zlib's crc32 is PNG's).
+std::string pngChunk(const std::string& type, const std::string& data) {
+    const auto be32 = [](uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+    };
+    const std::string body = type + data;
+    return be32(uint32_t(data.size())) + body +
+           be32(uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size()))));
+}
+
+TEST(PngReader, AHeaderClaimingMoreThanTheFileCanHoldIsRefusedBeforeAllocating) {
+    // 20000 x 5000 RGBA16 (800 MB of pixels) claimed by a file of about 60
+    // bytes; deflate cannot expand a few bytes that far.
+    std::string ihdr = {char(0), char(0), char(0x4e), char(0x20), char(0), char(0), char(0x13), char(0x88),
+                        char(16), char(6), char(0), char(0), char(0)};
+    std::string idat(16, '\0');
+    uLongf len = uLongf(idat.size());
+    const std::string zeros(8, '\0');
+    ASSERT_EQ(compress(reinterpret_cast<Bytef*>(idat.data()), &len, reinterpret_cast<const Bytef*>(zeros.data()),
+                       uLong(zeros.size())),
+              Z_OK);
+    idat.resize(len);
+    const std::string file = std::string("\x89PNG\r\n\x1a\n", 8) + pngChunk("IHDR", ihdr) + pngChunk("IDAT", idat) +
+                             pngChunk("IEND", "");
+    EXPECT_INPUT_ERROR_AT(parsePng(file, "claim.png"), 0, 0, "truncated or corrupt: the header claims 20000 x 5000");
 }
 
 }  // namespace

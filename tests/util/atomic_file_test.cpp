@@ -8,6 +8,7 @@
 #include <limits>
 #include <ostream>
 #include <stdexcept>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "gen/error.h"
@@ -24,6 +25,7 @@ using test::readText;
 using test::scratchDir;
 using test::writeText;
 using ::testing::ElementsAre;
+using ::testing::UnorderedElementsAre;
 using ::testing::HasSubstr;
 using ::testing::IsEmpty;
 
@@ -149,6 +151,32 @@ TEST(AtomicFile, MeshThatCannotBeWrittenLeavesTheOldFileAlone) {
         EXPECT_EQ(readText(target), "previous") << name;
     }
     EXPECT_EQ(listFiles(dir).size(), 4u);
+}
+
+// The pid of a process that has ended (a child, reaped).
+pid_t endedPid() {
+    const pid_t pid = ::fork();
+    if (pid == 0) ::_exit(0);
+    ::waitpid(pid, nullptr, 0);
+    return pid;
+}
+
+TEST(StaleTempFiles, OnlyThisTargetsFilesOfEndedProcessesAreRemoved) {
+    const auto dir = scratchDir();
+    const std::string dead = std::to_string(endedPid()), live = std::to_string(::getppid());
+    for (const std::string& name : std::vector<std::string>{
+             ".m.stl.tmp-" + dead + "-0", "..m.stl.tmp-" + dead + "-3.tmp-" + dead + "-4", ".m.stl.tmp-" + live + "-0",
+          ".other.stl.tmp-" + dead + "-0", "m.stl.tmp-" + dead + "-0", ".m.stl.tmp-" + dead, ".m.stl.tmp-x-1",
+          std::string("m.stl")})
+        writeText(dir / name, "x");
+    EXPECT_EQ(removeStaleTempFiles((dir / "m.stl").string()), 2);
+    EXPECT_THAT(listFiles(dir),
+                UnorderedElementsAre(".m.stl.tmp-" + live + "-0", ".other.stl.tmp-" + dead + "-0",
+                                     "m.stl.tmp-" + dead + "-0", ".m.stl.tmp-" + dead, ".m.stl.tmp-x-1", "m.stl"));
+    // A new AtomicFile for the target does the same on its way.
+    writeText(dir / (".m.stl.tmp-" + dead + "-7"), "x");
+    AtomicFile file((dir / "m.stl").string());
+    EXPECT_FALSE(std::filesystem::exists(dir / (".m.stl.tmp-" + dead + "-7")));
 }
 
 }  // namespace

@@ -94,6 +94,39 @@ TEST(SceneJson, FileRoundTripOneCellPerLineAndNoTemporaryLeft) {
     EXPECT_EQ(files, 1u);
 }
 
+TEST(SceneJson, TheModelItWasWrittenWithIsRecordedAndAnotherVersionRefused) {
+    const auto dir = vtest::scratchDir("scene_json_model");
+    const Scene s = awkwardScene();
+    vtest::writeText(dir / "model.stl", "the model's bytes");
+    const SceneModelRecord written{"model.stl", stampFile((dir / "model.stl").string())};
+    EXPECT_EQ(written.stamp.bytes, 17);
+    // FNV-1a 64 of "a" is 0xaf63dc4c8601ec8c (the published test vector).
+    EXPECT_EQ(fnv1a64("a", 1), 0xaf63dc4c8601ec8cull);
+    const auto sidecar = dir / "model.stl.scene.json";
+    writeSceneJson(s, sidecar.string(), &written);
+    std::optional<SceneModelRecord> read;
+    expectSameScene(s, readSceneJson(sidecar.string(), &read));
+    ASSERT_TRUE(read.has_value());
+    EXPECT_EQ(read->file, "model.stl");
+    EXPECT_EQ(read->stamp, written.stamp);
+    EXPECT_NO_THROW(checkSceneModelRecord(*read, sidecar.string(), (dir / "model.stl").string()));
+    // Another file of another name (an OpenSCAD render of the model): not compared.
+    vtest::writeText(dir / "model.openscad.stl", "other bytes");
+    EXPECT_NO_THROW(checkSceneModelRecord(*read, sidecar.string(), (dir / "model.openscad.stl").string()));
+    // The same name with other bytes (a later run's model): refused, even at the same size.
+    vtest::writeText(dir / "model.stl", "the model's bytez");
+    try {
+        checkSceneModelRecord(*read, sidecar.string(), (dir / "model.stl").string());
+        ADD_FAILURE() << "a sidecar of another run was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("different runs of tsf gen"), std::string::npos) << e.what();
+    }
+    // A sidecar without the record (older tsf, or --scad only) reads as before.
+    writeSceneJson(s, sidecar.string());
+    readSceneJson(sidecar.string(), &read);
+    EXPECT_FALSE(read.has_value());
+}
+
 void expectError(nlohmann::json j, const std::string& starts_with) {
     try {
         sceneFromJson(j);

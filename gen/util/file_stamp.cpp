@@ -1,0 +1,58 @@
+#include "gen/util/file_stamp.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "gen/error.h"
+
+namespace tsf {
+
+uint64_t fnv1a64(const void* data, size_t size, uint64_t hash) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t k = 0; k < size; ++k) {
+        hash ^= p[k];
+        hash *= 0x100000001b3ull;
+    }
+    return hash;
+}
+
+FileStamp stampFile(const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) throw InputError(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
+    FileStamp s;
+    s.fnv1a64 = kFnv1a64Basis;
+    std::vector<unsigned char> buf(size_t(1) << 20);
+    size_t n;
+    while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) {
+        s.fnv1a64 = fnv1a64(buf.data(), n, s.fnv1a64);
+        s.bytes += int64_t(n);
+    }
+    const bool failed = std::ferror(f) != 0;
+    std::fclose(f);
+    if (failed) throw InputError(path, 0, 0, "cannot read the file");
+    return s;
+}
+
+std::string toHex(uint64_t hash) {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash));
+    return buf;
+}
+
+bool parseHex64(const std::string& text, uint64_t& hash) {
+    if (text.size() != 16) return false;
+    uint64_t v = 0;
+    for (char c : text) {
+        int d;
+        if (c >= '0' && c <= '9') d = c - '0';
+        else if (c >= 'a' && c <= 'f') d = c - 'a' + 10;
+        else return false;
+        v = v << 4 | uint64_t(d);
+    }
+    hash = v;
+    return true;
+}
+
+}  // namespace tsf
