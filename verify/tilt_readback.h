@@ -22,7 +22,7 @@
 
 #include "gen/mesh.h"
 #include "gen/scene.h"
-#include "verify/ray_caster.h"
+#include "verify/triangle_bvh.h"
 #include "verify/report.h"
 
 namespace tsf {
@@ -35,6 +35,6 @@ struct TiltReadbackResult {
 
 /// Reads the tilt of every tilted cell back from `mesh` through `caster`.
 /// A Scene without tilted cells gives no check.
-TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const RayCaster& caster);
+TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster);
 
 }  // namespace tsf
