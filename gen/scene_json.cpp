@@ -299,15 +299,7 @@ void readShapes(const json& j, const json& cells, Scene& s) {
     TopShapes& t = s.shapes;
     const size_t n = s.keptCount();
     const bool mirrored = s.params.bottom == Bottom::Mirrored;
-    t.top_dz.assign(n, {});
-    t.top_centre_dz.assign(n, 0);
-    if (mirrored) {
-        t.bottom_dz.assign(n, {});
-        t.bottom_centre_dz.assign(n, 0);
-    }
-    t.slope_x.assign(n, 0.0);
-    t.slope_y.assign(n, 0.0);
-    t.structural.assign(n, 0);
+    t = levelTopShapes(n, mirrored);
     t.cells_tilted = getInt(h, "shapes", "cells_tilted");
     t.cells_clamped = getInt(h, "shapes", "cells_clamped");
     t.cells_flat_clamped = getInt(h, "shapes", "cells_clamped_level");

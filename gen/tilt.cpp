@@ -94,16 +94,8 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
     TopShapes& t = s.shapes;
     const size_t n = s.keptCount();
     const bool mirrored = s.params.bottom == Bottom::Mirrored;
-    t = TopShapes{};
-    t.top_dz.assign(n, {});
-    t.top_centre_dz.assign(n, 0);
-    if (mirrored) {
-        t.bottom_dz.assign(n, {});
-        t.bottom_centre_dz.assign(n, 0);
-    }
-    t.slope_x.assign(n, 0.0);
-    t.slope_y.assign(n, 0.0);
-    t.structural = structural.empty() ? std::vector<uint8_t>(n, 0) : structural;
+    t = levelTopShapes(n, mirrored);
+    if (!structural.empty()) t.structural = structural;
 
     const auto face_on_edge = facesOnEdges(s);  // which face lies across a directed ring edge
 

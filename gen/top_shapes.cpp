@@ -20,6 +20,20 @@ int cornerOf(const Scene& s, size_t k, int64_t id) {
 
 }  // namespace
 
+TopShapes levelTopShapes(size_t cells, bool mirrored) {
+    TopShapes t;
+    t.top_dz.assign(cells, {});
+    t.top_centre_dz.assign(cells, 0);
+    if (mirrored) {
+        t.bottom_dz.assign(cells, {});
+        t.bottom_centre_dz.assign(cells, 0);
+    }
+    t.slope_x.assign(cells, 0.0);
+    t.slope_y.assign(cells, 0.0);
+    t.structural.assign(cells, 0);
+    return t;
+}
+
 int64_t cornerTop(const Scene& s, size_t k, int e) {
     return s.top[k] + (s.shapes.empty() ? 0 : s.shapes.top_dz[k][size_t(e)]);
 }

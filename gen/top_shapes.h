@@ -69,6 +69,10 @@ struct TopShapes {
     bool empty() const { return top_dz.empty(); }
 };
 
+/// Shapes for `cells` kept cells, every top (and, `mirrored`, every bottom)
+/// level and no cell structural: what the tilt and the sidecar fill in.
+TopShapes levelTopShapes(size_t cells, bool mirrored);
+
 /// z (units) of corner e (0..5, hex_grid.h) of kept cell k's top / bottom.
 int64_t cornerTop(const Scene& s, size_t k, int e);
 int64_t cornerBottom(const Scene& s, size_t k, int e);
