@@ -43,7 +43,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$root/tests
 export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
 
 if (( asan || fuzz )); then
-  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Test -DCMAKE_CXX_FLAGS_TEST=-O1 \
+  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Test -DCMAKE_CXX_FLAGS_TEST=-O0 \
         -DCMAKE_C_COMPILER="$CC" -DCMAKE_CXX_COMPILER="$CXX" -DTSF_SANITIZE=address,undefined \
         -DTSF_BUILD_FUZZERS=ON -DTSF_BUILD_BENCH=OFF >/dev/null
   targets=()
@@ -82,7 +82,7 @@ fi
 
 if (( tsan )); then
   t0=$(stamp)
-  cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=Test -DCMAKE_CXX_FLAGS_TEST=-O1 \
+  cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=Test -DCMAKE_CXX_FLAGS_TEST=-O0 \
         -DCMAKE_C_COMPILER="$CC" -DCMAKE_CXX_COMPILER="$CXX" -DTSF_SANITIZE=thread -DTSF_BUILD_BENCH=OFF >/dev/null
   cmake --build build-tsan -j"$jobs" --target test_haptics_threads
   build-tsan/tests/test_haptics_threads
