@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -196,7 +195,8 @@ TEST(PointBinning, SumAndMeanOfWeights) {
     EXPECT_NE(mean.how.find("mean of w"), std::string::npos);
 }
 
-TEST(PointBinning, AMillionPointsQuickly) {
+// Speed is measured in bench/, never here.
+TEST(PointBinning, AMillionPointsAllCounted) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> d(-180.0, 180.0);
     std::vector<double> x(1'000'000), y(1'000'000);
@@ -207,12 +207,9 @@ TEST(PointBinning, AMillionPointsQuickly) {
     const PointTable pts = makePoints(x, y);
     BinOptions opts;
     opts.hex_cols = 200;
-    const auto start = std::chrono::steady_clock::now();
     const HexField f = binPoints(pts, opts);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(total(f), 1e6);
     EXPECT_EQ(f.grid.cols, 200);
-    EXPECT_LT(seconds, 2.0);  // about 0.1 s on a 2-core machine
 }
 
 TEST(PointBinning, BadOptions) {

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <utility>
 
@@ -367,7 +366,7 @@ TEST(Agreement, EmptyReferenceFails) {
 
 // The use the check exists for: OpenSCAD's render of the generated .scad
 // against the direct mesh, through the command line.
-TEST(Agreement, OpenScadRenderIsProvenTheSameSolidQuickly) {
+TEST(Agreement, OpenScadRenderIsProvenTheSameSolid) {
     if (!std::filesystem::exists("/usr/bin/openscad")) GTEST_SKIP() << "no /usr/bin/openscad";
     const auto dir = vtest::scratchDir("agreement_openscad");
     std::string csv;
@@ -385,18 +384,15 @@ TEST(Agreement, OpenScadRenderIsProvenTheSameSolidQuickly) {
                                    dir);
     ASSERT_EQ(gen.exit_code, 0) << gen.err;
     const auto render = vtest::runTsf("render " + (dir / "m.scad").string() + " -o " + (dir / "openscad.stl").string(), dir);
-    if (render.exit_code != 0) GTEST_SKIP() << "OpenSCAD could not render here: " << render.err;
-    const auto t0 = std::chrono::steady_clock::now();
+    ASSERT_EQ(render.exit_code, 0) << render.err;
     const auto verify = vtest::runTsf("verify " + (dir / "openscad.stl").string() + " --reference " +
                                           (dir / "direct.stl").string() + " --json --no-printability",
                                       dir);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ASSERT_EQ(verify.exit_code, 0) << verify.out << verify.err;
     const nlohmann::json j = nlohmann::json::parse(verify.out);
     EXPECT_TRUE(j["agreement"]["surfaces_identical"].get<bool>());
     EXPECT_EQ(j["agreement"]["samples"].get<size_t>(), 0u);
     EXPECT_EQ(j["agreement"]["hausdorff_to_reference_mm"].get<double>(), 0.0);
-    EXPECT_LT(seconds, 10.0);
 }
 
 }  // namespace
