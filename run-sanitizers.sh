@@ -75,8 +75,12 @@ fi
 
 if (( asan )); then
   t0=$(stamp)
-  # The 1000 x 1000 mesher test takes minutes under ASan; the others cover its code.
-  build-asan/tests/test_library_asan --gtest_brief=1 --gtest_filter=-DirectMesher.ThousandByThousandGridIsSolid
+  # Left out: the 1000 x 1000 mesher test, the million-state force clamp and
+  # the long energy sweeps take minutes each under ASan at -O0 and only repeat
+  # arithmetic that the other tests of the same code run sanitized; ctest runs
+  # them unsanitized.
+  build-asan/tests/test_library_asan --gtest_brief=1 \
+      --gtest_filter=-DirectMesher.ThousandByThousandGridIsSolid:Safety.ClampHoldsOverAMillionRandomStates:Energy.FingerPressingAndSlidingGainsNoEnergyFromTheSurface
   echo "run-sanitizers: ASan + UBSan tests $(( $(stamp) - t0 )) s"
 fi
 
