@@ -211,5 +211,70 @@ TEST(ThreeMfReader, IndexOutOfRangeInTheXmlIsAnInputError) {
     EXPECT_THROW(parse3mf(test::threeMfPackage(xml), "range.3mf"), InputError);
 }
 
+// Two boxes that touch (the block stands on the base's top) as parts: to
+// lib3mf itself one build item of one mesh object holding both boxes'
+// triangles, and read back by tsf as two parts named as written, each with
+// its own vertices (the corner both boxes have stays a vertex of each).
+TEST(ThreeMfParts, WrittenAsOneObjectOfPartsAndReadBackAsParts) {
+    const auto dir = scratchDir();
+    const std::string path = (dir / "parts.3mf").string();
+    const std::vector<MeshPart> parts{{"pillars", test::box({0, 0, 0}, {20, 10, 5})},
+                                      {"marks", test::box({0, 0, 5}, {4, 4, 6})}};
+    MeshWriteOptions opts;
+    opts.title = "two parts";
+    write3mfParts(parts, path, opts);
+
+    {
+        Lib3mfModel lib(path);
+        NMR::PLib3MFModelBuildItemIterator* items = nullptr;
+        ASSERT_EQ(NMR::lib3mf_model_getbuilditems(lib.model, &items), LIB3MF_OK);
+        size_t item_count = 0;
+        BOOL has = false;
+        DWORD triangles = 0;
+        while (NMR::lib3mf_builditemiterator_movenext(items, &has) == LIB3MF_OK && has) {
+            ++item_count;
+            NMR::PLib3MFModelBuildItem* item = nullptr;
+            NMR::lib3mf_builditemiterator_getcurrent(items, &item);
+            NMR::PLib3MFModelObjectResource* object = nullptr;
+            NMR::lib3mf_builditem_getobjectresource(item, &object);
+            NMR::lib3mf_meshobject_gettrianglecount(object, &triangles);
+            NMR::lib3mf_release(object);
+            NMR::lib3mf_release(item);
+        }
+        NMR::lib3mf_release(items);
+        EXPECT_EQ(item_count, 1u);
+        EXPECT_EQ(triangles, 24u);
+    }
+
+    MeshReadReport report;
+    const std::vector<MeshPart> back = read3mfParts(path, &report);
+    ASSERT_EQ(back.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(back[k].name, parts[k].name);
+        // The same triangles in the same order at the same corners (whole mm: exact in float32).
+        const Mesh &a = back[k].mesh, &b = parts[k].mesh;
+        EXPECT_EQ(a.positions.size(), b.positions.size());
+        ASSERT_EQ(a.triangles.size(), b.triangles.size());
+        for (size_t t = 0; t < a.triangles.size(); ++t)
+            for (size_t c = 0; c < 3; ++c) EXPECT_EQ(a.positions[a.triangles[t][c]], b.positions[b.triangles[t][c]]);
+    }
+    EXPECT_EQ(report.input_triangles, 24u);
+    // readMeshParts dispatches on the extension; readMesh still gives everything as one mesh.
+    EXPECT_EQ(readMeshParts(path).size(), 2u);
+    // The block's corner (0,0,5) is also the base's corner: one vertex when merged as one mesh.
+    EXPECT_EQ(readMesh(path).positions.size(), 15u);
+    // Any other format is one part named "model".
+    writeMesh(parts[0].mesh, (dir / "one.stl").string());
+    const std::vector<MeshPart> stl = readMeshParts((dir / "one.stl").string());
+    ASSERT_EQ(stl.size(), 1u);
+    EXPECT_EQ(stl[0].name, "model");
+}
+
+TEST(ThreeMfParts, NoPartsIsRefused) {
+    const auto dir = scratchDir();
+    EXPECT_THROW(write3mfParts({}, (dir / "none.3mf").string()), InputError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "none.3mf"));
+}
+
 }  // namespace
 }  // namespace tsf
