@@ -41,6 +41,10 @@ TEST(PartsVerify, PartsThatTouchPassAndALaterPartMayBeSeveralPieces) {
     EXPECT_EQ(j["format"], "tsf-verify-parts-report");
     EXPECT_EQ(j["parts"][1]["name"], "marks");
     EXPECT_EQ(j["passed"], true);
+    // For people: a section per part, then the assembly.
+    const std::string text = formatPartsReport(r);
+    EXPECT_NE(text.find("part 2 of 3: marks"), std::string::npos) << text;
+    EXPECT_NE(text.find("parts touch, never overlap"), std::string::npos) << text;
 }
 
 TEST(PartsVerify, APlantedOverlapFailsWithItsVolume) {
