@@ -276,5 +276,73 @@ TEST(ThreeMfParts, NoPartsIsRefused) {
     EXPECT_FALSE(std::filesystem::exists(dir / "none.3mf"));
 }
 
+// A package of one mesh object (id 1) holding two boxes' 24 triangles, with
+// PrusaSlicer's volume config beside it (reached through a relationship, as
+// write3mfParts writes it).
+std::string twoBoxPackage(const std::string& config) {
+    const Mesh m = test::append(test::box({0, 0, 0}, {20, 10, 5}), test::box({0, 0, 5}, {4, 4, 6}));
+    std::string xml = R"(<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" )"
+                      R"(xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02"><resources>)"
+                      R"(<object id="1" type="model"><mesh><vertices>)";
+    for (const Vec3& p : m.positions)
+        xml += "<vertex x=\"" + std::to_string(p.x) + "\" y=\"" + std::to_string(p.y) + "\" z=\"" + std::to_string(p.z) + "\"/>";
+    xml += "</vertices><triangles>";
+    for (const auto& t : m.triangles)
+        xml += "<triangle v1=\"" + std::to_string(t[0]) + "\" v2=\"" + std::to_string(t[1]) + "\" v3=\"" +
+               std::to_string(t[2]) + "\"/>";
+    xml += R"(</triangles></mesh></object></resources><build><item objectid="1"/></build></model>)";
+    const std::string content_types =
+        R"(<?xml version="1.0" encoding="UTF-8"?>)"
+        R"(<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">)"
+        R"(<Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/>)"
+        R"(<Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>)";
+    const std::string rels =
+        R"(<?xml version="1.0" encoding="UTF-8"?>)"
+        R"(<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)"
+        R"(<Relationship Target="/3D/3dmodel.model" Id="rel0" )"
+        R"(Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>)";
+    const std::string model_rels =
+        R"(<?xml version="1.0" encoding="UTF-8"?>)"
+        R"(<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)"
+        R"(<Relationship Target="/Metadata/Slic3r_PE_model.config" Id="rel1" Type="urn:tsf:3mf:slicer-model-config"/>)"
+        R"(</Relationships>)";
+    return test::storedZip({{"[Content_Types].xml", content_types},
+                            {"_rels/.rels", rels},
+                            {"3D/3dmodel.model", xml},
+                            {"3D/_rels/3dmodel.model.rels", model_rels},
+                            {"Metadata/Slic3r_PE_model.config", config}});
+}
+
+std::string volumesConfig(const std::string& volumes) {
+    return R"(<?xml version="1.0" encoding="UTF-8"?><config><object id="1" instances_count="1">)" + volumes +
+           "</object></config>";
+}
+
+TEST(ThreeMfParts, VolumesNamedInTheSlicerConfigSplitTheObjectAndBadRangesKeepItWhole) {
+    const std::string two = volumesConfig(
+        R"(<volume firstid="0" lastid="11"><metadata type="volume" key="name" value="base &amp; all"/></volume>)"
+        R"(<volume firstid="12" lastid="23"><metadata type="volume" key="name" value="block"/></volume>)");
+    const std::vector<MeshPart> parts = parse3mfParts(twoBoxPackage(two), "two.3mf");
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_EQ(parts[0].name, "base & all");
+    EXPECT_EQ(parts[1].name, "block");
+    EXPECT_EQ(parts[0].mesh.positions.size(), 8u);  // the shared corner is a vertex of each
+    EXPECT_EQ(parts[1].mesh.positions.size(), 8u);
+    EXPECT_EQ(parts[1].mesh.triangles.size(), 12u);
+
+    // Ranges past the end, overlapping, or leaving triangles out: one part, and a note says why.
+    for (const std::string& bad : {R"(<volume firstid="0" lastid="11"/><volume firstid="12" lastid="30"/>)",
+                                   R"(<volume firstid="0" lastid="12"/><volume firstid="12" lastid="23"/>)",
+                                   R"(<volume firstid="0" lastid="11"/>)"}) {
+        MeshReadReport report;
+        const std::vector<MeshPart> whole = parse3mfParts(twoBoxPackage(volumesConfig(bad)), "bad.3mf", &report);
+        ASSERT_EQ(whole.size(), 1u) << bad;
+        EXPECT_EQ(whole[0].mesh.triangles.size(), 24u);
+        bool noted = false;
+        for (const std::string& n : report.notes) noted = noted || n.find("read as one part") != std::string::npos;
+        EXPECT_TRUE(noted) << bad;
+    }
+}
+
 }  // namespace
 }  // namespace tsf
