@@ -58,8 +58,15 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     }
 
     MeshReadReport read;
-    // A 3MF of several parts (tsf gen --parts) is judged part by part and as an assembly.
+    // A 3MF written in parts (tsf gen --parts: an object whose volumes are
+    // named) is judged part by part and as an assembly; any other file,
+    // several objects included, as one mesh.
     std::vector<MeshPart> parts = readMeshParts(o.model, &read);
+    if (read.format == "3mf" && !read.named_volumes) {
+        parts.clear();
+        read = {};
+        parts.push_back({"model", readMesh(o.model, &read)});
+    }
     if (parts.size() > 1 && !o.reference.empty())
         throw InputError(o.model, 0, 0,
                          "has " + std::to_string(parts.size()) +

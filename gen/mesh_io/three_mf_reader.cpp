@@ -378,6 +378,7 @@ std::vector<MeshPart> parse3mfParts(std::string_view bytes, const std::string& n
             parts.push_back({objects[k].name, std::move(mesh)});
             continue;
         }
+        total.named_volumes = true;
         for (size_t n = 0; n < v->second.size(); ++n) {
             const auto& vol = v->second[n];
             parts.push_back({vol.name.empty() ? objects[k].name + " volume " + std::to_string(n + 1) : vol.name,
