@@ -12,7 +12,9 @@
 // T-junctions inside it; the parts touch (the triangle's and the domes' bases
 // lie on the pillars' top) and never overlap, and their union is the solid of
 // meshScene(scene). Everything is read from the Scene; nothing is decided here.
-// A feature added to the Scene later (a tactile scale) is one more entry.
+// A feature added to the Scene later (a tactile scale, its own closed body
+// touching the model) is one more entry in meshSceneParts: left out of the
+// pillars' Scene copy (`level`) and pushed as {"scale", its mesh}.
 #pragma once
 
 #include <vector>
