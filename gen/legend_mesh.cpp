@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <array>
 #include <map>
 #include <numbers>
 
@@ -33,12 +34,48 @@ struct Builder {
 // Angle of base vertex k of a dome.
 double domeAngle(int k) { return 2 * std::numbers::pi * k / kDomeSides; }
 
+// Base octagon of the dome over dot d on a surface at height h, counter-clockwise from above.
+std::array<Vec3, kDomeSides> domeBase(const LegendDot& d, const BrailleStandard& st, double h) {
+    const double r = st.dot_base_mm / 2;
+    std::array<Vec3, kDomeSides> out;
+    for (int k = 0; k < kDomeSides; ++k)
+        out[size_t(k)] = {snapUm(d.x_mm + r * std::cos(domeAngle(k))), snapUm(d.y_mm + r * std::sin(domeAngle(k))), h};
+    return out;
+}
+
+// The dome over dot d (a low-poly spherical cap on a surface at height h)
+// on its base octagon `base` (vertex indices of domeBase's points, in order).
+void addDome(Builder& b, const LegendDot& d, const BrailleStandard& st, double h, const std::vector<uint32_t>& base) {
+    const double r = st.dot_base_mm / 2, hd = st.dot_height_mm;
+    const double R = (r * r + hd * hd) / (2 * hd), theta_max = std::asin(r / R), zc = h + hd - R;
+    std::vector<std::vector<uint32_t>> rings{base};
+    for (int ring = 1; ring <= kDomeRings; ++ring) {
+        const double theta = theta_max * (1.0 - double(ring) / double(kDomeRings + 1));
+        std::vector<uint32_t> v;
+        for (int k = 0; k < kDomeSides; ++k)
+            v.push_back(b.add(snapUm(d.x_mm + R * std::sin(theta) * std::cos(domeAngle(k))),
+                              snapUm(d.y_mm + R * std::sin(theta) * std::sin(domeAngle(k))),
+                              snapUm(zc + R * std::cos(theta))));
+        rings.push_back(v);
+    }
+    const uint32_t apex = b.add(snapUm(d.x_mm), snapUm(d.y_mm), snapUm(h + hd));
+    for (int ring = 0; ring < kDomeRings; ++ring)
+        for (int k = 0; k < kDomeSides; ++k) {
+            const size_t k0 = size_t(k), k1 = size_t((k + 1) % kDomeSides);
+            const std::vector<uint32_t>&lo = rings[size_t(ring)], &hi = rings[size_t(ring + 1)];
+            b.tri(lo[k0], lo[k1], hi[k1]);
+            b.tri(lo[k0], hi[k1], hi[k0]);
+        }
+    const std::vector<uint32_t>& last = rings.back();
+    for (int k = 0; k < kDomeSides; ++k) b.tri(last[size_t(k)], last[size_t((k + 1) % kDomeSides)], apex);
+}
+
 }  // namespace
 
 Mesh meshLegendPlate(const PlateSpec& s) {
     assert(s.height_mm > 0 && s.x1_mm > s.x0_mm && s.y1_mm > s.y0_mm);
     Builder b;
-    const double r = s.standard.dot_base_mm / 2, hd = s.standard.dot_height_mm, h = s.height_mm;
+    const double r = s.standard.dot_base_mm / 2, h = s.height_mm;
 
     Cdt cdt;
     auto insert = [&cdt](double x, double y) { return cdt.insert(K::Point_2(x, y)); };
@@ -48,8 +85,7 @@ Mesh meshLegendPlate(const PlateSpec& s) {
     std::vector<std::vector<Cdt::Vertex_handle>> bases;
     for (const LegendDot& d : s.dots) {
         std::vector<Cdt::Vertex_handle> ring;
-        for (int k = 0; k < kDomeSides; ++k)
-            ring.push_back(insert(snapUm(d.x_mm + r * std::cos(domeAngle(k))), snapUm(d.y_mm + r * std::sin(domeAngle(k)))));
+        for (const Vec3& p : domeBase(d, s.standard, h)) ring.push_back(insert(p.x, p.y));
         for (int k = 0; k < kDomeSides; ++k) cdt.insert_constraint(ring[size_t(k)], ring[size_t((k + 1) % kDomeSides)]);
         bases.push_back(ring);
     }
@@ -90,30 +126,22 @@ Mesh meshLegendPlate(const PlateSpec& s) {
         b.tri(ids[p].second, ids[q].first, ids[p].first);
     }
     // Domes on the base octagons.
-    const double R = (r * r + hd * hd) / (2 * hd), theta_max = std::asin(r / R), zc = h + hd - R;
     for (size_t n = 0; n < s.dots.size(); ++n) {
-        const LegendDot& d = s.dots[n];
-        std::vector<std::vector<uint32_t>> rings(1);
-        for (const auto& v : bases[n]) rings[0].push_back(ids[v].first);
-        for (int ring = 1; ring <= kDomeRings; ++ring) {
-            const double theta = theta_max * (1.0 - double(ring) / double(kDomeRings + 1));
-            std::vector<uint32_t> v;
-            for (int k = 0; k < kDomeSides; ++k)
-                v.push_back(b.add(snapUm(d.x_mm + R * std::sin(theta) * std::cos(domeAngle(k))),
-                                  snapUm(d.y_mm + R * std::sin(theta) * std::sin(domeAngle(k))),
-                                  snapUm(zc + R * std::cos(theta))));
-            rings.push_back(v);
-        }
-        const uint32_t apex = b.add(snapUm(d.x_mm), snapUm(d.y_mm), snapUm(h + hd));
-        for (int ring = 0; ring < kDomeRings; ++ring)
-            for (int k = 0; k < kDomeSides; ++k) {
-                const size_t k0 = size_t(k), k1 = size_t((k + 1) % kDomeSides);
-                const std::vector<uint32_t>&lo = rings[size_t(ring)], &hi = rings[size_t(ring + 1)];
-                b.tri(lo[k0], lo[k1], hi[k1]);
-                b.tri(lo[k0], hi[k1], hi[k0]);
-            }
-        const std::vector<uint32_t>& last = rings.back();
-        for (int k = 0; k < kDomeSides; ++k) b.tri(last[size_t(k)], last[size_t((k + 1) % kDomeSides)], apex);
+        std::vector<uint32_t> base;
+        for (const auto& v : bases[n]) base.push_back(ids[v].first);
+        addDome(b, s.dots[n], s.standard, h, base);
+    }
+    return b.mesh;
+}
+
+Mesh meshLegendDots(const PlateSpec& s) {
+    Builder b;
+    for (const LegendDot& d : s.dots) {
+        std::vector<uint32_t> base;
+        for (const Vec3& p : domeBase(d, s.standard, s.height_mm)) base.push_back(b.add(p.x, p.y, p.z));
+        // The base octagon faces down (clockwise seen from above): a fan from its first corner.
+        for (int k = 2; k < kDomeSides; ++k) b.tri(base[0], base[size_t(k)], base[size_t(k - 1)]);
+        addDome(b, d, s.standard, s.height_mm, base);
     }
     return b.mesh;
 }

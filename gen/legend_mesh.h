@@ -44,6 +44,12 @@ struct PlateSpec {
 /// The plate and its dots as one closed, outward-facing, 2-manifold mesh.
 Mesh meshLegendPlate(const PlateSpec& spec);
 
+/// The spec's dots alone, each a closed dome: its base octagon (the same
+/// points as the plate's, facing down at z = height_mm) under the cap. The
+/// domes stand on the plate's top without sharing its volume: the legend as
+/// a part of its own (gen/scene_parts.h).
+Mesh meshLegendDots(const PlateSpec& spec);
+
 /// The plate under a laid-out legend alone: [0, width] x [0, depth], no extra edges.
 /// An empty layout gives an empty mesh.
 Mesh meshLegendPlate(const LegendLayout& layout, double plate_height_mm);

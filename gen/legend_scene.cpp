@@ -189,8 +189,10 @@ void placeLegend(Scene& s) {
     s.legend = l;
 }
 
-Mesh legendPlateMesh(const Scene& s) {
-    if (!s.legend) return {};
+namespace {
+
+// The plate's footprint, height and dots in the model frame.
+PlateSpec plateSpec(const Scene& s) {
     const SceneLegend& l = *s.legend;
     PlateSpec spec;
     spec.x0_mm = 0;
@@ -200,6 +202,21 @@ Mesh legendPlateMesh(const Scene& s) {
     spec.height_mm = s.zMm(l.plate_top_units);
     spec.standard = l.layout.standard;
     for (const LegendDot& d : l.layout.dots) spec.dots.push_back({snapUm(d.x_mm + l.x0_mm), snapUm(d.y_mm + l.y0_mm)});
+    return spec;
+}
+
+}  // namespace
+
+Mesh legendDotsMesh(const Scene& s) {
+    if (!s.legend) return {};
+    return meshLegendDots(plateSpec(s));
+}
+
+Mesh legendPlateMesh(const Scene& s, bool dots) {
+    if (!s.legend) return {};
+    const SceneLegend& l = *s.legend;
+    PlateSpec spec = plateSpec(s);
+    if (!dots) spec.dots.clear();
     // Every hexagon edge of a kept cell the plate reaches over becomes an edge
     // of its top, so the union meets the pillars' walls only at lattice corners.
     const int64_t south_j = hexCentre(s.grid, 0, l.reach_row).j + 1;
@@ -216,8 +233,8 @@ Mesh legendPlateMesh(const Scene& s) {
     return meshLegendPlate(spec);
 }
 
-Mesh unionWithLegend(const Mesh& pillars, const Scene& s) {
-    SurfaceMesh a = toSurfaceMesh(pillars), b = toSurfaceMesh(legendPlateMesh(s)), out;
+Mesh unionWithLegend(const Mesh& pillars, const Scene& s, bool dots) {
+    SurfaceMesh a = toSurfaceMesh(pillars), b = toSurfaceMesh(legendPlateMesh(s, dots)), out;
     namespace PMP = CGAL::Polygon_mesh_processing;
     if (!PMP::corefine_and_compute_union(a, b, out))
         throw std::runtime_error("the legend plate could not be joined to the pillars (CGAL corefinement failed)");

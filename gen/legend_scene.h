@@ -31,11 +31,17 @@ struct Scene;
 /// Places the legend params.legend asks for (none when it asks for nothing).
 void placeLegend(Scene& scene);
 
-/// The legend plate with its dots in the model frame (closed, on the 1 um grid).
-Mesh legendPlateMesh(const Scene& scene);
+/// The legend plate in the model frame (closed, on the 1 um grid), with its
+/// dots standing on it, or without them (dots = false).
+Mesh legendPlateMesh(const Scene& scene, bool dots = true);
 
-/// The union of the pillars' mesh and the legend plate, computed with exact
-/// arithmetic (CGAL corefinement); every vertex lands on the model's grid.
-Mesh unionWithLegend(const Mesh& pillars, const Scene& scene);
+/// The legend's dots alone in the model frame: one closed dome per dot on the
+/// plate's top (gen/legend_mesh.h meshLegendDots). Empty without a legend.
+Mesh legendDotsMesh(const Scene& scene);
+
+/// The union of the pillars' mesh and the legend plate (with its dots, or
+/// without them: dots = false), computed with exact arithmetic (CGAL
+/// corefinement); every vertex lands on the model's grid.
+Mesh unionWithLegend(const Mesh& pillars, const Scene& scene, bool dots = true);
 
 }  // namespace tsf

@@ -36,6 +36,9 @@ struct SolidOptions {
     /// Test for self-intersections (CGAL; about 4 us per triangle). Skipping
     /// it is reported as a skipped check, never as a pass.
     bool self_intersections = true;
+    /// [single_piece] passes with several pieces (noted): a part of a
+    /// multi-part model that stands on another part (verify/verify_parts.h).
+    bool pieces_allowed = false;
     /// The verifier's tree of this mesh, when the caller has one; else
     /// checkSolid builds one for the self-intersection test (after the
     /// topology, whose memory is free by then) and hands it back in

@@ -29,6 +29,7 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
     so.exact = options.exact;
     so.max_offenders = options.max_offenders;
     so.self_intersections = options.self_intersections;
+    so.pieces_allowed = options.pieces_allowed;
     SolidResult solid = checkSolid(mesh, so);
     report.mesh = std::move(solid.mesh);
     report.mesh.name = options.name.empty() ? "(in memory)" : options.name;

@@ -30,6 +30,7 @@ struct VerifyOptions {
     bool exact = false;                   ///< exact-construction kernel for the solid checks
     bool self_intersections = true;       ///< false: skip the (slowest) self-intersection test, reported as skipped
     size_t max_offenders = 10;            ///< worst offenders listed per check
+    bool pieces_allowed = false;          ///< [single_piece] passes with several pieces (a part standing on another)
 
     // Values read back (used when a Scene is given).
     double height_tolerance_mm = 0;       ///< 0 = half the Scene's z snap step (see readback.h)

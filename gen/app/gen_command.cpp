@@ -4,6 +4,7 @@
 #include <iostream>
 #include <optional>
 
+#include "gen/app/bed_size.h"
 #include "gen/app/commands.h"
 #include "gen/app/gen_options.h"
 #include "gen/app/gen_summary.h"
@@ -14,12 +15,16 @@
 #include "gen/direct_mesher.h"
 #include "gen/error.h"
 #include "gen/mesh_io/mesh_writer.h"
+#include "gen/mesh_io/three_mf_writer.h"
+#include "gen/scene_parts.h"
 #include "gen/scad/scad_emitter.h"
 #include "gen/scad/scad_render_cost.h"
 #include "gen/scene_json.h"
 #include "gen/util/file_bytes.h"
 #include "gen/util/output_paths.h"
+#include "verify/slicer/print_check.h"
 #include "verify/verify_model.h"
+#include "verify/verify_parts.h"
 
 namespace tsf::cli {
 namespace {
@@ -40,6 +45,8 @@ struct GenCommandOptions {
     bool verify_full = false;
     bool force = false;
     PrinterSpec printer;  ///< --bed, --nozzle, --layer (printer_fit.h)
+    bool parts = false;        ///< --parts: the 3MF as one object with a part per feature
+    bool print_check = false;  ///< --print-check: slice the written model with PrusaSlicer
     GivenOptions given;   ///< model options the user gave himself
 };
 
@@ -128,11 +135,55 @@ std::string verifyLines(const VerifyReport& r) {
     return out + other;
 }
 
+// One line per part for the summary: its triangles, pieces and volume; then the assembly's verdict.
+std::string partsLines(const PartsVerifyReport& r) {
+    std::string out;
+    for (const PartReport& p : r.parts) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "  part      %-8s %zu triangles, %zu %s, %.1f mm^3: %s\n", p.name.c_str(),
+                      p.report.mesh.triangle_count, p.report.mesh.component_count,
+                      p.report.mesh.component_count == 1 ? "piece" : "pieces", p.report.mesh.volume_mm3,
+                      p.report.passed() ? "closed solid" : "FAILED");
+        out += buf;
+    }
+    const Check* overlap = r.assembly.find("parts_overlap");
+    out += "  parts     " + std::string(r.passed() ? "passed" : "FAILED") + " (each a closed solid; " +
+           (overlap && overlap->status == CheckStatus::Pass ? "they touch and never overlap" : "overlap not proven absent") +
+           ")\n";
+    return out;
+}
+
+// The written model sliced by PrusaSlicer with the printer options given (else PrusaSlicer's defaults).
+PrintCheckReport printCheck(const GenCommandOptions& o) {
+    SlicerSettings s;
+    if (o.printer.layer_mm > 0) s.layer_mm = o.printer.layer_mm;
+    if (o.printer.nozzle_mm > 0) s.nozzle_mm = o.printer.nozzle_mm;
+    if (!o.printer.bed.empty()) {
+        const BedSize bed = parseBedSize(o.printer.bed, "--bed", /*need_height=*/false);
+        s.bed_width_mm = bed.width_mm;
+        s.bed_depth_mm = bed.depth_mm;
+    }
+    try {
+        return runPrintCheck(o.output, s);
+    } catch (const SlicerError& e) {
+        std::cerr << "tsf: error: the model was written, but the print check failed: " << e.what() << "\n";
+        throw CLI::RuntimeError(kExitToolFailed);
+    }
+}
+
 void runGen(GenCommandOptions o) {
     if (o.output.empty() && o.scad.empty())
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
     const ScadOptions so = scadOptions(o);
     checkOutputs(o, so);
+    const std::string model_ext = o.output.empty() ? "" : lowerCaseExtension(o.output);
+    if (o.parts && model_ext != ".3mf")
+        throw InputError(o.output.empty() ? "--parts" : o.output, 0, 0,
+                         "--parts writes a 3MF (one object, a part per feature): give -o MODEL.3mf; "
+                         "STL, OFF and OBJ hold one solid");
+    if (o.print_check && model_ext != ".stl" && model_ext != ".3mf")
+        throw InputError(o.output.empty() ? "--print-check" : o.output, 0, 0,
+                         "--print-check slices the model file: give -o MODEL.stl or -o MODEL.3mf");
     if (!o.preview.empty() && lowerCaseExtension(o.preview) != ".png")
         throw InputError(o.preview, 0, 0, "--preview writes a PNG picture: give a name ending in .png");
     StageTimer timer(o.progress);
@@ -181,14 +232,43 @@ void runGen(GenCommandOptions o) {
             throw CLI::RuntimeError(kExitCheckFailed);
         }
     }
+    std::vector<MeshPart> parts;
+    if (o.parts) {
+        timer.begin("meshing parts");
+        parts = meshSceneParts(scene);
+        if (!o.no_verify) {
+            // Each part alone and the parts together; the heights were read back from the one-solid mesh above.
+            timer.begin("verifying parts");
+            VerifyOptions vo;
+            vo.name = o.output;
+            vo.printability = false;
+            const PartsVerifyReport pr = verifyParts(parts, nullptr, vo);
+            summary.verify["parts"] = toJson(pr);
+            summary.verify_text += partsLines(pr);
+            if (!pr.passed()) {
+                timer.end();
+                std::cerr << formatPartsReport(pr);
+                std::cerr << "tsf: the model's parts failed verification; nothing was written. "
+                             "Please report this with the input file.\n";
+                throw CLI::RuntimeError(kExitCheckFailed);
+            }
+        }
+    }
 
     if (!o.output.empty()) {
         timer.begin("writing");
         MeshWriteOptions wo;
         wo.ascii_stl = o.ascii;
         wo.title = "tsf " TSF_VERSION " " + o.gen.input;
-        writeMesh(mesh, o.output, wo);
-        summary.outputs.push_back({o.output, "model"});
+        if (o.parts) {
+            write3mfParts(parts, o.output, wo);
+            std::string names;
+            for (const MeshPart& p : parts) names += (names.empty() ? "" : ", ") + p.name;
+            summary.outputs.push_back({o.output, "model, one object in " + std::to_string(parts.size()) + " parts: " + names});
+        } else {
+            writeMesh(mesh, o.output, wo);
+            summary.outputs.push_back({o.output, "model"});
+        }
     }
     if (!o.preview.empty()) {
         timer.begin("drawing preview");
@@ -218,12 +298,21 @@ void runGen(GenCommandOptions o) {
         writeSceneJson(scene, sidecar, model ? &*model : nullptr);
         summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
     }
+    std::optional<PrintCheckReport> printed;
+    if (o.print_check) {
+        timer.begin("print check");
+        printed = printCheck(o);
+    }
     timer.end();
     summary.timings_ms = timer.stagesMs();
-    if (o.json)
-        std::cout << summaryJson(summary).dump(2) << "\n";
-    else
+    if (o.json) {
+        nlohmann::json j = summaryJson(summary);
+        if (printed) j["print_check"] = toJson(*printed);
+        std::cout << j.dump(2) << "\n";
+    } else {
         std::cout << formatSummary(summary);
+        if (printed) std::cout << "\n" << formatPrintCheck(*printed);
+    }
 }
 
 }  // namespace
@@ -235,6 +324,8 @@ void addGenCommand(CLI::App& app) {
         "Examples:\n"
         "  tsf gen examples/volcano.csv -o volcano.stl\n"
         "  tsf gen examples/airports-europe.csv --points x=lon,y=lat --bins 40 --mirror -o europe.3mf\n"
+        "  tsf gen examples/airports-europe.csv --points x=lon,y=lat --bins 40 --title \"European airports\" \\\n"
+        "      --units airports --parts --print-check -o airports.3mf\n"
         "Frame: x east, y north, z up, millimetres; the model stands on z = 0.");
     addGenOptions(cmd, opts->gen);
     cmd->add_option("-o,--output", opts->output, "Model file: .stl (binary), .3mf, .off or .obj");
@@ -269,6 +360,13 @@ void addGenCommand(CLI::App& app) {
     cmd->add_option("--layer", opts->printer.layer_mm,
                     "Layer height, mm: heights snap to whole layers (unless --snap)")
         ->check(CLI::Range(0.01, 2.0))->group(printer);
+    cmd->add_flag("--parts", opts->parts,
+                  "Write the 3MF as one object made of parts - pillars (with the notch), marks (the raised "
+                  "triangle), legend (the braille dots) - so a slicer can give each its own colour or material; "
+                  "each part is verified alone and with the others (docs/printing.md)");
+    cmd->add_flag("--print-check", opts->print_check,
+                  "After writing -o MODEL.stl|.3mf, slice it with PrusaSlicer as tsf print-check does (with --layer, "
+                  "--nozzle, --bed when given) and add its report: supports?, layers, time, filament");
     cmd->callback([cmd, opts] {
         // The command line goes into the OpenSCAD header so a file says how it was made.
         opts->command_line = invocation();

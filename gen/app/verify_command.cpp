@@ -12,6 +12,7 @@
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/scene_json.h"
 #include "verify/verify_model.h"
+#include "verify/verify_parts.h"
 
 namespace tsf::cli {
 namespace {
@@ -57,7 +58,21 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     }
 
     MeshReadReport read;
-    const Mesh mesh = readMesh(o.model, &read);
+    // A 3MF written in parts (tsf gen --parts: an object whose volumes are
+    // named) is judged part by part and as an assembly; any other file,
+    // several objects included, as one mesh.
+    std::vector<MeshPart> parts = readMeshParts(o.model, &read);
+    if (read.format == "3mf" && !read.named_volumes) {
+        parts.clear();
+        read = {};
+        parts.push_back({"model", readMesh(o.model, &read)});
+    }
+    if (parts.size() > 1 && !o.reference.empty())
+        throw InputError(o.model, 0, 0,
+                         "has " + std::to_string(parts.size()) +
+                             " parts; --reference compares one solid with another: write the model as one solid "
+                             "(tsf gen without --parts) to compare it");
+    const Mesh mesh = parts.size() == 1 ? std::move(parts[0].mesh) : Mesh{};
 
     std::optional<Scene> scene;
     if (!o.against.empty()) {
@@ -97,6 +112,20 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
         vo.reference_name = o.reference;
     }
 
+    if (parts.size() > 1) {
+        const PartsVerifyReport pr = verifyParts(parts, scene ? &*scene : nullptr, vo);
+        if (o.json) {
+            nlohmann::json j = toJson(pr);
+            j["against"] = o.against.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.against);
+            j["scene"] = o.scene.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.scene);
+            std::cout << j.dump(2) << "\n";
+        } else {
+            std::cout << formatPartsReport(pr);
+        }
+        std::cout.flush();
+        if (!pr.passed()) throw CLI::RuntimeError(kExitCheckFailed);
+        return;
+    }
     const VerifyReport report = verifyModel(mesh, scene ? &*scene : nullptr, vo);
     if (o.json) {
         nlohmann::json j = toJson(report);
@@ -122,6 +151,8 @@ void addVerifyCommand(CLI::App& app) {
         "  tsf verify model.stl --scene model.stl.scene.json     # ... standing at the data's heights?\n"
         "  tsf verify model.stl --against field.csv --mirror     # the same, rebuilt from the field\n"
         "  tsf verify openscad.stl --reference direct.stl        # the same solid as another mesh?\n"
+        "  tsf verify parts.3mf                                  # a 3MF of parts (tsf gen --parts): each part\n"
+        "                                                        # alone, then touching but never overlapping\n"
         "Exit codes: 0 every check passed, 1 a check failed, 2 bad input.\n"
         "Coordinates in the report are millimetres: x east, y north, z up.");
     cmd->add_option("model", opts->model, "Mesh to check: STL (binary or ASCII), 3MF, OFF or OBJ")->required();

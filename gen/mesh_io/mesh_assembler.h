@@ -33,6 +33,9 @@ public:
     /// Adds a reader's own note to the report.
     void note(std::string text) { notes_.push_back(std::move(text)); }
 
+    /// The notes so far, taken out (for a reader that finishes no mesh of its own).
+    std::vector<std::string> takeNotes() { return std::move(notes_); }
+
     size_t vertexCount() const { return index_.size(); }
     size_t triangleCount() const { return triangles_.size(); }
 

@@ -28,6 +28,9 @@ struct MeshReadReport {
     /// Triangles that use one vertex index twice or three times (in the file,
     /// or after exact merging). They are kept in the mesh, only counted here.
     size_t degenerate_index_triangles = 0;
+    /// 3MF read as parts: an object was split into the volumes its slicer
+    /// config names (a model written in parts, gen/mesh_io/three_mf_writer.h).
+    bool named_volumes = false;
     /// One sentence per thing worth knowing: merges, repairs, ignored data.
     std::vector<std::string> notes;
 };

@@ -25,9 +25,11 @@ bool startsWithOffHeader(std::string_view bytes) {
 
 }  // namespace
 
-Mesh readMesh(const std::string& path, MeshReadReport* report) {
+namespace {
+
+// The mesh in bytes, read from path.
+Mesh parseMesh(const std::string& bytes, const std::string& path, MeshReadReport* report) {
     const std::string ext = lowerCaseExtension(path);
-    const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
     if (ext == ".stl") return parseStl(bytes, path, report);
     if (ext == ".3mf") return parse3mf(bytes, path, report);
     if (ext == ".off") return parseOff(bytes, path, report);
@@ -41,6 +43,22 @@ Mesh readMesh(const std::string& path, MeshReadReport* report) {
                          "unknown mesh file type '" + (ext.empty() ? std::string("(no extension)") : ext) +
                              "' and the content is not STL, 3MF or OFF; supported: .stl, .3mf, .off, .obj");
     }
+}
+
+}  // namespace
+
+Mesh readMesh(const std::string& path, MeshReadReport* report) {
+    return parseMesh(readFileBytes(path, kMaxMeshFileBytes), path, report);
+}
+
+std::vector<MeshPart> readMeshParts(const std::string& path, MeshReadReport* report) {
+    const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
+    const std::string ext = lowerCaseExtension(path);
+    if (ext == ".3mf" || (ext != ".stl" && ext != ".off" && ext != ".obj" && startsWithZipSignature(bytes)))
+        return parse3mfParts(bytes, path, report);
+    std::vector<MeshPart> parts;
+    parts.push_back({"model", parseMesh(bytes, path, report)});
+    return parts;
 }
 
 std::string describeReadReport(const MeshReadReport& report) {

@@ -25,13 +25,21 @@
 
 #include <string>
 
+#include <vector>
+
 #include "gen/mesh.h"
+#include "gen/mesh_parts.h"
 #include "gen/mesh_io/mesh_read_report.h"
 
 namespace tsf {
 
 /// Reads the mesh at path; fills *report when report is not null.
 Mesh readMesh(const std::string& path, MeshReadReport* report = nullptr);
+
+/// Reads the file at path as parts: a 3MF package gives one part per mesh
+/// object it prints (gen/mesh_io/three_mf_reader.h read3mfParts); every
+/// other format one part named "model". Errors as readMesh.
+std::vector<MeshPart> readMeshParts(const std::string& path, MeshReadReport* report = nullptr);
 
 /// The report as lines for people: "format: ...", counts, then the notes.
 std::string describeReadReport(const MeshReadReport& report);

@@ -1,12 +1,18 @@
 #include "gen/mesh_io/three_mf_reader.h"
 
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "Model/COM/NMR_DLLInterfaces.h"
 #include "gen/error.h"
 #include "gen/mesh_io/lib3mf_handle.h"
 #include "gen/mesh_io/mesh_assembler.h"
+#include "gen/mesh_io/three_mf_volumes.h"
 #include "gen/util/file_bytes.h"
 
 namespace tsf {
@@ -85,9 +91,23 @@ const char* objectTypeName(DWORD type) {
     }
 }
 
+// Where the walker puts the mesh of an object instance: (object id, object name) -> assembler.
+using MeshSink = std::function<MeshAssembler&(DWORD, const std::string&)>;
+
+std::string objectName(Lib3mfObject object) {
+    ULONG needed = 0;
+    if (NMR::lib3mf_object_getnameutf8(object, nullptr, 0, &needed) != LIB3MF_OK || needed == 0) return "";
+    std::string text(size_t(needed) + 1, '\0');
+    if (NMR::lib3mf_object_getnameutf8(object, text.data(), ULONG(text.size()), &needed) != LIB3MF_OK) return "";
+    text.resize(text.find('\0') == std::string::npos ? text.size() : text.find('\0'));
+    return text;
+}
+
 class PackageWalker {
 public:
-    PackageWalker(const std::string& name, MeshAssembler& assembler) : name_(name), assembler_(assembler) {}
+    // assembler: receives the notes; sink: the meshes.
+    PackageWalker(const std::string& name, MeshAssembler& assembler, MeshSink sink)
+        : name_(name), assembler_(assembler), sink_(std::move(sink)) {}
 
     // A lib3mf failure after the package was read still means bad content.
     void check(int result, Lib3mfObject object, const char* what) const {
@@ -144,6 +164,7 @@ public:
 
 private:
     void addMesh(Lib3mfObject object, DWORD id, const Affine& transform) {
+        MeshAssembler& out = sink_(id, objectName(object));
         DWORD vertex_count = 0, triangle_count = 0;
         check(NMR::lib3mf_meshobject_getvertexcount(object, &vertex_count), object, "reading a vertex count");
         check(NMR::lib3mf_meshobject_gettrianglecount(object, &triangle_count), object, "reading a triangle count");
@@ -167,7 +188,7 @@ private:
                                  "object " + std::to_string(id) + " vertex " + std::to_string(v) +
                                      " is not a finite position (after its transform)");
             }
-            remap[v] = assembler_.addVertex(p);
+            remap[v] = out.addVertex(p);
         }
         for (DWORD t = 0; t < triangle_count; ++t) {
             const DWORD* idx = triangles[t].m_nIndices;
@@ -179,23 +200,28 @@ private:
                                          std::to_string(vertex_count));
                 }
             }
-            assembler_.addTriangle(remap[idx[0]], remap[idx[1]], remap[idx[2]]);
+            out.addTriangle(remap[idx[0]], remap[idx[1]], remap[idx[2]]);
         }
     }
 
     const std::string& name_;
     MeshAssembler& assembler_;
+    MeshSink sink_;
 };
 
-}  // namespace
-
-Mesh parse3mf(std::string_view bytes, const std::string& name, MeshReadReport* report) {
+// Reads the package and walks its build items: meshes to sink, notes to assembler.
+// model_config (may be null): receives the package's Metadata/Slic3r_PE_model.config ("" if none).
+void walkPackage(std::string_view bytes, const std::string& name, MeshAssembler& assembler, const MeshSink& sink,
+                 std::string* model_config = nullptr) {
     if (bytes.empty()) throw InputError(name, 0, 0, "empty file: a 3MF file is a ZIP package");
 
     Lib3mfHandle model;
     checkLib3mf(NMR::lib3mf_createmodel(model.out()), nullptr, "lib3mf_createmodel");
     Lib3mfHandle reader;
     checkLib3mf(NMR::lib3mf_model_queryreader(model.get(), "3mf", reader.out()), model.get(), "lib3mf_model_queryreader");
+    if (model_config)
+        checkLib3mf(NMR::lib3mf_reader_addrelationtoreadutf8(reader.get(), mesh_io::kSlicerModelConfigRelationship),
+                    reader.get(), "lib3mf_reader_addrelationtoreadutf8");
     // lib3mf takes a non-const buffer; give it a copy rather than cast.
     std::vector<BYTE> buffer(bytes.begin(), bytes.end());
     const int read_result = NMR::lib3mf_reader_readfrombuffer(reader.get(), buffer.data(), buffer.size());
@@ -204,8 +230,22 @@ Mesh parse3mf(std::string_view bytes, const std::string& name, MeshReadReport* r
     }
     buffer = {};
 
-    MeshAssembler assembler(name, 0, 0);
-    PackageWalker walker(name, assembler);
+    PackageWalker walker(name, assembler, sink);
+    if (model_config) {
+        model_config->clear();
+        Lib3mfHandle attachment;
+        std::string uri = mesh_io::kSlicerModelConfigPath;
+        if (NMR::lib3mf_model_findattachmentutf8(model.get(), uri.data(), attachment.out()) == LIB3MF_OK && attachment.get()) {
+            ULONG64 size = 0;
+            walker.check(NMR::lib3mf_attachment_getstreamsize(attachment.get(), &size), attachment.get(), "reading the model config");
+            if (size > 0 && size < (ULONG64(64) << 20)) {
+                std::string text(size_t(size), '\0');
+                walker.check(NMR::lib3mf_attachment_writetobuffer(attachment.get(), reinterpret_cast<BYTE*>(text.data()), size),
+                             attachment.get(), "reading the model config");
+                *model_config = std::move(text);
+            }
+        }
+    }
 
     DWORD warning_count = 0;
     walker.check(NMR::lib3mf_reader_getwarningcount(reader.get(), &warning_count), reader.get(), "reading warnings");
@@ -257,7 +297,101 @@ Mesh parse3mf(std::string_view bytes, const std::string& name, MeshReadReport* r
         walker.addObject(object.get(), transform, 0);
     }
     if (item_count == 0) assembler.note("the package has no build items: nothing would be printed");
+}
+
+}  // namespace
+
+Mesh parse3mf(std::string_view bytes, const std::string& name, MeshReadReport* report) {
+    MeshAssembler assembler(name, 0, 0);
+    walkPackage(bytes, name, assembler, [&assembler](DWORD, const std::string&) -> MeshAssembler& { return assembler; });
     return assembler.finish("3mf", report);
+}
+
+namespace {
+
+// The triangles [first, last] of mesh with the vertices they use, renumbered in order of first use.
+Mesh triangleRange(const Mesh& mesh, size_t first, size_t last) {
+    Mesh out;
+    std::vector<uint32_t> index(mesh.positions.size(), UINT32_MAX);
+    for (size_t t = first; t <= last; ++t) {
+        std::array<uint32_t, 3> tri{};
+        for (int k = 0; k < 3; ++k) {
+            uint32_t& at = index[mesh.triangles[t][size_t(k)]];
+            if (at == UINT32_MAX) {
+                at = uint32_t(out.positions.size());
+                out.positions.push_back(mesh.positions[mesh.triangles[t][size_t(k)]]);
+            }
+            tri[size_t(k)] = at;
+        }
+        out.triangles.push_back(tri);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<MeshPart> parse3mfParts(std::string_view bytes, const std::string& name, MeshReadReport* report) {
+    MeshAssembler notes(name, 0, 0);
+    std::vector<std::unique_ptr<MeshAssembler>> assemblers;
+    std::vector<MeshPart> objects;
+    std::vector<DWORD> ids;
+    std::string config;
+    walkPackage(
+        bytes, name, notes,
+        [&](DWORD id, const std::string& object_name) -> MeshAssembler& {
+            assemblers.push_back(std::make_unique<MeshAssembler>(name, 0, 0));
+            objects.push_back({object_name.empty() ? "object " + std::to_string(id) : object_name, {}});
+            ids.push_back(id);
+            return *assemblers.back();
+        },
+        &config);
+    const auto volumes = config.empty() ? std::map<unsigned, std::vector<mesh_io::ThreeMfVolume>>()
+                                        : mesh_io::parseSlicerModelConfig(config);
+    MeshReadReport total;
+    total.format = "3mf";
+    total.notes = notes.takeNotes();  // the package's notes; the counts are the parts' below
+    std::vector<MeshPart> parts;
+    for (size_t k = 0; k < objects.size(); ++k) {
+        MeshReadReport r;
+        Mesh mesh = assemblers[k]->finish("3mf", &r);
+        total.input_triangles += r.input_triangles;
+        total.input_vertices += r.input_vertices;
+        total.merged_vertices += r.merged_vertices;
+        total.degenerate_index_triangles += r.degenerate_index_triangles;
+        for (const std::string& n : r.notes) total.notes.push_back(objects[k].name + ": " + n);
+        // An object whose volumes the slicer config names is split into them; a
+        // range beyond the mesh, overlapping or leaving triangles out keeps the object whole.
+        const auto v = volumes.find(unsigned(ids[k]));
+        bool split = v != volumes.end() && !v->second.empty();
+        if (split) {
+            size_t next = 0;
+            for (const auto& vol : v->second) {
+                split = split && vol.first_triangle == next && vol.last_triangle >= vol.first_triangle &&
+                        vol.last_triangle < mesh.triangles.size();
+                next = vol.last_triangle + 1;
+            }
+            split = split && next == mesh.triangles.size();
+            if (!split) total.notes.push_back(objects[k].name + ": its volumes in the slicer config do not cover its "
+                                                                "triangles once each; read as one part");
+        }
+        if (!split) {
+            parts.push_back({objects[k].name, std::move(mesh)});
+            continue;
+        }
+        total.named_volumes = true;
+        for (size_t n = 0; n < v->second.size(); ++n) {
+            const auto& vol = v->second[n];
+            parts.push_back({vol.name.empty() ? objects[k].name + " volume " + std::to_string(n + 1) : vol.name,
+                             triangleRange(mesh, vol.first_triangle, vol.last_triangle)});
+        }
+    }
+    if (report) *report = std::move(total);
+    return parts;
+}
+
+std::vector<MeshPart> read3mfParts(const std::string& path, MeshReadReport* report) {
+    const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
+    return parse3mfParts(bytes, path, report);
 }
 
 Mesh read3mf(const std::string& path, MeshReadReport* report) {

@@ -1,6 +1,6 @@
 // 3MF reader (3MF Core, through lib3mf 1.8.1's C API).
 //
-// Reads what a printer would print: every build item, with its transform,
+// read3mf reads what a printer would print: every build item, with its transform,
 // recursing through components objects (each component's transform applied
 // too). All mesh objects end up in one mesh, converted to millimetres from
 // the package's unit (micron, cm, inch, foot, metre; noted). Objects whose
@@ -20,7 +20,10 @@
 #include <string>
 #include <string_view>
 
+#include <vector>
+
 #include "gen/mesh.h"
+#include "gen/mesh_parts.h"
 #include "gen/mesh_io/mesh_read_report.h"
 
 namespace tsf {
@@ -30,5 +33,16 @@ Mesh read3mf(const std::string& path, MeshReadReport* report = nullptr);
 
 /// Parses a 3MF package already in memory; name is used in error messages.
 Mesh parse3mf(std::string_view bytes, const std::string& name, MeshReadReport* report = nullptr);
+
+/// Reads the package as parts: one MeshPart per mesh object instance that a
+/// build item prints (directly or through components, in file order), named
+/// after its object ("object <id>" when it has no name), and an object whose
+/// volumes Metadata/Slic3r_PE_model.config names (three_mf_volumes.h, as
+/// write3mfParts writes it) split into those volumes, each with its own
+/// vertices, so parts that touch stay separate bodies (gen/mesh_parts.h).
+/// The report sums the parts' counts; a part's own notes are prefixed with
+/// its name. Errors as read3mf.
+std::vector<MeshPart> read3mfParts(const std::string& path, MeshReadReport* report = nullptr);
+std::vector<MeshPart> parse3mfParts(std::string_view bytes, const std::string& name, MeshReadReport* report = nullptr);
 
 }  // namespace tsf

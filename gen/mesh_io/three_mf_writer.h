@@ -1,6 +1,6 @@
 // 3MF writer (3MF Core, through lib3mf 1.8.1's C API).
 //
-// Writes one mesh object (type "model", named opts.title) with one build item
+// write3mf writes one mesh object (type "model", named opts.title) with one build item
 // and no transform, unit millimetre, metadata Title = opts.title and
 // Application = "tsf <version>". The package is written to the AtomicFile's
 // temporary path and renamed over path only when lib3mf reports success.
@@ -20,7 +20,10 @@
 
 #include <string>
 
+#include <vector>
+
 #include "gen/mesh.h"
+#include "gen/mesh_parts.h"
 #include "gen/mesh_io/mesh_write_options.h"
 
 namespace tsf {
@@ -31,5 +34,18 @@ namespace tsf {
 /// vertices or triangles), std::invalid_argument for out-of-range indices, and
 /// std::runtime_error carrying lib3mf's message if lib3mf fails.
 void write3mf(const Mesh& mesh, const std::string& path, const MeshWriteOptions& opts = {});
+
+/// Writes parts (gen/mesh_parts.h) to path atomically as ONE mesh object
+/// (named opts.title) whose triangles are the parts' in the order given,
+/// each part's vertices after the previous part's (nothing merged), one
+/// build item, and the package part Metadata/Slic3r_PE_model.config
+/// (three_mf_volumes.h) naming each part's triangle range as a volume of
+/// type ModelPart. That is how PrusaSlicer stores an object made of parts:
+/// it loads the file as one object whose volumes are the parts, so each can
+/// get its own extruder (colour or material). (A 3MF components object would
+/// be loaded as separate objects.) read3mfParts reads the parts back; a
+/// reader that knows nothing of the ranges sees one mesh. Throws as
+/// write3mf, for every part, and InputError when parts is empty.
+void write3mfParts(const std::vector<MeshPart>& parts, const std::string& path, const MeshWriteOptions& opts = {});
 
 }  // namespace tsf

@@ -211,5 +211,138 @@ TEST(ThreeMfReader, IndexOutOfRangeInTheXmlIsAnInputError) {
     EXPECT_THROW(parse3mf(test::threeMfPackage(xml), "range.3mf"), InputError);
 }
 
+// Two boxes that touch (the block stands on the base's top) as parts: to
+// lib3mf itself one build item of one mesh object holding both boxes'
+// triangles, and read back by tsf as two parts named as written, each with
+// its own vertices (the corner both boxes have stays a vertex of each).
+TEST(ThreeMfParts, WrittenAsOneObjectOfPartsAndReadBackAsParts) {
+    const auto dir = scratchDir();
+    const std::string path = (dir / "parts.3mf").string();
+    const std::vector<MeshPart> parts{{"pillars", test::box({0, 0, 0}, {20, 10, 5})},
+                                      {"marks", test::box({0, 0, 5}, {4, 4, 6})}};
+    MeshWriteOptions opts;
+    opts.title = "two parts";
+    write3mfParts(parts, path, opts);
+
+    {
+        Lib3mfModel lib(path);
+        NMR::PLib3MFModelBuildItemIterator* items = nullptr;
+        ASSERT_EQ(NMR::lib3mf_model_getbuilditems(lib.model, &items), LIB3MF_OK);
+        size_t item_count = 0;
+        BOOL has = false;
+        DWORD triangles = 0;
+        while (NMR::lib3mf_builditemiterator_movenext(items, &has) == LIB3MF_OK && has) {
+            ++item_count;
+            NMR::PLib3MFModelBuildItem* item = nullptr;
+            NMR::lib3mf_builditemiterator_getcurrent(items, &item);
+            NMR::PLib3MFModelObjectResource* object = nullptr;
+            NMR::lib3mf_builditem_getobjectresource(item, &object);
+            NMR::lib3mf_meshobject_gettrianglecount(object, &triangles);
+            NMR::lib3mf_release(object);
+            NMR::lib3mf_release(item);
+        }
+        NMR::lib3mf_release(items);
+        EXPECT_EQ(item_count, 1u);
+        EXPECT_EQ(triangles, 24u);
+    }
+
+    MeshReadReport report;
+    const std::vector<MeshPart> back = read3mfParts(path, &report);
+    ASSERT_EQ(back.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(back[k].name, parts[k].name);
+        // The same triangles in the same order at the same corners (whole mm: exact in float32).
+        const Mesh &a = back[k].mesh, &b = parts[k].mesh;
+        EXPECT_EQ(a.positions.size(), b.positions.size());
+        ASSERT_EQ(a.triangles.size(), b.triangles.size());
+        for (size_t t = 0; t < a.triangles.size(); ++t)
+            for (size_t c = 0; c < 3; ++c) EXPECT_EQ(a.positions[a.triangles[t][c]], b.positions[b.triangles[t][c]]);
+    }
+    EXPECT_EQ(report.input_triangles, 24u);
+    // readMeshParts dispatches on the extension; readMesh still gives everything as one mesh.
+    EXPECT_EQ(readMeshParts(path).size(), 2u);
+    // The block's corner (0,0,5) is also the base's corner: one vertex when merged as one mesh.
+    EXPECT_EQ(readMesh(path).positions.size(), 15u);
+    // Any other format is one part named "model".
+    writeMesh(parts[0].mesh, (dir / "one.stl").string());
+    const std::vector<MeshPart> stl = readMeshParts((dir / "one.stl").string());
+    ASSERT_EQ(stl.size(), 1u);
+    EXPECT_EQ(stl[0].name, "model");
+}
+
+TEST(ThreeMfParts, NoPartsIsRefused) {
+    const auto dir = scratchDir();
+    EXPECT_THROW(write3mfParts({}, (dir / "none.3mf").string()), InputError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "none.3mf"));
+}
+
+// A package of one mesh object (id 1) holding two boxes' 24 triangles, with
+// PrusaSlicer's volume config beside it (reached through a relationship, as
+// write3mfParts writes it).
+std::string twoBoxPackage(const std::string& config) {
+    const Mesh m = test::append(test::box({0, 0, 0}, {20, 10, 5}), test::box({0, 0, 5}, {4, 4, 6}));
+    std::string xml = R"(<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" )"
+                      R"(xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02"><resources>)"
+                      R"(<object id="1" type="model"><mesh><vertices>)";
+    for (const Vec3& p : m.positions)
+        xml += "<vertex x=\"" + std::to_string(p.x) + "\" y=\"" + std::to_string(p.y) + "\" z=\"" + std::to_string(p.z) + "\"/>";
+    xml += "</vertices><triangles>";
+    for (const auto& t : m.triangles)
+        xml += "<triangle v1=\"" + std::to_string(t[0]) + "\" v2=\"" + std::to_string(t[1]) + "\" v3=\"" +
+               std::to_string(t[2]) + "\"/>";
+    xml += R"(</triangles></mesh></object></resources><build><item objectid="1"/></build></model>)";
+    const std::string content_types =
+        R"(<?xml version="1.0" encoding="UTF-8"?>)"
+        R"(<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">)"
+        R"(<Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/>)"
+        R"(<Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>)";
+    const std::string rels =
+        R"(<?xml version="1.0" encoding="UTF-8"?>)"
+        R"(<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)"
+        R"(<Relationship Target="/3D/3dmodel.model" Id="rel0" )"
+        R"(Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>)";
+    const std::string model_rels =
+        R"(<?xml version="1.0" encoding="UTF-8"?>)"
+        R"(<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)"
+        R"(<Relationship Target="/Metadata/Slic3r_PE_model.config" Id="rel1" Type="urn:tsf:3mf:slicer-model-config"/>)"
+        R"(</Relationships>)";
+    return test::storedZip({{"[Content_Types].xml", content_types},
+                            {"_rels/.rels", rels},
+                            {"3D/3dmodel.model", xml},
+                            {"3D/_rels/3dmodel.model.rels", model_rels},
+                            {"Metadata/Slic3r_PE_model.config", config}});
+}
+
+std::string volumesConfig(const std::string& volumes) {
+    return R"(<?xml version="1.0" encoding="UTF-8"?><config><object id="1" instances_count="1">)" + volumes +
+           "</object></config>";
+}
+
+TEST(ThreeMfParts, VolumesNamedInTheSlicerConfigSplitTheObjectAndBadRangesKeepItWhole) {
+    const std::string two = volumesConfig(
+        R"(<volume firstid="0" lastid="11"><metadata type="volume" key="name" value="base &amp; all"/></volume>)"
+        R"(<volume firstid="12" lastid="23"><metadata type="volume" key="name" value="block"/></volume>)");
+    const std::vector<MeshPart> parts = parse3mfParts(twoBoxPackage(two), "two.3mf");
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_EQ(parts[0].name, "base & all");
+    EXPECT_EQ(parts[1].name, "block");
+    EXPECT_EQ(parts[0].mesh.positions.size(), 8u);  // the shared corner is a vertex of each
+    EXPECT_EQ(parts[1].mesh.positions.size(), 8u);
+    EXPECT_EQ(parts[1].mesh.triangles.size(), 12u);
+
+    // Ranges past the end, overlapping, or leaving triangles out: one part, and a note says why.
+    for (const std::string& bad : {R"(<volume firstid="0" lastid="11"/><volume firstid="12" lastid="30"/>)",
+                                   R"(<volume firstid="0" lastid="12"/><volume firstid="12" lastid="23"/>)",
+                                   R"(<volume firstid="0" lastid="11"/>)"}) {
+        MeshReadReport report;
+        const std::vector<MeshPart> whole = parse3mfParts(twoBoxPackage(volumesConfig(bad)), "bad.3mf", &report);
+        ASSERT_EQ(whole.size(), 1u) << bad;
+        EXPECT_EQ(whole[0].mesh.triangles.size(), 24u);
+        bool noted = false;
+        for (const std::string& n : report.notes) noted = noted || n.find("read as one part") != std::string::npos;
+        EXPECT_TRUE(noted) << bad;
+    }
+}
+
 }  // namespace
 }  // namespace tsf

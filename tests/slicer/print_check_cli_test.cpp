@@ -103,5 +103,44 @@ TEST(PrintCheckCli, BadInputIsExitTwoAndAMissingSlicerExitThree) {
     EXPECT_NE(none.err.find("prusa-slicer"), std::string::npos) << none.err;
 }
 
+// tsf gen --parts --print-check: PrusaSlicer loads the 3MF as ONE object
+// (its --info prints one block) whose volumes are the parts, and the gen
+// summary carries the print check (time, filament). Small field, one gen.
+TEST(PrintCheckCli, MultiPart3mfIsOneObjectToPrusaSlicerAndGenPrintChecksIt) {
+    REQUIRE_SLICER();
+    const auto dir = test::scratchDir();
+    std::string csv;
+    for (int r = 0; r < 10; ++r) {  // a varied strip in the north, a flat region for the triangle
+        for (int c = 0; c < 14; ++c) csv += (c ? "," : "") + std::to_string(r >= 3 ? 4 : (c + r) % 3);
+        csv += "\n";
+    }
+    test::writeText(dir / "field.csv", csv);
+    const std::string model = (dir / "parts.3mf").string();
+    const auto gen = test::runTsf("gen " + (dir / "field.csv").string() +
+                                      " --cell 4 --height 4 --title T --parts --print-check --layer 0.3 --json -o " + model,
+                                  dir);
+    ASSERT_EQ(gen.exit_code, test::kExitOk) << gen.out << gen.err;
+    const auto j = nlohmann::json::parse(gen.out);
+    ASSERT_TRUE(j.contains("print_check")) << j.dump(2);
+    ASSERT_EQ(j["verify"]["parts"]["parts"].size(), 3u);  // pillars, marks, legend
+    EXPECT_EQ(j["print_check"]["objects"], 1);
+    EXPECT_EQ(j["print_check"]["repair_needed"], false);
+    EXPECT_GT(j["print_check"]["print_time_s"].get<double>(), 0);
+    EXPECT_GT(j["print_check"]["filament_g"].get<double>(), 0);
+    EXPECT_DOUBLE_EQ(j["print_check"]["settings"]["layer_mm"].get<double>(), 0.3);  // --layer reaches the slicer
+
+    // PrusaSlicer's own --info: one object of all the parts' triangles.
+    const auto info = test::runCommand("prusa-slicer --loglevel 1 --datadir " + (dir / "ps").string() + " --info " + model);
+    ASSERT_EQ(info.exit_code, 0) << info.output;
+    size_t blocks = 0;
+    for (size_t at = info.output.find("number_of_facets"); at != std::string::npos;
+         at = info.output.find("number_of_facets", at + 1))
+        ++blocks;
+    EXPECT_EQ(blocks, 1u) << info.output;
+    size_t triangles = 0;
+    for (const MeshPart& p : readMeshParts(model)) triangles += p.mesh.triangleCount();
+    EXPECT_NE(info.output.find("number_of_facets = " + std::to_string(triangles)), std::string::npos) << info.output;
+}
+
 }  // namespace
 }  // namespace tsf

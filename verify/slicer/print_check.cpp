@@ -73,7 +73,8 @@ std::string formatPrintCheck(const PrintCheckReport& r) {
       << " mm (first layer too), nozzle " << fixed(s.nozzle_mm, 2) << " mm, bed " << fixed(s.bed_width_mm, 0) << " x "
       << fixed(s.bed_depth_mm, 0) << " mm, filament " << fixed(s.filament_density_g_cm3, 2) << " g/cm3\n";
     o << "  model:             " << fixed(r.size_mm[0], 1) << " x " << fixed(r.size_mm[1], 1) << " x "
-      << fixed(r.size_mm[2], 1) << " mm, " << r.triangles << " triangles, " << r.info.parts
+      << fixed(r.size_mm[2], 1) << " mm, " << r.triangles << " triangles, " << r.info.objects
+      << (r.info.objects == 1 ? " object" : " objects") << " as PrusaSlicer loads it, " << r.info.parts
       << (r.info.parts == 1 ? " piece" : " pieces") << "\n";
     if (r.repairNeeded())
         o << "  repair:            NEEDED: PrusaSlicer finds the mesh not manifold (" << r.info.open_edges
@@ -109,6 +110,7 @@ nlohmann::json toJson(const PrintCheckReport& r) {
             {"manifold", r.info.manifold},
             {"repair_needed", r.repairNeeded()},
             {"open_edges", r.info.open_edges},
+            {"objects", r.info.objects},
             {"parts", r.info.parts},
             {"volume_mm3", r.info.volume_mm3},
             {"supports_needed", r.supportsNeeded()},

@@ -112,7 +112,9 @@ SlicerModelInfo prusaSlicerInfo(const std::string& model_path, const SlicerSetti
         const std::string value = line.substr(eq + 3);
         const double v = std::strtod(value.c_str(), nullptr);
         if (key == "manifold") {
-            info.manifold = value.rfind("yes", 0) == 0;
+            // One block per object: the model is manifold when every object is.
+            info.manifold = (info.objects == 0 || info.manifold) && value.rfind("yes", 0) == 0;
+            ++info.objects;
             manifold_seen = true;
         } else if (key == "open_edges") info.open_edges = long(v);
         else if (key == "number_of_facets") info.facets = long(v);

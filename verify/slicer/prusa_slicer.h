@@ -38,10 +38,11 @@ struct SlicerSettings {
 
 /// What `prusa-slicer --info` says of a model.
 struct SlicerModelInfo {
-    bool manifold = false;      ///< "manifold = yes": slices without repair
+    long objects = 0;           ///< objects PrusaSlicer loaded (one block each; a multi-part 3MF is one)
+    bool manifold = false;      ///< "manifold = yes" for every object: slices without repair
     long open_edges = 0;        ///< "open_edges" (only written for a non-manifold model)
     long facets = 0;            ///< "number_of_facets"
-    long parts = 0;             ///< "number_of_parts": connected pieces
+    long parts = 0;             ///< "number_of_parts": connected pieces (of the last object)
     double volume_mm3 = 0;      ///< "volume"
     double size_mm[3] = {0, 0, 0};  ///< "size_x/y/z"
 };

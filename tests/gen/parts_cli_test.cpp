@@ -1,0 +1,77 @@
+// tsf gen --parts: a 3MF of pillars, marks and legend, verified part by part
+// and as an assembly by tsf gen and again by tsf verify; refused for formats
+// that hold one solid.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/mesh_io/mesh_reader.h"
+#include "tests/support/mesh_invariants.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+// 16 x 12 values: a varied strip in the north, the rest one flat value (the triangle's region).
+std::string partsField() {
+    std::string csv;
+    for (int r = 0; r < 12; ++r) {
+        for (int c = 0; c < 16; ++c) csv += (c ? "," : "") + std::to_string(r >= 4 ? 5 : (c + r) % 4);
+        csv += "\n";
+    }
+    return csv;
+}
+
+TEST(PartsCli, GenWritesOneObjectInPartsAndVerifyJudgesEachPartAndTheAssembly) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", partsField());
+    const std::string model = (dir / "m.3mf").string();
+    const auto r = test::runTsf("gen " + (dir / "f.csv").string() +
+                                    " --cell 4 --height 10 --title Test --units m --parts --json -o " + model,
+                                dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["verify"]["parts"]["passed"], true);
+    ASSERT_EQ(j["verify"]["parts"]["parts"].size(), 3u);
+    EXPECT_NE(j["outputs"][0]["kind"].get<std::string>().find("3 parts: pillars, marks, legend"), std::string::npos)
+        << j["outputs"].dump();
+
+    const std::vector<MeshPart> parts = readMeshParts(model);
+    ASSERT_EQ(parts.size(), 3u);
+    for (const MeshPart& p : parts) {
+        const test::Invariants inv = test::checkInvariants(p.mesh);
+        EXPECT_TRUE(inv.closedManifold()) << p.name << ": " << inv.describe();
+    }
+
+    const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json --json", dir);
+    ASSERT_EQ(v.exit_code, test::kExitOk) << v.out << v.err;
+    const auto vj = nlohmann::json::parse(v.out);
+    EXPECT_EQ(vj["format"], "tsf-verify-parts-report");
+    EXPECT_EQ(vj["parts"][0]["name"], "pillars");
+    EXPECT_EQ(vj["parts"][1]["name"], "marks");
+    EXPECT_EQ(vj["parts"][2]["name"], "legend");
+    EXPECT_EQ(vj["passed"], true);
+    bool overlap = false, readback = false;
+    for (const auto& c : vj["assembly"]["checks"]) {
+        overlap = overlap || (c["id"] == "parts_overlap" && c["status"] == "pass");
+        readback = readback || (c["id"] == "values_read_back" && c["status"] == "pass");
+    }
+    EXPECT_TRUE(overlap) << vj["assembly"].dump(2);
+    EXPECT_TRUE(readback) << vj["assembly"].dump(2);
+
+}
+
+TEST(PartsCli, PartsNeedA3mfAndPrintCheckAModelFile) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", partsField());
+    const auto stl = test::runTsf("gen " + (dir / "f.csv").string() + " --parts -o " + (dir / "m.stl").string(), dir);
+    EXPECT_EQ(stl.exit_code, test::kExitBadInput) << stl.out << stl.err;
+    EXPECT_NE(stl.err.find("--parts writes a 3MF"), std::string::npos) << stl.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "m.stl"));
+    const auto scad = test::runTsf("gen " + (dir / "f.csv").string() + " --print-check --scad " + (dir / "m.scad").string(), dir);
+    EXPECT_EQ(scad.exit_code, test::kExitBadInput) << scad.out << scad.err;
+    EXPECT_NE(scad.err.find("--print-check slices the model file"), std::string::npos) << scad.err;
+}
+
+}  // namespace
+}  // namespace tsf
