@@ -16,7 +16,20 @@
 // meet three to a vertex, so the region's boundary never pinches, and the
 // culling rules keep the region simply connected: docs/model.md). It is
 // triangulated as a whole by a constrained Delaunay triangulation with exact
-// predicates, without interior vertices.
+// predicates, with the interior lattice vertices of a coarse sublattice
+// (every kSparseStride-th row and column, staggered) as extra vertices: the
+// triangles stay a few cells across instead of spanning the model, so a ray
+// from below meets a handful of tree boxes, not thousands.
+//
+// Merged tops. Edge-connected plain level cells of one top height (not tilted,
+// not dimpled, not drawn by a face) form a region whose top is one planar
+// polygon (with holes). A lattice vertex whose three cells all lie in one
+// region carries nothing but that top, so it is left out, except on the
+// sparse sublattice; the region's boundary keeps every vertex the walls use,
+// so there is no T-junction. A region with no vertex left out keeps its
+// per-cell hexagons (the same triangle count, better shaped). The polygon is
+// triangulated like the flat bottom. Only the tops merge: mirrored bottoms
+// stay per cell.
 //
 // Faces. Cells touched by an orientation mark are drawn through the Scene's
 // planar faces (gen/marks.h) instead of as hexagons: the same rules with the
@@ -35,9 +48,12 @@
 #include "gen/direct_mesher.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
+#include <thread>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -45,6 +61,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include "gen/cdt_parity.h"
+#include "gen/util/union_find.h"
 
 #include "gen/legend_scene.h"
 #include "gen/scene_check.h"
@@ -53,6 +70,29 @@ namespace tsf {
 namespace {
 
 constexpr int kMaxHeightsPerVertex = 8;  // 3 incident cells x (top, bottom), or faces at a mark vertex
+// Merged tops and the flat bottom keep the lattice vertices of rows and
+// columns that are multiples of this (staggered by half): their triangles are
+// at most a few cells long, for about 2 / kSparseStride^2 triangles a cell.
+constexpr int32_t kSparseStride = 4;
+constexpr uint32_t kNotMerged = UINT32_MAX;
+// Below this many kept cells the mesher runs on one thread (a thread costs
+// more than meshing a few thousand cells).
+constexpr size_t kParallelCells = 20000;
+
+using Triangles = std::vector<std::array<uint32_t, 3>>;
+// Where tri() appends on this thread: each worker of a parallel pass has its
+// own list, joined in row order afterwards, so the mesh is the same for any
+// number of threads.
+thread_local Triangles* t_sink = nullptr;
+
+// Runs work(part) for part = 0 .. parts-1 on as many threads.
+template <class Work>
+void runParts(unsigned parts, const Work& work) {
+    std::vector<std::thread> pool;
+    for (unsigned p = 1; p < parts; ++p) pool.emplace_back(work, p);
+    work(0u);
+    for (std::thread& t : pool) t.join();
+}
 
 class MeshBuilder {
 public:
@@ -71,16 +111,91 @@ public:
 
     Mesh build() {
         if (flat_) collectRim();
+        findMergedTops();
+        if (flat_) findBottomPoints();
         assignVertices();
-        for (size_t k = 0; k < s_.keptCount(); ++k)
-            if (s_.drawn_by_face.empty() || !s_.drawn_by_face[k]) addCell(k);
+        addCells();
         for (const PlanarFace& f : s_.faces.faces) addFace(f);
+        addMergedTops();
         if (flat_) addFlatBottom();
         return std::move(mesh_);
     }
 
 private:
     bool drawnByFace(int32_t kept) const { return !s_.drawn_by_face.empty() && s_.drawn_by_face[size_t(kept)]; }
+
+    // A lattice vertex of the sparse sublattice (staggered rows of every
+    // kSparseStride-th top corner): kept inside merged tops and the flat bottom.
+    bool onSparseLattice(int64_t id) const {
+        if ((id & 1) != 0) return false;
+        const int64_t cell = id >> 1, stride = kSparseStride;
+        const int64_t c = cell % (int64_t(g_.cols) + 2), r = cell / (int64_t(g_.cols) + 2);
+        return r % stride == 0 && (c + (r / stride) % 2 * (stride / 2)) % stride == 0;
+    }
+
+    // A plain level cell: its top may join a merged region.
+    bool mergeable(int32_t k) const { return k >= 0 && !drawnByFace(k) && !isShaped(s_.shapes, size_t(k)); }
+
+    // The merged region (its root cell) of kept cell k whose three cells at
+    // lattice vertex id all belong to it, or kNotMerged.
+    uint32_t regionAround(int64_t id, uint32_t root) const {
+        int32_t cells[3];
+        incidentCells(id, cells);
+        for (int32_t c : cells)
+            if (c < 0 || region_[size_t(c)] != root) return kNotMerged;
+        return faces_at_.count(id) ? kNotMerged : root;
+    }
+
+    // Regions of equal-height plain level cells, and the lattice vertices
+    // inside them that are left out (dropped_top_).
+    void findMergedTops() {
+        const size_t n = s_.keptCount();
+        region_.assign(n, kNotMerged);
+        UnionFind uf(n);
+        for (size_t k = 0; k < n; ++k) {
+            if (!mergeable(int32_t(k))) continue;
+            for (int e = 0; e < 3; ++e) {  // east, north-east, north-west: each pair once
+                const int32_t o = s_.keptNeighbour(k, e);
+                if (mergeable(o) && s_.top[size_t(o)] == s_.top[k]) uf.unite(uint32_t(k), uint32_t(o));
+            }
+        }
+        for (size_t k = 0; k < n; ++k)
+            if (mergeable(int32_t(k))) region_[k] = uf.find(uint32_t(k));
+        dropped_top_.assign(size_t(lattice_ids_), 0);
+        std::vector<uint8_t> has_dropped(n, 0);
+        for (size_t k = 0; k < n; ++k) {
+            if (region_[k] == kNotMerged) continue;
+            for (int e = 0; e < kHexCorners; ++e) {
+                const int64_t id = hexCornerId(g_, s_.col[k], s_.row[k], e);
+                if (onSparseLattice(id) || regionAround(id, region_[k]) == kNotMerged) continue;
+                dropped_top_[size_t(id)] = 1;
+                has_dropped[region_[k]] = 1;
+            }
+        }
+        // A region with nothing left out keeps its hexagons.
+        for (size_t k = 0; k < n; ++k)
+            if (region_[k] != kNotMerged && !has_dropped[region_[k]]) region_[k] = kNotMerged;
+    }
+
+    // Flat: the interior lattice vertices of the sparse sublattice at the floor.
+    void findBottomPoints() {
+        bottom_point_.assign(size_t(lattice_ids_), 0);
+        for (size_t k = 0; k < s_.keptCount(); ++k) {
+            if (drawnByFace(int32_t(k))) continue;
+            for (int e = 0; e < kHexCorners; ++e) {
+                const int64_t id = hexCornerId(g_, s_.col[k], s_.row[k], e);
+                if (!onSparseLattice(id) || bottom_point_[size_t(id)] || rim_.count(id) || faces_at_.count(id)) continue;
+                int32_t cells[3];
+                incidentCells(id, cells);
+                bool inside = true;
+                for (int32_t c : cells) inside = inside && c >= 0 && !drawnByFace(c);
+                if (inside) {
+                    bottom_point_[size_t(id)] = 1;
+                    bottom_points_.push_back(id);
+                }
+            }
+        }
+    }
 
     // The three cells meeting at a lattice vertex (kept indices; -1 = not kept).
     void incidentCells(int64_t id, int32_t out[3]) const {
@@ -104,11 +219,16 @@ private:
             int32_t cells[3];
             incidentCells(id, cells);
             rim = touched ? rim_.count(id) > 0 : (cells[0] < 0 || cells[1] < 0 || cells[2] < 0);
+            const bool dropped = dropped_top_[size_t(id)] != 0;
             for (int32_t c : cells) {
                 if (c < 0 || drawnByFace(c)) continue;
-                out[n++] = cornerTopAt(s_, size_t(c), id);
-                if (!flat_ || rim) out[n++] = cornerBottomAt(s_, size_t(c), id);
+                // A level cell is at its height at every corner (as addCell
+                // draws it), found without searching for the corner.
+                const bool shaped = isShaped(s_.shapes, size_t(c));
+                if (!dropped) out[n++] = shaped ? cornerTopAt(s_, size_t(c), id) : s_.top[size_t(c)];
+                if (!flat_ || rim) out[n++] = shaped ? cornerBottomAt(s_, size_t(c), id) : s_.bottom[size_t(c)];
             }
+            if (flat_ && bottom_point_[size_t(id)]) out[n++] = 0;
         } else {
             rim = rim_.count(id) > 0;
         }
@@ -123,17 +243,54 @@ private:
         return int(std::unique(out, out + n) - out);
     }
 
+    unsigned threads() const {
+        if (s_.keptCount() < kParallelCells) return 1;
+        return std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+    }
+
+    // Vertex indices in id order: counted, summed, then placed, the first and
+    // last passes split over threads by id range.
     void assignVertices() {
         const int64_t ids = int64_t(first_index_.size()) - 1;
+        const unsigned parts = threads();
+        const auto range = [&](unsigned p) { return std::pair(ids * p / parts, ids * (p + 1) / parts); };
+        runParts(parts, [&](unsigned p) {
+            int64_t z[kMaxHeightsPerVertex];
+            for (auto [id, end] = range(p); id < end; ++id) first_index_[size_t(id)] = uint32_t(usedHeights(id, z));
+        });
         uint32_t next = 0;
-        int64_t z[kMaxHeightsPerVertex];
-        for (int64_t id = 0; id < ids; ++id) {
-            first_index_[size_t(id)] = next;
-            const int n = usedHeights(id, z);
-            for (int h = 0; h < n; ++h) mesh_.positions.push_back(s_.planarPoint(id, z[h]));
-            next += uint32_t(n);
-        }
+        for (int64_t id = 0; id < ids; ++id) next += std::exchange(first_index_[size_t(id)], next);
         first_index_[size_t(ids)] = next;
+        mesh_.positions.resize(next);
+        runParts(parts, [&](unsigned p) {
+            int64_t z[kMaxHeightsPerVertex];
+            for (auto [id, end] = range(p); id < end; ++id) {
+                const int n = usedHeights(id, z);
+                for (int h = 0; h < n; ++h) mesh_.positions[first_index_[size_t(id)] + uint32_t(h)] = s_.planarPoint(id, z[h]);
+            }
+        });
+    }
+
+    // Every cell not drawn by a face, in blocks of rows on the threads; the
+    // blocks' triangles are joined in row order.
+    void addCells() {
+        const size_t n = s_.keptCount();
+        const unsigned parts = threads();
+        std::vector<Triangles> out(parts);
+        runParts(parts, [&](unsigned p) {
+            t_sink = parts > 1 ? &out[p] : &mesh_.triangles;
+            for (size_t k = n * p / parts, end = n * (p + 1) / parts; k < end; ++k)
+                if (!drawnByFace(int32_t(k))) addCell(k);
+            t_sink = nullptr;
+        });
+        if (parts == 1) return;
+        size_t total = mesh_.triangles.size();
+        for (const Triangles& t : out) total += t.size();
+        mesh_.triangles.reserve(total + total / 16);
+        for (Triangles& t : out) {
+            mesh_.triangles.insert(mesh_.triangles.end(), t.begin(), t.end());
+            Triangles().swap(t);
+        }
     }
 
     uint32_t vertexIndex(int64_t id, int64_t z) const {
@@ -144,7 +301,7 @@ private:
         return first_index_[size_t(id)] + uint32_t(at - zs);
     }
 
-    void tri(uint32_t a, uint32_t b, uint32_t c) { mesh_.triangles.push_back({a, b, c}); }
+    void tri(uint32_t a, uint32_t b, uint32_t c) { (t_sink ? *t_sink : mesh_.triangles).push_back({a, b, c}); }
 
     struct Span {
         int64_t bottom, top;  // z units at one end of an edge
@@ -187,7 +344,10 @@ private:
     }
 
     Span cornerSpan(size_t k, int e) const { return {cornerBottom(s_, k, e), cornerTop(s_, k, e)}; }
-    Span spanAt(size_t k, int64_t id) const { return {cornerBottomAt(s_, k, id), cornerTopAt(s_, k, id)}; }
+    Span spanAt(size_t k, int64_t id) const {
+        if (!isShaped(s_.shapes, k)) return {s_.bottom[k], s_.top[k]};  // level: the same at every corner
+        return {cornerBottomAt(s_, k, id), cornerTopAt(s_, k, id)};
+    }
 
     // A tilted or dimpled cell: fans from its centre, walls by corner.
     void addShapedCell(size_t k) {
@@ -233,9 +393,11 @@ private:
             addShapedCell(k);
             return;
         }
-        uint32_t t[kHexCorners];
-        for (int e = 0; e < kHexCorners; ++e) t[e] = vertexIndex(id[e], top);
-        for (int e = 2; e < kHexCorners; ++e) tri(t[0], t[e - 1], t[e]);  // CCW from above
+        if (region_[k] == kNotMerged) {
+            uint32_t t[kHexCorners];
+            for (int e = 0; e < kHexCorners; ++e) t[e] = vertexIndex(id[e], top);
+            for (int e = 2; e < kHexCorners; ++e) tri(t[0], t[e - 1], t[e]);  // CCW from above
+        }
         if (!flat_) {
             uint32_t b[kHexCorners];
             for (int e = 0; e < kHexCorners; ++e) b[e] = vertexIndex(id[e], bottom);
@@ -331,42 +493,92 @@ private:
         rim_.insert(w);
     }
 
+    // The merged tops: per region, its boundary edges (counter-clockwise
+    // around the region) and its kept interior vertices, triangulated.
+    void addMergedTops() {
+        // Regions in the order of their roots (first cells), the same on every run.
+        std::vector<uint32_t> slot(s_.keptCount(), kNotMerged);
+        std::vector<PlanarRegion> regions;
+        for (size_t k = 0; k < s_.keptCount(); ++k) {
+            const uint32_t root = region_[k];
+            if (root == kNotMerged) continue;
+            if (slot[root] == kNotMerged) {
+                slot[root] = uint32_t(regions.size());
+                regions.emplace_back();
+                regions.back().z = s_.top[root];
+            }
+            PlanarRegion& r = regions[slot[root]];
+            int64_t id[kHexCorners];
+            for (int e = 0; e < kHexCorners; ++e) id[e] = hexCornerId(g_, s_.col[k], s_.row[k], e);
+            for (int e = 0; e < kHexCorners; ++e) {
+                const int32_t o = s_.keptNeighbour(k, e);
+                if (o < 0 || region_[size_t(o)] != root) r.edges.push_back({id[e], id[(e + 1) % kHexCorners]});
+                // Each interior vertex once: from the cell whose top or bottom corner it is.
+                if (!dropped_top_[size_t(id[e])] && (e == 2 || e == 5) && regionAround(id[e], root) != kNotMerged)
+                    r.inner.push_back(id[e]);
+            }
+        }
+        for (const PlanarRegion& r : regions) addPlanarRegion(r, r.z, /*facing_up=*/true);
+    }
+
     void addFlatBottom() {
         if (next_on_rim_.empty()) return;
-        std::vector<int64_t> loop;
-        loop.reserve(next_on_rim_.size());
-        const int64_t start = next_on_rim_.begin()->first;
-        for (int64_t v = start;;) {
-            loop.push_back(v);
-            v = next_on_rim_.at(v);
-            if (v == start) break;
-            assert(loop.size() <= next_on_rim_.size());
-        }
-        assert(loop.size() == next_on_rim_.size() && "the kept region must have one rim");
+        PlanarRegion r;
+        r.edges.assign(next_on_rim_.begin(), next_on_rim_.end());
+        std::sort(r.edges.begin(), r.edges.end());  // the same triangulation on every run
+        r.inner = std::move(bottom_points_);
+        addPlanarRegion(r, 0, /*facing_up=*/false);
+    }
 
+    struct PlanarRegion {
+        std::vector<std::pair<int64_t, int64_t>> edges;  // boundary, planar ids, closed loops
+        std::vector<int64_t> inner;                      // interior vertices (planar ids)
+        int64_t z = 0;                                   // height, z snap units
+    };
+
+    // A horizontal polygon with holes at height z, bounded by r.edges, with
+    // r.inner as extra vertices: a constrained Delaunay triangulation with
+    // exact predicates, faces inside by parity.
+    void addPlanarRegion(const PlanarRegion& r, int64_t z, bool facing_up) {
         using K = CGAL::Exact_predicates_inexact_constructions_kernel;
         using Vb = CGAL::Triangulation_vertex_base_with_info_2<uint32_t, K>;
         using Fb = CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<int, K>>;
         using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
         using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
         Cdt cdt;
-        std::vector<Cdt::Vertex_handle> handles;
-        handles.reserve(loop.size());
-        for (int64_t id : loop) {
-            const uint32_t index = vertexIndex(id, 0);
+        const auto point = [&](uint32_t index) {
             const Vec3& p = mesh_.positions[index];
-            Cdt::Vertex_handle h = cdt.insert(K::Point_2(p.x, p.y));
-            h->info() = index;
-            handles.push_back(h);
+            return K::Point_2(p.x, p.y);
+        };
+        std::unordered_map<int64_t, Cdt::Vertex_handle> handles;
+        handles.reserve(r.edges.size());
+        Cdt::Face_handle hint;
+        const auto handleOf = [&](int64_t id) {
+            auto [at, fresh] = handles.emplace(id, Cdt::Vertex_handle());
+            if (fresh) {
+                const uint32_t index = vertexIndex(id, z);
+                at->second = cdt.insert(point(index), hint);
+                at->second->info() = index;
+                hint = at->second->face();
+            }
+            return at->second;
+        };
+        for (const auto& [v, w] : r.edges) cdt.insert_constraint(handleOf(v), handleOf(w));
+        assert(cdt.number_of_vertices() == handles.size() && "two boundary vertices snapped to one point");
+        std::vector<std::pair<K::Point_2, uint32_t>> inner;
+        inner.reserve(r.inner.size());
+        for (int64_t id : r.inner) {
+            const uint32_t index = vertexIndex(id, z);
+            inner.push_back({point(index), index});
         }
-        assert(cdt.number_of_vertices() == loop.size() && "two rim vertices snapped to one point");
-        for (size_t n = 0; n < handles.size(); ++n) cdt.insert_constraint(handles[n], handles[(n + 1) % handles.size()]);
-        // Faces inside the rim: odd parity of rim constraints crossed from outside.
+        cdt.insert(inner.begin(), inner.end());  // spatially sorted
+        assert(cdt.number_of_vertices() == handles.size() + inner.size() && "an inner vertex on the boundary");
         markInsideByParity(cdt);
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
             if (f->info() % 2 != 1) continue;
-            // CGAL faces are counter-clockwise from above; the bottom faces down.
-            tri(f->vertex(0)->info(), f->vertex(2)->info(), f->vertex(1)->info());
+            // CGAL faces are counter-clockwise from above.
+            if (facing_up) tri(f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info());
+            else tri(f->vertex(0)->info(), f->vertex(2)->info(), f->vertex(1)->info());
         }
     }
 
@@ -378,6 +590,10 @@ private:
     std::unordered_map<int64_t, std::vector<int32_t>> faces_at_;  // planar vertex id -> faces with it on a ring
     std::unordered_map<int64_t, int64_t> next_on_rim_;            // flat: rim edges
     std::unordered_set<int64_t> rim_;                             // flat: vertices on the rim
+    std::vector<uint32_t> region_;          // kept cell -> root cell of its merged top, or kNotMerged
+    std::vector<uint8_t> dropped_top_;      // lattice id -> 1: inside a merged top, no vertex
+    std::vector<uint8_t> bottom_point_;     // flat, lattice id -> 1: an interior vertex of the bottom
+    std::vector<int64_t> bottom_points_;    // flat: those ids
     Mesh mesh_;
 };
 

@@ -1,9 +1,13 @@
 // DirectMesher: the boundary of a Scene's solid as an exact triangle mesh.
 //
 // meshScene returns the boundary of the union of the Scene's prisms:
-//   - a top face per kept cell (hexagon, 4 triangles);
+//   - a top face per kept cell (hexagon, 4 triangles), except that
+//     edge-connected plain level cells of one height share one top polygon
+//     whose interior lattice vertices are left out but for a sparse
+//     sublattice (every 4th row and column), so its triangles are a few
+//     cells across;
 //   - a bottom face per kept cell when mirrored; a flat bottom is ONE polygon
-//     (the outline of the kept region) triangulated without interior vertices;
+//     (the outline of the kept region) with the same sparse interior vertices;
 //   - a vertical wall wherever a neighbour's z interval does not cover this
 //     cell's (only where heights differ; outer walls on the kept region's rim).
 // Every corner line is split at every height that meets it, so there are no

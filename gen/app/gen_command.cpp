@@ -50,8 +50,13 @@ struct GenCommandOptions {
     GivenOptions given;   ///< model options the user gave himself
 };
 
-// Largest existing file read to decide whether tsf wrote it (parameter sets, scene sidecar).
+// Largest existing parameter-set file read to decide whether tsf wrote it
+// (tsf writes a few KB).
 constexpr int64_t kMaxOwnFileBytes = 64 << 20;
+// A scene sidecar is told by the head alone: it grows with the grid (71 MiB
+// at 1000 x 1000), and its "format" key comes among the first top-level keys
+// (written in sorted order, before "hull", "marks" and the cells).
+constexpr size_t kSceneHeadBytes = 64 << 10;
 
 std::string sidecarPath(const GenCommandOptions& o) { return (o.output.empty() ? o.scad : o.output) + ".scene.json"; }
 
@@ -66,11 +71,12 @@ ScadOptions scadOptions(const GenCommandOptions& o) {
 
 // A file tsf names itself (not given on the command line) that exists and
 // was not written by tsf is refused unless --force.
+// head_bytes > 0: only that many bytes are read and judged.
 void refuseForeignFile(const std::string& path, bool (*ours)(const std::string&), const std::string& what,
-                       const std::string& alternative) {
+                       const std::string& alternative, size_t head_bytes = 0) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return;
-    if (ours(readFileBytes(path, kMaxOwnFileBytes))) return;
+    if (ours(head_bytes > 0 ? readFileHead(path, head_bytes) : readFileBytes(path, kMaxOwnFileBytes))) return;
     throw InputError(path, 0, 0,
                      "exists and was not written by tsf; it would be replaced by " + what +
                          ". Give --force to replace it, or " + alternative);
@@ -96,7 +102,7 @@ void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
         refuseForeignFile(scad_paths[1], isTsfParameterSetFile, "the OpenSCAD parameter sets of --scad " + o.scad,
                           "choose another --scad name");
     if (!o.no_sidecar)
-        refuseForeignFile(sidecarPath(o), isTsfScene, "the scene sidecar", "give --no-scene");
+        refuseForeignFile(sidecarPath(o), isTsfScene, "the scene sidecar", "give --no-scene", kSceneHeadBytes);
 }
 
 // Grids above this many cells print progress lines without being asked.

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <random>
 #include <set>
 #include <tuple>
@@ -20,20 +22,51 @@ using test::sceneVolume;
 using test::smallParams;
 
 
-// Every kept cell's six top corners exist as mesh vertices at its top height
-// (and bottom corners when mirrored): the values can be read back.
+// Twice the signed area of the triangle (a, b, p) seen from above.
+double cross2(const Vec3& a, const Vec3& b, const Vec3& p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+
+// Every kept cell's top can be read back: a level triangle at its top height
+// covers its centre (merged tops leave interior corners out, so the corners
+// themselves need not be vertices); mirrored, its six bottom corners exist.
 void expectCellHeightsPresent(const Scene& s, const Mesh& m) {
     std::set<std::tuple<double, double, double>> pts;
     for (const Vec3& p : m.positions) pts.insert({p.x, p.y, p.z});
-    for (size_t k = 0; k < s.keptCount(); ++k)
-        for (int e = 0; e < 6; ++e) {
-            const Vec3 top = s.point(hexCorner(s.grid, s.col[k], s.row[k], e), s.top[k]);
-            ASSERT_TRUE(pts.count({top.x, top.y, top.z})) << "cell " << s.col[k] << "," << s.row[k];
-            if (s.params.bottom == Bottom::Mirrored) {
+    std::multimap<double, std::array<Vec3, 3>> level;  // z -> horizontal triangles
+    for (const auto& t : m.triangles) {
+        const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+        if (a.z == b.z && b.z == c.z) level.insert({a.z, {a, b, c}});
+    }
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const Vec3 centre = s.point(hexCentre(s.grid, s.col[k], s.row[k]), s.top[k]);
+        bool covered = false;
+        for (auto [at, end] = level.equal_range(centre.z); at != end && !covered; ++at) {
+            const auto& [a, b, c] = at->second;
+            const double tol = -1e-9 * s.pitch_mm * s.pitch_mm;
+            const double u = cross2(a, b, centre), v = cross2(b, c, centre), w = cross2(c, a, centre);
+            covered = (u >= tol && v >= tol && w >= tol) || (u <= -tol && v <= -tol && w <= -tol);
+        }
+        ASSERT_TRUE(covered) << "no top at cell " << s.col[k] << "," << s.row[k];
+        if (s.params.bottom == Bottom::Mirrored)
+            for (int e = 0; e < 6; ++e) {
                 const Vec3 bot = s.point(hexCorner(s.grid, s.col[k], s.row[k], e), s.bottom[k]);
                 ASSERT_TRUE(pts.count({bot.x, bot.y, bot.z}));
             }
+    }
+}
+
+// The longest edge (mm) of the triangles all of whose vertices are at height z (mm).
+double longestLevelEdge(const Mesh& m, double z, size_t& faces) {
+    double longest = 0;
+    faces = 0;
+    for (const auto& t : m.triangles) {
+        if (m.positions[t[0]].z != z || m.positions[t[1]].z != z || m.positions[t[2]].z != z) continue;
+        ++faces;
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 &a = m.positions[t[size_t(i)]], &b = m.positions[t[size_t((i + 1) % 3)]];
+            longest = std::max(longest, std::hypot(a.x - b.x, a.y - b.y));
         }
+    }
+    return longest;
 }
 
 void expectSolid(const HexField& field, const SceneParams& params, const char* what) {
@@ -80,18 +113,43 @@ TEST(DirectMesher, StepBetweenNeighboursIsOneWallSplitAtEveryCornerHeight) {
     EXPECT_EQ(inv.euler, 2);
 }
 
-TEST(DirectMesher, FlatBottomHasOnlyRimVertices) {
-    const Scene s = buildScene(fieldFromFunction(12, 10, [](int c, int r) { return (c * 7 + r * 3) % 5; }),
+TEST(DirectMesher, FlatBottomIsSparseAndWellShaped) {
+    const Scene s = buildScene(fieldFromFunction(30, 26, [](int c, int r) { return (c * 7 + r * 3) % 5; }),
                                smallParams(Bottom::Flat, Cull::None));
     const Mesh m = meshScene(s);
     size_t bottom_vertices = 0, bottom_faces = 0;
     for (const Vec3& p : m.positions) bottom_vertices += p.z == 0.0;
-    for (const auto& t : m.triangles)
-        bottom_faces += m.positions[t[0]].z == 0 && m.positions[t[1]].z == 0 && m.positions[t[2]].z == 0;
-    // The rim of a 12x10 odd-r block: 2*(2*12+1) along north/south and 2*(2*10) ... count directly:
-    // every rim vertex is on the outline, and a polygon of n vertices needs n - 2 triangles.
-    EXPECT_EQ(bottom_faces, bottom_vertices - 2);
-    EXPECT_LT(bottom_vertices, size_t(2 * (12 + 10) * 2 + 8));  // far fewer than the 2*12*10 lattice vertices
+    const double longest = longestLevelEdge(m, 0.0, bottom_faces);
+    // A polygon with n boundary vertices needs n - 2 triangles; interior
+    // vertices add two each, and there are some: more than n - 2.
+    EXPECT_GT(bottom_faces, bottom_vertices - 2);
+    EXPECT_LT(bottom_vertices, size_t(2 * 30 * 26 / 4));  // far fewer than the 2 * 30 * 26 lattice vertices
+    // No triangle spans the model (30 pitches wide): a few cells at most.
+    EXPECT_LE(longest, 6.0 * s.pitch_mm);
+    EXPECT_GT(longest, 0.0);
+}
+
+TEST(DirectMesher, EqualHeightTopsMergeWithoutLongTriangles) {
+    // A 20 x 20 plateau with a raised 3-cell island and a no-data hole: one
+    // merged top around them.
+    const HexField f = fieldFromFunction(20, 20, [](int c, int r) {
+        if (r == 9 && c >= 8 && c <= 10) return 4.0;
+        if (r == 14 && c == 5) return kNaN;
+        return (c + r) == 0 ? 0.0 : 2.0;  // one lower corner cell so the plateau is not the floor
+    });
+    for (Bottom b : {Bottom::Flat, Bottom::Mirrored}) {
+        const Scene s = buildScene(f, smallParams(b, Cull::None));
+        expectSolid(f, smallParams(b, Cull::None), "plateau");
+        const Mesh m = meshScene(s);
+        const int32_t k = s.keptAt(0, 10);
+        ASSERT_GE(k, 0);
+        size_t plateau_faces = 0;
+        const double longest = longestLevelEdge(m, s.zMm(s.top[size_t(k)]), plateau_faces);
+        // About 396 cells of 4 triangles each unmerged; merged: the boundary
+        // plus two per kept sparse vertex.
+        EXPECT_LT(plateau_faces, size_t(396 * 4 / 2));
+        EXPECT_LE(longest, 6.0 * s.pitch_mm);
+    }
 }
 
 TEST(DirectMesher, ExtremeFields) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "tests/support/run.h"
 
@@ -73,6 +74,29 @@ TEST(OutputSafety, AParameterSetFileTsfDidNotWriteNeedsForce) {
     EXPECT_NE(forced.output.find("m.json (OpenSCAD parameter sets"), std::string::npos) << forced.output;
     // Its own parameter sets tsf replaces without asking: running again just works.
     EXPECT_EQ(runTsf(gen + " --height 30").exit_code, 0);
+}
+
+TEST(OutputSafety, ItsOwnSidecarOfAnySizeIsReplacedAForeignOneIsNot) {
+    const auto dir = scratchDir();
+    writeText(dir / "f.csv", kField);
+    const std::string gen = "gen " + (dir / "f.csv").string() + " -o " + (dir / "m.stl").string() + " --no-verify";
+    ASSERT_EQ(runTsf(gen).exit_code, 0);
+    // A 1000 x 1000 grid's sidecar is about 71 MiB: pad this one past 64 MiB
+    // with JSON whitespace; it is still tsf's and is replaced without asking.
+    {
+        std::ofstream pad(dir / "m.stl.scene.json", std::ios::app | std::ios::binary);
+        const std::string spaces(1 << 20, ' ');
+        for (int i = 0; i < 65; ++i) pad << spaces;
+    }
+    ASSERT_GT(std::filesystem::file_size(dir / "m.stl.scene.json"), uintmax_t(64) << 20);
+    const auto again = runTsf(gen);
+    EXPECT_EQ(again.exit_code, 0) << again.output;
+    EXPECT_LT(std::filesystem::file_size(dir / "m.stl.scene.json"), uintmax_t(1) << 20);
+    // Someone else's file of that name still needs --force.
+    writeText(dir / "m.stl.scene.json", "{\"format\": \"my-notes\"}\n");
+    const auto refused = runTsf(gen);
+    EXPECT_EQ(refused.exit_code, kExitBadInput) << refused.output;
+    EXPECT_NE(refused.output.find("--no-scene"), std::string::npos) << refused.output;
 }
 
 TEST(OutputSafety, AMissingFolderIsTheUsersToFix) {
