@@ -47,6 +47,7 @@
 #include "gen/cdt_parity.h"
 
 #include "gen/legend_scene.h"
+#include "gen/scale.h"
 #include "gen/scene_check.h"
 
 namespace tsf {
@@ -67,6 +68,14 @@ public:
                     auto& at = faces_at_[id];
                     if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
                 }
+        if (s_.scale) {
+            scale_contact_.assign(s_.keptCount(), 0);
+            for (const int32_t k : s_.scale->contacts) {
+                scale_contact_[size_t(k)] = 1;
+                for (int corner = 0; corner < 2; ++corner)
+                    scale_corners_.insert(hexCornerId(g_, s_.col[size_t(k)], s_.row[size_t(k)], corner));
+            }
+        }
     }
 
     Mesh build() {
@@ -76,6 +85,7 @@ public:
             if (s_.drawn_by_face.empty() || !s_.drawn_by_face[k]) addCell(k);
         for (const PlanarFace& f : s_.faces.faces) addFace(f);
         if (flat_) addFlatBottom();
+        if (s_.scale) addScale();
         return std::move(mesh_);
     }
 
@@ -109,6 +119,8 @@ private:
                 out[n++] = cornerTopAt(s_, size_t(c), id);
                 if (!flat_ || rim) out[n++] = cornerBottomAt(s_, size_t(c), id);
             }
+            // The scale's foot meets the wall of a contact cell at the floor.
+            if (!scale_corners_.empty() && scale_corners_.count(id)) out[n++] = s_.scale->foot_top_units;
         } else {
             rim = rim_.count(id) > 0;
         }
@@ -218,6 +230,10 @@ private:
             const int e1 = (e + 1) % kHexCorners;
             const bool has = other >= 0;
             const Span none{0, 0};
+            if (other < 0 && scaleAcross(k, e)) {
+                addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), true, footSpan(), footSpan());
+                continue;
+            }
             addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), has, has ? spanAt(size_t(other), id[e]) : none,
                      has ? spanAt(size_t(other), id[e1]) : none, t.crossing_top[kHexCorners * k + size_t(e)],
                      flat_ ? -1 : t.crossing_bottom[kHexCorners * k + size_t(e)]);
@@ -248,6 +264,10 @@ private:
             const bool has = other >= 0;
             const int64_t v = id[e], w = id[(e + 1) % kHexCorners];
             const Span none{0, 0};
+            if (!has && scaleAcross(k, e)) {
+                addWalls(v, w, {bottom, top}, {bottom, top}, true, footSpan(), footSpan());
+                continue;
+            }
             // A level cell beside a tilted one meets its corners where they are.
             addWalls(v, w, {bottom, top}, {bottom, top}, has, has ? spanAt(size_t(other), v) : none,
                      has ? spanAt(size_t(other), w) : none);
@@ -370,6 +390,27 @@ private:
         }
     }
 
+    // The tactile scale's foot lies across the east edge (0) of a contact cell
+    // (gen/scale.h), as a neighbour from 0 to the floor would.
+    bool scaleAcross(size_t k, int e) const { return e == 0 && !scale_contact_.empty() && scale_contact_[k]; }
+    Span footSpan() const { return {0, s_.scale->foot_top_units}; }
+
+    // The scale's own body; where it stands on a lattice corner of a contact
+    // it uses the pillars' vertex there, so the two share the contact's edges.
+    void addScale() {
+        const ScaleBody body = meshScaleBody(s_, /*joined=*/true);
+        std::vector<uint32_t> index(body.mesh.positions.size());
+        for (size_t v = 0; v < index.size(); ++v) {
+            if (body.lattice_id[v] >= 0) {
+                index[v] = vertexIndex(body.lattice_id[v], snapUnits(body.mesh.positions[v].z, s_.z_snap_mm));
+            } else {
+                index[v] = uint32_t(mesh_.positions.size());
+                mesh_.positions.push_back(body.mesh.positions[v]);
+            }
+        }
+        for (const auto& t : body.mesh.triangles) tri(index[t[0]], index[t[1]], index[t[2]]);
+    }
+
     const Scene& s_;
     const HexGrid& g_;
     const bool flat_;
@@ -378,6 +419,8 @@ private:
     std::unordered_map<int64_t, std::vector<int32_t>> faces_at_;  // planar vertex id -> faces with it on a ring
     std::unordered_map<int64_t, int64_t> next_on_rim_;            // flat: rim edges
     std::unordered_set<int64_t> rim_;                             // flat: vertices on the rim
+    std::vector<uint8_t> scale_contact_;                          // per kept cell: the scale's foot touches its east wall
+    std::unordered_set<int64_t> scale_corners_;                   // the lattice corners of those walls
     Mesh mesh_;
 };
 
