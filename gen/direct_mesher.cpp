@@ -69,10 +69,10 @@ public:
                     if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
                 }
         if (s_.scale) {
-            scale_contact_.assign(s_.keptCount(), 0);
-            for (const int32_t k : s_.scale->contacts) {
-                scale_contact_[size_t(k)] = 1;
-                for (int corner = 0; corner < 2; ++corner)
+            scale_edges_.assign(s_.keptCount(), 0);
+            for (const auto& [k, e] : scaleTouchedEdges(s_)) {
+                scale_edges_[size_t(k)] |= uint8_t(1u << e);
+                for (const int corner : {e, (e + 1) % kHexCorners})
                     scale_corners_.insert(hexCornerId(g_, s_.col[size_t(k)], s_.row[size_t(k)], corner));
             }
         }
@@ -390,9 +390,9 @@ private:
         }
     }
 
-    // The tactile scale's foot lies across the east edge (0) of a contact cell
-    // (gen/scale.h), as a neighbour from 0 to the floor would.
-    bool scaleAcross(size_t k, int e) const { return e == 0 && !scale_contact_.empty() && scale_contact_[k]; }
+    // The tactile scale's foot lies across edge e of kept cell k (gen/scale.h:
+    // scaleTouchedEdges), as a neighbour from 0 to the floor would.
+    bool scaleAcross(size_t k, int e) const { return !scale_edges_.empty() && (scale_edges_[k] >> e & 1u); }
     Span footSpan() const { return {0, s_.scale->foot_top_units}; }
 
     // The scale's own body; where it stands on a lattice corner of a contact
@@ -419,8 +419,8 @@ private:
     std::unordered_map<int64_t, std::vector<int32_t>> faces_at_;  // planar vertex id -> faces with it on a ring
     std::unordered_map<int64_t, int64_t> next_on_rim_;            // flat: rim edges
     std::unordered_set<int64_t> rim_;                             // flat: vertices on the rim
-    std::vector<uint8_t> scale_contact_;                          // per kept cell: the scale's foot touches its east wall
-    std::unordered_set<int64_t> scale_corners_;                   // the lattice corners of those walls
+    std::vector<uint8_t> scale_edges_;                            // per kept cell: bit e = the scale's foot covers edge e
+    std::unordered_set<int64_t> scale_corners_;                   // the lattice corners of those edges
     Mesh mesh_;
 };
 

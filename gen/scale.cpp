@@ -32,6 +32,25 @@ double roundedMultiple(int64_t k, double step) {
 
 bool drawnByFace(const Scene& s, size_t k) { return !s.drawn_by_face.empty() && s.drawn_by_face[k]; }
 
+// The foot stands against a cell's walls from 0 to the floor: the cell must
+// be kept, rise to the floor at every corner, and be drawn as a hexagon.
+bool touchable(const Scene& s, int32_t k) {
+    if (k < 0 || drawnByFace(s, size_t(k))) return false;
+    for (int e = 0; e < kHexCorners; ++e)
+        if (cornerTop(s, size_t(k), e) < s.floor_units) return false;
+    return true;
+}
+
+// The kept index of the cell whose centre is at lattice (i, j), or -1.
+int32_t keptAtCentre(const Scene& s, int64_t i, int64_t j) {
+    if ((j - 2) % 3 != 0) return -1;
+    const int64_t row = int64_t(s.grid.rows) - 1 - (j - 2) / 3;
+    if (row < 0 || row >= s.grid.rows) return -1;
+    const int64_t twice = i - 1 - (row % 2);
+    if (twice < 0 || twice % 2 != 0) return -1;
+    return s.keptAt(int32_t(twice / 2), int32_t(row));
+}
+
 }  // namespace
 
 std::vector<ScaleLevel> scaleLevels(const ValueMapping& m, double step, double z_snap_mm, int max_steps,
@@ -140,9 +159,7 @@ void placeScale(Scene& s) {
     for (size_t k = 0; k < s.keptCount(); ++k) {
         const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
         if (c.i + 1 != i_east) continue;
-        // The foot stands against the wall from 0 to the floor: the cell must
-        // rise to the floor on both corners, and be drawn as a hexagon.
-        const bool ok = !drawnByFace(s, k) && cornerTop(s, k, 0) >= s.floor_units && cornerTop(s, k, 1) >= s.floor_units;
+        const bool ok = touchable(s, int32_t(k));
         cand.push_back({int32_t(k), c.j, ok});
     }
     std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
@@ -161,11 +178,23 @@ void placeScale(Scene& s) {
         if (inBand(j0)) continue;
         int64_t j1 = j0 + int64_t(std::ceil(need_mm / unit_y_mm - 1e-9));
         while (inBand(j1)) ++j1;
+        // Every candidate in the run is touched; consecutive ones are one
+        // notch apart, and the cell in the notch is touched too.
         bool clear = true;
-        for (const Candidate& c : cand)
-            if (c.j > j0 && c.j < j1 && !c.ok) clear = false;
+        std::vector<int32_t> contacts, fillers;
+        for (const Candidate& c : cand) {
+            if (c.j <= j0 || c.j >= j1) continue;
+            clear = clear && c.ok;
+            if (!contacts.empty()) {
+                const int64_t previous_j = hexCentre(s.grid, s.col[size_t(contacts.back())], s.row[size_t(contacts.back())]).j;
+                const int32_t filler = keptAtCentre(s, i_east - 2, previous_j + 3);
+                clear = clear && c.j - previous_j == 6 && touchable(s, filler);
+                fillers.push_back(filler);
+            }
+            contacts.push_back(c.kept);
+        }
         if (!clear) {
-            blocked = "cells without data or under a mark";
+            blocked = "cells without data, under a mark or culled";
             continue;
         }
         const double y1 = yOf(j1);
@@ -190,8 +219,8 @@ void placeScale(Scene& s) {
             st.y_north_mm = i + 1 == n ? sc.y1_mm : snapXy(sc.y0_mm + (sc.y1_mm - sc.y0_mm) * (i + 1) / n);
             sc.steps.push_back(st);
         }
-        for (const Candidate& c : cand)
-            if (c.j > j0 && c.j < j1) sc.contacts.push_back(c.kept);
+        sc.contacts = std::move(contacts);
+        sc.fillers = std::move(fillers);
         s.scale = std::move(sc);
         return;
     }
@@ -199,6 +228,19 @@ void placeScale(Scene& s) {
                      " steps of " + num(kScaleTreadMm) + " mm) along the model's east side, and the run there is cut by " +
                      (blocked.empty() ? std::string("the model's shape") : blocked) +
                      ". Give a larger --scale-step, or leave out --title/--units or --scale");
+}
+
+std::vector<std::pair<int32_t, int>> scaleTouchedEdges(const Scene& s) {
+    std::vector<std::pair<int32_t, int>> edges;
+    if (!s.scale) return edges;
+    const std::vector<int32_t>& c = s.scale->contacts;
+    for (size_t n = 0; n < c.size(); ++n) {
+        edges.push_back({c[n], 0});
+        if (n + 1 < c.size()) edges.push_back({c[n], 1});
+        if (n > 0) edges.push_back({c[n], 5});
+    }
+    for (const int32_t f : s.scale->fillers) edges.push_back({f, 0});
+    return edges;
 }
 
 std::optional<int64_t> scaleTopAt(const SceneScale& sc, double x, double y) {
@@ -252,9 +294,15 @@ public:
         // North face (outward +y): the last step, then the foot.
         wall(chain(2, n, 0, top(n)), chain(1, n, 0, top(n)));
         wall(chain(1, n, 0, floor), westChain(west_.size() - 1, 0, floor));
-        // West face (outward -x), north to south, but where it touches the model.
+        // West face (outward -x), north to south, but where it touches the
+        // model (west_ is y0, then each contact's two corners, then y1).
         for (size_t a = west_.size() - 1; a > 0; --a) {
-            const bool contact = west_[a].lattice >= 0 && west_[a - 1].lattice >= 0 && (a % 2) == 0;
+            const bool contact = a % 2 == 0 && a + 1 < west_.size();
+            const bool notch = a % 2 == 1 && a >= 3 && a + 1 < west_.size();
+            if (notch) {
+                addNotch((a - 3) / 2, floor);
+                continue;
+            }
             if (contact && joined_) continue;
             wall(westChain(a, 0, floor), westChain(a - 1, 0, floor));
         }
@@ -262,6 +310,42 @@ public:
     }
 
 private:
+    // The notch between contact n (0-based) and the next: A, D on the west
+    // face (contact n's upper-right corner, the next one's lower-right), B
+    // its top tip, C the next one's bottom tip; its walls are the model's.
+    void addNotch(size_t n, int64_t floor) {
+        const size_t a = 2 * n + 2, d = a + 1;
+        const Scene& s = s_;
+        auto corner = [&](int32_t k, int e, int64_t z) {
+            const auto key = std::make_tuple(3 + e, size_t(k), z);
+            const auto it = ids_.find(key);
+            if (it != ids_.end()) return it->second;
+            const uint32_t id = uint32_t(body_.mesh.positions.size());
+            body_.mesh.positions.push_back(s.point(hexCorner(s.grid, s.col[size_t(k)], s.row[size_t(k)], e), z));
+            body_.lattice_id.push_back(hexCornerId(s.grid, s.col[size_t(k)], s.row[size_t(k)], e));
+            ids_[key] = id;
+            return id;
+        };
+        const int32_t lower = sc_.contacts[n], upper = sc_.contacts[n + 1];
+        for (const int64_t z : {int64_t(0), floor}) {
+            const uint32_t A = v(0, a, z), D = v(0, d, z), B = corner(lower, 2, z), C = corner(upper, 5, z);
+            if (z == floor) {
+                tri(A, D, C);
+                tri(A, C, B);
+            } else {
+                tri(A, C, D);
+                tri(A, B, C);
+            }
+        }
+        if (joined_) return;
+        const Chain A{{0, v(0, a, 0)}, {floor, v(0, a, floor)}}, D{{0, v(0, d, 0)}, {floor, v(0, d, floor)}};
+        const Chain B{{0, corner(lower, 2, 0)}, {floor, corner(lower, 2, floor)}};
+        const Chain C{{0, corner(upper, 5, 0)}, {floor, corner(upper, 5, floor)}};
+        wall(D, C);
+        wall(C, B);
+        wall(B, A);
+    }
+
     struct WestPoint {
         double y_mm;
         int64_t lattice;  // -1: the scale's own corner

@@ -23,7 +23,9 @@
 // steps the foot's top (the floor) is a strip kScaleGapMm wide. The foot
 // touches the model exactly along the east walls of `contacts` (kept cells
 // whose east edge lies on x0, between y0 and y1), from z = 0 to the floor:
-// every vertex of that contact is a lattice corner at height 0 or the floor,
+// between two contacts the foot also fills the notch of the hexagon outline
+// (see SceneScale::fillers); every vertex of the contact is a lattice corner
+// at height 0 or the floor,
 // shared with the pillars' mesh, so the joined model needs no boolean
 // operation (gen/direct_mesher.cpp) and the scale alone is a closed body of
 // its own (meshScaleBody). y0 and y1 lie on lattice rows between contacts.
@@ -37,6 +39,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gen/mesh.h"
@@ -104,7 +107,18 @@ struct SceneScale {
     int64_t foot_top_units = 0;    ///< the floor
     std::vector<ScaleStep> steps;  ///< south to north, lowest first
     std::vector<int32_t> contacts; ///< kept cells it touches along their east walls, south to north
+    /// Between two contacts (6 lattice rows apart) the foot fills the notch
+    /// the hexagons leave (a trapezoid: the upper contact's south-east wall,
+    /// the lower's north-east wall, and the east wall of the cell between,
+    /// kept here in order), so the join leaves no hole down to the bed.
+    std::vector<int32_t> fillers;
 };
+
+/// The hexagon edges (kept cell, edge 0..5 as in hex_grid.h) the scale's
+/// foot covers from z = 0 to the floor: each contact's east edge (0), its
+/// north-east edge (1) below a filled notch and its south-east edge (5)
+/// above one, and each filler's east edge (0).
+std::vector<std::pair<int32_t, int>> scaleTouchedEdges(const Scene& scene);
 
 /// Places the scale params.scale asks for (none when it asks for nothing).
 /// Called by buildScene after the marks, the legend and the top shapes.

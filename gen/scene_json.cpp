@@ -225,7 +225,7 @@ json scaleJson(const Scene& s) {
     return {{"step", sc.step},         {"step_given", sc.step_given}, {"x0_i", sc.x0_i},
             {"y0_j", sc.y0_j},         {"y1_j", sc.y1_j},             {"x_mm", {sc.x0_mm, sc.xs_mm, sc.x1_mm}},
             {"y_mm", {sc.y0_mm, sc.y1_mm}}, {"foot_top_units", sc.foot_top_units},
-            {"steps", steps},          {"contacts", sc.contacts}};
+            {"steps", steps},          {"contacts", sc.contacts}, {"fillers", sc.fillers}};
 }
 
 json sceneHeadJson(const Scene& s) {

@@ -1,5 +1,6 @@
 #include "gen/scad/scad_scale.h"
 
+#include "gen/hex_grid.h"
 #include "gen/mesh_io/number_text.h"
 #include "gen/scene.h"
 
@@ -31,6 +32,17 @@ void emitScaleData(std::string& o, const Scene& s) {
         const ScaleStep& st = sc.steps[k];
         o += "  [" + shortest(st.y_south_mm) + ", " + shortest(st.y_north_mm) + ", " + shortest(s.zMm(st.top_units)) +
              (k + 1 < sc.steps.size() ? "],\n" : "]\n");
+    }
+    // The notches between contacts the foot fills: [x, y] corners counter-clockwise.
+    o += "], [\n";
+    auto xy = [&](int32_t k, int e) {
+        const Vec3 p = s.point(hexCorner(s.grid, s.col[size_t(k)], s.row[size_t(k)], e), 0);
+        return "[" + shortest(p.x) + ", " + shortest(p.y) + "]";
+    };
+    for (size_t n = 0; n + 1 < sc.contacts.size(); ++n) {
+        const int32_t lower = sc.contacts[n], upper = sc.contacts[n + 1];
+        o += "  [" + xy(lower, 1) + ", " + xy(upper, 0) + ", " + xy(upper, 5) + ", " + xy(lower, 2) +
+             (n + 2 < sc.contacts.size() ? "],\n" : "]\n");
     }
     o += "]];\n\n";
 }
