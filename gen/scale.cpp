@@ -65,7 +65,9 @@ std::vector<ScaleLevel> scaleLevels(const ValueMapping& m, double step, double z
         // relative allowance for the rounding of k * step).
         const double first = std::floor(m.baseline / step) + 1;
         const double count = std::floor((m.value_max - m.baseline) / step) + 2;
-        if (count > double(max_steps) * 4 + 8) {
+        if (std::fabs(first) > 1e15) {
+            why = "the step " + num(step) + " is too small for values as large as " + num(m.baseline);
+        } else if (count > double(max_steps) * 4 + 8) {
             why = "the step " + num(step) + " makes about " + num(std::floor(count)) + " steps; at most " +
                   std::to_string(max_steps) + " fit";
         } else {

@@ -57,6 +57,18 @@ TEST(ScaleCli, StaircaseOfRoundValuesBesideThePillarsReadBackByVerify) {
     EXPECT_NE(g.out.find("2 steps every 2 east of the pillars"), std::string::npos) << g.out;
 }
 
+TEST(ScaleCli, FittedToTheBedWithTheScale) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", kField);
+    const std::string model = (dir / "m.stl").string();
+    // A 70 mm bed less 5 mm each side: 60 mm, of which the scale takes 4 + 12.7.
+    const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --bed 70x200 --scale -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const Bounds b = meshBounds(readMesh(model));
+    EXPECT_LE(b.max.x - b.min.x, 60.0 + 1e-6);
+    EXPECT_GT(b.max.x - b.min.x, 50.0);
+}
+
 TEST(ScaleCli, RefusedWithExitTwoSayingWhatToChange) {
     const auto dir = test::scratchDir();
     test::writeText(dir / "f.csv", kField);
