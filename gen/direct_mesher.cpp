@@ -64,6 +64,7 @@
 #include "gen/util/union_find.h"
 
 #include "gen/legend_scene.h"
+#include "gen/scale.h"
 #include "gen/scene_check.h"
 
 namespace tsf {
@@ -107,6 +108,14 @@ public:
                     auto& at = faces_at_[id];
                     if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
                 }
+        if (s_.scale) {
+            scale_edges_.assign(s_.keptCount(), 0);
+            for (const auto& [k, e] : scaleTouchedEdges(s_)) {
+                scale_edges_[size_t(k)] |= uint8_t(1u << e);
+                for (const int corner : {e, (e + 1) % kHexCorners})
+                    scale_corners_.insert(hexCornerId(g_, s_.col[size_t(k)], s_.row[size_t(k)], corner));
+            }
+        }
     }
 
     Mesh build() {
@@ -118,6 +127,7 @@ public:
         for (const PlanarFace& f : s_.faces.faces) addFace(f);
         addMergedTops();
         if (flat_) addFlatBottom();
+        if (s_.scale) addScale();
         return std::move(mesh_);
     }
 
@@ -229,6 +239,8 @@ private:
                 if (!flat_ || rim) out[n++] = shaped ? cornerBottomAt(s_, size_t(c), id) : s_.bottom[size_t(c)];
             }
             if (flat_ && bottom_point_[size_t(id)]) out[n++] = 0;
+            // The scale's foot meets the wall of a contact cell at the floor.
+            if (!scale_corners_.empty() && scale_corners_.count(id)) out[n++] = s_.scale->foot_top_units;
         } else {
             rim = rim_.count(id) > 0;
         }
@@ -378,6 +390,10 @@ private:
             const int e1 = (e + 1) % kHexCorners;
             const bool has = other >= 0;
             const Span none{0, 0};
+            if (other < 0 && scaleAcross(k, e)) {
+                addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), true, footSpan(), footSpan());
+                continue;
+            }
             addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), has, has ? spanAt(size_t(other), id[e]) : none,
                      has ? spanAt(size_t(other), id[e1]) : none, t.crossing_top[kHexCorners * k + size_t(e)],
                      flat_ ? -1 : t.crossing_bottom[kHexCorners * k + size_t(e)]);
@@ -410,6 +426,10 @@ private:
             const bool has = other >= 0;
             const int64_t v = id[e], w = id[(e + 1) % kHexCorners];
             const Span none{0, 0};
+            if (!has && scaleAcross(k, e)) {
+                addWalls(v, w, {bottom, top}, {bottom, top}, true, footSpan(), footSpan());
+                continue;
+            }
             // A level cell beside a tilted one meets its corners where they are.
             addWalls(v, w, {bottom, top}, {bottom, top}, has, has ? spanAt(size_t(other), v) : none,
                      has ? spanAt(size_t(other), w) : none);
@@ -582,6 +602,27 @@ private:
         }
     }
 
+    // The tactile scale's foot lies across edge e of kept cell k (gen/scale.h:
+    // scaleTouchedEdges), as a neighbour from 0 to the floor would.
+    bool scaleAcross(size_t k, int e) const { return !scale_edges_.empty() && (scale_edges_[k] >> e & 1u); }
+    Span footSpan() const { return {0, s_.scale->foot_top_units}; }
+
+    // The scale's own body; where it stands on a lattice corner of a contact
+    // it uses the pillars' vertex there, so the two share the contact's edges.
+    void addScale() {
+        const ScaleBody body = meshScaleBody(s_, /*joined=*/true);
+        std::vector<uint32_t> index(body.mesh.positions.size());
+        for (size_t v = 0; v < index.size(); ++v) {
+            if (body.lattice_id[v] >= 0) {
+                index[v] = vertexIndex(body.lattice_id[v], snapUnits(body.mesh.positions[v].z, s_.z_snap_mm));
+            } else {
+                index[v] = uint32_t(mesh_.positions.size());
+                mesh_.positions.push_back(body.mesh.positions[v]);
+            }
+        }
+        for (const auto& t : body.mesh.triangles) tri(index[t[0]], index[t[1]], index[t[2]]);
+    }
+
     const Scene& s_;
     const HexGrid& g_;
     const bool flat_;
@@ -594,6 +635,8 @@ private:
     std::vector<uint8_t> dropped_top_;      // lattice id -> 1: inside a merged top, no vertex
     std::vector<uint8_t> bottom_point_;     // flat, lattice id -> 1: an interior vertex of the bottom
     std::vector<int64_t> bottom_points_;    // flat: those ids
+    std::vector<uint8_t> scale_edges_;                            // per kept cell: bit e = the scale's foot covers edge e
+    std::unordered_set<int64_t> scale_corners_;                   // the lattice corners of those edges
     Mesh mesh_;
 };
 

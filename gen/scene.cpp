@@ -60,8 +60,9 @@ double ValueMapping::valueAt(double h) const {
 }
 
 namespace {
-double snapXy(double v) { return std::round(v / kXYSnapMm) * kXYSnapMm; }
 }  // namespace
+
+double snapXy(double v) { return std::round(v / kXYSnapMm) * kXYSnapMm; }
 
 Vec3 Scene::point(const LatticePoint& p, int64_t z_units) const {
     return {snapXy(latticeX(p, pitch_mm)), snapXy(latticeY(p, pitch_mm)), zMm(z_units)};
@@ -408,6 +409,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             }
         resolveTopShapes(s, tiltSlopes(field, s, params.tilt), params.steepness, structural);
     }
+    // The scale last: it stands against cells whose tops (tilted or not) rise to the floor.
+    placeScale(s);
     return s;
 }
 

@@ -29,6 +29,7 @@
 #include "gen/hex_grid.h"
 #include "gen/legend.h"
 #include "gen/marks.h"
+#include "gen/scale.h"
 #include "gen/mesh.h"
 #include "gen/tilt.h"
 #include "gen/top_shapes.h"
@@ -92,6 +93,8 @@ struct SceneParams {
     bool structural_texture = false;  ///< dimple the cells kept only to hold the model together
     // --- braille legend (gen/legend_scene.h) ---
     LegendRequest legend;
+    // --- tactile scale (gen/scale.h) ---
+    ScaleRequest scale;
 };
 
 /// What a kept cell stands for.
@@ -146,6 +149,8 @@ struct Scene {
     TopShapes shapes;
     /// The braille legend's plate north of the pillars (gen/legend_scene.h); none unless asked for.
     std::optional<SceneLegend> legend;
+    /// The tactile scale east of the pillars (gen/scale.h); none unless asked for.
+    std::optional<SceneScale> scale;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)
@@ -209,6 +214,9 @@ Scene buildScene(const HexField& field, const SceneParams& params);
 /// largest double (then computed on the halves). The OpenSCAD library's
 /// _tsf_height_mm does the same, so both give the same heights.
 double spanFraction(double v, double lo, double hi);
+
+/// Round a millimetre x or y to the kXYSnapMm grid (as Scene::point does).
+double snapXy(double mm);
 
 /// Snap a millimetre value to the z grid (round half away from zero).
 int64_t snapUnits(double mm, double snap_mm);

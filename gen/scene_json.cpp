@@ -218,6 +218,16 @@ Marks marksFrom(const json& j, const std::string& path) {
 }
 
 // Everything but the cells.
+json scaleJson(const Scene& s) {
+    const SceneScale& sc = *s.scale;
+    json steps = json::array();
+    for (const ScaleStep& st : sc.steps) steps.push_back({st.value, st.top_units, st.y_south_mm, st.y_north_mm});
+    return {{"step", sc.step},         {"step_given", sc.step_given}, {"x0_i", sc.x0_i},
+            {"y0_j", sc.y0_j},         {"y1_j", sc.y1_j},             {"x_mm", {sc.x0_mm, sc.xs_mm, sc.x1_mm}},
+            {"y_mm", {sc.y0_mm, sc.y1_mm}}, {"foot_top_units", sc.foot_top_units},
+            {"steps", steps},          {"contacts", sc.contacts}, {"fillers", sc.fillers}};
+}
+
 json sceneHeadJson(const Scene& s) {
     const SceneParams& p = s.params;
     json hull = json::array();
@@ -259,6 +269,8 @@ json sceneHeadJson(const Scene& s) {
         {"legend", s.legend ? json{{"title", s.params.legend.title}, {"units", s.params.legend.units},
                                    {"table", s.params.legend.table}}
                             : json(nullptr)},
+        // The tactile scale as placed; on reading it is placed again from its step and must come out the same.
+        {"scale", s.scale ? scaleJson(s) : json(nullptr)},
         {"hull", hull},
         {"notes", s.notes},
     };
@@ -332,7 +344,7 @@ Scene sceneFromJson(const json& j) {
     const std::string format = getString(j, "", "format");
     if (format != kSceneJsonFormat) fail("format", "expected \"" + std::string(kSceneJsonFormat) + "\", found \"" + format + "\"");
     const int64_t version = getInt(j, "", "version");
-    if (version != kSceneJsonVersion && version != 1 && version != 2)
+    if (version != kSceneJsonVersion && version != 1 && version != 2 && version != 3)
         fail("version", "unsupported version " + std::to_string(version) + " (this tsf reads version " +
                             std::to_string(kSceneJsonVersion) + ")");
 
@@ -437,6 +449,26 @@ Scene sceneFromJson(const json& j) {
         s.params.legend.units = l["units"].get<std::string>();
         s.params.legend.table = l["table"].get<std::string>();
         placeLegend(s);
+    }
+    if (j.contains("scale") && !j["scale"].is_null()) {
+        const json& recorded = j["scale"];
+        if (!recorded.is_object()) fail("scale", std::string("expected an object, found ") + typeName(recorded));
+        s.params.scale.wanted = true;
+        s.params.scale.step = getNumber(recorded, "scale", "step");
+        if (!(*s.params.scale.step > 0)) fail("scale.step", "must be > 0");
+        try {
+            placeScale(s);
+        } catch (const InputError& e) {
+            fail("scale", std::string("cannot be placed on this model: ") + e.detail());
+        }
+        if (!recorded.contains("step_given") || !recorded["step_given"].is_boolean())
+            fail("scale.step_given", "expected true or false");
+        s.scale->step_given = recorded["step_given"].get<bool>();
+        s.params.scale.step.reset();
+        if (s.scale->step_given) s.params.scale.step = s.scale->step;
+        if (scaleJson(s) != recorded)
+            fail("scale", "is not where this tsf places a scale of step " + recorded["step"].dump() +
+                              " on this model (written by another version?)");
     }
     return s;
 }

@@ -43,7 +43,7 @@
 namespace tsf {
 
 inline constexpr const char* kSceneJsonFormat = "tsf-scene";
-inline constexpr int kSceneJsonVersion = 3;  // 3: shapes; 2: marks, nodata_pit_units, one_to_one (1 and 2 are still read)
+inline constexpr int kSceneJsonVersion = 4;  // 4: scale; 3: shapes; 2: marks, nodata_pit_units, one_to_one (1 to 3 are still read)
 /// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
 /// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
 inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;

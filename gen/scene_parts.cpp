@@ -4,6 +4,7 @@
 
 #include "gen/direct_mesher.h"
 #include "gen/legend_scene.h"
+#include "gen/scale.h"
 
 namespace tsf {
 namespace {
@@ -50,6 +51,7 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
             level.faces.faces[k].raise_units = 0;
         }
     level.legend.reset();
+    level.scale.reset();  // the scale is a part of its own, touching the pillars' east walls
     Mesh pillars = meshScene(level);
     if (scene.legend) pillars = unionWithLegend(pillars, scene, /*dots=*/false);
     parts.push_back({"pillars", std::move(pillars)});
@@ -59,6 +61,7 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
     for (const PlanarFace* f : raised) prisms.push_back({"", raisedFacePrism(scene, *f)});
     if (!prisms.empty()) parts.push_back({"marks", joinParts(prisms)});
     if (scene.legend) parts.push_back({"legend", legendDotsMesh(scene)});
+    if (scene.scale) parts.push_back({"scale", meshScaleBody(scene, /*joined=*/false).mesh});
     return parts;
 }
 

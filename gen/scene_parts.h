@@ -8,13 +8,12 @@
 //               face (Scene::faces, the face with raise_units > 0) from its
 //               region's top up by raise_units;
 //   "legend"  - the braille dots, one closed dome each on the plate's top.
+//   "scale"   - the tactile scale (gen/scale.h): its foot and steps, touching
+//               the pillars' east walls from the bed to the floor.
 // Each part is closed, 2-manifold and outward-facing on its own, with no
 // T-junctions inside it; the parts touch (the triangle's and the domes' bases
 // lie on the pillars' top) and never overlap, and their union is the solid of
 // meshScene(scene). Everything is read from the Scene; nothing is decided here.
-// A feature added to the Scene later (a tactile scale, its own closed body
-// touching the model) is one more entry in meshSceneParts: left out of the
-// pillars' Scene copy (`level`) and pushed as {"scale", its mesh}.
 #pragma once
 
 #include <vector>

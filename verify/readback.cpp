@@ -225,6 +225,11 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
                 if (under_plate && hit &&
                     std::fabs(hit->point_mm.z - scene.zMm(scene.legend->plate_top_units)) <= scene.z_snap_mm / 2)
                     continue;
+                // On the tactile scale's footprint (gen/scale.h) it meets the scale's top there.
+                const std::optional<int64_t> scale_top =
+                    scene.scale ? scaleTopAt(*scene.scale, centre.x, centre.y) : std::nullopt;
+                if (scale_top && hit && std::fabs(hit->point_mm.z - scene.zMm(*scale_top)) <= scene.z_snap_mm / 2)
+                    continue;
                 if (!hit) continue;
                 ++f.outside_cells_hit;
                 if (out.worst.size() < options.max_offenders)

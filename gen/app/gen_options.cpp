@@ -142,6 +142,16 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--braille-table", p.legend.table,
                     "liblouis table for the legend (uncontracted US English by default; e.g. en-ueb-g1.ctb, de-g0.utb)")
         ->capture_default_str()->group(legend);
+    auto* scale = "Tactile scale (docs/model.md)";
+    cmd->add_flag("--scale", p.scale.wanted,
+                  "A staircase east of the pillars, on the floor: each tread at the height of a round value "
+                  "(every --scale-step from the baseline), to measure a pillar in value units")
+        ->group(scale);
+    cmd->add_option_function<double>(
+           "--scale-step", [&p](double v) { p.scale.step = v; p.scale.wanted = true; },
+           "Values between the scale's treads (implies --scale; default: the smallest 1, 2 or 5 x 10^k whose "
+           "treads are at least 1 mm apart, at most 10 steps)")
+        ->check(CLI::PositiveNumber)->group(scale);
     cmd->add_option("--triangle-leg", p.marks.triangle_leg_mm, "Preferred east leg of the triangle, mm (north leg 0.6 of it)")
         ->check(CLI::Range(5.0, 200.0))->capture_default_str()->group(marks);
 }

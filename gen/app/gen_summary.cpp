@@ -87,6 +87,20 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     } else {
         j["legend"] = nullptr;
     }
+    if (s.scale) {
+        const SceneScale& sc = *s.scale;
+        nlohmann::json steps = nlohmann::json::array();
+        for (const ScaleStep& st : sc.steps)
+            steps.push_back({{"value", st.value}, {"top_mm", s.zMm(st.top_units)},
+                             {"height_above_floor_mm", s.zMm(st.top_units - sc.foot_top_units)}});
+        j["scale"] = {{"step", sc.step}, {"step_given", sc.step_given}, {"floor_value", s.mapping.baseline},
+                      {"floor_mm", s.zMm(sc.foot_top_units)}, {"steps", steps},
+                      {"footprint_mm", {{sc.x0_mm, sc.y0_mm}, {sc.x1_mm, sc.y1_mm}}},
+                      {"tread_mm", {sc.x1_mm - sc.xs_mm, sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm}},
+                      {"contacts", sc.contacts.size()}};
+    } else {
+        j["scale"] = nullptr;
+    }
     j["notes"] = s.notes;
     return j;
 }
@@ -137,6 +151,18 @@ std::string formatSceneFacts(const Scene& s) {
           << st.name << ")\n";
         for (size_t k = 0; k < l.layout.text.size(); ++k)
             o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
+    }
+    if (s.scale) {
+        const SceneScale& sc = *s.scale;
+        std::ostringstream values;
+        for (size_t k = 0; k < sc.steps.size(); ++k) values << (k ? ", " : "") << fmt("%.6g", sc.steps[k].value);
+        o << "  scale     " << sc.steps.size() << " steps every " << fmt("%.6g", sc.step) << (sc.step_given ? "" : " (chosen)")
+          << " east of the pillars, lowest in the south, on a foot at the floor (= " << fmt("%.6g", s.mapping.baseline)
+          << "): " << values.str() << "; treads " << fmt("%.1f", sc.x1_mm - sc.xs_mm) << " x "
+          << fmt("%.1f", sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm) << " mm, rising "
+          << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps[0].top_units - sc.foot_top_units)) << " mm to "
+          << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units))
+          << " mm above the floor\n";
     }
     for (const std::string& n : s.notes) o << "  note      " << n << "\n";
     return o.str();

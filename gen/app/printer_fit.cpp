@@ -7,6 +7,7 @@
 #include "gen/app/bed_size.h"
 #include "gen/error.h"
 #include "gen/resample.h"
+#include "gen/scale.h"
 
 namespace tsf::cli {
 namespace {
@@ -36,7 +37,15 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
             throw InputError("--depth " + mm(p.fit_depth_mm) + " mm does not fit the " + mm(bed.depth_mm) +
                              " mm bed less " + mm(kBedMarginMm) + " mm on each side: give --depth " + mm(d) +
                              " or less, or leave it out");
-        if (!given.width) p.fit_width_mm = gen.fit_width_mm = w;
+        // The tactile scale stands east of the pillars (gen/scale.h): the pillars get the rest of the width.
+        const double scale_mm = p.scale.wanted ? kScaleGapMm + kScaleStepWidthMm : 0.0;
+        if (!given.width) {
+            const bool room = w > 2 * scale_mm;
+            p.fit_width_mm = gen.fit_width_mm = room ? w - scale_mm : w;
+            if (scale_mm > 0 && room)
+                notes.push_back("the pillars get " + mm(w - scale_mm) + " mm of the width, the tactile scale " +
+                                mm(scale_mm) + " mm");
+        }
         if (!given.depth) p.fit_depth_mm = gen.fit_depth_mm = d;
         if (!given.width || !given.depth)
             notes.push_back("fitted into " + mm(p.fit_width_mm) + " x " + mm(p.fit_depth_mm) + " mm: the " +

@@ -1,6 +1,7 @@
 #include "gen/scad/scad_emitter.h"
 
 #include "gen/scad/scad_legend.h"
+#include "gen/scad/scad_scale.h"
 
 #include <algorithm>
 #include <array>
@@ -64,12 +65,13 @@ Parameters parametersOf(const Scene& s) {
 }
 
 // Library parts a strategy needs, in the order they are pasted.
-std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend) {
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend, bool scale) {
     std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
     if (strategy == ScadOptions::Strategy::Csg && !shaped) parts.push_back("tsf_csg.scad");
     if (marks) parts.push_back("tsf_marks.scad");
     if (shaped) parts.push_back("tsf_tilt.scad");
     if (legend) parts.push_back("tsf_legend.scad");
+    if (scale) parts.push_back("tsf_scale.scad");
     return parts;
 }
 
@@ -349,17 +351,17 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
         // The CSG strategy's prisms have level tops: a shaped model is one polyhedron.
         if (opts.strategy == ScadOptions::Strategy::Csg)
             o += "// Tilted tops are drawn as one polyhedron (the CSG strategy's prisms have level tops).\n";
-        o += legendCallPrefix(s) + "tsf_terrain_polyhedron(model);\n";
+        o += scaleCallPrefix(s) + legendCallPrefix(s) + "tsf_terrain_polyhedron(model);\n";
         return;
     }
-    o += legendCallPrefix(s);
+    o += scaleCallPrefix(s) + legendCallPrefix(s);
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
 void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts) {
     const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
     const std::vector<std::string> parts =
-        libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), s.legend.has_value());
+        libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), s.legend.has_value(), s.scale.has_value());
     std::string list;
     for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
     o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
@@ -403,6 +405,7 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     emitMarks(o, scene);
     emitTops(o, scene);
     emitLegendData(o, scene);
+    emitScaleData(o, scene);
     emitCall(o, scene, opts);
     if (opts.inline_library) emitInlineLibrary(o, scene, opts);
     return o;

@@ -217,6 +217,48 @@ TEST_P(CrossEngineLegend, RendersTheSameSolidAsTheDirectMesher) {
 INSTANTIATE_TEST_SUITE_P(Engines, CrossEngineLegend, ::testing::Values("openscad", "wasm"),
                          [](const auto& info) { return info.param; });
 
+// The tactile scale: the staircase tsf places east of the pillars, written as
+// data and joined to the pillars by each engine, the same solid as the direct
+// mesher's exact join. With the polyhedron strategy the tops are tilted and
+// the structural cells dimpled (the foot meets tilted walls); with the CSG
+// strategy they are level prisms. Five steps on a field four rows deep: the
+// scale's foot grows north beyond the pillars.
+class CrossEngineScale : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(CrossEngineScale, RendersTheSameSolidAsTheDirectMesher) {
+    const auto& [engine_name, strategy_name] = GetParam();
+    TSF_NEED_ENGINE(engineNamed(engine_name));
+    SceneParams p = test::terrainParams(Bottom::Flat);
+    p.scale.wanted = true;
+    p.scale.step = 1.0;
+    HexField field = test::smallTerrain();
+    if (strategy_name == "polyhedron") {
+        field = test::asBinnedPoints(field);
+        p.tilt = TiltSource::Gradient;
+        p.steepness = 3.0;
+        p.structural_texture = true;
+    }
+    const Scene scene = buildScene(field, p);
+    ASSERT_TRUE(scene.scale.has_value());
+    ASSERT_EQ(scene.scale->steps.size(), 5u);
+    EXPECT_GE(scene.scale->contacts.size(), 2u);  // and a filled notch between them
+    if (strategy_name == "polyhedron") {
+        bool tilted_contact = false;
+        for (const int32_t k : scene.scale->contacts) tilted_contact = tilted_contact || isShaped(scene.shapes, size_t(k));
+        EXPECT_TRUE(tilted_contact);
+    }
+    ScadOptions opts;
+    ASSERT_TRUE(parseScadStrategy(strategy_name, opts.strategy));
+    opts.inline_library = strategy_name == "csg";
+    const fs::path dir = test::scratchDir("scale_" + engine_name + "_" + strategy_name);
+    writeScad(scene, opts, (dir / "model.scad").string());
+    expectSameSolid(*engineNamed(engine_name).engine, scene, dir / "model.scad", dir / "model.stl");
+}
+
+INSTANTIATE_TEST_SUITE_P(EnginesStrategies, CrossEngineScale,
+                         ::testing::Combine(::testing::Values("openscad", "wasm"), ::testing::Values("polyhedron", "csg")),
+                         [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+
 // The customizer's parameter sets and -D overrides recompute the model in
 // OpenSCAD; on both versions the result equals the Scene built with the same
 // parameters by tsf.

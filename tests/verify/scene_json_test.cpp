@@ -175,8 +175,8 @@ TEST(SceneJson, MalformedMembersNameTheirPath) {
     }
     {
         auto j = good;
-        j["version"] = 4;
-        expectError(j, "version: unsupported version 4");
+        j["version"] = 5;
+        expectError(j, "version: unsupported version 5");
     }
     {
         auto j = good;

@@ -1,0 +1,247 @@
+// The tactile scale (gen/scale.h): the step tsf chooses, the levels and their
+// heights (worked out here by hand from the value -> height rule), where the
+// staircase stands, and the joined mesh: one closed solid whose volume is the
+// pillars' plus the scale's boxes, computed without the mesher.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/direct_mesher.h"
+#include "gen/error.h"
+#include "gen/hex_grid.h"
+#include "gen/scale.h"
+#include "gen/scene.h"
+#include "gen/scene_json.h"
+#include "tests/support/fields.h"
+#include "tests/support/input_error.h"
+#include "tests/support/mesh_invariants.h"
+
+namespace tsf {
+namespace {
+
+ValueMapping linear(double lo, double hi, double height_mm, Transfer t = Transfer::Linear) {
+    ValueMapping m;
+    m.transfer = t;
+    m.baseline = lo;
+    m.value_max = hi;
+    m.max_height_mm = height_mm;
+    return m;
+}
+
+TEST(ScaleStep, SmallestNiceStepWithTreadsAtLeastOneMillimetreApartAndAtMostTenSteps) {
+    // 0..5 over 12 mm: 0.5 per step rises 1.2 mm and makes 10 steps.
+    EXPECT_DOUBLE_EQ(*chooseScaleStep(linear(0, 5, 12), 0.01), 0.5);
+    // 0..27 over 20 mm: ten steps need >= 2.7, so 5 (3.7 mm each), five steps.
+    EXPECT_DOUBLE_EQ(*chooseScaleStep(linear(0, 27, 20), 0.001), 5.0);
+    // 0..100 over 5 mm: 10 rises 0.5 mm (too little), 20 rises exactly 1 mm.
+    EXPECT_DOUBLE_EQ(*chooseScaleStep(linear(0, 100, 5), 0.001), 20.0);
+    // log: h = 10 log10(1 + 99 t) mm; 10 and 20 rise 0.45 and 0.96 mm at the top, 50 rises 2.97 mm.
+    EXPECT_DOUBLE_EQ(*chooseScaleStep(linear(0, 100, 20, Transfer::Log), 0.001), 50.0);
+    // Small numbers: 0..0.03 over 20 mm: ten steps need >= 0.003, so 0.005.
+    EXPECT_DOUBLE_EQ(*chooseScaleStep(linear(0, 0.03, 20), 0.001), 0.005);
+}
+
+TEST(ScaleStep, NoStepForAConstantFieldOrARangeLowerThanOneRiser) {
+    EXPECT_FALSE(chooseScaleStep(linear(3, 3, 20), 0.001).has_value());
+    EXPECT_FALSE(chooseScaleStep(linear(0, 10, 0.8), 0.001).has_value());
+}
+
+TEST(ScaleLevels, MultiplesAboveTheBaselineAtThePillarsSnappedHeights) {
+    // Baseline 13, 13..53 over 20 mm: 0.5 mm per data unit; z steps of 0.25 mm.
+    std::string why;
+    const std::vector<ScaleLevel> l = scaleLevels(linear(13, 53, 20), 10, 0.25, kScaleMaxSteps, &why);
+    EXPECT_EQ(why, "");
+    ASSERT_EQ(l.size(), 4u);  // 20, 30, 40, 50
+    EXPECT_DOUBLE_EQ(l[0].value, 20);
+    EXPECT_DOUBLE_EQ(l[3].value, 50);
+    // (20 - 13) * 0.5 = 3.5 mm = 14 steps of 0.25 mm; 8.5 mm = 34; 13.5 mm = 54; 18.5 mm = 74.
+    EXPECT_EQ(l[0].height_units, 14);
+    EXPECT_EQ(l[1].height_units, 34);
+    EXPECT_EQ(l[2].height_units, 54);
+    EXPECT_EQ(l[3].height_units, 74);
+}
+
+TEST(ScaleLevels, AFirstLevelTooCloseToTheFloorIsLeftOutAndCloseLevelsAreRefused) {
+    std::string why;
+    // 0.9..10.9 over 10 mm: 1 sits 0.1 mm above the floor, left out; 2..10 rise 1 mm each.
+    const std::vector<ScaleLevel> l = scaleLevels(linear(0.9, 10.9, 10), 1, 0.001, kScaleMaxSteps, &why);
+    EXPECT_EQ(why, "");
+    ASSERT_EQ(l.size(), 9u);
+    EXPECT_DOUBLE_EQ(l.front().value, 2);
+    EXPECT_EQ(l.front().height_units, 1100);
+    // 0.5 per step over 0..10 in 10 mm rises 0.5 mm: refused, with the levels named.
+    scaleLevels(linear(0, 10, 10), 0.5, 0.001, kScaleMaxSteps, &why);
+    EXPECT_NE(why.find("differ by 0.5 mm"), std::string::npos) << why;
+    // Too many steps.
+    scaleLevels(linear(0, 1000, 100), 1, 0.001, kScaleMaxSteps, &why);
+    EXPECT_NE(why.find("at most 40"), std::string::npos) << why;
+}
+
+// A small terrain: 0..5 over 12 mm on a 2 mm base, 0.01 mm z steps.
+SceneParams scaleParams() {
+    SceneParams p = test::smallParams();
+    p.max_height_mm = 12.0;
+    p.z_snap_mm = 0.01;
+    p.scale.wanted = true;
+    p.scale.step = 1.0;
+    return p;
+}
+
+HexField terrain() {
+    return test::fieldFromRows({
+        {0.0, 1.0, 2.5, 3.0, 1.5, 2.0},
+        {1.0, 4.0, 2.0, 2.0, 0.5, 1.0},
+        {2.0, 3.5, 5.0, 4.5, 1.0, 4.0},
+        {0.5, 2.0, 1.0, 3.0, 2.0, 3.0},
+        {0.5, 2.0, 1.0, 3.0, 2.0, 3.0},
+        {0.0, 1.0, 2.5, 3.0, 1.5, 2.0},
+    });
+}
+
+TEST(ScalePlacement, TreadsAtThePillarsHeightsEastOfEveryPillarTouchingTheEastWalls) {
+    const Scene s = buildScene(terrain(), scaleParams());
+    ASSERT_TRUE(s.scale.has_value());
+    const SceneScale& sc = *s.scale;
+    EXPECT_TRUE(sc.step_given);
+    ASSERT_EQ(sc.steps.size(), 5u);
+    // 1 data unit = 12 / 5 = 2.4 mm = 240 z steps, above the 2 mm (200 step) floor.
+    for (size_t i = 0; i < 5; ++i) {
+        EXPECT_DOUBLE_EQ(sc.steps[i].value, double(i + 1));
+        EXPECT_EQ(sc.steps[i].top_units, 200 + 240 * int64_t(i + 1));
+    }
+    EXPECT_EQ(sc.foot_top_units, 200);
+    // The pillar of value 4 (col 1, row 1) and the step for 4 have one top.
+    EXPECT_EQ(s.top[size_t(s.keptAt(1, 1))], sc.steps[3].top_units);
+    // Nothing of the model lies east of the foot's west face; treads at least 6.4 x 12.7 mm.
+    for (size_t k = 0; k < s.keptCount(); ++k)
+        for (int e = 0; e < 6; ++e) EXPECT_LE(s.point(hexCorner(s.grid, s.col[k], s.row[k], e), 0).x, sc.x0_mm);
+    EXPECT_NEAR(sc.x1_mm - sc.xs_mm, 12.7, 1e-9);
+    EXPECT_NEAR(sc.xs_mm - sc.x0_mm, 4.0, 1e-9);
+    for (const ScaleStep& st : sc.steps) EXPECT_GE(st.y_north_mm - st.y_south_mm, 6.4 - 1e-9);
+    // It touches the east wall of every odd (east-shifted) row's last cell inside its y range, at x0.
+    ASSERT_FALSE(sc.contacts.empty());
+    for (const int32_t k : sc.contacts) {
+        EXPECT_EQ(s.col[size_t(k)], 5);
+        EXPECT_EQ(s.row[size_t(k)] % 2, 1);
+        const Vec3 a = s.point(hexCorner(s.grid, 5, s.row[size_t(k)], 0), 0);
+        const Vec3 b = s.point(hexCorner(s.grid, 5, s.row[size_t(k)], 1), 0);
+        EXPECT_DOUBLE_EQ(a.x, sc.x0_mm);
+        EXPECT_DOUBLE_EQ(b.x, sc.x0_mm);
+        EXPECT_GT(a.y, sc.y0_mm);
+        EXPECT_LT(b.y, sc.y1_mm);
+    }
+}
+
+TEST(ScaleMesh, JoinedModelIsOneClosedSolidOfThePillarsPlusTheScaleBoxes) {
+    const Scene s = buildScene(terrain(), scaleParams());
+    ASSERT_TRUE(s.scale.has_value());
+    const SceneScale& sc = *s.scale;
+    double boxes = (sc.x1_mm - sc.x0_mm) * (sc.y1_mm - sc.y0_mm) * s.zMm(sc.foot_top_units);
+    for (const ScaleStep& st : sc.steps)
+        boxes += (sc.x1_mm - sc.xs_mm) * (st.y_north_mm - st.y_south_mm) * s.zMm(st.top_units - sc.foot_top_units);
+    // The notches between contacts, filled to the floor: quadrilaterals of
+    // hexagon corners (the lower contact's upper-right and top, the upper's
+    // bottom and lower-right), by the shoelace formula.
+    ASSERT_EQ(sc.fillers.size() + 1, sc.contacts.size());
+    ASSERT_GE(sc.contacts.size(), 2u);
+    for (size_t n = 0; n + 1 < sc.contacts.size(); ++n) {
+        const size_t lo = size_t(sc.contacts[n]), hi = size_t(sc.contacts[n + 1]);
+        const Vec3 q[4] = {s.point(hexCorner(s.grid, s.col[lo], s.row[lo], 1), 0),
+                           s.point(hexCorner(s.grid, s.col[hi], s.row[hi], 0), 0),
+                           s.point(hexCorner(s.grid, s.col[hi], s.row[hi], 5), 0),
+                           s.point(hexCorner(s.grid, s.col[lo], s.row[lo], 2), 0)};
+        double area2 = 0;
+        for (int k = 0; k < 4; ++k) area2 += q[k].x * q[(k + 1) % 4].y - q[(k + 1) % 4].x * q[k].y;
+        EXPECT_GT(area2, 0);
+        boxes += area2 / 2 * s.zMm(sc.foot_top_units);
+    }
+
+    const Mesh m = meshScene(s);
+    const test::Invariants inv = test::checkInvariants(m);
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+    EXPECT_EQ(inv.euler, 2);
+    EXPECT_NEAR(inv.volume, test::sceneVolume(s) + boxes, 1e-6 * inv.volume);
+
+    // The scale alone is a closed body of its own (a part of a multi-part file).
+    const ScaleBody body = meshScaleBody(s, /*joined=*/false);
+    const test::Invariants own = test::checkInvariants(body.mesh);
+    EXPECT_TRUE(own.closedManifold()) << own.describe();
+    EXPECT_EQ(own.components, 1u);
+    EXPECT_NEAR(own.volume, boxes, 1e-9 * boxes);
+    // Every vertex on the 1 um grid and the z grid.
+    for (const Vec3& p : m.positions) {
+        EXPECT_NEAR(p.x * 1000, std::round(p.x * 1000), 1e-6);
+        EXPECT_NEAR(p.y * 1000, std::round(p.y * 1000), 1e-6);
+        EXPECT_NEAR(p.z / s.z_snap_mm, std::round(p.z / s.z_snap_mm), 1e-6);
+    }
+}
+
+TEST(ScaleMesh, BesideTiltedTopsAndTheOrientationMarks) {
+    SceneParams p = scaleParams();
+    p.marks = MarkParams{};
+    p.tilt = TiltSource::Gradient;
+    p.steepness = 3.0;
+    const Scene s = buildScene(terrain(), p);
+    ASSERT_TRUE(s.scale.has_value());
+    const test::Invariants inv = test::checkInvariants(meshScene(s));
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+}
+
+TEST(ScalePlacement, KeepsClearOfTheBrailleLegend) {
+    // Floor rows in the north (culled) under the legend, a tall terrain south of them.
+    HexField f = test::fieldFromFunction(12, 16, [](int c, int r) { return r < 3 ? 0.0 : 1.0 + (c + r) % 5; });
+    SceneParams p = scaleParams();
+    p.pitch_mm = 6.0;
+    p.legend.title = "Depth";
+    const Scene s = buildScene(f, p);
+    ASSERT_TRUE(s.legend.has_value());
+    ASSERT_TRUE(s.scale.has_value());
+    EXPECT_LE(s.scale->y1_mm + kScaleLegendClearanceMm, s.legend->plate_south_mm);
+    const test::Invariants inv = test::checkInvariants(meshScene(s));
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+
+    // Too short a model for five steps below the legend: refused, saying what to change.
+    HexField low = test::fieldFromFunction(12, 5, [](int c, int r) { return r < 3 ? 0.0 : 1.0 + (c + r) % 5; });
+    const InputError e = test::catchInputError([&] { buildScene(low, p); });
+    EXPECT_NE(std::string(e.what()).find("braille legend"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--scale-step"), std::string::npos) << e.what();
+}
+
+TEST(ScalePlacement, RefusedOnAMirroredModelAFlatFieldAndTooFineASteps) {
+    SceneParams p = scaleParams();
+    p.bottom = Bottom::Mirrored;
+    EXPECT_NE(std::string(test::catchInputError([&] { buildScene(terrain(), p); }).what()).find("--mirror"),
+              std::string::npos);
+    p = scaleParams();
+    p.baseline_mode = BaselineMode::Min;  // every value at the baseline: one height
+    const HexField flat = test::fieldFromFunction(4, 4, [](int, int) { return 2.0; });
+    EXPECT_NE(std::string(test::catchInputError([&] { buildScene(flat, p); }).what()).find("nothing to measure"),
+              std::string::npos);
+    p = scaleParams();
+    p.scale.step = 0.1;  // 0.24 mm apart
+    const InputError e = test::catchInputError([&] { buildScene(terrain(), p); });
+    EXPECT_NE(std::string(e.what()).find("--scale-step 0.5"), std::string::npos) << e.what();
+}
+
+TEST(ScaleSidecar, RecordedAndPlacedAgainOnReadingOrRefused) {
+    const Scene s = buildScene(terrain(), scaleParams());
+    ASSERT_TRUE(s.scale.has_value());
+    nlohmann::json j = sceneToJson(s);
+    const Scene back = sceneFromJson(j);
+    ASSERT_TRUE(back.scale.has_value());
+    EXPECT_EQ(back.scale->steps.size(), s.scale->steps.size());
+    EXPECT_EQ(back.scale->contacts, s.scale->contacts);
+    EXPECT_EQ(back.scale->steps.back().top_units, s.scale->steps.back().top_units);
+    EXPECT_EQ(meshScene(back).triangles.size(), meshScene(s).triangles.size());
+    j["scale"]["steps"][0][1] = j["scale"]["steps"][0][1].get<int64_t>() + 1;  // a tread one step higher
+    const InputError e = test::catchInputError([&] { sceneFromJson(j); });
+    EXPECT_NE(std::string(e.what()).find("scale"), std::string::npos) << e.what();
+}
+
+}  // namespace
+}  // namespace tsf
