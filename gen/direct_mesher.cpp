@@ -45,6 +45,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include "gen/cdt_parity.h"
+#include "gen/halves.h"
 
 #include "gen/legend_scene.h"
 #include "gen/scene_check.h"
@@ -361,6 +362,19 @@ private:
         }
         assert(cdt.number_of_vertices() == loop.size() && "two rim vertices snapped to one point");
         for (size_t n = 0; n < handles.size(); ++n) cdt.insert_constraint(handles[n], handles[(n + 1) % handles.size()]);
+        // A half's pin holes (gen/halves.h): each ring is one more loop of
+        // constraints, so the parity below leaves the hole open.
+        const bool holes = s_.halves && s_.halves->kind != HalfKind::Whole;
+        for (size_t h = 0; holes && h < s_.halves->hole_centres.size(); ++h) {
+            const std::vector<uint32_t> ring = addHole(h);
+            std::vector<Cdt::Vertex_handle> hole;
+            for (uint32_t index : ring) {
+                const Vec3& p = mesh_.positions[index];
+                hole.push_back(cdt.insert(K::Point_2(p.x, p.y)));
+                hole.back()->info() = index;
+            }
+            for (size_t n = 0; n < hole.size(); ++n) cdt.insert_constraint(hole[n], hole[(n + 1) % hole.size()]);
+        }
         // Faces inside the rim: odd parity of rim constraints crossed from outside.
         markInsideByParity(cdt);
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
@@ -368,6 +382,31 @@ private:
             // CGAL faces are counter-clockwise from above; the bottom faces down.
             tri(f->vertex(0)->info(), f->vertex(2)->info(), f->vertex(1)->info());
         }
+    }
+
+    // Pin hole h of a half: the ring on the bottom (returned, counter-clockwise
+    // from above), the wall up to the hole's depth, and the cone to its tip.
+    // Its vertices are its own: the hole lies inside one slab, away from every
+    // wall (gen/halves.h), so nothing else meets them.
+    std::vector<uint32_t> addHole(size_t h) {
+        const SceneHalves& halves = *s_.halves;
+        const std::vector<PlanarPoint> ring = holeRing(s_, h);
+        const uint32_t first = uint32_t(mesh_.positions.size());
+        const uint32_t n = uint32_t(ring.size());
+        for (int64_t z : {int64_t(0), halves.hole_depth_units})
+            for (const PlanarPoint& p : ring) mesh_.positions.push_back(s_.point(p, z));
+        const uint32_t apex = uint32_t(mesh_.positions.size());
+        mesh_.positions.push_back(s_.point(halves.hole_centres[h], halves.hole_apex_units));
+        std::vector<uint32_t> bottom;
+        for (uint32_t k = 0; k < n; ++k) {
+            const uint32_t a0 = first + k, b0 = first + (k + 1) % n, a1 = a0 + n, b1 = b0 + n;
+            // The wall faces the hole's axis (out of the solid), the cone faces down.
+            tri(a0, b1, b0);
+            tri(a0, a1, b1);
+            tri(a1, apex, b1);
+            bottom.push_back(a0);
+        }
+        return bottom;
     }
 
     const Scene& s_;

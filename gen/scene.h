@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "gen/hex_field.h"
+#include "gen/halves.h"
 #include "gen/hex_grid.h"
 #include "gen/legend.h"
 #include "gen/marks.h"
@@ -92,6 +93,8 @@ struct SceneParams {
     bool structural_texture = false;  ///< dimple the cells kept only to hold the model together
     // --- braille legend (gen/legend_scene.h) ---
     LegendRequest legend;
+    // --- support-free halves (gen/halves.h); mirrored only ---
+    bool halves = false;           ///< cut the mirrored model into two halves that print without supports
 };
 
 /// What a kept cell stands for.
@@ -146,6 +149,8 @@ struct Scene {
     TopShapes shapes;
     /// The braille legend's plate north of the pillars (gen/legend_scene.h); none unless asked for.
     std::optional<SceneLegend> legend;
+    /// The cut into two support-free halves and the pin holes (gen/halves.h); none unless asked for.
+    std::optional<SceneHalves> halves;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)

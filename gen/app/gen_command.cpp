@@ -7,6 +7,7 @@
 #include "gen/app/commands.h"
 #include "gen/app/gen_options.h"
 #include "gen/app/gen_summary.h"
+#include "gen/app/halves_output.h"
 #include "gen/app/input_report.h"
 #include "gen/app/stage_timer.h"
 #include "gen/app/preview.h"
@@ -77,7 +78,15 @@ bool isTsfScene(const std::string& text) {
 // name (the parameter sets beside --scad, the scene sidecar) replace only
 // what tsf wrote before, unless --force.
 void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
-    std::vector<NamedPath> outputs{{o.output, "-o"}, {o.preview, "--preview"}};
+    std::vector<NamedPath> outputs{{o.preview, "--preview"}};
+    if (o.gen.scene.halves && !o.output.empty()) {
+        const HalvesPaths h = halvesPaths(o.output);
+        outputs.push_back({h.upper, "the upper half of -o"});
+        outputs.push_back({h.lower, "the lower half of -o"});
+        outputs.push_back({h.pins, "the pins of -o"});
+    } else {
+        outputs.push_back({o.output, "-o"});
+    }
     const std::vector<std::string> scad_paths = o.scad.empty() ? std::vector<std::string>() : scadOutputPaths(so, o.scad);
     if (!o.scad.empty()) outputs.push_back({o.scad, "--scad"});
     if (so.write_parameter_sets && !o.scad.empty())
@@ -172,6 +181,7 @@ void runGen(GenCommandOptions o) {
         report = verifyModel(mesh, &scene, vo);
         summary.verify = toJson(*report);
         summary.verify_text = verifyLines(*report);
+        if (!scene.halves) summary.supports_text = supportsText(*report);
         if (!report->passed()) {
             // A model that fails its own checks is a bug in tsf: never hand it to a printer.
             timer.end();
@@ -182,18 +192,31 @@ void runGen(GenCommandOptions o) {
         }
     }
 
+    std::optional<HalvesPieces> halves;
+    if (scene.halves) {
+        timer.begin("halves");
+        VerifyOptions vo;
+        if (o.printer.nozzle_mm > 0) vo.nozzle_mm = o.printer.nozzle_mm;
+        if (o.printer.layer_mm > 0) vo.layer_mm = o.printer.layer_mm;
+        halves = makeHalves(scene, mesh, !o.no_verify, vo, summary);
+    }
     if (!o.output.empty()) {
         timer.begin("writing");
         MeshWriteOptions wo;
         wo.ascii_stl = o.ascii;
         wo.title = "tsf " TSF_VERSION " " + o.gen.input;
-        writeMesh(mesh, o.output, wo);
-        summary.outputs.push_back({o.output, "model"});
+        if (halves) {
+            writeHalves(*halves, o.output, wo, summary);
+        } else {
+            writeMesh(mesh, o.output, wo);
+            summary.outputs.push_back({o.output, "model"});
+        }
     }
     if (!o.preview.empty()) {
         timer.begin("drawing preview");
-        writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
-        summary.outputs.push_back({o.preview, "preview picture"});
+        if (halves) writeModelPreview(halvesSideBySide(*halves), o.preview, false);
+        else writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
+        summary.outputs.push_back({o.preview, halves ? "preview picture of the pieces as they print" : "preview picture"});
     }
     if (!o.scad.empty()) {
         timer.begin("writing OpenSCAD");
@@ -275,6 +298,8 @@ void addGenCommand(CLI::App& app) {
         opts->given.width = cmd->get_option("--width")->count() > 0;
         opts->given.depth = cmd->get_option("--depth")->count() > 0;
         opts->given.snap = cmd->get_option("--snap")->count() > 0;
+        // The pieces are not the model the sidecar describes: none is written for them.
+        if (opts->gen.scene.halves) opts->no_sidecar = true;
         runGen(*opts);
     });
 }
