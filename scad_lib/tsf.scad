@@ -15,6 +15,7 @@
 //   tsf_marks.scad       drawing of the orientation marks (notch, triangle) that tsf places
 //   tsf_tilt.scad        drawing of tilted tops and dimpled structural cells that tsf resolves
 //   tsf_legend.scad      tsf_with_legend(): the braille legend plate that tsf meshes
+//   tsf_halves.scad      tsf_half(): a mirrored model's support-free halves with pin holes
 //
 // Names starting with _tsf are private. The library defines no variables, so
 // it adds nothing to the OpenSCAD customizer. See docs/openscad.md in the tsf
@@ -25,3 +26,4 @@ include <tsf_csg.scad>
 include <tsf_marks.scad>
 include <tsf_tilt.scad>
 include <tsf_legend.scad>
+include <tsf_halves.scad>

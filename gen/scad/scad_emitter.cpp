@@ -1,5 +1,6 @@
 #include "gen/scad/scad_emitter.h"
 
+#include "gen/scad/scad_halves.h"
 #include "gen/scad/scad_legend.h"
 
 #include <algorithm>
@@ -64,12 +65,13 @@ Parameters parametersOf(const Scene& s) {
 }
 
 // Library parts a strategy needs, in the order they are pasted.
-std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend) {
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend, bool halves) {
     std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
     if (strategy == ScadOptions::Strategy::Csg && !shaped) parts.push_back("tsf_csg.scad");
     if (marks) parts.push_back("tsf_marks.scad");
     if (shaped) parts.push_back("tsf_tilt.scad");
     if (legend) parts.push_back("tsf_legend.scad");
+    if (halves) parts.push_back("tsf_halves.scad");
     return parts;
 }
 
@@ -342,6 +344,7 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
     if (!s.faces.empty()) o += ",\n                  faces = orientation_marks ? marks : [], mark_height_mm = mark_height";
     const bool shaped = hasShapedTops(s);
     if (shaped) o += ",\n                  shapes = tops, min_thickness_units = tops_thickness";
+    else o += halvesModelArgument(s);
     o += ");\n";
     if (shaped) {
         o += "assert([cell, height, transfer, baseline, value_max, snap, base, mirror] == tops_made_for,\n"
@@ -352,14 +355,14 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
         o += legendCallPrefix(s) + "tsf_terrain_polyhedron(model);\n";
         return;
     }
-    o += legendCallPrefix(s);
+    o += halvesCallPrefix(s) + legendCallPrefix(s);
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
 void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts) {
     const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
     const std::vector<std::string> parts =
-        libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), s.legend.has_value());
+        libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), s.legend.has_value(), s.halves.has_value());
     std::string list;
     for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
     o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
@@ -403,6 +406,7 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     emitMarks(o, scene);
     emitTops(o, scene);
     emitLegendData(o, scene);
+    emitHalvesData(o, scene);
     emitCall(o, scene, opts);
     if (opts.inline_library) emitInlineLibrary(o, scene, opts);
     return o;
