@@ -53,7 +53,7 @@ inline constexpr double kPinClearanceMm = 0.2;
 /// How deep each hole goes into its half, mm, before the cone that closes it.
 inline constexpr double kHoleDepthMm = 3.0;
 /// The cone's height over the hole's vertex radius: 1.1 makes every cone
-/// face steeper than 45 degrees (47.7 at the flats), which prints without
+/// face 48.3 degrees from the horizontal (steeper than 45), which prints without
 /// supports or bridging.
 inline constexpr double kHoleConeRatio = 1.1;
 /// Material above a hole's cone tip, mm (two nozzle widths).
