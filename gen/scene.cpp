@@ -356,21 +356,26 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         }
         s.floor_units = 0;
         s.mirror_thickness_units = max_step + base_units;
+        const int64_t flat_pit = s.nodata_pit_units;
         // A pit is cut from both faces of the slab: leave the cell at least
         // one step thick (a flat field's slab is only the base thick).
         s.nodata_pit_units = std::min(s.nodata_pit_units, (s.mirror_thickness_units - 1) / 2);
         if (params.halves) {
             // Halves: every pillar must cross one slab thick enough for the
             // pin holes on both sides of the cut (gen/halves.h).
+            // The grown slab is far thicker than two pits, so a pit is the
+            // flat model's (as the OpenSCAD library computes it from the
+            // grown thickness).
             int64_t highest_bottom = 0, lowest_top = INT64_MAX;
             for (size_t k = 0; k < kept; ++k) {
                 const int64_t h = h_units[size_t(g.index(s.col[k], s.row[k]))];
-                const int64_t pit = s.kind[k] == CellKind::NoData ? s.nodata_pit_units : 0;
+                const int64_t pit = s.kind[k] == CellKind::NoData ? flat_pit : 0;
                 highest_bottom = std::max(highest_bottom, h + pit);
                 lowest_top = std::min(lowest_top, h - pit + s.mirror_thickness_units);
             }
             const int64_t grow = std::max<int64_t>(0, halvesSlabUnits(s.z_snap_mm) - (lowest_top - highest_bottom));
             s.mirror_thickness_units += grow;
+            s.nodata_pit_units = std::min(flat_pit, (s.mirror_thickness_units - 1) / 2);
             SceneHalves halves;
             halves.thickness_grown_units = grow;
             halves.slab_bottom_units = highest_bottom;
