@@ -78,7 +78,7 @@ bool isTsfScene(const std::string& text) {
 // name (the parameter sets beside --scad, the scene sidecar) replace only
 // what tsf wrote before, unless --force.
 void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
-    std::vector<NamedPath> outputs{{o.preview, "--preview"}};
+    std::vector<NamedPath> outputs;
     if (o.gen.scene.halves && !o.output.empty()) {
         const HalvesPaths h = halvesPaths(o.output);
         outputs.push_back({h.upper, "the upper half of -o"});
@@ -87,6 +87,7 @@ void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
     } else {
         outputs.push_back({o.output, "-o"});
     }
+    outputs.push_back({o.preview, "--preview"});
     const std::vector<std::string> scad_paths = o.scad.empty() ? std::vector<std::string>() : scadOutputPaths(so, o.scad);
     if (!o.scad.empty()) outputs.push_back({o.scad, "--scad"});
     if (so.write_parameter_sets && !o.scad.empty())
