@@ -62,6 +62,7 @@
 
 #include "gen/cdt_parity.h"
 #include "gen/util/union_find.h"
+#include "gen/halves.h"
 
 #include "gen/legend_scene.h"
 #include "gen/scale.h"
@@ -547,7 +548,7 @@ private:
         r.edges.assign(next_on_rim_.begin(), next_on_rim_.end());
         std::sort(r.edges.begin(), r.edges.end());  // the same triangulation on every run
         r.inner = std::move(bottom_points_);
-        addPlanarRegion(r, 0, /*facing_up=*/false);
+        addPlanarRegion(r, 0, /*facing_up=*/false, /*with_holes=*/true);
     }
 
     struct PlanarRegion {
@@ -559,7 +560,7 @@ private:
     // A horizontal polygon with holes at height z, bounded by r.edges, with
     // r.inner as extra vertices: a constrained Delaunay triangulation with
     // exact predicates, faces inside by parity.
-    void addPlanarRegion(const PlanarRegion& r, int64_t z, bool facing_up) {
+    void addPlanarRegion(const PlanarRegion& r, int64_t z, bool facing_up, bool with_holes = false) {
         using K = CGAL::Exact_predicates_inexact_constructions_kernel;
         using Vb = CGAL::Triangulation_vertex_base_with_info_2<uint32_t, K>;
         using Fb = CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<int, K>>;
@@ -593,6 +594,20 @@ private:
         }
         cdt.insert(inner.begin(), inner.end());  // spatially sorted
         assert(cdt.number_of_vertices() == handles.size() + inner.size() && "an inner vertex on the boundary");
+        // A half's pin holes (gen/halves.h), in the flat bottom only: each
+        // ring is one more loop of constraints, so the parity below leaves
+        // the hole open. A hole lies inside one cell, so no inner (corner)
+        // vertex falls in it.
+        const bool holes = with_holes && s_.halves && s_.halves->kind != HalfKind::Whole;
+        for (size_t h = 0; holes && h < s_.halves->hole_centres.size(); ++h) {
+            const std::vector<uint32_t> ring = addHole(h);
+            std::vector<Cdt::Vertex_handle> hole;
+            for (uint32_t index : ring) {
+                hole.push_back(cdt.insert(point(index)));
+                hole.back()->info() = index;
+            }
+            for (size_t n = 0; n < hole.size(); ++n) cdt.insert_constraint(hole[n], hole[(n + 1) % hole.size()]);
+        }
         markInsideByParity(cdt);
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
             if (f->info() % 2 != 1) continue;
@@ -621,6 +636,31 @@ private:
             }
         }
         for (const auto& t : body.mesh.triangles) tri(index[t[0]], index[t[1]], index[t[2]]);
+    }
+
+    // Pin hole h of a half: the ring on the bottom (returned, counter-clockwise
+    // from above), the wall up to the hole's depth, and the cone to its tip.
+    // Its vertices are its own: the hole lies inside one slab, away from every
+    // wall (gen/halves.h), so nothing else meets them.
+    std::vector<uint32_t> addHole(size_t h) {
+        const SceneHalves& halves = *s_.halves;
+        const std::vector<PlanarPoint> ring = holeRing(s_, h);
+        const uint32_t first = uint32_t(mesh_.positions.size());
+        const uint32_t n = uint32_t(ring.size());
+        for (int64_t z : {int64_t(0), halves.hole_depth_units})
+            for (const PlanarPoint& p : ring) mesh_.positions.push_back(s_.point(p, z));
+        const uint32_t apex = uint32_t(mesh_.positions.size());
+        mesh_.positions.push_back(s_.point(halves.hole_centres[h], halves.hole_apex_units));
+        std::vector<uint32_t> bottom;
+        for (uint32_t k = 0; k < n; ++k) {
+            const uint32_t a0 = first + k, b0 = first + (k + 1) % n, a1 = a0 + n, b1 = b0 + n;
+            // The wall faces the hole's axis (out of the solid), the cone faces down.
+            tri(a0, b1, b0);
+            tri(a0, a1, b1);
+            tri(a1, apex, b1);
+            bottom.push_back(a0);
+        }
+        return bottom;
     }
 
     const Scene& s_;

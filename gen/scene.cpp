@@ -148,6 +148,12 @@ void validate(const HexField& field, const SceneParams& p) {
     if (p.value_max && !std::isfinite(*p.value_max)) throw InputError("value at maximum height must be finite");
     if (!std::isfinite(p.steepness) || p.steepness <= 0)
         throw InputError("steepness must be a finite number > 0 (got " + std::to_string(p.steepness) + ")");
+    if (p.halves && p.bottom != Bottom::Mirrored)
+        throw InputError("--halves cuts a mirrored model at its slab; a flat model already prints without supports. "
+                         "Add --mirror, or leave out --halves");
+    if (p.halves && p.tilt != TiltSource::None)
+        throw InputError("--halves does not combine with --tilt yet (a tilted underside has no flat slab to cut "
+                         "at); leave out one of them");
 }
 
 ValueMapping resolveMapping(const HexField& field, const SceneParams& p, std::vector<std::string>& notes) {
@@ -351,9 +357,33 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         }
         s.floor_units = 0;
         s.mirror_thickness_units = max_step + base_units;
+        const int64_t flat_pit = s.nodata_pit_units;
         // A pit is cut from both faces of the slab: leave the cell at least
         // one step thick (a flat field's slab is only the base thick).
         s.nodata_pit_units = std::min(s.nodata_pit_units, (s.mirror_thickness_units - 1) / 2);
+        if (params.halves) {
+            // Halves: every pillar must cross one slab thick enough for the
+            // pin holes on both sides of the cut (gen/halves.h).
+            // The grown slab is far thicker than two pits, so a pit is the
+            // flat model's (as the OpenSCAD library computes it from the
+            // grown thickness).
+            int64_t highest_bottom = 0, lowest_top = INT64_MAX;
+            for (size_t k = 0; k < kept; ++k) {
+                const int64_t h = h_units[size_t(g.index(s.col[k], s.row[k]))];
+                const int64_t pit = s.kind[k] == CellKind::NoData ? flat_pit : 0;
+                highest_bottom = std::max(highest_bottom, h + pit);
+                lowest_top = std::min(lowest_top, h - pit + s.mirror_thickness_units);
+            }
+            const int64_t grow = std::max<int64_t>(0, halvesSlabUnits(s.z_snap_mm) - (lowest_top - highest_bottom));
+            s.mirror_thickness_units += grow;
+            s.nodata_pit_units = std::min(flat_pit, (s.mirror_thickness_units - 1) / 2);
+            SceneHalves halves;
+            halves.thickness_grown_units = grow;
+            halves.slab_bottom_units = highest_bottom;
+            halves.slab_top_units = lowest_top + grow;
+            halves.split_units = (halves.slab_bottom_units + halves.slab_top_units) / 2;
+            s.halves = halves;
+        }
         for (size_t k = 0; k < kept; ++k) {
             s.bottom[k] = h_units[size_t(g.index(s.col[k], s.row[k]))];
             s.top[k] = s.bottom[k] + s.mirror_thickness_units;
@@ -385,9 +415,13 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         s.notes.push_back(note.str());
     }
     placeMarks(s);
+    if (s.halves) placeHalves(s);
     // The legend first: the structural dimples below depend on it.
     placeLegend(s);
-    if (params.tilt != TiltSource::None || params.structural_texture) {
+    if (params.structural_texture && params.halves)
+        s.notes.push_back("structural cells are left level on a model cut into halves (the cut and the pin "
+                          "holes are drawn on level cells): give --no-texture-structural to silence this");
+    if (params.tilt != TiltSource::None || (params.structural_texture && !params.halves)) {
         // Structural: a kept cell at the floor that no input value fell in (a
         // bin without points): kept only because the hull holds the model
         // together there. A raster cell always holds pixels, so at the floor

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "gen/hex_field.h"
+#include "gen/halves.h"
 #include "gen/hex_grid.h"
 #include "gen/legend.h"
 #include "gen/marks.h"
@@ -95,6 +96,8 @@ struct SceneParams {
     LegendRequest legend;
     // --- tactile scale (gen/scale.h) ---
     ScaleRequest scale;
+    // --- support-free halves (gen/halves.h); mirrored only ---
+    bool halves = false;           ///< cut the mirrored model into two halves that print without supports
 };
 
 /// What a kept cell stands for.
@@ -151,6 +154,8 @@ struct Scene {
     std::optional<SceneLegend> legend;
     /// The tactile scale east of the pillars (gen/scale.h); none unless asked for.
     std::optional<SceneScale> scale;
+    /// The cut into two support-free halves and the pin holes (gen/halves.h); none unless asked for.
+    std::optional<SceneHalves> halves;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)

@@ -11,6 +11,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "gen/util/union_find.h"
+#include "verify/overhang.h"
 #include "verify/detail/format.h"
 
 namespace tsf {
@@ -221,6 +222,31 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
         c.time_ms = rays.time_ms;
         r.checks.push_back(std::move(c));
     }
+
+    Check over;
+    over.id = "overhang";
+    over.title = "no overhang steeper than 45 degrees (prints without supports)";
+    over.unit = "mm";
+    over.stage = "bed";
+    if (!closed_oriented) {
+        over.status = CheckStatus::Skipped;
+        over.note = "skipped: needs a closed, manifold, consistently oriented mesh";
+    } else {
+        const OverhangFigures oh = measureOverhang(mesh);
+        f.overhang_area_mm2 = oh.area_mm2;
+        f.overhang_max_height_mm = oh.max_height_mm;
+        if (oh.triangles == 0) {
+            over.status = CheckStatus::Pass;
+            over.note = "nothing overhangs";
+        } else {
+            over.count = oh.triangles;
+            over.status = o.fail_on_warnings ? CheckStatus::Fail : CheckStatus::Warn;
+            over.note = fmtMm(oh.area_mm2) + " mm^2 overhangs up to " + fmtMm(oh.max_height_mm) +
+                        " mm above the bed: supports needed";
+            over.worst.push_back({oh.worst_mm, oh.max_height_mm, "the highest overhang"});
+        }
+    }
+    r.checks.push_back(std::move(over));
 
     Check bed;
     bed.id = "fits_bed";

@@ -14,6 +14,9 @@
 //   [base_thickness]  flat triangles (|n_z| >= 1/2), ray inwards: the vertical
 //                     thickness (flat base under the lowest pillars, the mirrored
 //                     slab); warns below two layers (2 * layer_mm);
+//   [overhang]        triangles facing down more than 45 degrees from the
+//                     vertical, off the bed (verify/overhang.h): supports needed;
+//                     warns when there are any;
 //   [fits_bed]        the bounding box fits the bed, as is or turned by 90
 //                     degrees about z; warns otherwise. Skipped without a bed size.
 // Each is a warning (status Warn) unless fail_on_warnings, then Fail. The ray
@@ -44,7 +47,7 @@ struct PrintabilityOptions {
 
 struct PrintabilityResult {
     PrintabilityFigures figures;
-    std::vector<Check> checks;  ///< "wall_thickness", "gap_width", "base_thickness", "fits_bed"
+    std::vector<Check> checks;  ///< "wall_thickness", "gap_width", "base_thickness", "overhang", "fits_bed"
     std::vector<Stage> stages;
 };
 

@@ -79,7 +79,9 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
         const int64_t raise = top ? markRaiseAtCentre(scene, k) : 0;
         // A tilted top passes through its value at the centre; a structural
         // cell's dimple is lowest there and carries no value (gen/top_shapes.h).
-        c.expected_mm = scene.zMm(top ? centreTop(scene, k) + raise : centreBottom(scene, k));
+        c.expected_mm = scene.zMm(top                       ? centreTop(scene, k) + raise
+                                  : isHoleCell(scene, k) ? scene.halves->hole_apex_units  // a half's pin hole
+                                                         : centreBottom(scene, k));
         const bool no_value = raise || isStructural(scene.shapes, k);
         c.value = no_value ? std::numeric_limits<double>::quiet_NaN() : scene.value[k];
         const auto hit = top ? caster.firstHit({c.x_mm, c.y_mm, z_above}, {0, 0, -1})

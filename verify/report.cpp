@@ -117,7 +117,8 @@ std::string formatReport(const VerifyReport& r) {
         const PrintabilityFigures& p = *r.printability;
         o << "\nprintability (nozzle " << fmtMm(p.nozzle_mm) << " mm, layer " << fmtMm(p.layer_mm) << " mm): thinnest wall "
           << fmtMm(p.min_wall_mm) << " mm, narrowest gap " << fmtMm(p.min_gap_mm) << " mm, thinnest slab "
-          << fmtMm(p.min_slab_mm) << " mm\n";
+          << fmtMm(p.min_slab_mm) << " mm, overhang " << fmtNum(p.overhang_area_mm2) << " mm^2 up to "
+          << fmtMm(p.overhang_max_height_mm) << " mm above the bed\n";
     }
 
     o << "\ntime:";
@@ -251,6 +252,8 @@ nlohmann::json toJson(const VerifyReport& r) {
             {"bed_mm", p.bed_mm ? point(*p.bed_mm) : json(nullptr)},
             {"fits_bed", p.fits_bed},
             {"fits_bed_rotated", p.fits_bed_rotated},
+            {"overhang_area_mm2", num(p.overhang_area_mm2)},
+            {"overhang_max_height_mm", num(p.overhang_max_height_mm)},
         };
     }
     return j;

@@ -152,6 +152,8 @@ struct PrintabilityFigures {
     std::optional<Vec3> bed_mm; ///< bed size when given
     bool fits_bed = true;
     bool fits_bed_rotated = false;  ///< fits only when turned by 90 degrees about z
+    double overhang_area_mm2 = 0;   ///< surface facing down more than 45 degrees from the vertical, off the bed
+    double overhang_max_height_mm = 0;  ///< the highest of it above the bed (supports that tall)
 };
 
 struct VerifyReport {

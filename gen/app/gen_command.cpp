@@ -8,6 +8,7 @@
 #include "gen/app/commands.h"
 #include "gen/app/gen_options.h"
 #include "gen/app/gen_summary.h"
+#include "gen/app/halves_output.h"
 #include "gen/app/input_report.h"
 #include "gen/app/stage_timer.h"
 #include "gen/app/preview.h"
@@ -90,7 +91,16 @@ bool isTsfScene(const std::string& text) {
 // name (the parameter sets beside --scad, the scene sidecar) replace only
 // what tsf wrote before, unless --force.
 void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
-    std::vector<NamedPath> outputs{{o.output, "-o"}, {o.preview, "--preview"}};
+    std::vector<NamedPath> outputs;
+    if (o.gen.scene.halves && !o.output.empty()) {
+        const HalvesPaths h = halvesPaths(o.output);
+        outputs.push_back({h.upper, "the upper half of -o"});
+        outputs.push_back({h.lower, "the lower half of -o"});
+        outputs.push_back({h.pins, "the pins of -o"});
+    } else {
+        outputs.push_back({o.output, "-o"});
+    }
+    outputs.push_back({o.preview, "--preview"});
     const std::vector<std::string> scad_paths = o.scad.empty() ? std::vector<std::string>() : scadOutputPaths(so, o.scad);
     if (!o.scad.empty()) outputs.push_back({o.scad, "--scad"});
     if (so.write_parameter_sets && !o.scad.empty())
@@ -187,6 +197,10 @@ void runGen(GenCommandOptions o) {
         throw InputError(o.output.empty() ? "--parts" : o.output, 0, 0,
                          "--parts writes a 3MF (one object, a part per feature): give -o MODEL.3mf; "
                          "STL, OFF and OBJ hold one solid");
+    if (o.gen.scene.halves && (o.parts || o.print_check))
+        throw InputError(o.parts ? "--parts" : "--print-check", 0, 0,
+                         "--halves writes each piece to a file of its own (MODEL-upper, MODEL-lower, MODEL-pins); "
+                         "leave out --parts and --print-check and run tsf print-check on each piece");
     if (o.print_check && model_ext != ".stl" && model_ext != ".3mf")
         throw InputError(o.output.empty() ? "--print-check" : o.output, 0, 0,
                          "--print-check slices the model file: give -o MODEL.stl or -o MODEL.3mf");
@@ -229,6 +243,7 @@ void runGen(GenCommandOptions o) {
         report = verifyModel(mesh, &scene, vo);
         summary.verify = toJson(*report);
         summary.verify_text = verifyLines(*report);
+        if (!scene.halves) summary.supports_text = supportsText(*report);
         if (!report->passed()) {
             // A model that fails its own checks is a bug in tsf: never hand it to a printer.
             timer.end();
@@ -261,12 +276,22 @@ void runGen(GenCommandOptions o) {
         }
     }
 
+    std::optional<HalvesPieces> halves;
+    if (scene.halves) {
+        timer.begin("halves");
+        VerifyOptions vo;
+        if (o.printer.nozzle_mm > 0) vo.nozzle_mm = o.printer.nozzle_mm;
+        if (o.printer.layer_mm > 0) vo.layer_mm = o.printer.layer_mm;
+        halves = makeHalves(scene, mesh, !o.no_verify, vo, summary);
+    }
     if (!o.output.empty()) {
         timer.begin("writing");
         MeshWriteOptions wo;
         wo.ascii_stl = o.ascii;
         wo.title = "tsf " TSF_VERSION " " + o.gen.input;
-        if (o.parts) {
+        if (halves) {
+            writeHalves(*halves, o.output, wo, summary);
+        } else if (o.parts) {
             write3mfParts(parts, o.output, wo);
             std::string names;
             for (const MeshPart& p : parts) names += (names.empty() ? "" : ", ") + p.name;
@@ -278,8 +303,9 @@ void runGen(GenCommandOptions o) {
     }
     if (!o.preview.empty()) {
         timer.begin("drawing preview");
-        writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
-        summary.outputs.push_back({o.preview, "preview picture"});
+        if (halves) writeModelPreview(halvesSideBySide(*halves), o.preview, false);
+        else writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
+        summary.outputs.push_back({o.preview, halves ? "preview picture of the pieces as they print" : "preview picture"});
     }
     if (!o.scad.empty()) {
         timer.begin("writing OpenSCAD");
@@ -379,6 +405,8 @@ void addGenCommand(CLI::App& app) {
         opts->given.width = cmd->get_option("--width")->count() > 0;
         opts->given.depth = cmd->get_option("--depth")->count() > 0;
         opts->given.snap = cmd->get_option("--snap")->count() > 0;
+        // The pieces are not the model the sidecar describes: none is written for them.
+        if (opts->gen.scene.halves) opts->no_sidecar = true;
         runGen(*opts);
     });
 }

@@ -108,6 +108,11 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "Mirrored bottom: the underside shows the negated data, so cells hidden between tall neighbours "
            "can be felt from below")
         ->group(model);
+    cmd->add_flag("--halves", p.halves,
+                  "With --mirror: write two halves cut at the slab's middle that print without supports, flat "
+                  "side down, and three pins that join them one way only: -o M.stl writes M-upper.stl, "
+                  "M-lower.stl, M-pins.stl (docs/printing.md)")
+        ->group(model);
     cmd->add_option_function<std::string>(
            "--tilt",
            [&p](const std::string& t) {

@@ -47,6 +47,21 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     j["cull"] = toString(s.params.cull);
     j["bottom"] = toString(s.params.bottom);
     if (s.params.bottom == Bottom::Mirrored) j["mirror_thickness_mm"] = s.zMm(s.mirror_thickness_units);
+    if (s.halves) {
+        const SceneHalves& h = *s.halves;
+        nlohmann::json holes = nlohmann::json::array();
+        for (const auto& [x, y] : holeCentresMm(s)) holes.push_back({x, y});
+        j["halves"] = {{"cut_z_mm", s.zMm(h.split_units)},
+                       {"slab_mm", {s.zMm(h.slab_bottom_units), s.zMm(h.slab_top_units)}},
+                       {"thickness_grown_mm", s.zMm(h.thickness_grown_units)},
+                       {"hole_centres_mm", holes},
+                       {"hole_diameter_mm", 2 * h.pins.hole_radius_mm},
+                       {"hole_depth_mm", s.zMm(h.hole_depth_units)},
+                       {"hole_tip_mm", s.zMm(h.hole_apex_units)},
+                       {"pin_diameter_mm", 2 * h.pins.pin_radius_mm},
+                       {"pin_length_mm", h.pins.pin_length_mm},
+                       {"clearance_per_side_mm", kPinClearanceMm}};
+    }
     j["one_pillar_per_value"] = s.one_to_one;
     if (s.params.cull == Cull::Concave)
         j["concave"] = {{"cells_convex_hull", s.cells_convex}, {"volume_saved_mm3", s.volume_saved_mm3}};
@@ -163,6 +178,18 @@ std::string formatSceneFacts(const Scene& s) {
           << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps[0].top_units - sc.foot_top_units)) << " mm to "
           << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units))
           << " mm above the floor\n";
+    if (s.halves) {
+        const SceneHalves& h = *s.halves;
+        o << "  halves    cut at z = " << fmt("%.2f", s.zMm(h.split_units)) << " mm, the middle of the slab every pillar "
+          << "crosses (" << fmt("%.2f", s.zMm(h.slab_bottom_units)) << " to " << fmt("%.2f", s.zMm(h.slab_top_units))
+          << " mm";
+        if (h.thickness_grown_units > 0)
+            o << "; the thickness grew by " << fmt("%.2f", s.zMm(h.thickness_grown_units)) << " mm to make room for the pins";
+        o << ")\n            " << h.hole_centres.size() << " pin holes " << fmt("%.2f", 2 * h.pins.hole_radius_mm)
+          << " mm across, " << fmt("%.2f", s.zMm(h.hole_apex_units)) << " mm deep to the cone's tip, at";
+        for (const auto& [x, y] : holeCentresMm(s)) o << " (" << fmt("%.1f", x) << ", " << fmt("%.1f", y) << ")";
+        o << " mm; pins " << fmt("%.1f", 2 * h.pins.pin_radius_mm) << " mm x " << fmt("%.1f", h.pins.pin_length_mm)
+          << " mm, " << fmt("%.2f", kPinClearanceMm) << " mm clearance per side\n";
     }
     for (const std::string& n : s.notes) o << "  note      " << n << "\n";
     return o.str();
@@ -183,6 +210,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
     for (const auto& [path, what] : s.outputs) j["outputs"].push_back({{"path", path}, {"kind", what}});
     for (const auto& [stage, ms] : s.timings_ms) j["timings_ms"][stage] = ms;
     if (!s.verify.is_null()) j["verify"] = s.verify;
+    if (!s.halves.is_null()) j["halves"] = s.halves;
     j["printer"] = s.printer_notes;
     return j;
 }
@@ -197,6 +225,7 @@ std::string formatSummary(const GenSummary& s) {
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
           << fmt("%.1f", signedVolume(*s.mesh)) << " mm^3\n";
     if (!s.verify_text.empty()) o << s.verify_text;
+    o << s.supports_text << s.halves_text;
     for (const auto& [path, what] : s.outputs) o << "  wrote     " << path << " (" << what << ")\n";
     if (!s.timings_ms.empty()) {
         o << "  time     ";

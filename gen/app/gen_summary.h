@@ -22,6 +22,9 @@ struct GenSummary {
     nlohmann::json verify;  ///< verifier report, null when not run
     std::string verify_text;
     std::vector<std::string> printer_notes;  ///< what --bed, --nozzle, --layer changed (printer_fit.h)
+    nlohmann::json halves;   ///< --halves: the pieces, their checks and figures (halves_output.h); null otherwise
+    std::string halves_text;
+    std::string supports_text;  ///< a one-piece mirrored model: the supports it needs
 };
 
 /// Human-readable summary (several lines, each "label  text").

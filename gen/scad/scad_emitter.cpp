@@ -1,5 +1,6 @@
 #include "gen/scad/scad_emitter.h"
 
+#include "gen/scad/scad_halves.h"
 #include "gen/scad/scad_legend.h"
 #include "gen/scad/scad_scale.h"
 
@@ -65,13 +66,14 @@ Parameters parametersOf(const Scene& s) {
 }
 
 // Library parts a strategy needs, in the order they are pasted.
-std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend, bool scale) {
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend, bool scale, bool halves) {
     std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
     if (strategy == ScadOptions::Strategy::Csg && !shaped) parts.push_back("tsf_csg.scad");
     if (marks) parts.push_back("tsf_marks.scad");
     if (shaped) parts.push_back("tsf_tilt.scad");
     if (legend) parts.push_back("tsf_legend.scad");
     if (scale) parts.push_back("tsf_scale.scad");
+    if (halves) parts.push_back("tsf_halves.scad");
     return parts;
 }
 
@@ -344,6 +346,7 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
     if (!s.faces.empty()) o += ",\n                  faces = orientation_marks ? marks : [], mark_height_mm = mark_height";
     const bool shaped = hasShapedTops(s);
     if (shaped) o += ",\n                  shapes = tops, min_thickness_units = tops_thickness";
+    else o += halvesModelArgument(s);
     o += ");\n";
     if (shaped) {
         o += "assert([cell, height, transfer, baseline, value_max, snap, base, mirror] == tops_made_for,\n"
@@ -354,14 +357,15 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
         o += scaleCallPrefix(s) + legendCallPrefix(s) + "tsf_terrain_polyhedron(model);\n";
         return;
     }
-    o += scaleCallPrefix(s) + legendCallPrefix(s);
+    o += halvesCallPrefix(s) + scaleCallPrefix(s) + legendCallPrefix(s);
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
 void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts) {
     const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
     const std::vector<std::string> parts =
-        libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), s.legend.has_value(), s.scale.has_value());
+        libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), s.legend.has_value(), s.scale.has_value(),
+                     s.halves.has_value());
     std::string list;
     for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
     o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
@@ -406,6 +410,7 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     emitTops(o, scene);
     emitLegendData(o, scene);
     emitScaleData(o, scene);
+    emitHalvesData(o, scene);
     emitCall(o, scene, opts);
     if (opts.inline_library) emitInlineLibrary(o, scene, opts);
     return o;

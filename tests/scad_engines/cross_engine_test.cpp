@@ -12,6 +12,7 @@
 
 #include "engine_fixtures.h"
 #include "gen/direct_mesher.h"
+#include "gen/halves_mesh.h"
 #include "gen/mesh_io/stl_reader.h"
 #include "verify/render/engine_output_check.h"
 #include "gen/scad/scad_emitter.h"
@@ -36,28 +37,19 @@ double maxAbsCoordinate(const Mesh& m) {
     return r;
 }
 
-// Renders `scad` with `engine` and checks the result against `scene`.
-void expectSameSolid(const ScadEngine& engine, const Scene& scene, const fs::path& scad, const fs::path& out,
-                     const ScadRenderRequest& base = {}) {
-    ScadRenderRequest rq = base;
-    rq.scad_path = scad.string();
-    rq.output_path = out.string();
-    rq.timeout_s = 300;
-    const Mesh direct = meshScene(scene);
+// Checks `mesh` (an engine's render, read back) against `direct`, the direct
+// mesher's mesh of `scene`: volume, bounding box, the same surface plane by
+// plane, every cell read back, the solid checks.
+void expectSameMesh(const std::string& engine_name, const Mesh& mesh, const Scene& scene, const Mesh& direct,
+                    const fs::path& out) {
     const double direct_volume_mm3 = signedVolume(direct);
-    EngineOutputCheck check;
-    const ScadRenderResult r = renderScadChecked(engine, rq, {}, {direct_volume_mm3}, &check);
-    ASSERT_TRUE(r.ok()) << engine.name() << ": " << r.summary << "\n" << r.output;
-    EXPECT_TRUE(check.ok) << check.problem;
-
-    const Mesh mesh = readStl(out.string());
     EXPECT_LE(std::abs(signedVolume(mesh) - direct_volume_mm3), kVolumeRelativeTolerance * direct_volume_mm3)
-        << engine.name() << ": volume " << signedVolume(mesh) << " vs direct " << direct_volume_mm3;
+        << engine_name << ": volume " << signedVolume(mesh) << " vs direct " << direct_volume_mm3;
     const Bounds a = meshBounds(mesh), b = meshBounds(direct);
     const double rounding_mm = maxAbsCoordinate(direct) * kStlCoordinateRoundoff;
     for (auto [x, y] : {std::pair{a.min.x, b.min.x}, {a.min.y, b.min.y}, {a.min.z, b.min.z}, {a.max.x, b.max.x},
                         {a.max.y, b.max.y}, {a.max.z, b.max.z}})
-        EXPECT_NEAR(x, y, rounding_mm) << engine.name() << ": bounding boxes differ";
+        EXPECT_NEAR(x, y, rounding_mm) << engine_name << ": bounding boxes differ";
 
     VerifyOptions vo;
     vo.name = out.string();
@@ -66,10 +58,25 @@ void expectSameSolid(const ScadEngine& engine, const Scene& scene, const fs::pat
     vo.reference_name = "direct mesher";
     vo.exact = true;  // exact predicates and constructions: a self-touching corner is found for sure
     const VerifyReport report = verifyModel(mesh, &scene, vo);
-    EXPECT_TRUE(report.passed()) << engine.name() << ":\n" << formatReport(report);
+    EXPECT_TRUE(report.passed()) << engine_name << ":\n" << formatReport(report);
     ASSERT_TRUE(report.readback.has_value());
     EXPECT_EQ(report.readback->cells_checked, scene.keptCount());
     EXPECT_EQ(report.readback->over_tolerance, 0u);
+}
+
+// Renders `scad` with `engine` and checks the result against `scene`.
+void expectSameSolid(const ScadEngine& engine, const Scene& scene, const fs::path& scad, const fs::path& out,
+                     const ScadRenderRequest& base = {}) {
+    ScadRenderRequest rq = base;
+    rq.scad_path = scad.string();
+    rq.output_path = out.string();
+    rq.timeout_s = 300;
+    const Mesh direct = meshScene(scene);
+    EngineOutputCheck check;
+    const ScadRenderResult r = renderScadChecked(engine, rq, {}, {signedVolume(direct)}, &check);
+    ASSERT_TRUE(r.ok()) << engine.name() << ": " << r.summary << "\n" << r.output;
+    EXPECT_TRUE(check.ok) << check.problem;
+    expectSameMesh(engine.name(), readStl(out.string()), scene, direct, out);
 }
 
 // engine, strategy, bottom
@@ -312,6 +319,70 @@ TEST_P(CrossEngineParameters, RefusedParameterStopsWithTheLibraryMessage) {
 
 INSTANTIATE_TEST_SUITE_P(Engines, CrossEngineParameters, ::testing::Values("openscad", "wasm"),
                          [](const auto& info) { return info.param; });
+
+}  // namespace
+}  // namespace tsf
+
+namespace tsf {
+namespace {
+
+// The support-free halves of a mirrored model (gen/halves.h): each engine
+// cuts the model at the Scene's plane and the Scene's pin holes out of it
+// (scad_lib/tsf_halves.scad, piece = "upper" / "lower") and draws the same
+// solid as the direct mesher's half, the lower half turned over as it prints.
+using HalfCase = std::tuple<std::string, HalfKind>;
+class CrossEngineHalves : public ::testing::TestWithParam<HalfCase> {};
+
+TEST_P(CrossEngineHalves, RendersTheSameHalfAsTheDirectMesher) {
+    const auto& [engine_name, kind] = GetParam();
+    TSF_NEED_ENGINE(engineNamed(engine_name));
+    // The small terrain (with its no-data pit) three times east and twice north: room for three pin holes.
+    const HexField terrain = test::smallTerrain();
+    HexField field;
+    field.grid = {3 * terrain.grid.cols, 2 * terrain.grid.rows};
+    field.values.assign(size_t(field.grid.cellCount()), 0.0);
+    for (int32_t r = 0; r < field.grid.rows; ++r)
+        for (int32_t c = 0; c < field.grid.cols; ++c) field.at(c, r) = terrain.at(c % terrain.grid.cols, r % terrain.grid.rows);
+    field.source = "terrain x 6";
+    field.one_to_one = true;
+    SceneParams p = test::terrainParams(Bottom::Mirrored);
+    p.marks = MarkParams{};
+    p.pitch_mm = 6.0;
+    p.halves = true;
+    const Scene scene = buildScene(field, p);
+    ASSERT_TRUE(scene.halves.has_value());
+    const bool upper = kind == HalfKind::Upper;
+    const std::string piece = upper ? "upper" : "lower";
+    const fs::path dir = test::scratchDir("halves_" + engine_name + "_" + piece);
+    writeScad(scene, ScadOptions{}, (dir / "model.scad").string());
+    ScadRenderRequest rq;
+    rq.scad_path = (dir / "model.scad").string();
+    rq.output_path = (dir / "model.stl").string();
+    rq.timeout_s = 300;
+    rq.defines.push_back({"piece", "\"" + piece + "\""});
+    const Mesh printed = meshHalf(scene, kind);
+    EngineOutputCheck check;
+    const ScadRenderResult r = renderScadChecked(*engineNamed(engine_name).engine, rq, {}, {signedVolume(printed)}, &check);
+    ASSERT_TRUE(r.ok()) << engine_name << ": " << r.summary << "\n" << r.output;
+    EXPECT_TRUE(check.ok) << check.problem;
+    const Mesh rendered = readStl(rq.output_path);
+    // As it prints: the same bounds and volume as the direct mesher's piece.
+    const Bounds a = meshBounds(rendered), b = meshBounds(printed);
+    const double rounding_mm = maxAbsCoordinate(printed) * kStlCoordinateRoundoff + 1e-6;
+    EXPECT_NEAR(a.min.y, b.min.y, rounding_mm);
+    EXPECT_NEAR(a.max.z, b.max.z, rounding_mm);
+    // In the half's Scene frame (the lower half turned back): the same solid, every cell read back.
+    const Scene half = halfScene(scene, kind);
+    expectSameMesh(engine_name, upper ? rendered : turnLowerHalf(rendered, scene), half, meshScene(half),
+                   dir / "model.stl");
+}
+
+INSTANTIATE_TEST_SUITE_P(EnginesPieces, CrossEngineHalves,
+                         ::testing::Combine(::testing::Values("openscad", "wasm"),
+                                            ::testing::Values(HalfKind::Upper, HalfKind::Lower)),
+                         [](const auto& info) {
+                             return std::get<0>(info.param) + (std::get<1>(info.param) == HalfKind::Upper ? "_upper" : "_lower");
+                         });
 
 }  // namespace
 }  // namespace tsf

@@ -1,0 +1,78 @@
+// tsf gen --mirror --halves: two halves and the pins written beside -o,
+// verified and listed in the summary; a one-piece mirrored model says it
+// needs supports; --halves without --mirror is refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/mesh_io/mesh_reader.h"
+#include "tests/support/files.h"
+#include "tests/support/mesh_invariants.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+std::string hillCsv() {
+    std::string csv;
+    for (int r = 0; r < 10; ++r) {
+        for (int c = 0; c < 12; ++c) csv += (c ? "," : "") + std::to_string((c * 7 + r * 5) % 11);
+        csv += "\n";
+    }
+    return csv;
+}
+
+TEST(HalvesCli, WritesTwoSupportFreeHalvesAndThePins) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", hillCsv());
+    const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --mirror --halves --json -o " +
+                                    (dir / "m.stl").string(), dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["halves"]["files"]["upper"], (dir / "m-upper.stl").string());
+    for (const auto& c : j["halves"]["pair"]["checks"]) EXPECT_EQ(c["status"], "pass") << c.dump();
+    EXPECT_EQ(j["scene"]["halves"]["hole_centres_mm"].size(), 3u);
+    EXPECT_FALSE(std::filesystem::exists(dir / "m.stl"));  // the one piece is not written
+    for (const char* name : {"m-upper.stl", "m-lower.stl", "m-pins.stl"}) {
+        ASSERT_TRUE(std::filesystem::exists(dir / name)) << name;
+        const Mesh m = readMesh((dir / name).string());
+        EXPECT_TRUE(test::checkInvariants(m).closedManifold()) << name;
+        EXPECT_NEAR(meshBounds(m).min.z, 0.0, 1e-6) << name;
+    }
+    const auto up = j["halves"]["upper"]["checks"];
+    bool overhang_checked = false;
+    for (const auto& c : up)
+        if (c["id"] == "overhang") overhang_checked = c["status"] == "pass";
+    EXPECT_TRUE(overhang_checked) << up.dump();
+
+    const auto text = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --mirror --halves -o " +
+                                       (dir / "n.3mf").string(), dir);
+    ASSERT_EQ(text.exit_code, test::kExitOk) << text.err;
+    EXPECT_NE(text.out.find("n-lower.3mf"), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("nothing overhangs"), std::string::npos) << text.out;
+}
+
+TEST(HalvesCli, OnePieceMirroredSaysItNeedsSupports) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", hillCsv());
+    const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --mirror -o " + (dir / "m.stl").string(), dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.err;
+    EXPECT_NE(r.out.find("supports  needed"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--halves"), std::string::npos) << r.out;
+    const auto flat = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 -o " + (dir / "f.stl").string(), dir);
+    ASSERT_EQ(flat.exit_code, test::kExitOk) << flat.err;
+    EXPECT_EQ(flat.out.find("supports  needed"), std::string::npos) << flat.out;
+}
+
+TEST(HalvesCli, RefusedWithoutMirror) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", hillCsv());
+    const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --halves -o " + (dir / "m.stl").string(), dir);
+    EXPECT_EQ(r.exit_code, test::kExitBadInput);
+    EXPECT_NE(r.err.find("--mirror"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace tsf

@@ -1,0 +1,140 @@
+// Support-free halves of a mirrored model (gen/halves.h, gen/halves_mesh.h):
+// the pin layout is scalene and clear of the edge and the marks, the cut
+// lies in a slab every pillar crosses, each half is a closed solid that
+// prints without overhang, and the pieces hold the material they should.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gen/direct_mesher.h"
+#include "gen/halves.h"
+#include "gen/halves_mesh.h"
+#include "gen/scene.h"
+#include "tests/support/fields.h"
+#include "tests/support/input_error.h"
+#include "tests/support/mesh_invariants.h"
+#include "verify/overhang.h"
+
+namespace tsf {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A smooth hill, 12 x 10 cells of 6 mm, with the orientation marks on (or off).
+Scene hillWithHalves(bool marks = true) {
+    const HexField f = test::fieldFromFunction(12, 10, [](int c, int r) {
+        return 1.0 + std::sin(c * 0.5) + std::cos(r * 0.6);
+    });
+    SceneParams p = test::smallParams(Bottom::Mirrored);
+    if (marks) p.marks = MarkParams{};
+    p.pitch_mm = 6.0;
+    p.halves = true;
+    return buildScene(f, p);
+}
+
+TEST(PinLayout, ChiralOnlyForAScaleneTriangle) {
+    EXPECT_TRUE(isChiralLayout({{0, 0}, {30, 0}, {10, 20}}, 0.4));
+    EXPECT_FALSE(isChiralLayout({{0, 0}, {30, 0}, {15, 20}}, 0.4));   // isosceles: a reflection maps it
+    EXPECT_FALSE(isChiralLayout({{0, 0}, {30, 0}, {15, 25.98}}, 0.4));  // equilateral: rotations map it
+    EXPECT_FALSE(isChiralLayout({{0, 0}, {30, 0}, {15.3, 20}}, 0.4));   // isosceles within the pins' play
+    EXPECT_FALSE(isChiralLayout({{0, 0}, {10, 0}, {25, 0.1}}, 0.4));    // on one line
+    EXPECT_FALSE(isChiralLayout({{0, 0}, {30, 0}}, 0.4));               // two pins: a half turn swaps them
+}
+
+TEST(PinLayout, ScaleneClearOfTheEdgeAndTheMarks) {
+    const Scene s = hillWithHalves();
+    ASSERT_TRUE(s.halves);
+    ASSERT_TRUE(s.marks.notch || s.marks.triangle);
+    const SceneHalves& h = *s.halves;
+    ASSERT_EQ(h.hole_centres.size(), size_t(kPinCount));
+    const auto centres = holeCentresMm(s);
+    EXPECT_TRUE(isChiralLayout(centres, kPinLayoutMinSideDifferenceMm / 2));
+    // Independently of the placement: every cell that is not kept, or that a
+    // mark draws, lies farther from each hole than the hole's radius plus the
+    // edge margin plus its own inradius (so the disc never enters it).
+    const double keep_clear = h.pins.hole_vertex_radius_mm + kHoleEdgeMarginMm + s.pitch_mm / 2;
+    for (const auto& [x, y] : centres)
+        for (int32_t r = -2; r < s.grid.rows + 2; ++r)
+            for (int32_t c = -2; c < s.grid.cols + 2; ++c) {
+                const int32_t k = s.keptAt(c, r);
+                if (k >= 0 && (s.drawn_by_face.empty() || !s.drawn_by_face[size_t(k)])) continue;
+                const Vec3 p = s.point(hexCentre(s.grid, c, r), 0);
+                EXPECT_GT(std::hypot(p.x - x, p.y - y), keep_clear) << "cell " << c << "," << r;
+            }
+}
+
+TEST(Halves, EveryPillarCrossesTheSlabWithRoomForTheHoles) {
+    const Scene s = hillWithHalves();
+    const SceneHalves& h = *s.halves;
+    const int64_t roof = int64_t(std::ceil(kHoleRoofMm / s.z_snap_mm));
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        EXPECT_LE(s.bottom[k] + h.hole_apex_units + roof, h.split_units);
+        EXPECT_GE(s.top[k] - h.hole_apex_units - roof, h.split_units);
+    }
+    EXPECT_NEAR(s.zMm(h.hole_depth_units), kHoleDepthMm, s.z_snap_mm);
+    EXPECT_GE(s.zMm(h.hole_apex_units - h.hole_depth_units), h.pins.hole_vertex_radius_mm);  // cone steeper than 45 deg
+    EXPECT_NEAR(h.pins.hole_radius_mm - h.pins.pin_radius_mm, kPinClearanceMm, 1e-12);
+}
+
+// Volume of one hole from its radius alone: a regular 16-gon of circumradius
+// R, prism to the depth, cone to the tip.
+double holeVolume(const Scene& s) {
+    const SceneHalves& h = *s.halves;
+    const double area = kHoleSides / 2.0 * h.pins.hole_vertex_radius_mm * h.pins.hole_vertex_radius_mm *
+                        std::sin(2 * kPi / kHoleSides);
+    return area * (s.zMm(h.hole_depth_units) + s.zMm(h.hole_apex_units - h.hole_depth_units) / 3);
+}
+
+TEST(Halves, EachHalfIsAClosedSolidWithoutOverhangAndTheirMaterialAddsUp) {
+    const Scene s = hillWithHalves(false);  // plain hexagonal pillars: their volume follows from the Scene
+    const Mesh upper = meshHalf(s, HalfKind::Upper), lower = meshHalf(s, HalfKind::Lower);
+    for (const Mesh* m : {&upper, &lower}) {
+        const test::Invariants inv = test::checkInvariants(*m);
+        EXPECT_TRUE(inv.closedManifold());
+        EXPECT_EQ(inv.duplicate_positions, 0u);
+        EXPECT_GT(signedVolume(*m), 0);
+        EXPECT_EQ(measureOverhang(*m).area_mm2, 0.0);
+        EXPECT_NEAR(meshBounds(*m).min.z, 0.0, 1e-12);  // the cut face on the bed
+    }
+    // Upper + lower = the pillars (from the Scene alone) less six holes.
+    const double expected = test::sceneVolume(s) - 2 * kPinCount * holeVolume(s);
+    EXPECT_NEAR(signedVolume(upper) + signedVolume(lower), expected, 1e-4 * expected);
+    // The whole mirrored model in one piece overhangs; its halves do not.
+    EXPECT_GT(measureOverhang(meshScene(s)).area_mm2, 0.0);
+}
+
+TEST(Halves, PinsAreClosedPrismsThatFitTheHoles) {
+    const PinGeometry g = pinGeometry();
+    const Mesh pins = pinsMesh(g);
+    const test::Invariants inv = test::checkInvariants(pins);
+    EXPECT_TRUE(inv.closedManifold());
+    const double area = kHoleSides / 2.0 * g.pin_radius_mm * g.pin_radius_mm * std::sin(2 * kPi / kHoleSides);
+    // Corners on the 1 um grid move the area by up to 1e-3 of it.
+    EXPECT_NEAR(signedVolume(pins), kPinCount * area * g.pin_length_mm, 1e-3 * signedVolume(pins));
+    EXPECT_EQ(measureOverhang(pins).area_mm2, 0.0);
+    EXPECT_LT(g.pin_length_mm, 2 * kHoleDepthMm);  // shorter than the two holes it joins
+}
+
+TEST(Halves, RefusedWhereTheyCannotBeMade) {
+    const HexField f = test::fieldFromFunction(12, 10, [](int c, int) { return double(c); });
+    SceneParams flat = test::smallParams(Bottom::Flat);
+    flat.halves = true;
+    EXPECT_INPUT_ERROR(buildScene(f, flat), "Add --mirror");
+    SceneParams tilt = test::smallParams(Bottom::Mirrored);
+    tilt.halves = true;
+    tilt.tilt = TiltSource::Gradient;
+    EXPECT_INPUT_ERROR(buildScene(f, tilt), "--tilt");
+    // 3 x 3 cells of 5 mm: no room for three holes clear of the edge.
+    const HexField tiny = test::fieldFromFunction(3, 3, [](int c, int r) { return double(c + r); });
+    SceneParams small = test::smallParams(Bottom::Mirrored);
+    small.halves = true;
+    EXPECT_INPUT_ERROR(buildScene(tiny, small), "no room");
+    // Cells narrower than a hole.
+    SceneParams narrow = small;
+    narrow.pitch_mm = 1.5;
+    EXPECT_INPUT_ERROR(buildScene(test::fieldFromFunction(40, 40, [](int c, int) { return double(c); }), narrow),
+                       "too small for the");
+}
+
+}  // namespace
+}  // namespace tsf
