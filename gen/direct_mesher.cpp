@@ -99,7 +99,7 @@ void runParts(unsigned parts, const Work& work) {
 class MeshBuilder {
 public:
     explicit MeshBuilder(const Scene& scene)
-        : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat), lattice_ids_(latticeVertexIdCount(g_)) {
+        : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat), merge_(!scene.legend), lattice_ids_(latticeVertexIdCount(g_)) {
         const int64_t ids = lattice_ids_ + int64_t(s_.faces.extra.size()) + int64_t(s_.shapes.extra.size());
         first_index_.assign(size_t(ids) + 1, 0);
         const auto& faces = s_.faces.faces;
@@ -163,7 +163,7 @@ private:
         const size_t n = s_.keptCount();
         region_.assign(n, kNotMerged);
         UnionFind uf(n);
-        for (size_t k = 0; k < n; ++k) {
+        for (size_t k = 0; k < n && merge_; ++k) {
             if (!mergeable(int32_t(k))) continue;
             for (int e = 0; e < 3; ++e) {  // east, north-east, north-west: each pair once
                 const int32_t o = s_.keptNeighbour(k, e);
@@ -191,6 +191,7 @@ private:
     // Flat: the interior lattice vertices of the sparse sublattice at the floor.
     void findBottomPoints() {
         bottom_point_.assign(size_t(lattice_ids_), 0);
+        if (!merge_) return;
         for (size_t k = 0; k < s_.keptCount(); ++k) {
             if (drawnByFace(int32_t(k))) continue;
             for (int e = 0; e < kHexCorners; ++e) {
@@ -666,6 +667,12 @@ private:
     const Scene& s_;
     const HexGrid& g_;
     const bool flat_;
+    // Merged level tops and the sparse bottom points are left out beside a
+    // braille legend: its plate is joined by a CGAL union (gen/legend_scene.h)
+    // whose new vertices on the large merged triangles fold once snapped to
+    // the grid (self-intersections on the airports example). Per-cell tops
+    // and the plain bottom join cleanly.
+    const bool merge_;
     const int64_t lattice_ids_;
     std::vector<uint32_t> first_index_;  // planar vertex id -> first mesh vertex index
     std::unordered_map<int64_t, std::vector<int32_t>> faces_at_;  // planar vertex id -> faces with it on a ring
@@ -682,11 +689,15 @@ private:
 
 }  // namespace
 
-Mesh meshScene(const Scene& scene) {
+Mesh meshSceneBeforeLegend(const Scene& scene) {
     checkScene(scene);
     if (scene.keptCount() == 0) return {};
-    Mesh mesh = MeshBuilder(scene).build();
-    return scene.legend ? unionWithLegend(mesh, scene) : mesh;
+    return MeshBuilder(scene).build();
+}
+
+Mesh meshScene(const Scene& scene) {
+    Mesh mesh = meshSceneBeforeLegend(scene);
+    return scene.legend && !mesh.triangles.empty() ? unionWithLegend(mesh, scene) : mesh;
 }
 
 }  // namespace tsf

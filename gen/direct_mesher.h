@@ -26,4 +26,9 @@ namespace tsf {
 /// buildScene never makes one) is a tsf::InputError.
 Mesh meshScene(const Scene& scene);
 
+/// The same without the braille legend's plate and dots (the Scene's legend
+/// still shapes the mesh as it is before the union: gen/legend_scene.h
+/// unionWithLegend joins them). For the parts of a multi-part 3MF.
+Mesh meshSceneBeforeLegend(const Scene& scene);
+
 }  // namespace tsf

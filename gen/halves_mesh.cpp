@@ -12,8 +12,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double snapXy(double v) { return std::round(v / kXYSnapMm) * kXYSnapMm; }
-
 // The model's depth (mm) on the 1 um grid: the line the lower half is reflected about is its middle.
 double modelDepthMm(const Scene& scene) { return snapXy(gridDepth(scene.grid, scene.pitch_mm)); }
 

@@ -41,7 +41,7 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
     std::vector<MeshPart> parts;
     if (scene.keptCount() == 0) return parts;
     // The pillars: the same Scene with every raised face brought down to its
-    // region (the raise is the marks part) and no legend (joined below
+    // region (the raise is the marks part), meshed before the legend (joined below
     // without its dots, which are the legend part).
     Scene level = scene;
     std::vector<const PlanarFace*> raised;
@@ -50,9 +50,8 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
             raised.push_back(&scene.faces.faces[k]);
             level.faces.faces[k].raise_units = 0;
         }
-    level.legend.reset();
     level.scale.reset();  // the scale is a part of its own, touching the pillars' east walls
-    Mesh pillars = meshScene(level);
+    Mesh pillars = meshSceneBeforeLegend(level);
     if (scene.legend) pillars = unionWithLegend(pillars, scene, /*dots=*/false);
     parts.push_back({"pillars", std::move(pillars)});
 

@@ -178,6 +178,7 @@ std::string formatSceneFacts(const Scene& s) {
           << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps[0].top_units - sc.foot_top_units)) << " mm to "
           << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units))
           << " mm above the floor\n";
+    }
     if (s.halves) {
         const SceneHalves& h = *s.halves;
         o << "  halves    cut at z = " << fmt("%.2f", s.zMm(h.split_units)) << " mm, the middle of the slab every pillar "

@@ -61,6 +61,25 @@ TEST(PartsCli, GenWritesOneObjectInPartsAndVerifyJudgesEachPartAndTheAssembly) {
 
 }
 
+// The bundled example with every model feature at once (the one-command
+// print-ready model of docs/printing.md): a legend beside large level
+// regions, the scale and the marks, as one solid and as parts. The legend's
+// join once folded beside merged level tops on exactly this field.
+TEST(PartsCli, AirportsWithLegendScaleAndMarksIsOneSolidAndFourParts) {
+    const auto dir = test::scratchDir();
+    const std::string input = std::string(TSF_SOURCE_DIR) + "/examples/airports-europe.csv";
+    const std::string common = "gen " + input + " --points x=lon,y=lat --bins 40 --title Airports --units airports --scale";
+    const auto solid = test::runTsf(common + " -o " + (dir / "a.stl").string(), dir);
+    EXPECT_EQ(solid.exit_code, test::kExitOk) << solid.out << solid.err;
+    const auto parts = test::runTsf(common + " --parts --json -o " + (dir / "a.3mf").string(), dir);
+    ASSERT_EQ(parts.exit_code, test::kExitOk) << parts.out << parts.err;
+    const auto j = nlohmann::json::parse(parts.out);
+    EXPECT_EQ(j["verify"]["parts"]["passed"], true);
+    EXPECT_NE(j["outputs"][0]["kind"].get<std::string>().find("4 parts: pillars, marks, legend, scale"),
+              std::string::npos)
+        << j["outputs"].dump();
+}
+
 TEST(PartsCli, PartsNeedA3mfAndPrintCheckAModelFile) {
     const auto dir = test::scratchDir();
     test::writeText(dir / "f.csv", partsField());
