@@ -7,12 +7,14 @@
 #include <sstream>
 
 namespace tsf::cli {
-namespace {
-std::string fmt(const char* f, double v) {
+
+std::string fmt(const char* format, double v) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
+    std::snprintf(buf, sizeof buf, format, v);
     return buf;
 }
+
+namespace {
 
 std::string mappingText(const Scene& s) {
     const ValueMapping& m = s.mapping;

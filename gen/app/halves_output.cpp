@@ -13,12 +13,6 @@
 namespace tsf::cli {
 namespace {
 
-std::string fmt(const char* f, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
-}
-
 // A piece that fails its own checks is a bug in tsf: never hand it to a printer.
 [[noreturn]] void failPiece(const VerifyReport& r, const std::string& what) {
     std::cerr << formatReport(r);
