@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <sstream>
 #include <tuple>
-#include <unordered_map>
 
 #include "gen/util/union_find.h"
 
@@ -61,30 +59,44 @@ Invariants checkInvariants(const Mesh& mesh) {
         if (used[v] && !root[uf.find(uint32_t(v))]) { root[uf.find(uint32_t(v))] = 1; ++inv.components; }
 
     // Vertex links: the opposite edges around a vertex must form one cycle.
-    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> link(mesh.positions.size());
+    // Held as one array of (from, to) pairs grouped by vertex (counting
+    // sort), so a mesh of millions of vertices needs no map per vertex.
+    const size_t nv = mesh.positions.size();
+    std::vector<uint32_t> start(nv + 1, 0);
     for (const auto& t : mesh.triangles)
-        for (int e = 0; e < 3; ++e) link[t[e]].push_back({t[(e + 1) % 3], t[(e + 2) % 3]});
-    for (auto& l : link) {
-        if (l.empty()) continue;
-        std::unordered_map<uint32_t, uint32_t> next;
-        bool ok = true;
-        for (auto [a, b] : l) ok &= next.emplace(a, b).second;
+        for (int e = 0; e < 3; ++e) ++start[t[e] + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<std::pair<uint32_t, uint32_t>> link(start[nv]);
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (const auto& t : mesh.triangles)
+        for (int e = 0; e < 3; ++e) link[fill[t[e]]++] = {t[(e + 1) % 3], t[(e + 2) % 3]};
+    for (size_t v = 0; v < nv; ++v) {
+        const auto first = link.begin() + start[v], last = link.begin() + start[v + 1];
+        const size_t n = size_t(last - first);
+        if (n == 0) continue;
+        std::sort(first, last);
+        bool ok = std::adjacent_find(first, last, [](auto a, auto b) { return a.first == b.first; }) == last;
         if (ok) {
+            // Walk from the first edge; each step looks up the edge leaving
+            // the current vertex.
             size_t steps = 0;
-            uint32_t v = l[0].first;
+            uint32_t at = first->first;
             do {
-                auto it = next.find(v);
-                if (it == next.end()) { ok = false; break; }
-                v = it->second;
+                const auto it = std::lower_bound(first, last, std::pair<uint32_t, uint32_t>{at, 0});
+                if (it == last || it->first != at) { ok = false; break; }
+                at = it->second;
                 ++steps;
-            } while (v != l[0].first && steps <= l.size());
-            ok &= steps == l.size();
+            } while (at != first->first && steps <= n);
+            ok &= steps == n;
         }
         inv.nonmanifold_vertices += !ok;
     }
 
-    std::map<std::tuple<double, double, double>, int> seen;
-    for (const Vec3& p : mesh.positions) inv.duplicate_positions += seen[{p.x, p.y, p.z}]++ > 0;
+    std::vector<std::tuple<double, double, double>> points;
+    points.reserve(nv);
+    for (const Vec3& p : mesh.positions) points.emplace_back(p.x, p.y, p.z);
+    std::sort(points.begin(), points.end());
+    for (size_t n = 1; n < points.size(); ++n) inv.duplicate_positions += points[n] == points[n - 1];
     return inv;
 }
 
