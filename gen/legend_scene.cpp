@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "gen/cgal_surface_mesh.h"
 #include "gen/error.h"
 #include "gen/legend_mesh.h"
 #include "gen/scene.h"
@@ -23,15 +24,6 @@ double snapUm(double mm) { return std::round(mm * 1000.0) / 1000.0; }
 
 // Share of the grid's columns the kept cells of the plate's southmost row must span.
 constexpr double kPlateHoldFraction = 0.6;
-
-SurfaceMesh toSurfaceMesh(const Mesh& m) {
-    SurfaceMesh sm;
-    std::vector<SurfaceMesh::Vertex_index> v;
-    v.reserve(m.positions.size());
-    for (const Vec3& p : m.positions) v.push_back(sm.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-    for (const auto& t : m.triangles) sm.add_face(v[t[0]], v[t[1]], v[t[2]]);
-    return sm;
-}
 
 bool onGridXy(const Vec3& p) {
     return std::fabs(p.x * 1000.0 - std::round(p.x * 1000.0)) < 1e-6 &&
@@ -234,7 +226,7 @@ Mesh legendPlateMesh(const Scene& s, bool dots) {
 }
 
 Mesh unionWithLegend(const Mesh& pillars, const Scene& s, bool dots) {
-    SurfaceMesh a = toSurfaceMesh(pillars), b = toSurfaceMesh(legendPlateMesh(s, dots)), out;
+    SurfaceMesh a = toSurfaceMesh<Kernel>(pillars), b = toSurfaceMesh<Kernel>(legendPlateMesh(s, dots)), out;
     namespace PMP = CGAL::Polygon_mesh_processing;
     if (!PMP::corefine_and_compute_union(a, b, out))
         throw std::runtime_error("the legend plate could not be joined to the pillars (CGAL corefinement failed)");

@@ -12,20 +12,13 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "gen/cgal_surface_mesh.h"
+
 namespace tsf {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-
-SurfaceMesh toSurfaceMesh(const Mesh& m) {
-    SurfaceMesh sm;
-    std::vector<SurfaceMesh::Vertex_index> v;
-    v.reserve(m.positions.size());
-    for (const Vec3& p : m.positions) v.push_back(sm.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-    for (const auto& t : m.triangles) sm.add_face(v[t[0]], v[t[1]], v[t[2]]);
-    return sm;
-}
 
 bool boxesMeet(const Bounds& a, const Bounds& b) {
     return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
@@ -56,7 +49,7 @@ AssemblyResult checkAssembly(const std::vector<MeshPart>& parts, const std::vect
             for (size_t b = a + 1; b < parts.size(); ++b) {
                 if (!boxesMeet(boxes[a], boxes[b])) continue;
                 ++r.pairs_tested;
-                SurfaceMesh ma = toSurfaceMesh(parts[a].mesh), mb = toSurfaceMesh(parts[b].mesh), out;
+                SurfaceMesh ma = toSurfaceMesh<Kernel>(parts[a].mesh), mb = toSurfaceMesh<Kernel>(parts[b].mesh), out;
                 if (!PMP::corefine_and_compute_intersection(ma, mb, out)) {
                     // CGAL could not build the intersection as a 2-manifold: the parts meet in a way a touch cannot.
                     r.overlaps.push_back({a, b, std::numeric_limits<double>::quiet_NaN(), boxes[a].min});
