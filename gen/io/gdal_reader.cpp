@@ -1,162 +1,97 @@
+// readGdalRaster, parseGdalRaster: through the GDAL module, loaded on first
+// use. See gdal_reader.h and gdal/gdal_module_abi.h.
 #include "gen/io/gdal_reader.h"
 
-#include <atomic>
-#include <cmath>
-#include <cpl_conv.h>
-#include <cpl_error.h>
-#include <cpl_vsi.h>
-#include <gdal.h>
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
 #include <mutex>
-#include <ogr_srs_api.h>
-#include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include "gen/error.h"
-#include "gen/io/raster_limits.h"
+#include "gen/io/gdal/gdal_module_abi.h"
 
 namespace tsf {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ReadFn = int (*)(const GdalCall*);
+using AbiFn = int (*)();
 
-void registerDrivers() {
-    static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
-}
-
-// Keeps GDAL from printing on stderr while it works; its last message goes
-// into our InputError instead.
-struct QuietGdal {
-    QuietGdal() {
-        CPLPushErrorHandler(CPLQuietErrorHandler);
-        CPLErrorReset();
-    }
-    ~QuietGdal() { CPLPopErrorHandler(); }
-    static std::string lastMessage() {
-        const char* m = CPLGetLastErrorMsg();
-        return m && *m ? std::string(m) : std::string("unknown GDAL error");
-    }
+struct Module {
+    ReadFn read = nullptr;
+    std::string problem;  // why there is no module, when read is null
 };
 
-struct Dataset {
-    GDALDatasetH h = nullptr;
-    ~Dataset() {
-        if (h) GDALClose(h);
+// Where the module may be: $TSF_GDAL_MODULE alone when set; else beside the
+// running binary (the build tree), in <prefix>/lib/tsf beside <prefix>/bin
+// (installed), and where this build put it (tests, tools run from elsewhere).
+std::vector<std::string> candidates() {
+    if (const char* env = std::getenv("TSF_GDAL_MODULE"); env && *env) return {env};
+    std::vector<std::string> out;
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        out.push_back((exe.parent_path() / kGdalModuleName).string());
+        out.push_back((exe.parent_path().parent_path() / "lib" / "tsf" / kGdalModuleName).string());
     }
-};
-
-std::string number(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
-
-std::string crsName(OGRSpatialReferenceH srs) {
-    const char* name = OSRGetName(srs);
-    std::string out = name ? name : "unnamed CRS";
-    const char* auth = OSRGetAuthorityName(srs, nullptr);
-    const char* code = OSRGetAuthorityCode(srs, nullptr);
-    if (auth && code) out += std::string(" (") + auth + ":" + code + ")";
+#ifdef TSF_GDAL_MODULE_BUILD_PATH
+    out.push_back(TSF_GDAL_MODULE_BUILD_PATH);
+#endif
     return out;
 }
 
-Raster readDataset(const std::string& gdal_name, const std::string& path) {
-    registerDrivers();
-    QuietGdal quiet;
-    Dataset ds;
-    ds.h = GDALOpenEx(gdal_name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
-    if (!ds.h) throw InputError(path, 0, 0, "GDAL cannot read it as a raster: " + QuietGdal::lastMessage());
-    const int cols = GDALGetRasterXSize(ds.h), rows = GDALGetRasterYSize(ds.h), bands = GDALGetRasterCount(ds.h);
-    if (bands < 1) throw InputError(path, 0, 0, "has no raster band");
-    checkRasterSize(path, 0, cols, rows);
-    GDALRasterBandH band = GDALGetRasterBand(ds.h, 1);
-
-    Raster r;
-    r.source = path;
-    const char* driver = GDALGetDriverShortName(GDALGetDatasetDriver(ds.h));
-    r.kind = std::string("gdal/") + (driver ? driver : "?");
-    r.facts.push_back({"format", std::string(driver ? GDALGetDriverLongName(GDALGetDatasetDriver(ds.h)) : "?") +
-                                     " through GDAL " + GDALVersionInfo("RELEASE_NAME")});
-    if (bands > 1) r.facts.push_back({"band", "1 of " + std::to_string(bands)});
-
-    // Pixel size on the ground (CRS units) and whether x is degrees of longitude.
-    double gt[6] = {0, 1, 0, 0, -1, 0};
-    const bool has_gt = GDALGetGeoTransform(ds.h, gt) == CE_None;
-    double px_w = std::abs(gt[1]), px_h = std::abs(gt[5]);
-    if (px_w == 0 || px_h == 0 || !std::isfinite(px_w) || !std::isfinite(px_h)) px_w = px_h = 1;
-    if (has_gt && (gt[2] != 0 || gt[4] != 0)) r.facts.push_back({"note", "rotated geotransform read as north-up"});
-    OGRSpatialReferenceH srs = GDALGetSpatialRef(ds.h);
-    double x_scale = 1.0;  // ground width of one unit of x, in units of y
-    if (srs && OSRIsGeographic(srs)) {
-        const double lat = gt[3] + gt[5] * rows / 2.0;  // mean latitude, degrees
-        x_scale = std::cos(lat * kPi / 180.0);
-        r.facts.push_back({"crs", crsName(srs) + ", geographic: longitude scaled by cos(" + number(lat) +
-                                      " deg) = " + number(x_scale)});
-        r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h) + " degrees"});
-    } else if (srs) {
-        char* unit = nullptr;
-        OSRGetLinearUnits(srs, &unit);
-        const std::string u = unit ? unit : "units";
-        r.facts.push_back({"crs", crsName(srs) + (OSRIsProjected(srs) ? ", projected: true aspect" : "")});
-        r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h) + " " + u});
-    } else {
-        r.facts.push_back({"crs", has_gt ? "none; pixel sizes taken as they are" : "none (no georeference)"});
-        if (has_gt) r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h)});
+Module load() {
+    Module m;
+    std::string tried;
+    for (const std::string& path : candidates()) {
+        tried += (tried.empty() ? "" : ", ") + path;
+        if (::access(path.c_str(), F_OK) != 0) continue;
+        void* h = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!h) {
+            const char* why = ::dlerror();
+            m.problem = path + " cannot be loaded: " + (why ? why : "unknown reason");
+            return m;
+        }
+        const auto abi = reinterpret_cast<AbiFn>(::dlsym(h, "tsf_gdal_module_abi"));
+        const auto read = reinterpret_cast<ReadFn>(::dlsym(h, "tsf_gdal_read"));
+        if (!abi || !read || abi() != kGdalModuleAbi) {
+            m.problem = path + " is from another build of tsf (reinstall tsf)";
+            ::dlclose(h);
+            return m;
+        }
+        m.read = read;  // kept loaded for the life of the process
+        return m;
     }
+    m.problem = std::string(kGdalModuleName) + " was not found (looked in: " + tried +
+                "); reinstall tsf, or name it in TSF_GDAL_MODULE";
+    return m;
+}
 
-    // Square pixels on the ground: stretch the shorter side of the pixel.
-    const double ground_w = px_w * x_scale;
-    int out_cols = cols, out_rows = rows;
-    if (ground_w > px_h) out_cols = int(std::lround(cols * ground_w / px_h));
-    else out_rows = int(std::lround(rows * px_h / ground_w));
-    checkRasterSize(path, 0, out_cols, out_rows);
-    r.cell_size = std::min(ground_w, px_h);
-    r.x_origin = gt[0];
-    r.y_origin = gt[3] + gt[5] * rows;
-    if (out_cols != cols || out_rows != rows)
-        r.facts.push_back({"resampled", std::to_string(cols) + " x " + std::to_string(rows) + " -> " +
-                                            std::to_string(out_cols) + " x " + std::to_string(out_rows) +
-                                            " square pixels (nearest) to keep the ground's aspect"});
+const Module& module() {
+    static const Module m = load();
+    return m;
+}
 
-    r.cols = out_cols;
-    r.rows = out_rows;
-    r.values.assign(size_t(out_cols) * size_t(out_rows), 0.0);
-    GDALRasterIOExtraArg extra;
-    INIT_RASTERIO_EXTRA_ARG(extra);
-    extra.eResampleAlg = GRIORA_NearestNeighbour;
-    if (GDALRasterIOEx(band, GF_Read, 0, 0, cols, rows, r.values.data(), out_cols, out_rows, GDT_Float64, 0, 0,
-                       &extra) != CE_None)
-        throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
-
-    int has_nodata = 0;
-    const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
-    for (double& v : r.values)
-        if ((has_nodata && v == nodata) || !std::isfinite(v)) v = NAN;
-    if (has_nodata) r.facts.push_back({"no-data value", number(nodata) + " (from the file)"});
+Raster call(const std::string& path, const std::string_view* bytes) {
+    const Module& m = module();
+    if (!m.read)
+        throw std::runtime_error(path + ": this raster is read through GDAL, and tsf's GDAL module " + m.problem);
+    Raster r;
+    GdalModuleError e;
+    const GdalCall c{&path, bytes, &r, &e};
+    const int status = m.read(&c);
+    if (status == kGdalInputError) throw InputError(e.path, e.line, e.column, e.detail);
+    if (status != kGdalOk) throw std::runtime_error(path + ": GDAL failed: " + e.detail);
     return r;
 }
 
 }  // namespace
 
-Raster readGdalRaster(const std::string& path) { return readDataset(path, path); }
+Raster readGdalRaster(const std::string& path) { return call(path, nullptr); }
 
-Raster parseGdalRaster(std::string_view bytes, const std::string& path) {
-    registerDrivers();
-    static std::atomic<unsigned> counter{0};
-    std::string ext;
-    const size_t dot = path.find_last_of('.');
-    if (dot != std::string::npos && path.find('/', dot) == std::string::npos) ext = path.substr(dot);
-    const std::string name = "/vsimem/tsf-" + std::to_string(counter++) + ext;
-    VSILFILE* f = VSIFileFromMemBuffer(name.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
-                                       vsi_l_offset(bytes.size()), /*bTakeOwnership=*/FALSE);
-    if (!f) throw InputError(path, 0, 0, "GDAL cannot take the file's bytes");
-    VSIFCloseL(f);
-    struct Unlink {
-        std::string n;
-        ~Unlink() { VSIUnlink(n.c_str()); }
-    } unlink{name};
-    return readDataset(name, path);
-}
+Raster parseGdalRaster(std::string_view bytes, const std::string& path) { return call(path, &bytes); }
 
 }  // namespace tsf

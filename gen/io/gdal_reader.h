@@ -1,5 +1,13 @@
 // GDAL reader: GeoTIFF and every other raster GDAL reads (Debian libgdal-dev),
-// the way elevation data usually comes. The only file that includes GDAL.
+// the way elevation data usually comes.
+//
+// GDAL itself lives in a module, tsf-gdal.so (gdal/gdal_module.cpp, the only
+// file that includes GDAL), loaded with dlopen on the first call: linked
+// into tsf, GDAL's hundred-odd libraries cost every command about 70 ms at
+// start. It is looked for in $TSF_GDAL_MODULE (alone, when set), beside the
+// running binary, in <prefix>/lib/tsf for <prefix>/bin/tsf, and where the
+// build put it. A missing or foreign module is a std::runtime_error naming
+// the places looked in (exit code 3 in the CLI: a missing tool).
 //
 // Reads band 1 as doubles. Layout as every Raster: row 0 north, column 0
 // west (GDAL's own order for north-up rasters).

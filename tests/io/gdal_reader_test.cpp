@@ -133,5 +133,39 @@ TEST(GdalReader, BytesInMemoryReadLikeTheFile) {
     EXPECT_TRUE(std::isnan(r.at(1, 0)));
 }
 
+// GDAL is a module loaded when a raster needs it: the tsf binary itself does
+// not link it (the dynamic loader lists what a binary needs, and exits).
+TEST(GdalReader, TsfStartsWithoutLoadingGdal) {
+    const auto r = test::runCommand(std::string("LD_TRACE_LOADED_OBJECTS=1 ") + TSF_BINARY);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("libstdc++"), std::string::npos) << r.output;  // the listing is there
+    EXPECT_EQ(r.output.find("libgdal"), std::string::npos) << r.output;
+}
+
+TEST(GdalReader, AMissingModuleIsAToolErrorNamingWhereItLooked) {
+    const auto dir = test::scratchDir();
+    ASSERT_TRUE(test::writeGeoTiff((dir / "dem.tif").string(), demSpec()));
+    const std::string nowhere = (dir / "no-such-folder" / "tsf-gdal.so").string();
+    const auto r = test::runTsf("info " + (dir / "dem.tif").string(), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+
+    const auto missing = test::runCommand("TSF_GDAL_MODULE=" + nowhere + " " + TSF_BINARY + " info " +
+                                          (dir / "dem.tif").string());
+    EXPECT_EQ(missing.exit_code, test::kExitToolFailed) << missing.output;
+    EXPECT_NE(missing.output.find("dem.tif: this raster is read through GDAL"), std::string::npos) << missing.output;
+    EXPECT_NE(missing.output.find("was not found (looked in: " + nowhere + ")"), std::string::npos) << missing.output;
+
+    // Something that is not a module: the loader's reason is passed on.
+    test::writeText(dir / "not-a-module.so", "text");
+    const auto foreign = test::runCommand("TSF_GDAL_MODULE=" + (dir / "not-a-module.so").string() + " " +
+                                          TSF_BINARY + " info " + (dir / "dem.tif").string());
+    EXPECT_EQ(foreign.exit_code, test::kExitToolFailed) << foreign.output;
+    EXPECT_NE(foreign.output.find("not-a-module.so cannot be loaded"), std::string::npos) << foreign.output;
+    // Formats tsf reads itself never need it.
+    test::writeText(dir / "f.csv", "1,2\n3,4\n");
+    EXPECT_EQ(test::runCommand("TSF_GDAL_MODULE=" + nowhere + " " + TSF_BINARY + " info " +
+                               (dir / "f.csv").string()).exit_code, 0);
+}
+
 }  // namespace
 }  // namespace tsf
