@@ -31,6 +31,39 @@ double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Four points that are coplanar for a reason seen in their coordinates: all
+// in one axis plane (the tops and the bottom), or on two verticals (a wall
+// between two cells). Exact; false means "not known", not "not coplanar".
+// CGAL's filtered orientation decides a coplanar quadruple only after
+// falling back to exact arithmetic, about a microsecond each, and nearly
+// every edge of a terrain model joins two coplanar triangles.
+bool coplanarShortcut(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    if (a.z == b.z && a.z == c.z && a.z == d.z) return true;
+    if (a.x == b.x && a.x == c.x && a.x == d.x) return true;
+    if (a.y == b.y && a.y == c.y && a.y == d.y) return true;
+    // On at most two verticals: every point shares its (x, y) with a or with
+    // the first point that does not.
+    auto samePlan = [](const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y; };
+    const Vec3* other = nullptr;
+    for (const Vec3* p : {&b, &c, &d}) {
+        if (samePlan(*p, a)) continue;
+        if (!other) other = p;
+        else if (!samePlan(*p, *other)) return false;
+    }
+    return true;
+}
+
+// True when the triangle certainly has area: its normal is far longer than
+// the rounding of its computation (a relative 1e-12 of the edges' product,
+// where rounding is below 1e-15). False means "ask the exact predicate".
+bool clearlyHasArea(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const double n2 = nx * nx + ny * ny + nz * nz;
+    const double scale2 = (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz);
+    return n2 > 1e-24 * scale2;
+}
+
 // One triangle per planar region: triangles joined across an edge when the
 // far corner of one lies exactly in the plane of the other (exact predicate)
 // and they face the same way. The representative is the region's largest
@@ -77,9 +110,13 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
             for (uint32_t v : other)
                 if (v != a && v != b) d = v;
             // Coplanar, and on opposite sides of the shared edge (same facing).
-            if (CGAL::orientation(P(a), P(b), P(c), P(d)) != CGAL::COPLANAR) continue;
+            const Vec3 &qa = mesh.positions[a], &qb = mesh.positions[b], &qc = mesh.positions[c],
+                       &qd = mesh.positions[d];
+            if (!coplanarShortcut(qa, qb, qc, qd) && CGAL::orientation(P(a), P(b), P(c), P(d)) != CGAL::COPLANAR)
+                continue;
             const K::Point_3 pa = P(a), pb = P(b), pc = P(c), pd = P(d);
-            if (CGAL::collinear(pa, pb, pc) || CGAL::collinear(pa, pb, pd)) continue;
+            if (!clearlyHasArea(qa, qb, qc) && CGAL::collinear(pa, pb, pc)) continue;
+            if (!clearlyHasArea(qa, qb, qd) && CGAL::collinear(pa, pb, pd)) continue;
             const K::Vector_3 n = CGAL::cross_product(pb - pa, pc - pa);
             const K::Vector_3 e = CGAL::cross_product(n, pb - pa);  // in-plane, towards c's side
             if ((e * (pc - pa) > 0) == (e * (pd - pa) > 0)) continue;  // folded onto itself

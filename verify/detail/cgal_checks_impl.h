@@ -69,24 +69,39 @@ struct Plane {
     int orient(const Vec3& a, const Vec3& b, const Vec3& r) const { return orient2(a, b, r, i, j); }
 };
 
-// The plane of the triangle (a, b, c), if it is one of those; a triangle with
-// area is in at most one axis plane.
-inline std::optional<Plane> planeOf(const Vec3& a, const Vec3& b, const Vec3& c) {
-    Plane pl;
+// Which of those planes the triangle (a, b, c) is in, as one byte, computed
+// once per triangle (planeCode) and turned into a Plane per pair
+// (planeFromCode): 0 none; 1 + k the axis plane x_k = const; 4, 5, 6 the
+// vertical plane whose two verticals hold corners (a, b), (b, c) or (c, a).
+// A triangle with area is in at most one axis plane.
+inline uint8_t planeCode(const Vec3& a, const Vec3& b, const Vec3& c) {
     for (int k : {2, 0, 1})
-        if (coord(a, k) == coord(b, k) && coord(b, k) == coord(c, k)) {
-            pl.axis = k;
-            pl.c = coord(a, k);
-            pl.i = (k + 1) % 3;
-            pl.j = (k + 2) % 3;
-            return pl;
-        }
+        if (coord(a, k) == coord(b, k) && coord(b, k) == coord(c, k)) return uint8_t(1 + k);
     auto samePlan = [](const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y; };
-    if (samePlan(a, b)) pl.p = a, pl.q = c;
-    else if (samePlan(b, c)) pl.p = b, pl.q = a;
-    else if (samePlan(c, a)) pl.p = c, pl.q = b;
-    else return std::nullopt;
-    if (samePlan(pl.p, pl.q)) return std::nullopt;  // no area (excluded before)
+    const Vec3 *p, *q;
+    uint8_t code;
+    if (samePlan(a, b)) p = &a, q = &c, code = 4;
+    else if (samePlan(b, c)) p = &b, q = &a, code = 5;
+    else if (samePlan(c, a)) p = &c, q = &b, code = 6;
+    else return 0;
+    if (samePlan(*p, *q)) return 0;  // no area (excluded before)
+    return code;
+}
+
+inline std::optional<Plane> planeFromCode(uint8_t code, const Vec3& a, const Vec3& b, const Vec3& c) {
+    if (code == 0) return std::nullopt;
+    Plane pl;
+    if (code <= 3) {
+        const int k = code - 1;
+        pl.axis = k;
+        pl.c = coord(a, k);
+        pl.i = (k + 1) % 3;
+        pl.j = (k + 2) % 3;
+        return pl;
+    }
+    if (code == 4) pl.p = a, pl.q = c;
+    else if (code == 5) pl.p = b, pl.q = a;
+    else pl.p = c, pl.q = b;
     // (x, z) maps a vertical plane one-to-one unless it runs north-south (x = const).
     pl.i = pl.p.x != pl.q.x ? 0 : 1;
     pl.j = 2;
@@ -124,6 +139,60 @@ inline std::optional<bool> sharedCorner(const Plane& pl, const Vec3& v, const Ve
     return std::nullopt;
 }
 
+// Triangles that share no corner, (a1, b1, c1) in the plane and `o` the
+// other, whose corners are in the plane or all on one side of it (it touches
+// the plane without crossing it): they meet exactly where the part of `o` in
+// the plane (a corner, an edge, or all of it) meets the first triangle, a
+// question within the plane. nullopt when `o` crosses the plane.
+inline std::optional<bool> touchingPlane(const Plane& pl, const Vec3& a1, const Vec3& b1, const Vec3& c1,
+                                         const std::array<const Vec3*, 3>& o) {
+    int side[3], on = 0, sign = 0;
+    for (int i = 0; i < 3; ++i) {
+        side[i] = pl.side(*o[i]);
+        if (side[i] == 0) {
+            ++on;
+        } else {
+            if (sign != 0 && side[i] != sign) return std::nullopt;  // crosses
+            sign = side[i];
+        }
+    }
+    if (on == 0) return false;  // strictly on one side
+    // 2D orientations within the plane; the projection may mirror it, which
+    // flips every sign alike.
+    auto orient = [&](const Vec3& u, const Vec3& v, const Vec3& w) { return pl.orient(u, v, w); };
+    const int ccw = orient(a1, b1, c1);  // nonzero: the triangle has area
+    auto inside = [&](const Vec3& x) {   // in the closed triangle
+        return orient(a1, b1, x) * ccw >= 0 && orient(b1, c1, x) * ccw >= 0 && orient(c1, a1, x) * ccw >= 0;
+    };
+    // Do the closed segments u-v and p-q meet? (All in the plane.)
+    auto segmentsMeet = [&](const Vec3& u, const Vec3& v, const Vec3& p, const Vec3& q) {
+        const int o1 = orient(u, v, p), o2 = orient(u, v, q), o3 = orient(p, q, u), o4 = orient(p, q, v);
+        if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+        auto within = [&](const Vec3& x, const Vec3& y, const Vec3& z) {  // z on the segment x-y, given collinear
+            return std::min(coord(x, pl.i), coord(y, pl.i)) <= coord(z, pl.i) &&
+                   coord(z, pl.i) <= std::max(coord(x, pl.i), coord(y, pl.i)) &&
+                   std::min(coord(x, pl.j), coord(y, pl.j)) <= coord(z, pl.j) &&
+                   coord(z, pl.j) <= std::max(coord(x, pl.j), coord(y, pl.j));
+        };
+        return (o1 == 0 && within(u, v, p)) || (o2 == 0 && within(u, v, q)) || (o3 == 0 && within(p, q, u)) ||
+               (o4 == 0 && within(p, q, v));
+    };
+    auto segmentMeetsTriangle = [&](const Vec3& u, const Vec3& v) {
+        return inside(u) || inside(v) || segmentsMeet(u, v, a1, b1) || segmentsMeet(u, v, b1, c1) ||
+               segmentsMeet(u, v, c1, a1);
+    };
+    std::array<const Vec3*, 3> in{};
+    for (int i = 0, k = 0; i < 3; ++i)
+        if (side[i] == 0) in[k++] = o[i];
+    if (on == 1) return inside(*in[0]);
+    if (on == 2) return segmentMeetsTriangle(*in[0], *in[1]);
+    // Coplanar: an edge of one crosses or touches the other, or one holds the other.
+    const Vec3 &a2 = *o[0], &b2 = *o[1], &c2 = *o[2];
+    if (segmentMeetsTriangle(a2, b2) || segmentMeetsTriangle(b2, c2) || segmentMeetsTriangle(c2, a2)) return true;
+    const int ccw2 = orient(a2, b2, c2);
+    return orient(a2, b2, a1) * ccw2 >= 0 && orient(b2, c2, a1) * ccw2 >= 0 && orient(c2, a2, a1) * ccw2 >= 0;
+}
+
 }  // namespace flat
 
 // Do the triangles a and b of a closed, manifold, consistently oriented
@@ -139,7 +208,8 @@ inline std::optional<bool> sharedCorner(const Plane& pl, const Vec3& v, const Ve
 // may have three collinear corners.
 template <class K>
 bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::vector<Vec3>& pos,
-                   const std::array<uint32_t, 3>& a, const std::array<uint32_t, 3>& b) {
+                   const std::array<uint32_t, 3>& a, const std::array<uint32_t, 3>& b, uint8_t code_a,
+                   uint8_t code_b) {
     using Triangle = typename K::Triangle_3;
     using Segment = typename K::Segment_3;
     int ia = -1, ib = -1, shared = 0;  // the first shared corner, in a and in b
@@ -152,8 +222,8 @@ bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::ve
                 }
                 break;
             }
-    const std::optional<flat::Plane> pa = flat::planeOf(pos[a[0]], pos[a[1]], pos[a[2]]);
-    const std::optional<flat::Plane> pb = flat::planeOf(pos[b[0]], pos[b[1]], pos[b[2]]);
+    const std::optional<flat::Plane> pa = flat::planeFromCode(code_a, pos[a[0]], pos[a[1]], pos[a[2]]);
+    const std::optional<flat::Plane> pb = flat::planeFromCode(code_b, pos[b[0]], pos[b[1]], pos[b[2]]);
     if (shared >= 2) {
         // A shared edge u-v: they overlap only when the four corners are
         // coplanar and the opposite corners lie on the same side of u-v.
@@ -194,13 +264,15 @@ bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::ve
         const Segment sb(points[b[(ib + 1) % 3]], points[b[(ib + 2) % 3]]);
         return CGAL::do_intersect(ta, sb) || CGAL::do_intersect(tb, sa);
     }
-    // Nothing shared: a triangle strictly on one side of the other's plane is apart from it.
-    auto apart = [&](const std::optional<flat::Plane>& pl, const std::array<uint32_t, 3>& other) {
-        if (!pl) return false;
-        const int s0 = pl->side(pos[other[0]]);
-        return s0 != 0 && pl->side(pos[other[1]]) == s0 && pl->side(pos[other[2]]) == s0;
+    // Nothing shared: a triangle that does not cross the other's plane meets
+    // it only within that plane (decided there, exactly).
+    auto corners = [&](const std::array<uint32_t, 3>& t) {
+        return std::array<const Vec3*, 3>{&pos[t[0]], &pos[t[1]], &pos[t[2]]};
     };
-    if (apart(pa, b) || apart(pb, a)) return false;
+    if (pa)
+        if (const auto known = flat::touchingPlane(*pa, pos[a[0]], pos[a[1]], pos[a[2]], corners(b))) return *known;
+    if (pb)
+        if (const auto known = flat::touchingPlane(*pb, pos[b[0]], pos[b[1]], pos[b[2]], corners(a))) return *known;
     return CGAL::do_intersect(ta, tb);
 }
 
@@ -246,11 +318,18 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
             // them out (they are counted as zero-area triangles).
             std::vector<uint8_t>& tested = usable;
             for (uint32_t t : out.zero_area_triangles) tested[t] = 0;
+            std::vector<uint8_t> plane(mesh.triangles.size(), 0);
+            for (size_t t = 0; t < mesh.triangles.size(); ++t)
+                if (tested[t]) {
+                    const auto& q = mesh.triangles[t];
+                    plane[t] = flat::planeCode(mesh.positions[q[0]], mesh.positions[q[1]], mesh.positions[q[2]]);
+                }
             std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found(TriangleBvh::workerCount(workers));
             bvh->forEachOverlappingPair(
                 [&](unsigned w, uint32_t a, uint32_t b) {
                     if (!tested[a] || !tested[b]) return;
-                    if (trianglesMeet<K>(points, mesh.positions, mesh.triangles[a], mesh.triangles[b]))
+                    if (trianglesMeet<K>(points, mesh.positions, mesh.triangles[a], mesh.triangles[b], plane[a],
+                                         plane[b]))
                         found[w].emplace_back(std::min(a, b), std::max(a, b));
                 },
                 workers);
