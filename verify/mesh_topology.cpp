@@ -13,14 +13,6 @@
 namespace tsf {
 namespace {
 
-// One side of a triangle: corner `side` to corner `side + 1`.
-struct HalfEdge {
-    uint64_t key;    // (min << 32) | max
-    uint32_t tri;
-    uint8_t side;    // 0..2
-    bool forward;    // traversed from min to max
-};
-
 double signedTetra6(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& c) {
     const double ax = a.x - o.x, ay = a.y - o.y, az = a.z - o.z;
     const double bx = b.x - o.x, by = b.y - o.y, bz = b.z - o.z;
@@ -82,95 +74,85 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
     }
     topo.unreferenced_vertices = size_t(std::count(referenced.begin(), referenced.end(), uint8_t(0)));
 
-    // Half-edges grouped by undirected edge (lo, hi), then triangle: bucketed
-    // by their lower vertex (a counting sort, linear), each bucket (a
-    // vertex's few edges) sorted by insertion.
-    std::vector<uint32_t> bucket(nv + 1, 0);
-    for (size_t t = 0; t < nt; ++t) {
-        if (!usable[t]) continue;
-        const auto& tri = mesh.triangles[t];
-        for (int s = 0; s < 3; ++s) ++bucket[std::min(tri[s], tri[(s + 1) % 3]) + 1];
-    }
-    std::partial_sum(bucket.begin(), bucket.end(), bucket.begin());
-    std::vector<HalfEdge> half(bucket.back());
-    {
-        std::vector<uint32_t> fill(bucket.begin(), bucket.end() - 1);
-        for (size_t t = 0; t < nt; ++t) {
-            if (!usable[t]) continue;
-            const auto& tri = mesh.triangles[t];
-            for (uint8_t s = 0; s < 3; ++s) {
-                const uint32_t a = tri[s], b = tri[(s + 1) % 3];
-                const uint32_t lo = std::min(a, b), hi = std::max(a, b);
-                half[fill[lo]++] = {(uint64_t(lo) << 32) | hi, uint32_t(t), s, a < b};
-            }
-        }
-    }
-    auto before = [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.tri < y.tri; };
-    for (size_t v = 0; v < nv; ++v)
-        for (uint32_t i = bucket[v] + 1; i < bucket[v + 1]; ++i)
-            for (uint32_t j = i; j > bucket[v] && before(half[j], half[j - 1]); --j) std::swap(half[j], half[j - 1]);
-    std::vector<uint32_t>().swap(bucket);
-
-    UnionFind faces(nt);
-    UnionFind corners(3 * nt);  // corner = 3 * triangle + index in triangle
-    auto edgeUse = [&](size_t first, size_t last) {
-        EdgeUse e;
-        e.a = uint32_t(half[first].key >> 32);
-        e.b = uint32_t(half[first].key & 0xffffffffu);
-        for (size_t i = first; i < last; ++i) e.triangles.push_back(half[i].tri);
-        return e;
-    };
-    for (size_t first = 0; first < half.size();) {
-        size_t last = first + 1;
-        while (last < half.size() && half[last].key == half[first].key) ++last;
-        ++topo.edge_count;
-        const size_t uses = last - first;
-        for (size_t i = first + 1; i < last; ++i) faces.unite(half[first].tri, half[i].tri);
-        if (uses == 1) {
-            topo.border_edges.push_back(edgeUse(first, last));
-        } else if (uses > 2) {
-            topo.nonmanifold_edges.push_back(edgeUse(first, last));
-        } else {
-            const HalfEdge& x = half[first];
-            const HalfEdge& y = half[first + 1];
-            if (x.forward == y.forward) topo.misoriented_edges.push_back(edgeUse(first, last));
-            // Join the two triangles' corners at each end of the edge: corners
-            // joined this way form the fans around a vertex.
-            const auto& tx = mesh.triangles[x.tri];
-            const auto& ty = mesh.triangles[y.tri];
-            for (uint8_t end = 0; end < 2; ++end) {
-                const uint32_t v = tx[(x.side + end) % 3];
-                const uint32_t cx = 3 * x.tri + uint32_t((x.side + end) % 3);
-                uint32_t cy = 3 * y.tri;
-                while (ty[cy - 3 * y.tri] != v) ++cy;
-                corners.unite(cx, cy);
-            }
-        }
-        first = last;
-    }
-
-    // Vertex fans: count distinct corner groups around each vertex.
+    // Every question about edges and fans is answered around one vertex at a
+    // time, from the triangles at that vertex (a counting sort of the
+    // corners by vertex, linear): the edges (v, w) are the other corners w of
+    // those triangles, each edge's uses are the triangles naming w, and the
+    // fans are those triangles joined across two-use edges. All of it reads
+    // a few dozen consecutive entries, where a half-edge table and a union-
+    // find over all corners read memory at random (and took 64 bytes a
+    // triangle more).
     std::vector<uint32_t> corner_start(nv + 1, 0);
     for (size_t t = 0; t < nt; ++t)
         if (usable[t])
             for (uint32_t v : mesh.triangles[t]) ++corner_start[v + 1];
     std::partial_sum(corner_start.begin(), corner_start.end(), corner_start.begin());
-    std::vector<uint32_t> corner_list(corner_start.back());
+    std::vector<uint32_t> corner_list(corner_start.back());  // 3 * triangle + corner, by vertex
     {
         std::vector<uint32_t> fill(corner_start.begin(), corner_start.end() - 1);
         for (size_t t = 0; t < nt; ++t)
             if (usable[t])
                 for (uint32_t i = 0; i < 3; ++i) corner_list[fill[mesh.triangles[t][i]]++] = 3 * uint32_t(t) + i;
     }
-    std::vector<uint32_t> roots;
+
+    UnionFind faces(nt);
+    struct Spoke {
+        uint32_t w;       // the other end of the edge
+        uint32_t tri;     // a triangle using the edge v-w
+        uint32_t local;   // that triangle's place among v's triangles
+        bool outgoing;    // the triangle runs v -> w
+    };
+    std::vector<Spoke> spokes;
+    std::vector<uint32_t> fan;  // union-find over v's triangles
+    auto fanRoot = [&](uint32_t x) {
+        while (fan[x] != x) x = fan[x] = fan[fan[x]];
+        return x;
+    };
     for (size_t v = 0; v < nv; ++v) {
-        roots.clear();
-        for (uint32_t i = corner_start[v]; i < corner_start[v + 1]; ++i) roots.push_back(corners.find(corner_list[i]));
-        std::sort(roots.begin(), roots.end());
-        if (std::unique(roots.begin(), roots.end()) - roots.begin() > 1) topo.nonmanifold_vertices.push_back(uint32_t(v));
+        const uint32_t first = corner_start[v], count = corner_start[v + 1] - first;
+        if (count == 0) continue;
+        spokes.clear();
+        for (uint32_t k = 0; k < count; ++k) {
+            const uint32_t c = corner_list[first + k], t = c / 3, i = c % 3;
+            const auto& tri = mesh.triangles[t];
+            spokes.push_back({tri[(i + 1) % 3], t, k, true});
+            spokes.push_back({tri[(i + 2) % 3], t, k, false});
+        }
+        std::sort(spokes.begin(), spokes.end(),
+                  [](const Spoke& a, const Spoke& b) { return a.w != b.w ? a.w < b.w : a.tri < b.tri; });
+        fan.resize(count);
+        std::iota(fan.begin(), fan.end(), 0u);
+        size_t fans = count;
+        auto edgeUse = [&](size_t lo, size_t hi) {
+            EdgeUse e;
+            e.a = uint32_t(v);
+            e.b = spokes[lo].w;
+            for (size_t i = lo; i < hi; ++i) e.triangles.push_back(spokes[i].tri);
+            return e;
+        };
+        for (size_t lo = 0; lo < spokes.size();) {
+            size_t hi = lo + 1;
+            while (hi < spokes.size() && spokes[hi].w == spokes[lo].w) ++hi;
+            const size_t uses = hi - lo;
+            if (uses == 2) {  // a two-triangle edge joins the fan at v
+                const uint32_t x = fanRoot(spokes[lo].local), y = fanRoot(spokes[lo + 1].local);
+                if (x != y) {
+                    fan[x] = y;
+                    --fans;
+                }
+            }
+            if (spokes[lo].w > v) {  // each edge once, from its lower end
+                ++topo.edge_count;
+                for (size_t i = lo + 1; i < hi; ++i) faces.unite(spokes[lo].tri, spokes[i].tri);
+                if (uses == 1) topo.border_edges.push_back(edgeUse(lo, hi));
+                else if (uses > 2) topo.nonmanifold_edges.push_back(edgeUse(lo, hi));
+                else if (spokes[lo].outgoing == spokes[lo + 1].outgoing) topo.misoriented_edges.push_back(edgeUse(lo, hi));
+            }
+            lo = hi;
+        }
+        if (fans > 1) topo.nonmanifold_vertices.push_back(uint32_t(v));
     }
 
-    // Components of usable triangles.
     std::vector<int64_t> comp_of_root(nt, -1);
     for (size_t t = 0; t < nt; ++t) {
         if (!usable[t]) continue;
