@@ -81,11 +81,70 @@ struct Box {
     }
 };
 
+// A padded box rounded outwards to floats: it holds the double box it was
+// made from, and a float's step (2^29 doubles' steps) is a wider margin for
+// the box tests' rounding than the padding itself. Half the bytes of a
+// double box: a node is 32 bytes, two of them a cache line, which is what
+// a traversal reads from memory. Coordinates beyond a float's range become
+// infinite (a box that holds everything there: slower, never wrong).
+struct FBox {
+    std::array<float, 3> lo{}, hi{};
+
+    static float down(double d) {
+        if (d < -double(std::numeric_limits<float>::max())) return -std::numeric_limits<float>::infinity();
+        if (d > double(std::numeric_limits<float>::max())) return std::numeric_limits<float>::max();
+        float f = float(d);
+        if (double(f) > d) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+        return f;
+    }
+    static float up(double d) {
+        if (d > double(std::numeric_limits<float>::max())) return std::numeric_limits<float>::infinity();
+        if (d < -double(std::numeric_limits<float>::max())) return -std::numeric_limits<float>::max();
+        float f = float(d);
+        if (double(f) < d) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+        return f;
+    }
+    static FBox around(const Box& b) {
+        FBox f;
+        for (int k = 0; k < 3; ++k) {
+            f.lo[k] = down(b.lo[k]);
+            f.hi[k] = up(b.hi[k]);
+        }
+        return f;
+    }
+    static FBox join(const FBox& a, const FBox& b) {
+        FBox f;
+        for (int k = 0; k < 3; ++k) {
+            f.lo[k] = std::min(a.lo[k], b.lo[k]);
+            f.hi[k] = std::max(a.hi[k], b.hi[k]);
+        }
+        return f;
+    }
+    double halfArea() const {
+        const double dx = double(hi[0]) - lo[0], dy = double(hi[1]) - lo[1], dz = double(hi[2]) - lo[2];
+        return dx * dy + dy * dz + dz * dx;
+    }
+    bool overlaps(const FBox& b) const {
+        return lo[0] <= b.hi[0] && b.lo[0] <= hi[0] && lo[1] <= b.hi[1] && b.lo[1] <= hi[1] && lo[2] <= b.hi[2] &&
+               b.lo[2] <= hi[2];
+    }
+    // Squared distance from p to the box (0 inside).
+    double distance2(const V3& p) const {
+        double s = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double d = std::max({double(lo[k]) - p[k], 0.0, p[k] - double(hi[k])});
+            s += d * d;
+        }
+        return s;
+    }
+};
+
 struct Node {
-    Box box;
+    FBox box;
     uint32_t first = 0;  // leaf: first triangle slot; inner: index of the left child (right = left + 1)
     uint32_t count = 0;  // leaf: number of triangles; inner: 0
 };
+static_assert(sizeof(Node) == 32);
 
 // What the build needs of a triangle, kept together so that the passes over
 // a node's triangles read memory in order: its box in floats (only the
@@ -126,7 +185,7 @@ int longestAxis(const Box& b) {
     return ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
 }
 
-// Builds the subtree of items[begin, end) into `nodes`, its root at nodes[0].
+// Builds the subtree of items[begin, end) at the end of `nodes`, its root first.
 struct SubtreeBuilder {
     std::vector<Item>& items;
     std::vector<Node> nodes;
@@ -193,9 +252,10 @@ struct SubtreeBuilder {
             uint32_t node, begin, end;
             int level;
         };
-        nodes.reserve(2 * size_t(end - begin) / kLeafSize + 2);
+        nodes.reserve(nodes.size() + 2 * size_t(end - begin) / kLeafSize + 2);
+        const uint32_t root = uint32_t(nodes.size());
         nodes.push_back({});
-        std::vector<Job> jobs{{0, begin, end, level}};
+        std::vector<Job> jobs{{root, begin, end, level}};
         while (!jobs.empty()) {
             const Job j = jobs.back();
             jobs.pop_back();
@@ -218,7 +278,7 @@ struct SubtreeBuilder {
 };
 
 // Appends the subtree `sub` (root at sub[0]) to `nodes`, its root going to
-// nodes[root_at] and the rest at the end.
+// nodes[root_at] and the rest at the end (within the capacity reserved).
 void splice(std::vector<Node>& nodes, uint32_t root_at, const std::vector<Node>& sub) {
     const uint32_t offset = uint32_t(nodes.size()) - 1;  // sub index i >= 1 goes to offset + i
     auto relocate = [&](Node n) {
@@ -272,15 +332,15 @@ BoxRay boxRay(const V3& o, const V3& d) {
 }
 
 // Parameter interval of the ray inside the box starts at t_enter <= t_max, or false.
-bool rayBox(const BoxRay& r, const Box& b, double t_max, double& t_enter) {
+bool rayBox(const BoxRay& r, const FBox& b, double t_max, double& t_enter) {
     double t0 = 0.0, t1 = t_max;
     for (int k = 0; k < 3; ++k) {
         if (r.zero[k]) {
-            if (r.o[k] < b.lo[k] || r.o[k] > b.hi[k]) return false;
+            if (r.o[k] < double(b.lo[k]) || r.o[k] > double(b.hi[k])) return false;
             continue;
         }
-        double ta = (b.lo[k] - r.o[k]) * r.inv[k];
-        double tb = (b.hi[k] - r.o[k]) * r.inv[k];
+        double ta = (double(b.lo[k]) - r.o[k]) * r.inv[k];
+        double tb = (double(b.hi[k]) - r.o[k]) * r.inv[k];
         if (ta > tb) std::swap(ta, tb);
         t0 = std::max(t0, ta);
         t1 = std::min(t1, tb);
@@ -373,7 +433,7 @@ bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && 
 }  // namespace
 
 struct TriangleBvh::Impl {
-    std::vector<V3> positions;                     // copied from the mesh
+    const Vec3* positions = nullptr;               // the mesh's, read in place
     std::vector<std::array<uint32_t, 3>> corners;  // per slot: indices into positions
     std::vector<uint32_t> mesh_index;              // per slot: the mesh triangle
     std::vector<uint32_t> slot_of;                 // per mesh triangle: its slot, or kNone
@@ -381,7 +441,10 @@ struct TriangleBvh::Impl {
     int depth = 0;
     double build_ms = 0;
 
-    const V3& corner(uint32_t slot, int i) const { return positions[corners[slot][i]]; }
+    V3 corner(uint32_t slot, int i) const {
+        const Vec3& p = positions[corners[slot][i]];
+        return {p.x, p.y, p.z};
+    }
     Box triangleBox(uint32_t slot) const {
         Box b;
         for (int i = 0; i < 3; ++i) b.add(corner(slot, i));
@@ -396,21 +459,25 @@ struct TriangleBvh::Impl {
 
         const unsigned threads = workerCount(0);
         if (n >= kParallelBuildMin && threads >= 2) {
-            // The root's split here, its two subtrees on two threads.
+            // The root's split here, its two subtrees on two threads. The
+            // left one is built straight into the tree after three places
+            // (the root and its two children), with room reserved for all
+            // (address space only: pages count once written), and the right
+            // one appended: at most the tree and its right half are held at
+            // once. The left subtree's root moves to place 1 (its first
+            // place stays as an unreachable copy).
             SubtreeBuilder root{items, {}, 0};
             const uint32_t mid = root.split(0, uint32_t(n), 0);
             SubtreeBuilder left{items, {}, 0}, right{items, {}, 0};
+            left.nodes.reserve(3 + 2 * n);
+            left.nodes.resize(3);
             std::thread other([&] { right.build(mid, uint32_t(n), 1); });
             left.build(0, mid, 1);
             other.join();
-            nodes.reserve(1 + left.nodes.size() + right.nodes.size());
-            nodes.resize(3);
+            nodes = std::move(left.nodes);
             nodes[0].first = 1;
             nodes[0].count = 0;
-            // Each half freed once copied: the whole tree and one half at
-            // most are held at once, not twice the tree.
-            splice(nodes, 1, left.nodes);
-            std::vector<Node>().swap(left.nodes);
+            nodes[1] = nodes[3];
             splice(nodes, 2, right.nodes);
             std::vector<Node>().swap(right.nodes);
             depth = std::max(left.depth, right.depth);
@@ -422,29 +489,34 @@ struct TriangleBvh::Impl {
         }
         assert(depth <= kMaxDepth);
 
-        // Store the triangles in leaf order.
-        std::vector<std::array<uint32_t, 3>> sorted_corners(n);
-        std::vector<uint32_t> sorted_index(n);
-        for (size_t i = 0; i < n; ++i) {
-            sorted_corners[i] = corners[items[i].tri];
-            sorted_index[i] = mesh_index[items[i].tri];
+        // Store the triangles in leaf order (the items freed first: they
+        // are the build's largest array).
+        std::vector<uint32_t> order(n);
+        for (size_t i = 0; i < n; ++i) order[i] = items[i].tri;
+        std::vector<Item>().swap(items);
+        {
+            std::vector<std::array<uint32_t, 3>> sorted_corners(n);
+            for (size_t i = 0; i < n; ++i) sorted_corners[i] = corners[order[i]];
+            corners.swap(sorted_corners);
         }
-        corners.swap(sorted_corners);
-        mesh_index.swap(sorted_index);
+        for (size_t i = 0; i < n; ++i) order[i] = mesh_index[order[i]];
+        mesh_index.swap(order);
         for (size_t i = 0; i < n; ++i) slot_of[mesh_index[i]] = uint32_t(i);
 
-        // Boxes bottom-up (children always come after their parent), then padded.
+        // Boxes bottom-up (children always come after their parent): a
+        // leaf's from its exact corners, padded and rounded out to floats; an
+        // inner node's the union of its children's.
         for (size_t i = nodes.size(); i-- > 0;) {
             Node& nd = nodes[i];
-            nd.box = Box{};
             if (nd.count > 0) {
-                for (uint32_t s = nd.first; s < nd.first + nd.count; ++s) nd.box.add(triangleBox(s));
+                Box b;
+                for (uint32_t s = nd.first; s < nd.first + nd.count; ++s) b.add(triangleBox(s));
+                b.pad();
+                nd.box = FBox::around(b);
             } else {
-                nd.box.add(nodes[nd.first].box);
-                nd.box.add(nodes[nd.first + 1].box);
+                nd.box = FBox::join(nodes[nd.first].box, nodes[nd.first + 1].box);
             }
         }
-        for (Node& nd : nodes) nd.box.pad();
     }
 
     // Every pair of triangles of the leaves a and b (a == b: within the leaf)
@@ -491,8 +563,7 @@ TriangleBvh::TriangleBvh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     const auto t0 = std::chrono::steady_clock::now();
     Impl& im = *impl_;
     const size_t nv = mesh.positions.size();
-    im.positions.resize(nv);
-    for (size_t v = 0; v < nv; ++v) im.positions[v] = {mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z};
+    im.positions = mesh.positions.data();
     im.slot_of.assign(mesh.triangles.size(), kNone);
     im.corners.reserve(mesh.triangles.size());
     im.mesh_index.reserve(mesh.triangles.size());

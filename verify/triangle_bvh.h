@@ -31,8 +31,10 @@
 // Triangles with an out-of-range index or a non-finite corner are left out.
 // Units: millimetres, model frame. Direction vectors need not be unit length;
 // distances are along the ray in millimetres. Queries are const and may run
-// concurrently. The tree copies what it needs; the mesh may be destroyed
-// afterwards.
+// concurrently. The tree reads the mesh's positions in place (a copy was
+// 24 bytes a vertex, 160 MB on a 1000 x 1000 model): the mesh must outlive
+// the tree and not change while it lives; a temporary mesh is refused at
+// compile time.
 #pragma once
 
 #include <cstdint>
@@ -60,6 +62,7 @@ struct ClosestPoint {
 class TriangleBvh {
 public:
     explicit TriangleBvh(const Mesh& mesh);
+    explicit TriangleBvh(Mesh&&) = delete;  ///< the tree reads the mesh in place: it must outlive the tree
     ~TriangleBvh();
     TriangleBvh(const TriangleBvh&) = delete;
     TriangleBvh& operator=(const TriangleBvh&) = delete;

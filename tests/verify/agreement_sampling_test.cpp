@@ -192,10 +192,12 @@ TEST(TriangleBvh, EnoughStopsEarlyWithAnUpperBound) {
 }
 
 TEST(TriangleBvh, EmptyMeshAndBadQueries) {
-    const TriangleBvh empty(Mesh{});
+    const Mesh nothing;
+    const TriangleBvh empty(nothing);
     EXPECT_TRUE(std::isinf(empty.closest({0, 0, 0}).distance_mm));
     EXPECT_EQ(empty.closest({0, 0, 0}).triangle, -1);
-    const TriangleBvh box(vtest::box({0, 0, 0}, {1, 1, 1}));
+    const Mesh cube = vtest::box({0, 0, 0}, {1, 1, 1});
+    const TriangleBvh box(cube);
     EXPECT_TRUE(std::isinf(box.closest({NAN, 0, 0}).distance_mm));
     EXPECT_NEAR(box.closest({0.5, 0.5, 0.5}).distance_mm, 0.5, 1e-15);  // inside: to the nearest face
 }

@@ -103,7 +103,8 @@ TEST(TriangleBvh, DegenerateInputsGiveNoHit) {
     EXPECT_FALSE(caster.firstHit({0.5, 0.5, 5}, {0, 0, 0}));
     EXPECT_FALSE(caster.firstHit({0.5, 0.5, 5}, {0, 0, NAN}));
     EXPECT_FALSE(caster.firstHit({0.5, 0.5, 5}, {0, 0, 1}));  // pointing away
-    const TriangleBvh empty(Mesh{});
+    const Mesh nothing;
+    const TriangleBvh empty(nothing);
     EXPECT_EQ(empty.triangleCount(), 0u);
     EXPECT_FALSE(empty.firstHit({0, 0, 0}, {1, 0, 0}));
     Mesh bad = m;
