@@ -147,38 +147,53 @@ struct Node {
 static_assert(sizeof(Node) == 32);
 
 // What the build needs of a triangle, kept together so that the passes over
-// a node's triangles read memory in order: its box in floats (only the
-// choice of splits uses it; the tree's boxes come from the exact corners),
-// 28 bytes instead of 56, which halves the memory each level of the build
-// streams through and, on 13 M triangles, the 750 MB the items took.
-// Coordinates beyond a float's range are clamped to it (the splits there
-// are worse, never wrong).
+// a node's triangles read memory in order: its box on a grid of 65 536 steps
+// a side over the whole mesh's box (only the choice of splits uses it; the
+// tree's boxes come from the exact corners). 16 bytes, where a box of
+// doubles took 56: the build streams through these once or twice a level,
+// and on 13 M triangles they were 750 MB. The grid is 2.3 um a step on a
+// 150 mm model; on a mesh spread over huge ranges many boxes share a step
+// and the splits there are worse, never wrong.
 struct Item {
-    std::array<float, 3> lo, hi;
+    std::array<uint16_t, 3> lo, hi;
     uint32_t tri;  // index into the accepted triangles, before reordering
 };
+static_assert(sizeof(Item) == 16);
 
-float toFloat(double d) {
-    constexpr double kMax = std::numeric_limits<float>::max();
-    return float(std::clamp(d, -kMax, kMax));
-}
+struct ItemGrid {
+    V3 origin{0, 0, 0}, step{0, 0, 0}, inv_step{0, 0, 0};
 
-Item makeItem(const Box& b, uint32_t tri) {
-    Item it;
-    for (int k = 0; k < 3; ++k) {
-        it.lo[k] = toFloat(b.lo[k]);
-        it.hi[k] = toFloat(b.hi[k]);
+    explicit ItemGrid(const Box& all) {
+        for (int k = 0; k < 3; ++k) {
+            const double extent = all.hi[k] - all.lo[k];
+            origin[k] = all.lo[k];
+            if (extent > 0 && std::isfinite(extent)) {
+                step[k] = extent / 65535.0;
+                inv_step[k] = 65535.0 / extent;
+            }
+        }
     }
-    it.tri = tri;
-    return it;
-}
-
-void addItem(Box& b, const Item& it) {
-    b.add(V3{it.lo[0], it.lo[1], it.lo[2]});
-    b.add(V3{it.hi[0], it.hi[1], it.hi[2]});
-}
-
-double centre(const Item& it, int axis) { return 0.5 * (double(it.lo[axis]) + double(it.hi[axis])); }
+    uint16_t cell(double x, int k, bool up) const {
+        const double q = (x - origin[k]) * inv_step[k];
+        const double r = up ? std::ceil(q) : std::floor(q);
+        if (!(r > 0)) return 0;  // NaN too (an infinite extent times a zero step)
+        return r >= 65535.0 ? uint16_t(65535) : uint16_t(r);
+    }
+    Item item(const Box& b, uint32_t tri) const {
+        Item it;
+        for (int k = 0; k < 3; ++k) {
+            it.lo[k] = cell(b.lo[k], k, false);
+            it.hi[k] = cell(b.hi[k], k, true);
+        }
+        it.tri = tri;
+        return it;
+    }
+    double centre(const Item& it, int k) const { return origin[k] + 0.5 * (double(it.lo[k]) + double(it.hi[k])) * step[k]; }
+    void add(Box& b, const Item& it) const {
+        b.add(V3{origin[0] + it.lo[0] * step[0], origin[1] + it.lo[1] * step[1], origin[2] + it.lo[2] * step[2]});
+        b.add(V3{origin[0] + it.hi[0] * step[0], origin[1] + it.hi[1] * step[1], origin[2] + it.hi[2] * step[2]});
+    }
+};
 
 int longestAxis(const Box& b) {
     const double ex = b.hi[0] - b.lo[0], ey = b.hi[1] - b.lo[1], ez = b.hi[2] - b.lo[2];
@@ -188,13 +203,14 @@ int longestAxis(const Box& b) {
 // Builds the subtree of items[begin, end) at the end of `nodes`, its root first.
 struct SubtreeBuilder {
     std::vector<Item>& items;
+    const ItemGrid& grid;
     std::vector<Node> nodes;
     int depth = 0;  // deepest level reached, counted from the whole tree's root
 
     // Split point of items[begin, end) (reordered), strictly inside.
     uint32_t split(uint32_t begin, uint32_t end, int level) {
         Box cb;  // bounds of the box centres
-        for (uint32_t i = begin; i < end; ++i) cb.add(V3{centre(items[i], 0), centre(items[i], 1), centre(items[i], 2)});
+        for (uint32_t i = begin; i < end; ++i) cb.add(V3{grid.centre(items[i], 0), grid.centre(items[i], 1), grid.centre(items[i], 2)});
         const int axis = longestAxis(cb);
         const double lo = cb.lo[axis], extent = cb.hi[axis] - lo;
         if (level < kSahDepth && extent > 0 && std::isfinite(extent)) {
@@ -203,10 +219,10 @@ struct SubtreeBuilder {
             Box bins[kSahBins];
             uint32_t counts[kSahBins] = {};
             const double scale = kSahBins / extent;
-            auto binOf = [&](const Item& it) { return std::clamp(int((centre(it, axis) - lo) * scale), 0, kSahBins - 1); };
+            auto binOf = [&](const Item& it) { return std::clamp(int((grid.centre(it, axis) - lo) * scale), 0, kSahBins - 1); };
             for (uint32_t i = begin; i < end; ++i) {
                 const int b = binOf(items[i]);
-                addItem(bins[b], items[i]);
+                grid.add(bins[b], items[i]);
                 ++counts[b];
             }
             double right_area[kSahBins];
@@ -243,7 +259,7 @@ struct SubtreeBuilder {
         // Deep, or no useful split: halve at the median.
         const uint32_t mid = begin + (end - begin) / 2;
         std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
-                         [&](const Item& a, const Item& b) { return centre(a, axis) < centre(b, axis); });
+                         [&](const Item& a, const Item& b) { return grid.centre(a, axis) < grid.centre(b, axis); });
         return mid;
     }
 
@@ -454,8 +470,11 @@ struct TriangleBvh::Impl {
     void build() {
         const size_t n = corners.size();
         if (n == 0) return;
+        Box all;
+        for (size_t i = 0; i < n; ++i) all.add(triangleBox(uint32_t(i)));
+        const ItemGrid grid(all);
         std::vector<Item> items(n);
-        for (size_t i = 0; i < n; ++i) items[i] = makeItem(triangleBox(uint32_t(i)), uint32_t(i));
+        for (size_t i = 0; i < n; ++i) items[i] = grid.item(triangleBox(uint32_t(i)), uint32_t(i));
 
         const unsigned threads = workerCount(0);
         if (n >= kParallelBuildMin && threads >= 2) {
@@ -466,9 +485,9 @@ struct TriangleBvh::Impl {
             // one appended: at most the tree and its right half are held at
             // once. The left subtree's root moves to place 1 (its first
             // place stays as an unreachable copy).
-            SubtreeBuilder root{items, {}, 0};
+            SubtreeBuilder root{items, grid, {}, 0};
             const uint32_t mid = root.split(0, uint32_t(n), 0);
-            SubtreeBuilder left{items, {}, 0}, right{items, {}, 0};
+            SubtreeBuilder left{items, grid, {}, 0}, right{items, grid, {}, 0};
             left.nodes.reserve(3 + 2 * n);
             left.nodes.resize(3);
             std::thread other([&] { right.build(mid, uint32_t(n), 1); });
@@ -482,7 +501,7 @@ struct TriangleBvh::Impl {
             std::vector<Node>().swap(right.nodes);
             depth = std::max(left.depth, right.depth);
         } else {
-            SubtreeBuilder all{items, {}, 0};
+            SubtreeBuilder all{items, grid, {}, 0};
             all.build(0, uint32_t(n), 0);
             nodes = std::move(all.nodes);
             depth = all.depth;
