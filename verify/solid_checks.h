@@ -51,7 +51,9 @@ struct SolidResult {
     std::vector<Check> checks;
     std::vector<Stage> stages;
     bool closed_oriented_manifold = false;  ///< closed, manifold, consistently oriented, finite
-    std::unique_ptr<TriangleBvh> bvh;       ///< the tree checkSolid built, if it built one (for the ray checks)
+    /// The tree checkSolid built, if it built one (for the ray checks). It
+    /// reads the checked mesh in place: keep that mesh alive while using it.
+    std::unique_ptr<TriangleBvh> bvh;
 };
 
 SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options);

@@ -54,23 +54,6 @@ struct Box {
             hi[k] = std::max(hi[k], b.hi[k]);
         }
     }
-    double halfArea() const {
-        const double dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
-        return dx * dy + dy * dz + dz * dx;
-    }
-    bool overlaps(const Box& b) const {
-        return lo[0] <= b.hi[0] && b.lo[0] <= hi[0] && lo[1] <= b.hi[1] && b.lo[1] <= hi[1] && lo[2] <= b.hi[2] &&
-               b.lo[2] <= hi[2];
-    }
-    // Squared distance from p to the box (0 inside).
-    double distance2(const V3& p) const {
-        double s = 0;
-        for (int k = 0; k < 3; ++k) {
-            const double d = std::max({lo[k] - p[k], 0.0, p[k] - hi[k]});
-            s += d * d;
-        }
-        return s;
-    }
     void pad() {
         for (int k = 0; k < 3; ++k) {
             const double scale = std::max({std::fabs(lo[k]), std::fabs(hi[k]), 1.0});
@@ -120,14 +103,6 @@ struct FBox {
         }
         return f;
     }
-    double halfArea() const {
-        const double dx = double(hi[0]) - lo[0], dy = double(hi[1]) - lo[1], dz = double(hi[2]) - lo[2];
-        return dx * dy + dy * dz + dz * dx;
-    }
-    bool overlaps(const FBox& b) const {
-        return lo[0] <= b.hi[0] && b.lo[0] <= hi[0] && lo[1] <= b.hi[1] && b.lo[1] <= hi[1] && lo[2] <= b.hi[2] &&
-               b.lo[2] <= hi[2];
-    }
     // Squared distance from p to the box (0 inside).
     double distance2(const V3& p) const {
         double s = 0;
@@ -138,6 +113,19 @@ struct FBox {
         return s;
     }
 };
+
+// For both kinds of box (doubles in the build, floats in the tree).
+template <class B>
+double halfArea(const B& b) {
+    const double dx = double(b.hi[0]) - b.lo[0], dy = double(b.hi[1]) - b.lo[1], dz = double(b.hi[2]) - b.lo[2];
+    return dx * dy + dy * dz + dz * dx;
+}
+
+template <class B>
+bool overlap(const B& a, const B& b) {
+    return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+           a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+}
 
 struct Node {
     FBox box;
@@ -232,7 +220,7 @@ struct SubtreeBuilder {
             for (int b = kSahBins - 1; b > 0; --b) {
                 acc.add(bins[b]);
                 cnt += counts[b];
-                right_area[b] = cnt ? acc.halfArea() : 0.0;
+                right_area[b] = cnt ? halfArea(acc) : 0.0;
                 right_count[b] = cnt;
             }
             acc = Box{};
@@ -243,7 +231,7 @@ struct SubtreeBuilder {
                 acc.add(bins[b]);
                 cnt += counts[b];
                 if (cnt == 0 || right_count[b + 1] == 0) continue;
-                const double cost = acc.halfArea() * cnt + right_area[b + 1] * right_count[b + 1];
+                const double cost = halfArea(acc) * cnt + right_area[b + 1] * right_count[b + 1];
                 if (cost < best_cost) {
                     best_cost = cost;
                     best_bin = b;
@@ -550,7 +538,7 @@ struct TriangleBvh::Impl {
         const Box* other = same ? ba : bb;
         for (uint32_t s = 0; s < a.count; ++s)
             for (uint32_t t = same ? s + 1 : 0; t < b.count; ++t)
-                if (ba[s].overlaps(other[t])) visit(mesh_index[a.first + s], mesh_index[b.first + t]);
+                if (overlap(ba[s], other[t])) visit(mesh_index[a.first + s], mesh_index[b.first + t]);
     }
 
     // Pairs between the subtrees a and b (a != b), or within a (a == b).
@@ -565,10 +553,10 @@ struct TriangleBvh::Impl {
             pairs(na.first, na.first + 1, visit);
             return;
         }
-        if (!na.box.overlaps(nb.box)) return;
+        if (!overlap(na.box, nb.box)) return;
         if (na.count > 0 && nb.count > 0) return leafPairs(na, nb, false, visit);
         // Descend the larger (or the only inner) node.
-        if (nb.count > 0 || (na.count == 0 && na.box.halfArea() >= nb.box.halfArea())) {
+        if (nb.count > 0 || (na.count == 0 && halfArea(na.box) >= halfArea(nb.box))) {
             pairs(na.first, b, visit);
             pairs(na.first + 1, b, visit);
         } else {
