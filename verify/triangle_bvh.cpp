@@ -10,7 +10,9 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace tsf {
@@ -71,7 +73,7 @@ struct Box {
 // a traversal reads from memory. Coordinates beyond a float's range become
 // infinite (a box that holds everything there: slower, never wrong).
 struct FBox {
-    std::array<float, 3> lo{}, hi{};
+    std::array<float, 3> lo, hi;  // no initialisers: a node buffer is allocated, not written, until built
 
     static float down(double d) {
         if (d < -double(std::numeric_limits<float>::max())) return -std::numeric_limits<float>::infinity();
@@ -129,10 +131,11 @@ bool overlap(const B& a, const B& b) {
 
 struct Node {
     FBox box;
-    uint32_t first = 0;  // leaf: first triangle slot; inner: index of the left child (right = left + 1)
-    uint32_t count = 0;  // leaf: number of triangles; inner: 0
+    uint32_t first;  // leaf: first triangle slot; inner: index of the left child (right = left + 1)
+    uint32_t count;  // leaf: number of triangles; inner: 0
 };
 static_assert(sizeof(Node) == 32);
+static_assert(std::is_trivially_default_constructible_v<Node>);
 
 // What the build needs of a triangle, kept together so that the passes over
 // a node's triangles read memory in order: its box on a grid of 65 536 steps
@@ -188,11 +191,13 @@ int longestAxis(const Box& b) {
     return ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
 }
 
-// Builds the subtree of items[begin, end) at the end of `nodes`, its root first.
+// Builds the subtree of items[begin, end) into nodes[next, ...), its root
+// first; a subtree of m items takes at most 2m - 1 places.
 struct SubtreeBuilder {
     std::vector<Item>& items;
     const ItemGrid& grid;
-    std::vector<Node> nodes;
+    Node* nodes;
+    uint32_t next;  // the next free place
     int depth = 0;  // deepest level reached, counted from the whole tree's root
 
     // Split point of items[begin, end) (reordered), strictly inside.
@@ -256,9 +261,7 @@ struct SubtreeBuilder {
             uint32_t node, begin, end;
             int level;
         };
-        nodes.reserve(nodes.size() + 2 * size_t(end - begin) / kLeafSize + 2);
-        const uint32_t root = uint32_t(nodes.size());
-        nodes.push_back({});
+        const uint32_t root = next++;
         std::vector<Job> jobs{{root, begin, end, level}};
         while (!jobs.empty()) {
             const Job j = jobs.back();
@@ -270,9 +273,8 @@ struct SubtreeBuilder {
                 continue;
             }
             const uint32_t mid = split(j.begin, j.end, j.level);
-            const uint32_t left = uint32_t(nodes.size());
-            nodes.push_back({});
-            nodes.push_back({});
+            const uint32_t left = next;
+            next += 2;
             nodes[j.node].first = left;
             nodes[j.node].count = 0;
             jobs.push_back({left, j.begin, mid, j.level + 1});
@@ -280,18 +282,6 @@ struct SubtreeBuilder {
         }
     }
 };
-
-// Appends the subtree `sub` (root at sub[0]) to `nodes`, its root going to
-// nodes[root_at] and the rest at the end (within the capacity reserved).
-void splice(std::vector<Node>& nodes, uint32_t root_at, const std::vector<Node>& sub) {
-    const uint32_t offset = uint32_t(nodes.size()) - 1;  // sub index i >= 1 goes to offset + i
-    auto relocate = [&](Node n) {
-        if (n.count == 0) n.first += offset;
-        return n;
-    };
-    nodes[root_at] = relocate(sub[0]);
-    for (size_t i = 1; i < sub.size(); ++i) nodes.push_back(relocate(sub[i]));
-}
 
 // Watertight ray/triangle test. kx, ky, kz and the shear (sx, sy, sz) are per ray.
 struct RaySetup {
@@ -441,7 +431,10 @@ struct TriangleBvh::Impl {
     std::vector<std::array<uint32_t, 3>> corners;  // per slot: indices into positions
     std::vector<uint32_t> mesh_index;              // per slot: the mesh triangle
     std::vector<uint32_t> slot_of;                 // per mesh triangle: its slot, or kNone
-    std::vector<Node> nodes;
+    // Built in place: the left half of the root from place 3, the right
+    // half after the room the left one may take; places neither took are
+    // never written (allocated without initialising, they take no memory).
+    std::unique_ptr<Node[]> nodes;
     int depth = 0;
     double build_ms = 0;
 
@@ -464,35 +457,38 @@ struct TriangleBvh::Impl {
         std::vector<Item> items(n);
         for (size_t i = 0; i < n; ++i) items[i] = grid.item(triangleBox(uint32_t(i)), uint32_t(i));
 
+        // Every range of places the subtrees were built in, children after
+        // their parents in each.
+        std::vector<std::pair<uint32_t, uint32_t>> ranges;
+        uint32_t halves_root = 0;  // built in halves: the right half's root (place 2's original)
         const unsigned threads = workerCount(0);
         if (n >= kParallelBuildMin && threads >= 2) {
-            // The root's split here, its two subtrees on two threads. The
-            // left one is built straight into the tree after three places
-            // (the root and its two children), with room reserved for all
-            // (address space only: pages count once written), and the right
-            // one appended: at most the tree and its right half are held at
-            // once. The left subtree's root moves to place 1 (its first
-            // place stays as an unreachable copy).
-            SubtreeBuilder root{items, grid, {}, 0};
+            // The root's split here, its two subtrees on two threads, each in
+            // its own part of the one buffer: the left from place 3, the right
+            // after the 2m - 1 places the left one may take. Their roots are
+            // then copied to places 1 and 2 (the root's children are next to
+            // each other) once the boxes are known; places 3 and the right's
+            // first stay as unreachable copies.
+            nodes = std::make_unique_for_overwrite<Node[]>(3 + 2 * n);
+            SubtreeBuilder root{items, grid, nullptr, 0, 0};
             const uint32_t mid = root.split(0, uint32_t(n), 0);
-            SubtreeBuilder left{items, grid, {}, 0}, right{items, grid, {}, 0};
-            left.nodes.reserve(3 + 2 * n);
-            left.nodes.resize(3);
+            SubtreeBuilder left{items, grid, nodes.get(), 3, 0};
+            SubtreeBuilder right{items, grid, nodes.get(), 3 + 2 * mid, 0};
+            const uint32_t right_root = right.next;
             std::thread other([&] { right.build(mid, uint32_t(n), 1); });
             left.build(0, mid, 1);
             other.join();
-            nodes = std::move(left.nodes);
+            ranges = {{3, left.next}, {right_root, right.next}};
             nodes[0].first = 1;
             nodes[0].count = 0;
-            nodes[1] = nodes[3];
-            splice(nodes, 2, right.nodes);
-            std::vector<Node>().swap(right.nodes);
             depth = std::max(left.depth, right.depth);
+            halves_root = right_root;
         } else {
-            SubtreeBuilder all{items, grid, {}, 0};
+            nodes = std::make_unique_for_overwrite<Node[]>(2 * n);
+            SubtreeBuilder all{items, grid, nodes.get(), 0, 0};
             all.build(0, uint32_t(n), 0);
-            nodes = std::move(all.nodes);
             depth = all.depth;
+            ranges = {{0, all.next}};
         }
         assert(depth <= kMaxDepth);
 
@@ -510,20 +506,31 @@ struct TriangleBvh::Impl {
         mesh_index.swap(order);
         for (size_t i = 0; i < n; ++i) slot_of[mesh_index[i]] = uint32_t(i);
 
-        // Boxes bottom-up (children always come after their parent): a
-        // leaf's from its exact corners, padded and rounded out to floats; an
-        // inner node's the union of its children's.
-        for (size_t i = nodes.size(); i-- > 0;) {
-            Node& nd = nodes[i];
-            if (nd.count > 0) {
-                Box b;
-                for (uint32_t s = nd.first; s < nd.first + nd.count; ++s) b.add(triangleBox(s));
-                b.pad();
-                nd.box = FBox::around(b);
-            } else {
-                nd.box = FBox::join(nodes[nd.first].box, nodes[nd.first + 1].box);
-            }
+        computeBoxes(ranges);
+        if (halves_root) {
+            nodes[1] = nodes[3];
+            nodes[2] = nodes[halves_root];
+            nodes[0].box = FBox::join(nodes[1].box, nodes[2].box);
         }
+    }
+
+    // Boxes bottom-up (in each range children come after their parent): a
+    // leaf's from its exact corners, padded and rounded out to floats; an
+    // inner node's the union of its children's. Needs the triangles in
+    // leaf order.
+    void computeBoxes(const std::vector<std::pair<uint32_t, uint32_t>>& ranges) {
+        for (auto r = ranges.rbegin(); r != ranges.rend(); ++r)
+            for (uint32_t i = r->second; i-- > r->first;) {
+                Node& nd = nodes[i];
+                if (nd.count > 0) {
+                    Box b;
+                    for (uint32_t s = nd.first; s < nd.first + nd.count; ++s) b.add(triangleBox(s));
+                    b.pad();
+                    nd.box = FBox::around(b);
+                } else {
+                    nd.box = FBox::join(nodes[nd.first].box, nodes[nd.first + 1].box);
+                }
+            }
     }
 
     // Every pair of triangles of the leaves a and b (a == b: within the leaf)
@@ -599,7 +606,7 @@ unsigned TriangleBvh::workerCount(unsigned workers) {
 std::optional<RayHit> TriangleBvh::firstHit(const Vec3& origin, const Vec3& direction, int64_t skip,
                                             double max_distance_mm) const {
     const Impl& im = *impl_;
-    if (im.nodes.empty() || !finite(origin) || !finite(direction)) return std::nullopt;
+    if (!im.nodes || !finite(origin) || !finite(direction)) return std::nullopt;
     if (direction.x == 0 && direction.y == 0 && direction.z == 0) return std::nullopt;
     const V3 o{origin.x, origin.y, origin.z}, d{direction.x, direction.y, direction.z};
     const RaySetup r = setup(o, d);
@@ -672,7 +679,7 @@ ClosestPoint TriangleBvh::closest(const Vec3& query, int64_t hint, double enough
     const Impl& im = *impl_;
     ClosestPoint out;
     out.distance_mm = kInf;
-    if (im.nodes.empty() || !finite(query)) return out;
+    if (!im.nodes || !finite(query)) return out;
     const V3 p{query.x, query.y, query.z};
     double best2 = kInf;
     const double enough2 = enough_mm > 0 ? enough_mm * enough_mm : -1.0;
@@ -715,7 +722,7 @@ ClosestPoint TriangleBvh::closest(const Vec3& query, int64_t hint, double enough
 void TriangleBvh::forEachOverlappingPair(const std::function<void(unsigned, uint32_t, uint32_t)>& visit,
                                          unsigned workers) const {
     const Impl& im = *impl_;
-    if (im.nodes.empty()) return;
+    if (!im.nodes) return;
     workers = workerCount(workers);
     // Cut the traversal into tasks: (a, b) node pairs whose pairs are
     // disjoint and together cover all. Splitting the within-subtree tasks
