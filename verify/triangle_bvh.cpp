@@ -116,7 +116,7 @@ struct FBox {
     }
 };
 
-// For both kinds of box (doubles in the build, floats in the tree).
+// Box measures for both kinds of box (doubles, floats).
 template <class B>
 double halfArea(const B& b) {
     const double dx = double(b.hi[0]) - b.lo[0], dy = double(b.hi[1]) - b.lo[1], dz = double(b.hi[2]) - b.lo[2];
@@ -179,17 +179,7 @@ struct ItemGrid {
         it.tri = tri;
         return it;
     }
-    double centre(const Item& it, int k) const { return origin[k] + 0.5 * (double(it.lo[k]) + double(it.hi[k])) * step[k]; }
-    void add(Box& b, const Item& it) const {
-        b.add(V3{origin[0] + it.lo[0] * step[0], origin[1] + it.lo[1] * step[1], origin[2] + it.lo[2] * step[2]});
-        b.add(V3{origin[0] + it.hi[0] * step[0], origin[1] + it.hi[1] * step[1], origin[2] + it.hi[2] * step[2]});
-    }
 };
-
-int longestAxis(const Box& b) {
-    const double ex = b.hi[0] - b.lo[0], ey = b.hi[1] - b.lo[1], ez = b.hi[2] - b.lo[2];
-    return ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
-}
 
 // Builds the subtree of items[begin, end) into nodes[next, ...), its root
 // first; a subtree of m items takes at most 2m - 1 places.
@@ -200,43 +190,66 @@ struct SubtreeBuilder {
     uint32_t next;  // the next free place
     int depth = 0;  // deepest level reached, counted from the whole tree's root
 
-    // Split point of items[begin, end) (reordered), strictly inside.
+    // Split point of items[begin, end) (reordered), strictly inside. All in
+    // the items' grid steps (integers; a centre is lo + hi, twice the
+    // centre), converted to millimetres only for the areas and the axis.
     uint32_t split(uint32_t begin, uint32_t end, int level) {
-        Box cb;  // bounds of the box centres
-        for (uint32_t i = begin; i < end; ++i) cb.add(V3{grid.centre(items[i], 0), grid.centre(items[i], 1), grid.centre(items[i], 2)});
-        const int axis = longestAxis(cb);
-        const double lo = cb.lo[axis], extent = cb.hi[axis] - lo;
-        if (level < kSahDepth && extent > 0 && std::isfinite(extent)) {
+        uint32_t cmin[3] = {UINT32_MAX, UINT32_MAX, UINT32_MAX}, cmax[3] = {0, 0, 0};  // bounds of the centres
+        for (uint32_t i = begin; i < end; ++i)
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t c = uint32_t(items[i].lo[k]) + items[i].hi[k];
+                cmin[k] = std::min(cmin[k], c);
+                cmax[k] = std::max(cmax[k], c);
+            }
+        int axis = 0;
+        for (int k = 1; k < 3; ++k)
+            if ((cmax[k] - cmin[k]) * grid.step[k] > (cmax[axis] - cmin[axis]) * grid.step[axis]) axis = k;
+        auto centre2 = [axis](const Item& it) { return uint32_t(it.lo[axis]) + it.hi[axis]; };
+        if (level < kSahDepth && cmax[axis] > cmin[axis]) {
             // Surface-area heuristic over the bins: the split minimising
             // area(left) * n_left + area(right) * n_right.
-            Box bins[kSahBins];
+            struct GridBox {
+                uint16_t lo[3] = {UINT16_MAX, UINT16_MAX, UINT16_MAX}, hi[3] = {0, 0, 0};
+                void add(const uint16_t* l, const uint16_t* h) {
+                    for (int k = 0; k < 3; ++k) {
+                        lo[k] = std::min(lo[k], l[k]);
+                        hi[k] = std::max(hi[k], h[k]);
+                    }
+                }
+            };
+            auto areaMm = [&](const GridBox& b) {
+                const double dx = (double(b.hi[0]) - b.lo[0]) * grid.step[0], dy = (double(b.hi[1]) - b.lo[1]) * grid.step[1],
+                             dz = (double(b.hi[2]) - b.lo[2]) * grid.step[2];
+                return dx * dy + dy * dz + dz * dx;
+            };
+            const uint64_t lo = cmin[axis], span = uint64_t(cmax[axis]) - lo + 1;
+            auto binOf = [&](const Item& it) { return int((uint64_t(centre2(it)) - lo) * kSahBins / span); };
+            GridBox bins[kSahBins];
             uint32_t counts[kSahBins] = {};
-            const double scale = kSahBins / extent;
-            auto binOf = [&](const Item& it) { return std::clamp(int((grid.centre(it, axis) - lo) * scale), 0, kSahBins - 1); };
             for (uint32_t i = begin; i < end; ++i) {
                 const int b = binOf(items[i]);
-                grid.add(bins[b], items[i]);
+                bins[b].add(items[i].lo.data(), items[i].hi.data());
                 ++counts[b];
             }
             double right_area[kSahBins];
             uint32_t right_count[kSahBins];
-            Box acc;
+            GridBox acc;
             uint32_t cnt = 0;
             for (int b = kSahBins - 1; b > 0; --b) {
-                acc.add(bins[b]);
+                acc.add(bins[b].lo, bins[b].hi);
                 cnt += counts[b];
-                right_area[b] = cnt ? halfArea(acc) : 0.0;
+                right_area[b] = cnt ? areaMm(acc) : 0.0;
                 right_count[b] = cnt;
             }
-            acc = Box{};
+            acc = GridBox{};
             cnt = 0;
             double best_cost = kInf;
             int best_bin = -1;
             for (int b = 0; b < kSahBins - 1; ++b) {
-                acc.add(bins[b]);
+                acc.add(bins[b].lo, bins[b].hi);
                 cnt += counts[b];
                 if (cnt == 0 || right_count[b + 1] == 0) continue;
-                const double cost = halfArea(acc) * cnt + right_area[b + 1] * right_count[b + 1];
+                const double cost = areaMm(acc) * cnt + right_area[b + 1] * right_count[b + 1];
                 if (cost < best_cost) {
                     best_cost = cost;
                     best_bin = b;
@@ -252,7 +265,7 @@ struct SubtreeBuilder {
         // Deep, or no useful split: halve at the median.
         const uint32_t mid = begin + (end - begin) / 2;
         std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
-                         [&](const Item& a, const Item& b) { return grid.centre(a, axis) < grid.centre(b, axis); });
+                         [&](const Item& a, const Item& b) { return centre2(a) < centre2(b); });
         return mid;
     }
 
@@ -503,7 +516,14 @@ struct TriangleBvh::Impl {
         mesh_index.swap(order);
         for (size_t i = 0; i < n; ++i) slot_of[mesh_index[i]] = uint32_t(i);
 
-        computeBoxes(ranges);
+        if (halves_root) {
+            // The halves' boxes on two threads (each range is its own subtree).
+            std::thread other([&] { computeBoxes(ranges[1]); });
+            computeBoxes(ranges[0]);
+            other.join();
+        } else {
+            computeBoxes(ranges[0]);
+        }
         if (halves_root) {
             nodes[1] = nodes[3];
             nodes[2] = nodes[halves_root];
@@ -511,23 +531,22 @@ struct TriangleBvh::Impl {
         }
     }
 
-    // Boxes bottom-up (in each range children come after their parent): a
+    // Boxes bottom-up over one subtree's range (children come after their parent): a
     // leaf's from its exact corners, padded and rounded out to floats; an
     // inner node's the union of its children's. Needs the triangles in
     // leaf order.
-    void computeBoxes(const std::vector<std::pair<uint32_t, uint32_t>>& ranges) {
-        for (auto r = ranges.rbegin(); r != ranges.rend(); ++r)
-            for (uint32_t i = r->second; i-- > r->first;) {
-                Node& nd = nodes[i];
-                if (nd.count > 0) {
-                    Box b;
-                    for (uint32_t s = nd.first; s < nd.first + nd.count; ++s) b.add(triangleBox(s));
-                    b.pad();
-                    nd.box = FBox::around(b);
-                } else {
-                    nd.box = FBox::join(nodes[nd.first].box, nodes[nd.first + 1].box);
-                }
+    void computeBoxes(std::pair<uint32_t, uint32_t> range) {
+        for (uint32_t i = range.second; i-- > range.first;) {
+            Node& nd = nodes[i];
+            if (nd.count > 0) {
+                Box b;
+                for (uint32_t s = nd.first; s < nd.first + nd.count; ++s) b.add(triangleBox(s));
+                b.pad();
+                nd.box = FBox::around(b);
+            } else {
+                nd.box = FBox::join(nodes[nd.first].box, nodes[nd.first + 1].box);
             }
+        }
     }
 
     // Every pair of triangles of the leaves a and b (a == b: within the leaf)
