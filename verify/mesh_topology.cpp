@@ -46,6 +46,23 @@ Vec3 triangleCentroid(const Mesh& mesh, uint32_t t) {
     return c;
 }
 
+VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usable) {
+    const size_t nt = mesh.triangles.size();
+    auto used = [&](size_t t) { return !usable || (*usable)[t]; };
+    VertexCorners c;
+    c.start.assign(mesh.positions.size() + 1, 0);
+    for (size_t t = 0; t < nt; ++t)
+        if (used(t))
+            for (uint32_t v : mesh.triangles[t]) ++c.start[v + 1];
+    std::partial_sum(c.start.begin(), c.start.end(), c.start.begin());
+    c.list.resize(c.start.back());
+    std::vector<uint32_t> fill(c.start.begin(), c.start.end() - 1);
+    for (size_t t = 0; t < nt; ++t)
+        if (used(t))
+            for (uint32_t i = 0; i < 3; ++i) c.list[fill[mesh.triangles[t][i]]++] = 3 * uint32_t(t) + i;
+    return c;
+}
+
 MeshTopology analyzeTopology(const Mesh& mesh) {
     MeshTopology topo;
     const size_t nv = mesh.positions.size();
@@ -75,25 +92,13 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
     topo.unreferenced_vertices = size_t(std::count(referenced.begin(), referenced.end(), uint8_t(0)));
 
     // Every question about edges and fans is answered around one vertex at a
-    // time, from the triangles at that vertex (a counting sort of the
-    // corners by vertex, linear): the edges (v, w) are the other corners w of
-    // those triangles, each edge's uses are the triangles naming w, and the
-    // fans are those triangles joined across two-use edges. All of it reads
-    // a few dozen consecutive entries, where a half-edge table and a union-
-    // find over all corners read memory at random (and took 64 bytes a
-    // triangle more).
-    std::vector<uint32_t> corner_start(nv + 1, 0);
-    for (size_t t = 0; t < nt; ++t)
-        if (usable[t])
-            for (uint32_t v : mesh.triangles[t]) ++corner_start[v + 1];
-    std::partial_sum(corner_start.begin(), corner_start.end(), corner_start.begin());
-    std::vector<uint32_t> corner_list(corner_start.back());  // 3 * triangle + corner, by vertex
-    {
-        std::vector<uint32_t> fill(corner_start.begin(), corner_start.end() - 1);
-        for (size_t t = 0; t < nt; ++t)
-            if (usable[t])
-                for (uint32_t i = 0; i < 3; ++i) corner_list[fill[mesh.triangles[t][i]]++] = 3 * uint32_t(t) + i;
-    }
+    // time, from the triangles at that vertex (cornersByVertex): the edges
+    // (v, w) are the other corners w of those triangles, each edge's uses are
+    // the triangles naming w, and the fans are those triangles joined across
+    // two-use edges. All of it reads a few dozen consecutive entries, where a
+    // half-edge table and a union-find over all corners read memory at
+    // random (and took 64 bytes a triangle more).
+    const VertexCorners at = cornersByVertex(mesh, &usable);
 
     UnionFind faces(nt);
     struct Spoke {
@@ -109,11 +114,11 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
         return x;
     };
     for (size_t v = 0; v < nv; ++v) {
-        const uint32_t first = corner_start[v], count = corner_start[v + 1] - first;
+        const uint32_t first = at.start[v], count = at.start[v + 1] - first;
         if (count == 0) continue;
         spokes.clear();
         for (uint32_t k = 0; k < count; ++k) {
-            const uint32_t c = corner_list[first + k], t = c / 3, i = c % 3;
+            const uint32_t c = at.list[first + k], t = c / 3, i = c % 3;
             const auto& tri = mesh.triangles[t];
             spokes.push_back({tri[(i + 1) % 3], t, k, true});
             spokes.push_back({tri[(i + 2) % 3], t, k, false});

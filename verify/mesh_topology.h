@@ -83,4 +83,15 @@ Vec3 edgeMidpoint(const Mesh& mesh, const EdgeUse& edge);
 /// Centroid (mm) of triangle t.
 Vec3 triangleCentroid(const Mesh& mesh, uint32_t t);
 
+/// The triangles' corners grouped by vertex (a counting sort, linear; 4 bytes
+/// a corner): vertex v's corners are list[start[v]] .. list[start[v + 1] - 1],
+/// each 3 * triangle + its place in the triangle, by ascending triangle.
+/// Triangles whose `usable` entry is 0 are left out (all are used when
+/// `usable` is null); every index of a used triangle must be in range.
+struct VertexCorners {
+    std::vector<uint32_t> start;  ///< vertex count + 1 entries
+    std::vector<uint32_t> list;
+};
+VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usable = nullptr);
+
 }  // namespace tsf

@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <numeric>
+#include <optional>
 #include <thread>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -13,6 +13,7 @@
 #include "gen/util/union_find.h"
 #include "verify/mesh_topology.h"
 #include "verify/overhang.h"
+#include "verify/detail/flat_planes.h"
 #include "verify/detail/format.h"
 
 namespace tsf {
@@ -30,28 +31,6 @@ constexpr double kGapSearchNozzles = 10.0;
 
 double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Four points that are coplanar for a reason seen in their coordinates: all
-// in one axis plane (the tops and the bottom), or on two verticals (a wall
-// between two cells). Exact; false means "not known", not "not coplanar".
-// CGAL's filtered orientation decides a coplanar quadruple only after
-// falling back to exact arithmetic, about a microsecond each, and nearly
-// every edge of a terrain model joins two coplanar triangles.
-bool coplanarShortcut(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    if (a.z == b.z && a.z == c.z && a.z == d.z) return true;
-    if (a.x == b.x && a.x == c.x && a.x == d.x) return true;
-    if (a.y == b.y && a.y == c.y && a.y == d.y) return true;
-    // On at most two verticals: every point shares its (x, y) with a or with
-    // the first point that does not.
-    auto samePlan = [](const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y; };
-    const Vec3* other = nullptr;
-    for (const Vec3* p : {&b, &c, &d}) {
-        if (samePlan(*p, a)) continue;
-        if (!other) other = p;
-        else if (!samePlan(*p, *other)) return false;
-    }
-    return true;
 }
 
 // True when the triangle certainly has area: its normal is far longer than
@@ -75,30 +54,17 @@ void joinCoplanarNeighbours(const Mesh& mesh, UnionFind& regions) {
         const Vec3& p = mesh.positions[v];
         return K::Point_3(p.x, p.y, p.z);
     };
-    // Corners bucketed by their vertex (a counting sort, linear), 4 bytes
-    // each; a consistently oriented neighbour across a -> b runs b -> a: a
-    // corner at b whose next vertex is a, in b's bucket of a few entries.
-    const size_t nv = mesh.positions.size();
-    std::vector<uint32_t> start(nv + 1, 0);
-    for (const auto& tri : mesh.triangles)
-        for (uint32_t v : tri) ++start[v + 1];
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<uint32_t> corners(start.back());  // 3 * triangle + corner
-    {
-        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-        for (uint32_t t = 0; t < nt; ++t) {
-            const auto& tri = mesh.triangles[t];
-            for (uint32_t s = 0; s < 3; ++s) corners[fill[tri[s]]++] = 3 * t + s;
-        }
-    }
+    // A consistently oriented neighbour across a -> b runs b -> a: a corner
+    // at b whose next vertex is a, among b's few corners.
+    const VertexCorners at = cornersByVertex(mesh);
     auto nextVertex = [&](uint32_t corner) { return mesh.triangles[corner / 3][(corner % 3 + 1) % 3]; };
     for (uint32_t t = 0; t < nt; ++t) {
         const auto& tri = mesh.triangles[t];
         for (int s = 0; s < 3; ++s) {
             const uint32_t a = tri[s], b = tri[(s + 1) % 3], c = tri[(s + 2) % 3];
             uint32_t other_t = UINT32_MAX;  // the triangle with b -> a (on a manifold mesh, at most one)
-            for (uint32_t i = start[b]; i < start[b + 1]; ++i)
-                if (nextVertex(corners[i]) == a) other_t = std::min(other_t, corners[i] / 3);
+            for (uint32_t i = at.start[b]; i < at.start[b + 1]; ++i)
+                if (nextVertex(at.list[i]) == a) other_t = std::min(other_t, at.list[i] / 3);
             if (other_t == UINT32_MAX || other_t <= t) continue;  // each pair once
             const auto& other = mesh.triangles[other_t];
             uint32_t d = other[0];
@@ -107,8 +73,12 @@ void joinCoplanarNeighbours(const Mesh& mesh, UnionFind& regions) {
             // Coplanar, and on opposite sides of the shared edge (same facing).
             const Vec3 &qa = mesh.positions[a], &qb = mesh.positions[b], &qc = mesh.positions[c],
                        &qd = mesh.positions[d];
-            if (!coplanarShortcut(qa, qb, qc, qd) && CGAL::orientation(P(a), P(b), P(c), P(d)) != CGAL::COPLANAR)
-                continue;
+            // Nearly every edge of a terrain model joins two coplanar
+            // triangles in an axis or vertical plane: decided from
+            // coordinates (CGAL's filtered orientation decides a coplanar
+            // quadruple only after falling back to exact arithmetic).
+            const std::optional<bool> in_plane = detail::flat::inPlaneOf(qa, qb, qc, qd);
+            if (in_plane ? !*in_plane : CGAL::orientation(P(a), P(b), P(c), P(d)) != CGAL::COPLANAR) continue;
             const K::Point_3 pa = P(a), pb = P(b), pc = P(c), pd = P(d);
             if (!clearlyHasArea(qa, qb, qc) && CGAL::collinear(pa, pb, pc)) continue;
             if (!clearlyHasArea(qa, qb, qd) && CGAL::collinear(pa, pb, pd)) continue;
