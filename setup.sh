@@ -45,7 +45,7 @@ if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
 fi
 # The engine's npm package, pinned by package-lock.json, into the project
 # (never global; nothing is fetched when tsf runs).
-wasm=gen/scad/wasm
+wasm=runners/openscad/wasm
 if [ ! -f "$wasm/node_modules/.package-lock.json" ] || [ "$wasm/package-lock.json" -nt "$wasm/node_modules/.package-lock.json" ]; then
   (cd "$wasm" && npm ci --no-audit --no-fund --loglevel=error)
 fi

@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "gen/io/point_binning.h"
+#include "gen/readers/point_binning.h"
 
 namespace {
 

@@ -25,12 +25,12 @@
 #include <filesystem>
 #include <string>
 
-#include "gen/direct_mesher.h"
+#include "gen/mesh/direct_mesher.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "verify/render/engine_output_check.h"
+#include "runners/openscad/engine_output_check.h"
 #include "gen/scad/scad_emitter.h"
-#include "verify/render/wasm_engine.h"
-#include "gen/scene.h"
+#include "runners/openscad/wasm_engine.h"
+#include "gen/model/scene.h"
 #include "verify/verify_model.h"
 
 namespace {

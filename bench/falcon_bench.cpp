@@ -13,8 +13,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "gen/io/load_field.h"
-#include "gen/scene.h"
+#include "gen/readers/load_field.h"
+#include "gen/model/scene.h"
 #include "haptics/falcon/falcon_device.h"
 #include "haptics/falcon/falcon_kinematics.h"
 #include "haptics/falcon/falcon_packet.h"

@@ -14,7 +14,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "gen/mesh_io/exact_vertex_index.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/mesh_io/stl_reader.h"

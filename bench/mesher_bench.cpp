@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gen/direct_mesher.h"
-#include "gen/scene.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/scene.h"
 
 namespace {
 

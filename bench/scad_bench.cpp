@@ -28,11 +28,11 @@
 #include <filesystem>
 #include <string>
 
-#include "gen/direct_mesher.h"
+#include "gen/mesh/direct_mesher.h"
 #include "gen/mesh_io/mesh_reader.h"
-#include "verify/render/openscad_runner.h"
+#include "runners/openscad/openscad_runner.h"
 #include "gen/scad/scad_emitter.h"
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 #include "verify/mesh_topology.h"
 #include "verify/triangle_bvh.h"
 #include "verify/readback.h"

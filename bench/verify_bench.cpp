@@ -12,8 +12,8 @@
 #include <map>
 #include <memory>
 
-#include "gen/direct_mesher.h"
-#include "gen/scene.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/scene.h"
 #include "verify/agreement.h"
 #include "verify/printability.h"
 #include "verify/triangle_bvh.h"

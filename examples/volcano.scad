@@ -152,8 +152,8 @@ tsf_terrain_polyhedron(model);
 // Part of the tsf OpenSCAD library (use <tsf.scad> to get all of it).
 // Requires: nothing else.
 //
-// The rules here are the same as in tsf's C++ code (gen/hex_grid.h,
-// gen/scene.cpp); keep both in step, so that a model rendered by OpenSCAD is
+// The rules here are the same as in tsf's C++ code (gen/field/hex_grid.h,
+// gen/model/scene.cpp); keep both in step, so that a model rendered by OpenSCAD is
 // the same solid as the one tsf writes directly.
 //
 // Frame: x east, y north, z up, millimetres. The grid's bounding box starts
@@ -449,7 +449,7 @@ function _tsf_centre_ij(col, row, rows) = [2 * col + row % 2 + 1, 3 * (rows - 1 
 function _tsf_is_finite(v) = is_num(v) && abs(v) < 1e308;
 function _tsf_is_count(v) = is_num(v) && v >= 0 && v == floor(v) && v < 1e15;
 
-// ValueMapping::heightMm of tsf (gen/scene.cpp), without argument checks.
+// ValueMapping::heightMm of tsf (gen/model/scene.cpp), without argument checks.
 // OpenSCAD's log(x) is ln(x) / ln(10); see docs/openscad.md on the last bit.
 function _tsf_height_mm(v, transfer, baseline, value_max, h_max) =
     !is_num(v) ? 0

@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 #include "haptics/field_mapping.h"
 #include "haptics/force_log.h"
 #include "haptics/printed_relief.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf::haptics {
 

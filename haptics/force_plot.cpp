@@ -9,7 +9,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/util/rgb_image.h"
 #include "haptics/force_model.h"
 #include "haptics/height_sampling.h"

@@ -10,7 +10,7 @@
 //   origin: the centre of the device's workspace (a driver subtracts its
 //   mechanical workspace origin before reporting positions).
 //
-// Field frame (the raster, see gen/raster.h and haptics/height_grid.h):
+// Field frame (the raster, see gen/field/raster.h and haptics/height_grid.h):
 //   u  east  = increasing raster column   -> device +x
 //   v  north = decreasing raster row      -> device -z (away from the user)
 //   w  up    = increasing field value     -> device +y

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf::haptics {
 

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gen/raster.h"
+#include "gen/field/raster.h"
 
 namespace tsf::haptics {
 

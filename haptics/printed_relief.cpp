@@ -20,7 +20,7 @@ namespace {
 
 // Height (mm) of kept cell k's printed top at (dx, dy) mm from its centre,
 // relative to the centre: a tilted top's plane, a structural cell's cone
-// rising from its lowered centre to the hexagon's edge (gen/top_shapes.h).
+// rising from its lowered centre to the hexagon's edge (gen/model/features/top_shapes.h).
 double shapedTopOffsetMm(const Scene& scene, size_t k, double dx, double dy) {
     const TopShapes& t = scene.shapes;
     if (t.empty()) return 0.0;

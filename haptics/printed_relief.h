@@ -1,6 +1,6 @@
 // The relief a Scene prints, as the HeightGrid the haptic renderer samples,
 // so that `tsf feel` and `tsf gen` given the same input and options make
-// the same relief: one value -> height rule (gen/scene.h: baseline, value
+// the same relief: one value -> height rule (gen/model/scene.h: baseline, value
 // max, transfer, snap), one set of cells (culling), one footprint.
 //
 // Sampling: square samples of side pitch / samples_per_pitch over the
@@ -12,8 +12,8 @@
 // floor, outside every kept cell (culled cells, the bounding box's corners)
 // and for no-data cells, as printed. The felt surface is thus the pillars'
 // tops, their edges rounded only by the renderer's interpolation. A tilted
-// top (gen/tilt.h) is sampled on its plane and a structural cell's dimple as
-// its cone (gen/top_shapes.h), so they are felt as printed.
+// top (gen/model/features/tilt.h) is sampled on its plane and a structural cell's dimple as
+// its cone (gen/model/features/top_shapes.h), so they are felt as printed.
 //
 // With kReliefSamplesPerPitch samples per pitch, every tap the bicubic or
 // bilinear sampler takes around a cell's centre lies inside that cell (a
@@ -27,7 +27,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 #include "haptics/field_mapping.h"
 #include "haptics/height_grid.h"
 #include "haptics/sim_device.h"
@@ -64,7 +64,7 @@ std::vector<SweepLine> reliefRowLines(const Scene& scene, const ReliefInfo& info
 /// The printed height of kept cell k as a fraction of max_height_mm (the
 /// same number printedRelief puts under the cell): its top at its centre
 /// above the floor, so a cell without data (a pit) is below 0 and a cell
-/// under the orientation triangle is raised by it (gen/marks.h).
+/// under the orientation triangle is raised by it (gen/model/features/marks.h).
 double printedHeightFraction(const Scene& scene, size_t k);
 
 }  // namespace tsf::haptics

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/util/file_bytes.h"
 
 namespace tsf::haptics {

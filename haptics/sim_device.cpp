@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf::haptics {
 namespace {

@@ -4,8 +4,8 @@
 // Part of the tsf OpenSCAD library (use <tsf.scad> to get all of it).
 // Requires: nothing else.
 //
-// The rules here are the same as in tsf's C++ code (gen/hex_grid.h,
-// gen/scene.cpp); keep both in step, so that a model rendered by OpenSCAD is
+// The rules here are the same as in tsf's C++ code (gen/field/hex_grid.h,
+// gen/model/scene.cpp); keep both in step, so that a model rendered by OpenSCAD is
 // the same solid as the one tsf writes directly.
 //
 // Frame: x east, y north, z up, millimetres. The grid's bounding box starts
@@ -313,7 +313,7 @@ function _tsf_centre_ij(col, row, rows) = [2 * col + row % 2 + 1, 3 * (rows - 1 
 function _tsf_is_finite(v) = is_num(v) && abs(v) <= 1.7976931348623157e308;
 function _tsf_is_count(v) = is_num(v) && v >= 0 && v == floor(v) && v < 1e15;
 
-// ValueMapping::heightMm of tsf (gen/scene.cpp), without argument checks.
+// ValueMapping::heightMm of tsf (gen/model/scene.cpp), without argument checks.
 // OpenSCAD's log(x) is ln(x) / ln(10); see docs/openscad.md on the last bit.
 function _tsf_height_mm(v, transfer, baseline, value_max, h_max) =
     !is_num(v) ? 0
@@ -323,7 +323,7 @@ function _tsf_height_mm(v, transfer, baseline, value_max, h_max) =
     : transfer == "log" ? h_max * log(1 + 99 * t) / 2
     : h_max * t;
 
-// spanFraction of tsf (gen/scene.cpp): (v - lo) / (hi - lo), on the halves
+// spanFraction of tsf (gen/model/scene.cpp): (v - lo) / (hi - lo), on the halves
 // when hi - lo is beyond the largest double (1e308 and -1e308).
 function _tsf_span_fraction(v, lo, hi) =
     let(span = hi - lo)

@@ -4,7 +4,7 @@
 //
 // Part of the tsf OpenSCAD library (use <tsf.scad> to get all of it).
 //
-// tsf chooses the step and places the staircase (gen/scale.h, docs/model.md);
+// tsf chooses the step and places the staircase (gen/model/features/scale.h, docs/model.md);
 // the generated file carries it as data,
 //   tactile_scale = [[x0, xs, x1], [y0, y1], foot_top, [[y_south, y_north, top], ...],
 //                    [[[x, y] x 4], ...]]

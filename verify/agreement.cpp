@@ -11,7 +11,7 @@
 #include <memory>
 #include <unordered_set>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "verify/triangle_bvh.h"
 #include "verify/detail/format.h"
 #include "verify/surface_chains.h"

@@ -53,7 +53,7 @@
 #include <string>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "verify/report.h"
 
 namespace tsf {

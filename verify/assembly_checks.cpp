@@ -12,7 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 
-#include "gen/cgal_surface_mesh.h"
+#include "gen/geometry/cgal_surface_mesh.h"
 
 namespace tsf {
 namespace {

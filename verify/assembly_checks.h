@@ -15,7 +15,7 @@
 
 #include <vector>
 
-#include "gen/mesh_parts.h"
+#include "gen/geometry/mesh_parts.h"
 #include "verify/report.h"
 
 namespace tsf {

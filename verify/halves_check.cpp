@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gen/halves.h"
-#include "gen/halves_mesh.h"
+#include "gen/model/features/halves.h"
+#include "gen/mesh/halves_mesh.h"
 #include "verify/detail/format.h"
 #include "verify/triangle_bvh.h"
 #include "verify/triangle_samples.h"

@@ -1,4 +1,4 @@
-// The halves of a cut mirrored model (gen/halves.h) checked as a pair.
+// The halves of a cut mirrored model (gen/model/features/halves.h) checked as a pair.
 //
 // Each half is checked alone by verifyModel (closed, manifold, outward, its
 // heights read back against halfScene, no overhang as it prints). This file
@@ -23,8 +23,8 @@
 
 #include <vector>
 
-#include "gen/mesh.h"
-#include "gen/scene.h"
+#include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 #include "verify/report.h"
 
 namespace tsf {
@@ -47,7 +47,7 @@ struct HalvesCheckResult {
     bool passed() const;
 };
 
-/// Checks the printed halves (gen/halves_mesh.h meshHalf) of `scene` (with
+/// Checks the printed halves (gen/mesh/halves_mesh.h meshHalf) of `scene` (with
 /// halves) against `whole`, the whole model's mesh (meshScene(scene)).
 HalvesCheckResult checkHalves(const Scene& scene, const Mesh& whole, const Mesh& upper, const Mesh& lower);
 

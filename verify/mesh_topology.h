@@ -29,7 +29,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf {
 

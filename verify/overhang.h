@@ -12,7 +12,7 @@
 
 #include <cstddef>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf {
 

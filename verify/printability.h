@@ -28,7 +28,7 @@
 #include <optional>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "verify/triangle_bvh.h"
 #include "verify/report.h"
 

@@ -69,7 +69,7 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
         CellReadback c;
         c.col = scene.col[k];
         c.row = scene.row[k];
-        // The centre, or where a pillar the notch cuts is read (gen/marks.h).
+        // The centre, or where a pillar the notch cuts is read (gen/model/features/marks.h).
         const Vec3 centre = scene.point(readPoint(scene, k), 0);
         c.x_mm = centre.x;
         c.y_mm = centre.y;
@@ -78,7 +78,7 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
         // height and carries no value.
         const int64_t raise = top ? markRaiseAtCentre(scene, k) : 0;
         // A tilted top passes through its value at the centre; a structural
-        // cell's dimple is lowest there and carries no value (gen/top_shapes.h).
+        // cell's dimple is lowest there and carries no value (gen/model/features/top_shapes.h).
         c.expected_mm = scene.zMm(top                       ? centreTop(scene, k) + raise
                                   : isHoleCell(scene, k) ? scene.halves->hole_apex_units  // a half's pin hole
                                                          : centreBottom(scene, k));
@@ -220,14 +220,14 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
                 ++f.outside_cells_checked;
                 const Vec3 centre = scene.point(hexCentre(scene.grid, col, row), 0);
                 const auto hit = caster.firstHit({centre.x, centre.y, z_above}, {0, 0, -1});
-                // Under the braille legend's plate (gen/legend_scene.h) a culled cell
+                // Under the braille legend's plate (gen/model/features/legend_scene.h) a culled cell
                 // meets the plate's top and nothing above it.
                 const bool under_plate = scene.legend && centre.y >= scene.legend->plate_south_mm &&
                                          centre.x <= scene.legend->plate_east_mm;
                 if (under_plate && hit &&
                     std::fabs(hit->point_mm.z - scene.zMm(scene.legend->plate_top_units)) <= scene.z_snap_mm / 2)
                     continue;
-                // On the tactile scale's footprint (gen/scale.h) it meets the scale's top there.
+                // On the tactile scale's footprint (gen/model/features/scale.h) it meets the scale's top there.
                 const std::optional<int64_t> scale_top =
                     scene.scale ? scaleTopAt(*scene.scale, centre.x, centre.y) : std::nullopt;
                 if (scale_top && hit && std::fabs(hit->point_mm.z - scene.zMm(*scale_top)) <= scene.z_snap_mm / 2)

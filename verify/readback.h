@@ -24,8 +24,8 @@
 
 #include <vector>
 
-#include "gen/mesh.h"
-#include "gen/scene.h"
+#include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 #include "verify/triangle_bvh.h"
 #include "verify/report.h"
 

@@ -22,7 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf {
 

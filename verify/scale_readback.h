@@ -1,7 +1,7 @@
 // The tactile scale read back: does each tread stand at the height of its
 // value, and the foot at the floor?
 //
-// For each step of the Scene's scale (gen/scale.h) a vertical ray is cast
+// For each step of the Scene's scale (gen/model/features/scale.h) a vertical ray is cast
 // down at the middle of its tread, and one at the middle of the foot's floor
 // strip; the first surface met is compared with the Scene's z (the pillars'
 // own snapped height of the step's value above the floor). Tolerance as for
@@ -11,8 +11,8 @@
 
 #include <vector>
 
-#include "gen/mesh.h"
-#include "gen/scene.h"
+#include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 #include "verify/report.h"
 #include "verify/triangle_bvh.h"
 

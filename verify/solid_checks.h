@@ -24,7 +24,7 @@
 #include <memory>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "verify/report.h"
 #include "verify/triangle_bvh.h"
 

@@ -50,7 +50,7 @@
 #include <string>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf {
 

@@ -1,5 +1,5 @@
 // Tilts read back: does each tilted top (and mirrored bottom) lean as the
-// Scene says (gen/tilt.h)?
+// Scene says (gen/model/features/tilt.h)?
 //
 // For every kept cell whose Scene slope is not level, vertical rays are cast
 // at its centre and halfway along each of the six spokes from the centre to
@@ -20,8 +20,8 @@
 
 #include <vector>
 
-#include "gen/mesh.h"
-#include "gen/scene.h"
+#include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 #include "verify/triangle_bvh.h"
 #include "verify/report.h"
 

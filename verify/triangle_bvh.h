@@ -47,7 +47,7 @@
 #include <memory>
 #include <optional>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf {
 

@@ -30,7 +30,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf {
 

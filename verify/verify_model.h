@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "gen/mesh.h"
-#include "gen/scene.h"
+#include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 #include "verify/agreement.h"
 #include "verify/printability.h"
 #include "verify/report.h"

@@ -1,5 +1,5 @@
 // verifyParts: the verifier for a model written as several parts (a
-// multi-part 3MF, gen/mesh_parts.h).
+// multi-part 3MF, gen/geometry/mesh_parts.h).
 //
 // Each part alone gets verifyModel's solid checks (no Scene, no reference):
 // closed, manifold, outward, no self-intersections. The first part is the
@@ -22,8 +22,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gen/mesh_parts.h"
-#include "gen/scene.h"
+#include "gen/geometry/mesh_parts.h"
+#include "gen/model/scene.h"
 #include "verify/verify_model.h"
 
 namespace tsf {

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf::mesh_io {
 

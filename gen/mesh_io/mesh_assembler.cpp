@@ -3,7 +3,7 @@
 #include <cassert>
 #include <limits>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf::mesh_io {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "gen/mesh_io/exact_vertex_index.h"
 #include "gen/mesh_io/mesh_read_report.h"
 

@@ -1,6 +1,6 @@
 #include "gen/mesh_io/mesh_reader.h"
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/obj_reader.h"
 #include "gen/mesh_io/off_reader.h"

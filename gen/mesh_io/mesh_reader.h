@@ -27,8 +27,8 @@
 
 #include <vector>
 
-#include "gen/mesh.h"
-#include "gen/mesh_parts.h"
+#include "gen/geometry/mesh.h"
+#include "gen/geometry/mesh_parts.h"
 #include "gen/mesh_io/mesh_read_report.h"
 
 namespace tsf {

@@ -4,7 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf::mesh_io {
 namespace {

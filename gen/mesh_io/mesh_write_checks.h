@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf::mesh_io {
 

@@ -3,7 +3,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/obj_writer.h"
 #include "gen/mesh_io/off_writer.h"
 #include "gen/mesh_io/stl_writer.h"

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "gen/mesh_io/mesh_write_options.h"
 
 namespace tsf {

@@ -4,7 +4,7 @@
 #include <limits>
 #include <vector>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_assembler.h"
 #include "gen/mesh_io/mesh_tokens.h"
 #include "gen/util/file_bytes.h"

@@ -10,7 +10,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "gen/mesh_io/mesh_write_options.h"
 
 namespace tsf {

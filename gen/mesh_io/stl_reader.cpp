@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_assembler.h"
 #include "gen/mesh_io/mesh_tokens.h"
 #include "gen/util/file_bytes.h"

@@ -20,7 +20,7 @@
 #include <string>
 #include <string_view>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "gen/mesh_io/mesh_read_report.h"
 
 namespace tsf {

@@ -10,7 +10,7 @@
 #include <ostream>
 #include <vector>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
 #include "gen/mesh_io/mesh_write_checks.h"
 #include "gen/mesh_io/number_text.h"

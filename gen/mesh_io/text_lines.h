@@ -6,7 +6,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf::mesh_io {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "Model/COM/NMR_DLLInterfaces.h"
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/lib3mf_handle.h"
 #include "gen/mesh_io/mesh_assembler.h"
 #include "gen/mesh_io/three_mf_volumes.h"

@@ -22,8 +22,8 @@
 
 #include <vector>
 
-#include "gen/mesh.h"
-#include "gen/mesh_parts.h"
+#include "gen/geometry/mesh.h"
+#include "gen/geometry/mesh_parts.h"
 #include "gen/mesh_io/mesh_read_report.h"
 
 namespace tsf {
@@ -39,7 +39,7 @@ Mesh parse3mf(std::string_view bytes, const std::string& name, MeshReadReport* r
 /// after its object ("object <id>" when it has no name), and an object whose
 /// volumes Metadata/Slic3r_PE_model.config names (three_mf_volumes.h, as
 /// write3mfParts writes it) split into those volumes, each with its own
-/// vertices, so parts that touch stay separate bodies (gen/mesh_parts.h).
+/// vertices, so parts that touch stay separate bodies (gen/geometry/mesh_parts.h).
 /// The report sums the parts' counts; a part's own notes are prefixed with
 /// its name. Errors as read3mf.
 std::vector<MeshPart> read3mfParts(const std::string& path, MeshReadReport* report = nullptr);

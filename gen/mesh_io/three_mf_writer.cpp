@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "Model/COM/NMR_DLLInterfaces.h"
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
 #include "gen/mesh_io/lib3mf_handle.h"
 #include "gen/mesh_io/mesh_write_checks.h"

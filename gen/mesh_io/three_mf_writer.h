@@ -22,8 +22,8 @@
 
 #include <vector>
 
-#include "gen/mesh.h"
-#include "gen/mesh_parts.h"
+#include "gen/geometry/mesh.h"
+#include "gen/geometry/mesh_parts.h"
 #include "gen/mesh_io/mesh_write_options.h"
 
 namespace tsf {
@@ -35,7 +35,7 @@ namespace tsf {
 /// std::runtime_error carrying lib3mf's message if lib3mf fails.
 void write3mf(const Mesh& mesh, const std::string& path, const MeshWriteOptions& opts = {});
 
-/// Writes parts (gen/mesh_parts.h) to path atomically as ONE mesh object
+/// Writes parts (gen/geometry/mesh_parts.h) to path atomically as ONE mesh object
 /// (named opts.title) whose triangles are the parts' in the order given,
 /// each part's vertices after the previous part's (nothing merged), one
 /// build item, and the package part Metadata/Slic3r_PE_model.config

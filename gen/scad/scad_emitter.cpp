@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
 #include "gen/scad/scad_library.h"
 
@@ -77,7 +77,7 @@ std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks
     return parts;
 }
 
-// True when some top is tilted or dimpled (gen/top_shapes.h).
+// True when some top is tilted or dimpled (gen/model/features/top_shapes.h).
 bool hasShapedTops(const Scene& s) {
     return std::find(s.shapes.shaped.begin(), s.shapes.shaped.end(), uint8_t(1)) != s.shapes.shaped.end();
 }

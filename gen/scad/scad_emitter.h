@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 
 namespace tsf {
 
@@ -49,7 +49,7 @@ struct ScadOptions {
 /// Name of the folder the library is copied to when it is not inlined.
 inline constexpr const char* kScadLibraryCopyDir = "tsf_lib";
 
-/// Text of the .scad file for `scene`. A Scene with tilted or dimpled tops (gen/top_shapes.h)
+/// Text of the .scad file for `scene`. A Scene with tilted or dimpled tops (gen/model/features/top_shapes.h)
 /// is written with its resolved tops (`tops`, scad_lib/tsf_tilt.scad) and
 /// drawn as one polyhedron whatever the strategy. file_name (e.g. "model.scad") is used in
 /// the header's render commands and to name the parameter-set file. Reads the

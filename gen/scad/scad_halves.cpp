@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "gen/halves.h"
+#include "gen/model/features/halves.h"
 #include "gen/mesh_io/number_text.h"
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 
 namespace tsf {
 namespace {

@@ -1,5 +1,5 @@
 // The support-free halves in a generated OpenSCAD file: the cut and the pin
-// holes tsf placed (gen/halves.h) as data for scad_lib/tsf_halves.scad, so
+// holes tsf placed (gen/model/features/halves.h) as data for scad_lib/tsf_halves.scad, so
 // both engines cut the very holes of tsf's own mesh.
 #pragma once
 

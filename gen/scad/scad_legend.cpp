@@ -1,8 +1,8 @@
 #include "gen/scad/scad_legend.h"
 
-#include "gen/legend_scene.h"
+#include "gen/mesh/legend_join.h"
 #include "gen/mesh_io/number_text.h"
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 
 namespace tsf {
 

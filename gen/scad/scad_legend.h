@@ -1,5 +1,5 @@
 // The braille legend in a generated OpenSCAD file: the plate tsf meshed
-// (gen/legend_scene.h) as data for scad_lib/tsf_legend.scad, so both engines
+// (gen/model/features/legend_scene.h) as data for scad_lib/tsf_legend.scad, so both engines
 // draw the very dots of tsf's own mesh.
 #pragma once
 

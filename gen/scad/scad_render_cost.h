@@ -11,7 +11,7 @@
 #include <string>
 
 #include "gen/scad/scad_emitter.h"
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 
 namespace tsf {
 

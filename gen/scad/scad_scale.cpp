@@ -1,8 +1,8 @@
 #include "gen/scad/scad_scale.h"
 
-#include "gen/hex_grid.h"
+#include "gen/field/hex_grid.h"
 #include "gen/mesh_io/number_text.h"
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 
 namespace tsf {
 namespace {

@@ -1,5 +1,5 @@
 // The tactile scale in a generated OpenSCAD file: the staircase tsf placed
-// (gen/scale.h) as data for scad_lib/tsf_scale.scad.
+// (gen/model/features/scale.h) as data for scad_lib/tsf_scale.scad.
 #pragma once
 
 #include <string>

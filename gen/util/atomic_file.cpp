@@ -12,7 +12,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/util/temp_files.h"
 
 namespace tsf {

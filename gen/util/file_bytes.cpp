@@ -6,7 +6,7 @@
 #include <memory>
 #include <sys/stat.h>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf {
 namespace {

@@ -1,4 +1,4 @@
-// readFileBytes: a whole file in memory, for every reader (fields in gen/io,
+// readFileBytes: a whole file in memory, for every reader (fields in gen/readers,
 // meshes in gen/mesh_io, the scene sidecar).
 #pragma once
 

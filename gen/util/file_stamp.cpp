@@ -5,7 +5,7 @@
 #include <cstring>
 #include <vector>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf {
 

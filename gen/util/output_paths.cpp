@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
 
 namespace tsf {

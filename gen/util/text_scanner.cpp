@@ -1,6 +1,6 @@
 #include "gen/util/text_scanner.h"
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf {
 namespace {

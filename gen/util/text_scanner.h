@@ -1,9 +1,9 @@
 // TextScanner: whitespace-separated tokens of a text with the line and column
 // where each starts, for every plain-text reader: PGM P2 and its header and
-// ESRI ASCII grids (gen/io), ASCII STL, OFF and OBJ (gen/mesh_io).
+// ESRI ASCII grids (gen/readers), ASCII STL, OFF and OBJ (gen/mesh_io).
 //
 // The position convention, the same for every file tsf reads and every
-// message it prints (the CSV tokenizer in gen/io counts the same way):
+// message it prints (the CSV tokenizer in gen/readers counts the same way):
 //   - lines and columns are 1-based; column 0 means "the whole line";
 //   - "\r\n", "\n" and a lone "\r" each end one line;
 //   - a column counts characters (UTF-8 code points), not bytes, so it is

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/util/file_bytes.h"
 #include "haptics/falcon/falcon_packet.h"
 #include "haptics/haptic_device.h"

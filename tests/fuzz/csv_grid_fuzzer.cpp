@@ -1,5 +1,5 @@
 // libFuzzer target: Grid CSV (delimiter, decimal mark, header, index column detected).
-#include "gen/io/csv_grid_reader.h"
+#include "gen/readers/csv_grid_reader.h"
 #include "tests/fuzz/fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,5 +1,5 @@
 // libFuzzer target: ESRI ASCII grid.
-#include "gen/io/esri_ascii_reader.h"
+#include "gen/readers/esri_ascii_reader.h"
 #include "tests/fuzz/fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

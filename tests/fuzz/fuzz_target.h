@@ -14,9 +14,9 @@
 #include <string>
 #include <string_view>
 
-#include "gen/error.h"
-#include "gen/mesh.h"
-#include "gen/raster.h"
+#include "gen/util/error.h"
+#include "gen/geometry/mesh.h"
+#include "gen/field/raster.h"
 
 namespace tsf::fuzz {
 

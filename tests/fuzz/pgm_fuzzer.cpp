@@ -1,5 +1,5 @@
 // libFuzzer target: PGM, P2 and P5, 8 and 16 bit.
-#include "gen/io/pgm_reader.h"
+#include "gen/readers/pgm_reader.h"
 #include "tests/fuzz/fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,5 +1,5 @@
 // libFuzzer target: PNG through libpng.
-#include "gen/io/png_reader.h"
+#include "gen/readers/png_reader.h"
 #include "tests/fuzz/fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,6 +1,6 @@
 // libFuzzer target: point CSV (tsf gen --points), by header names and by
 // column indices.
-#include "gen/io/point_reader.h"
+#include "gen/readers/point_reader.h"
 #include "tests/fuzz/fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,5 +1,5 @@
 // libFuzzer target: The scene sidecar (JSON).
-#include "gen/scene_json.h"
+#include "gen/model/scene_json.h"
 #include "tests/fuzz/fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "gen/braille.h"
-#include "gen/legend.h"
+#include "gen/model/features/braille.h"
+#include "gen/model/features/legend.h"
 #include "tests/support/input_error.h"
 
 namespace tsf {

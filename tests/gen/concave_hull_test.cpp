@@ -2,9 +2,9 @@
 // value left out, one piece, one rim; checked on the mesh by the verifier.
 #include <gtest/gtest.h>
 
-#include "gen/concave_hull.h"
-#include "gen/direct_mesher.h"
-#include "gen/scene.h"
+#include "gen/model/concave_hull.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/mesh_invariants.h"
 #include "verify/verify_model.h"

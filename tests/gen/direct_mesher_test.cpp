@@ -7,8 +7,8 @@
 #include <set>
 #include <tuple>
 
-#include "gen/direct_mesher.h"
-#include "gen/scene.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/mesh_invariants.h"
 

@@ -1,4 +1,4 @@
-// Support-free halves of a mirrored model (gen/halves.h, gen/halves_mesh.h):
+// Support-free halves of a mirrored model (gen/model/features/halves.h, gen/mesh/halves_mesh.h):
 // the pin layout is scalene and clear of the edge and the marks, the cut
 // lies in a slab every pillar crosses, each half is a closed solid that
 // prints without overhang, and the pieces hold the material they should.
@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "gen/direct_mesher.h"
-#include "gen/halves.h"
-#include "gen/halves_mesh.h"
-#include "gen/scene.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/features/halves.h"
+#include "gen/mesh/halves_mesh.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/input_error.h"
 #include "tests/support/mesh_invariants.h"

@@ -4,8 +4,8 @@
 #include <map>
 #include <set>
 
-#include "gen/convex_hull.h"
-#include "gen/hex_grid.h"
+#include "gen/model/convex_hull.h"
+#include "gen/field/hex_grid.h"
 
 namespace tsf {
 namespace {

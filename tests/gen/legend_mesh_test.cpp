@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "gen/legend_mesh.h"
+#include "gen/mesh/legend_mesh.h"
 #include "tests/support/mesh_invariants.h"
 #include "verify/verify_model.h"
 

@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "gen/direct_mesher.h"
-#include "gen/error.h"
-#include "gen/marks.h"
-#include "gen/scene.h"
-#include "gen/scene_json.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/util/error.h"
+#include "gen/model/features/marks.h"
+#include "gen/model/scene.h"
+#include "gen/model/scene_json.h"
 #include "tests/support/fields.h"
 #include "tests/support/mesh_invariants.h"
 #include "verify/verify_model.h"

@@ -1,13 +1,13 @@
 // drawMeshPicture: the preview shows the model, framed to fill the picture,
 // and a mirrored model's underside differs from its top.
-#include "gen/mesh_picture.h"
+#include "gen/mesh/mesh_picture.h"
 
 #include <gtest/gtest.h>
 
 #include <set>
 
-#include "gen/direct_mesher.h"
-#include "gen/scene.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 
 namespace tsf {

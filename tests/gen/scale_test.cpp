@@ -1,4 +1,4 @@
-// The tactile scale (gen/scale.h): the step tsf chooses, the levels and their
+// The tactile scale (gen/model/features/scale.h): the step tsf chooses, the levels and their
 // heights (worked out here by hand from the value -> height rule), where the
 // staircase stands, and the joined mesh: one closed solid whose volume is the
 // pillars' plus the scale's boxes, computed without the mesher.
@@ -8,12 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gen/direct_mesher.h"
-#include "gen/error.h"
-#include "gen/hex_grid.h"
-#include "gen/scale.h"
-#include "gen/scene.h"
-#include "gen/scene_json.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/util/error.h"
+#include "gen/field/hex_grid.h"
+#include "gen/model/features/scale.h"
+#include "gen/model/scene.h"
+#include "gen/model/scene_json.h"
 #include "tests/support/fields.h"
 #include "tests/support/input_error.h"
 #include "tests/support/mesh_invariants.h"

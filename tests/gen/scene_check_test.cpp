@@ -1,13 +1,13 @@
 // A Scene that breaks the mesher's invariants is a typed error (InputError)
 // from meshScene, never an assertion: such a Scene can come from a library
 // user or an edited scene sidecar.
-#include "gen/scene_check.h"
+#include "gen/model/scene_check.h"
 
 #include <gtest/gtest.h>
 
-#include "gen/direct_mesher.h"
-#include "gen/error.h"
-#include "gen/scene.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/util/error.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/input_error.h"
 

@@ -3,8 +3,8 @@
 // volumes add up to the one-solid model's.
 #include <gtest/gtest.h>
 
-#include "gen/direct_mesher.h"
-#include "gen/scene_parts.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/mesh/scene_parts.h"
 #include "tests/support/fields.h"
 #include "tests/support/mesh_invariants.h"
 #include "verify/verify_parts.h"

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "gen/error.h"
-#include "gen/scene.h"
+#include "gen/util/error.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 
 namespace tsf {

@@ -1,4 +1,4 @@
-// Tilted tops and structural dimples (gen/tilt.h, gen/top_shapes.h): the
+// Tilted tops and structural dimples (gen/model/features/tilt.h, gen/model/features/top_shapes.h): the
 // regression planes, the clamp, crossing tops, mirrored bottoms read back
 // from below, and every mesh verified (closed, 2-manifold, outward, no
 // self-intersection, heights and tilts read back).
@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gen/bin_regression.h"
-#include "gen/direct_mesher.h"
-#include "gen/error.h"
-#include "gen/scene.h"
-#include "gen/scene_json.h"
+#include "gen/field/bin_regression.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/util/error.h"
+#include "gen/model/scene.h"
+#include "gen/model/scene_json.h"
 #include "tests/support/fields.h"
 #include "tests/support/files.h"
 #include "tests/support/mesh_invariants.h"

@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "haptics/field_mapping.h"
 #include "haptics/replay_device.h"
 #include "haptics/sim_device.h"

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "haptics/falcon/falcon_firmware.h"
 #include "haptics/falcon/ftdi_link.h"
 #include "haptics/haptic_device.h"

@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "haptics_fixtures.h"
 
 using namespace tsf::haptics;

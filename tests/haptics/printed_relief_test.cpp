@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 #include "haptics/field_mapping.h"
 #include "haptics/force_model.h"
 #include "haptics/height_grid.h"

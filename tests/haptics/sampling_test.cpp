@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "haptics/height_grid.h"
 #include "haptics/height_sampling.h"
 

@@ -1,15 +1,19 @@
 // The one-way layering of docs/design.md, checked on the source tree: every
 // #include goes to the same layer or an earlier one, and only the
-// application (gen/app/) sees CLI11 or the application's own headers.
+// application (app/) sees CLI11 or the application's own headers.
 //
-//   base      gen/util/, gen/error.h
-//   gen       the rest of gen/: field readers, lattice, Scene, mesher, mesh
-//             files, OpenSCAD emitter
-//   verify    verify/ except verify/render/
-//   render    verify/render/: OpenSCAD engines, their output judged by the verifier
-//   slicer    verify/slicer/: PrusaSlicer run on a model (uses render's process runner)
-//   haptics   haptics/ (beside verify and render, after gen)
-//   app       gen/app/: main, exit codes, every subcommand
+//   base      gen/util/: errors, files, text scanning
+//   field     gen/field/: rasters, the hex lattice and the values on it
+//   readers   gen/readers/: every input format -> Raster or HexField
+//   geometry  gen/geometry/: the Mesh type and exact-geometry helpers
+//   model     gen/model/: the Scene, its features, its sidecar
+//   mesh      gen/mesh/: the direct mesher, parts, halves, the preview picture
+//   mesh_io   gen/mesh_io/: STL, OFF, OBJ, 3MF read and written
+//   scad      gen/scad/: the OpenSCAD emitter
+//   verify    verify/: the self-check of a mesh, and against a Scene
+//   runners   runners/: external tools (OpenSCAD engines, PrusaSlicer)
+//   haptics   haptics/ (beside verify and runners, after gen)
+//   app       app/: main, exit codes, every subcommand
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -25,17 +29,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-enum class Layer { Base, Gen, Verify, Render, Slicer, Haptics, App, Tests, Unknown };
+enum class Layer { Base, Field, Readers, Geometry, Model, Mesh, MeshIo, Scad, Verify, Runners, Haptics, App, Tests, Unknown };
 
 const char* name(Layer l) {
     switch (l) {
-        case Layer::Base: return "base (gen/util, gen/error.h)";
-        case Layer::Gen: return "gen";
+        case Layer::Base: return "base (gen/util)";
+        case Layer::Field: return "field (gen/field)";
+        case Layer::Readers: return "readers (gen/readers)";
+        case Layer::Geometry: return "geometry (gen/geometry)";
+        case Layer::Model: return "model (gen/model)";
+        case Layer::Mesh: return "mesh (gen/mesh)";
+        case Layer::MeshIo: return "mesh files (gen/mesh_io)";
+        case Layer::Scad: return "scad (gen/scad)";
         case Layer::Verify: return "verify";
-        case Layer::Render: return "render (verify/render)";
-        case Layer::Slicer: return "slicer (verify/slicer)";
+        case Layer::Runners: return "runners";
         case Layer::Haptics: return "haptics";
-        case Layer::App: return "app (gen/app)";
+        case Layer::App: return "app";
         case Layer::Tests: return "tests and bench";
         default: return "unknown";
     }
@@ -43,30 +52,42 @@ const char* name(Layer l) {
 
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
-// The layer of a path relative to the source tree ("gen/io/pgm_reader.h").
+// The layer of a path relative to the source tree ("gen/readers/pgm_reader.h").
 Layer layerOf(const std::string& path) {
-    if (startsWith(path, "gen/util/") || path == "gen/error.h" || path == "gen/error.cpp") return Layer::Base;
-    if (startsWith(path, "gen/app/")) return Layer::App;
-    if (startsWith(path, "gen/")) return Layer::Gen;
-    if (startsWith(path, "verify/render/")) return Layer::Render;
-    if (startsWith(path, "verify/slicer/")) return Layer::Slicer;
-    if (startsWith(path, "verify/")) return Layer::Verify;
-    if (startsWith(path, "haptics/")) return Layer::Haptics;
-    if (startsWith(path, "tests/") || startsWith(path, "bench/")) return Layer::Tests;
+    static const std::vector<std::pair<std::string, Layer>> prefixes = {
+        {"gen/util/", Layer::Base},        {"gen/field/", Layer::Field}, {"gen/readers/", Layer::Readers},
+        {"gen/geometry/", Layer::Geometry}, {"gen/model/", Layer::Model}, {"gen/mesh/", Layer::Mesh},
+        {"gen/mesh_io/", Layer::MeshIo},   {"gen/scad/", Layer::Scad},   {"verify/", Layer::Verify},
+        {"runners/", Layer::Runners},      {"haptics/", Layer::Haptics}, {"app/", Layer::App},
+        {"tests/", Layer::Tests},          {"bench/", Layer::Tests},
+    };
+    for (const auto& [prefix, layer] : prefixes)
+        if (startsWith(path, prefix)) return layer;
     return Layer::Unknown;
 }
 
 // What each layer may include besides itself.
-const std::map<Layer, std::set<Layer>> kMayInclude = {
-    {Layer::Base, {}},
-    {Layer::Gen, {Layer::Base}},
-    {Layer::Verify, {Layer::Base, Layer::Gen}},
-    {Layer::Render, {Layer::Base, Layer::Gen, Layer::Verify}},
-    {Layer::Slicer, {Layer::Base, Layer::Gen, Layer::Verify, Layer::Render}},
-    {Layer::Haptics, {Layer::Base, Layer::Gen}},
-    {Layer::App, {Layer::Base, Layer::Gen, Layer::Verify, Layer::Render, Layer::Slicer, Layer::Haptics}},
-    {Layer::Tests, {Layer::Base, Layer::Gen, Layer::Verify, Layer::Render, Layer::Slicer, Layer::Haptics}},
-};
+const std::map<Layer, std::set<Layer>> kMayInclude = [] {
+    using L = Layer;
+    const std::set<L> gen = {L::Base, L::Field, L::Readers, L::Geometry, L::Model, L::Mesh, L::MeshIo, L::Scad};
+    std::set<L> all_libraries = gen;
+    all_libraries.insert({L::Verify, L::Runners, L::Haptics});
+    return std::map<L, std::set<L>>{
+        {L::Base, {}},
+        {L::Field, {L::Base}},
+        {L::Readers, {L::Base, L::Field}},
+        {L::Geometry, {L::Base}},
+        {L::Model, {L::Base, L::Field, L::Geometry}},
+        {L::Mesh, {L::Base, L::Field, L::Geometry, L::Model}},
+        {L::MeshIo, {L::Base, L::Geometry}},
+        {L::Scad, {L::Base, L::Field, L::Geometry, L::Model, L::Mesh, L::MeshIo}},
+        {L::Verify, gen},
+        {L::Runners, [&] { std::set<L> s = gen; s.insert(L::Verify); return s; }()},
+        {L::Haptics, gen},
+        {L::App, all_libraries},
+        {L::Tests, all_libraries},  // tests run the application as a process, never include it
+    };
+}();
 
 struct Include {
     std::string file;  ///< the including file, relative to the source tree
@@ -79,7 +100,7 @@ std::vector<Include> includes() {
     const fs::path root(TSF_SOURCE_DIR);
     const std::regex directive(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
     std::vector<Include> out;
-    for (const char* top : {"gen", "verify", "haptics", "tests", "bench"}) {
+    for (const char* top : {"gen", "verify", "runners", "haptics", "app", "tests", "bench"}) {
         for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
             const std::string rel = fs::relative(entry.path(), root).string();
             if (rel.find("node_modules") != std::string::npos) continue;
@@ -123,7 +144,7 @@ TEST(Layering, OnlyTheApplicationSeesCli11) {
 }
 
 TEST(Layering, NoFolderIsNamedCli) {
-    // The commands live in gen/app only; a cli/ folder next to a library
+    // The commands live in app/ only; a cli/ folder next to a library
     // would be a second application folder.
     const fs::path root(TSF_SOURCE_DIR);
     for (const char* top : {"gen", "verify", "haptics"})

@@ -2,14 +2,14 @@
 // field -> Scene -> {direct mesh, OpenSCAD} -> verify, no command line.
 #include <gtest/gtest.h>
 
-#include "gen/direct_mesher.h"
-#include "gen/io/load_field.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/readers/load_field.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/scad/scad_emitter.h"
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 #include "tests/support/files.h"
-#include "verify/render/engine_output_check.h"
-#include "verify/render/openscad_runner.h"
+#include "runners/openscad/engine_output_check.h"
+#include "runners/openscad/openscad_runner.h"
 #include "verify/verify_model.h"
 
 namespace tsf {

@@ -9,7 +9,7 @@
 #include <random>
 #include <sstream>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/obj_reader.h"
 #include "gen/mesh_io/obj_writer.h"
 #include "gen/mesh_io/off_reader.h"

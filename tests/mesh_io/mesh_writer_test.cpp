@@ -2,7 +2,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "mesh_io_test_support.h"

@@ -6,7 +6,7 @@
 #include <random>
 #include <sstream>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/obj_reader.h"

@@ -8,7 +8,7 @@
 #include <limits>
 #include <sstream>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/stl_reader.h"

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "Model/COM/NMR_DLLInterfaces.h"
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/three_mf_reader.h"

@@ -4,10 +4,10 @@
 
 #include <filesystem>
 
-#include "gen/error.h"
-#include "verify/render/openscad_messages.h"
-#include "verify/render/process_runner.h"
-#include "verify/render/openscad_runner.h"
+#include "gen/util/error.h"
+#include "runners/openscad/openscad_messages.h"
+#include "runners/process_runner.h"
+#include "runners/openscad/openscad_runner.h"
 #include "scad_test_support.h"
 
 namespace tsf {

@@ -7,7 +7,7 @@
 #include <chrono>
 #include <unistd.h>
 
-#include "verify/render/process_runner.h"
+#include "runners/process_runner.h"
 
 namespace tsf {
 namespace {

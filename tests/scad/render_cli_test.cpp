@@ -7,7 +7,7 @@
 #include "scad_test_support.h"
 #include "tests/support/run.h"
 #include "verify/mesh_topology.h"
-#include "verify/render/process_runner.h"
+#include "runners/process_runner.h"
 
 namespace tsf {
 namespace {

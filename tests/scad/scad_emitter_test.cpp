@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/scad/scad_emitter.h"
 #include "gen/scad/scad_library.h"
 #include "scad_test_support.h"

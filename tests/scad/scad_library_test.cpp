@@ -10,7 +10,7 @@
 #include <random>
 #include <regex>
 
-#include "gen/hex_grid.h"
+#include "gen/field/hex_grid.h"
 #include "gen/scad/scad_library.h"
 #include "scad_test_support.h"
 

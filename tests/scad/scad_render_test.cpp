@@ -7,8 +7,8 @@
 #include <cmath>
 #include <set>
 
-#include "gen/direct_mesher.h"
-#include "gen/error.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/util/error.h"
 #include "gen/scad/scad_emitter.h"
 #include "scad_test_support.h"
 #include "verify/mesh_topology.h"

@@ -15,13 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "gen/hex_field.h"
-#include "gen/mesh.h"
+#include "gen/field/hex_field.h"
+#include "gen/geometry/mesh.h"
 #include "gen/mesh_io/mesh_reader.h"
-#include "gen/scene.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/files.h"
-#include "verify/render/openscad_runner.h"
+#include "runners/openscad/openscad_runner.h"
 
 namespace tsf::test {
 

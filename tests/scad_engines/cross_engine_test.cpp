@@ -11,10 +11,10 @@
 #include <tuple>
 
 #include "engine_fixtures.h"
-#include "gen/direct_mesher.h"
-#include "gen/halves_mesh.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/mesh/halves_mesh.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "verify/render/engine_output_check.h"
+#include "runners/openscad/engine_output_check.h"
 #include "gen/scad/scad_emitter.h"
 #include "verify/verify_model.h"
 
@@ -326,7 +326,7 @@ INSTANTIATE_TEST_SUITE_P(Engines, CrossEngineParameters, ::testing::Values("open
 namespace tsf {
 namespace {
 
-// The support-free halves of a mirrored model (gen/halves.h): each engine
+// The support-free halves of a mirrored model (gen/model/features/halves.h): each engine
 // cuts the model at the Scene's plane and the Scene's pin holes out of it
 // (scad_lib/tsf_halves.scad, piece = "upper" / "lower") and draws the same
 // solid as the direct mesher's half, the lower half turned over as it prints.

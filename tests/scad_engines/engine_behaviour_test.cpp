@@ -7,11 +7,11 @@
 #include <filesystem>
 
 #include "engine_fixtures.h"
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "verify/render/engine_output_check.h"
-#include "verify/render/process_runner.h"
+#include "runners/openscad/engine_output_check.h"
+#include "runners/process_runner.h"
 
 namespace tsf {
 namespace {

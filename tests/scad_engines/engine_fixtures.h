@@ -13,12 +13,12 @@
 #include <memory>
 #include <string>
 
-#include "gen/hex_field.h"
-#include "gen/scene.h"
+#include "gen/field/hex_field.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/files.h"
-#include "verify/render/openscad_runner.h"
-#include "verify/render/wasm_engine.h"
+#include "runners/openscad/openscad_runner.h"
+#include "runners/openscad/wasm_engine.h"
 
 namespace tsf::test {
 

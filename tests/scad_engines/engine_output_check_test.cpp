@@ -4,10 +4,10 @@
 #include <filesystem>
 
 #include "engine_fixtures.h"
-#include "gen/direct_mesher.h"
+#include "gen/mesh/direct_mesher.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/stl_reader.h"
-#include "verify/render/engine_output_check.h"
+#include "runners/openscad/engine_output_check.h"
 
 namespace tsf {
 namespace {

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "engine_fixtures.h"
-#include "verify/render/engine_select.h"
+#include "runners/openscad/engine_select.h"
 #include "gen/scad/scad_emitter.h"
 
 namespace tsf {

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "tests/support/files.h"
-#include "verify/render/openscad_runner.h"
+#include "runners/openscad/openscad_runner.h"
 
 namespace tsf {
 namespace {

@@ -6,8 +6,8 @@
 #include <functional>
 #include <vector>
 
-#include "gen/hex_field.h"
-#include "gen/scene.h"
+#include "gen/field/hex_field.h"
+#include "gen/model/scene.h"
 
 namespace tsf::test {
 

@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf::test {
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf::test {
 

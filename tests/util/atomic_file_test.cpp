@@ -11,7 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/util/atomic_file.h"
 #include "tests/support/files.h"

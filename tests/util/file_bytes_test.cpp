@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 #include "tests/support/files.h"
 
 namespace tsf {

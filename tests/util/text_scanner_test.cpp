@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "gen/error.h"
+#include "gen/util/error.h"
 
 namespace tsf {
 namespace {

@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gen/error.h"
-#include "gen/hex_grid.h"
+#include "gen/util/error.h"
+#include "gen/field/hex_grid.h"
 #include "tests/verify/verify_test_support.h"
 #include "verify/agreement.h"
 

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "gen/direct_mesher.h"
-#include "gen/halves.h"
-#include "gen/halves_mesh.h"
-#include "gen/scene.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/features/halves.h"
+#include "gen/mesh/halves_mesh.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "verify/halves_check.h"
 #include "verify/overhang.h"

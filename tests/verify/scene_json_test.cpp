@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <random>
 
-#include "gen/error.h"
-#include "gen/scene_json.h"
+#include "gen/util/error.h"
+#include "gen/model/scene_json.h"
 #include "tests/verify/verify_test_support.h"
 
 namespace tsf {

@@ -6,7 +6,7 @@
 #include <map>
 
 #include "gen/mesh_io/mesh_writer.h"
-#include "gen/scene_json.h"
+#include "gen/model/scene_json.h"
 #include "tests/verify/verify_test_support.h"
 
 namespace tsf {

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "gen/direct_mesher.h"
-#include "gen/hex_field.h"
-#include "gen/mesh.h"
-#include "gen/scene.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/field/hex_field.h"
+#include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/files.h"
 #include "tests/support/meshes.h"

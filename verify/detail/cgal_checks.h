@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 #include "verify/mesh_topology.h"
 
 namespace tsf {

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "gen/mesh.h"
+#include "gen/geometry/mesh.h"
 
 namespace tsf::detail {
 

@@ -1,0 +1,437 @@
+// tsf gen: field in, model out (mesh file, OpenSCAD, scene sidecar), verified.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "app/bed_size.h"
+#include "app/commands.h"
+#include "app/gen_options.h"
+#include "app/gen_summary.h"
+#include "app/halves_output.h"
+#include "app/input_report.h"
+#include "app/stage_timer.h"
+#include "app/preview.h"
+#include "app/printer_fit.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/util/error.h"
+#include "gen/mesh_io/mesh_writer.h"
+#include "gen/mesh_io/three_mf_writer.h"
+#include "gen/mesh/scene_parts.h"
+#include "gen/scad/scad_emitter.h"
+#include "gen/scad/scad_render_cost.h"
+#include "gen/model/scene_json.h"
+#include "gen/util/file_bytes.h"
+#include "gen/util/output_paths.h"
+#include "runners/prusa_slicer/print_check.h"
+#include "verify/verify_model.h"
+#include "verify/verify_parts.h"
+
+namespace tsf::cli {
+namespace {
+
+struct GenCommandOptions {
+    GenOptions gen;
+    std::string output;
+    std::string scad;
+    bool ascii = false;
+    bool no_verify = false;
+    bool json = false;
+    bool progress = false;
+    bool no_sidecar = false;
+    std::string scad_strategy = "polyhedron";
+    bool scad_library_beside = false;
+    std::string command_line;
+    std::string preview;
+    bool verify_full = false;
+    bool force = false;
+    PrinterSpec printer;  ///< --bed, --nozzle, --layer (printer_fit.h)
+    bool parts = false;        ///< --parts: the 3MF as one object with a part per feature
+    bool print_check = false;  ///< --print-check: slice the written model with PrusaSlicer
+    GivenOptions given;   ///< model options the user gave himself
+};
+
+// Largest existing parameter-set file read to decide whether tsf wrote it
+// (tsf writes a few KB).
+constexpr int64_t kMaxOwnFileBytes = 64 << 20;
+// A scene sidecar is told by the head alone: it grows with the grid (71 MiB
+// at 1000 x 1000), and its "format" key comes among the first top-level keys
+// (written in sorted order, before "hull", "marks" and the cells).
+constexpr size_t kSceneHeadBytes = 64 << 10;
+
+std::string sidecarPath(const GenCommandOptions& o) { return (o.output.empty() ? o.scad : o.output) + ".scene.json"; }
+
+ScadOptions scadOptions(const GenCommandOptions& o) {
+    ScadOptions so;
+    parseScadStrategy(o.scad_strategy, so.strategy);
+    so.inline_library = !o.scad_library_beside;
+    so.source = o.gen.input;
+    so.command = o.command_line;
+    return so;
+}
+
+// A file tsf names itself (not given on the command line) that exists and
+// was not written by tsf is refused unless --force.
+// head_bytes > 0: only that many bytes are read and judged.
+void refuseForeignFile(const std::string& path, bool (*ours)(const std::string&), const std::string& what,
+                       const std::string& alternative, size_t head_bytes = 0) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return;
+    if (ours(head_bytes > 0 ? readFileHead(path, head_bytes) : readFileBytes(path, kMaxOwnFileBytes))) return;
+    throw InputError(path, 0, 0,
+                     "exists and was not written by tsf; it would be replaced by " + what +
+                         ". Give --force to replace it, or " + alternative);
+}
+
+bool isTsfScene(const std::string& text) {
+    return text.find("\"" + std::string(kSceneJsonFormat) + "\"") != std::string::npos;
+}
+
+// No output may be the input or another output, and files the user did not
+// name (the parameter sets beside --scad, the scene sidecar) replace only
+// what tsf wrote before, unless --force.
+void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
+    std::vector<NamedPath> outputs;
+    if (o.gen.scene.halves && !o.output.empty()) {
+        const HalvesPaths h = halvesPaths(o.output);
+        outputs.push_back({h.upper, "the upper half of -o"});
+        outputs.push_back({h.lower, "the lower half of -o"});
+        outputs.push_back({h.pins, "the pins of -o"});
+    } else {
+        outputs.push_back({o.output, "-o"});
+    }
+    outputs.push_back({o.preview, "--preview"});
+    const std::vector<std::string> scad_paths = o.scad.empty() ? std::vector<std::string>() : scadOutputPaths(so, o.scad);
+    if (!o.scad.empty()) outputs.push_back({o.scad, "--scad"});
+    if (so.write_parameter_sets && !o.scad.empty())
+        outputs.push_back({scad_paths[1], "the OpenSCAD parameter sets written beside --scad"});
+    if (!o.no_sidecar) outputs.push_back({sidecarPath(o), "the scene sidecar (--no-scene leaves it out)"});
+    checkOutputPaths({{o.gen.input, "the input"}}, outputs);
+    if (o.force) return;
+    if (so.write_parameter_sets && !o.scad.empty())
+        refuseForeignFile(scad_paths[1], isTsfParameterSetFile, "the OpenSCAD parameter sets of --scad " + o.scad,
+                          "choose another --scad name");
+    if (!o.no_sidecar)
+        refuseForeignFile(sidecarPath(o), isTsfScene, "the scene sidecar", "give --no-scene", kSceneHeadBytes);
+}
+
+// Grids above this many cells print progress lines without being asked.
+constexpr int64_t kProgressCells = 250000;
+// Input files above this size say so before they are read (seconds of work).
+constexpr int64_t kProgressInputBytes = int64_t(64) << 20;
+
+void announceLargeInput(const std::string& input, bool progress) {
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(input, ec);
+    if (ec || progress || int64_t(bytes) < kProgressInputBytes) return;
+    std::fprintf(stderr, "tsf: reading %s (%lld MiB), this may take a while\n", input.c_str(),
+                 static_cast<long long>(bytes >> 20));
+}
+// Above this many triangles the self-check skips CGAL's self-intersection test
+// and the printability rays (minutes at 10^7 triangles); the mesher builds no
+// intersections by construction and the test suite checks that on large
+// grids. --verify-full runs everything.
+constexpr size_t kQuickVerifyTriangles = 3'000'000;
+
+// One line per verifier outcome for the summary; failures are listed fully.
+std::string verifyLines(const VerifyReport& r) {
+    std::string passed, other;
+    for (const Check& c : r.checks) {
+        if (c.status == CheckStatus::Pass) passed += (passed.empty() ? "" : ", ") + c.title;
+        else if (c.status != CheckStatus::Skipped) other += "  " + std::string(toString(c.status)) + "      " + c.title +
+                                                          (c.note.empty() ? "" : ": " + c.note) + "\n";
+    }
+    std::string out = "  verify    " + std::string(r.passed() ? "passed" : "FAILED") + " (" + passed + ")\n";
+    if (r.readback) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "  read back %zu cells: heights within %.4f mm of the data (max error %.4f mm)\n",
+                      r.readback->cells_checked, r.readback->tolerance_mm, r.readback->max_error_mm);
+        out += buf;
+    }
+    return out + other;
+}
+
+// One line per part for the summary: its triangles, pieces and volume; then the assembly's verdict.
+std::string partsLines(const PartsVerifyReport& r) {
+    std::string out;
+    for (const PartReport& p : r.parts) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "  part      %-8s %zu triangles, %zu %s, %.1f mm^3: %s\n", p.name.c_str(),
+                      p.report.mesh.triangle_count, p.report.mesh.component_count,
+                      p.report.mesh.component_count == 1 ? "piece" : "pieces", p.report.mesh.volume_mm3,
+                      p.report.passed() ? "closed solid" : "FAILED");
+        out += buf;
+    }
+    const Check* overlap = r.assembly.find("parts_overlap");
+    out += "  parts     " + std::string(r.passed() ? "passed" : "FAILED") + " (each a closed solid; " +
+           (overlap && overlap->status == CheckStatus::Pass ? "they touch and never overlap" : "overlap not proven absent") +
+           ")\n";
+    return out;
+}
+
+// The written model sliced by PrusaSlicer with the printer options given (else PrusaSlicer's defaults).
+PrintCheckReport printCheck(const GenCommandOptions& o) {
+    SlicerSettings s;
+    if (o.printer.layer_mm > 0) s.layer_mm = o.printer.layer_mm;
+    if (o.printer.nozzle_mm > 0) s.nozzle_mm = o.printer.nozzle_mm;
+    if (!o.printer.bed.empty()) {
+        const BedSize bed = parseBedSize(o.printer.bed, "--bed", /*need_height=*/false);
+        s.bed_width_mm = bed.width_mm;
+        s.bed_depth_mm = bed.depth_mm;
+    }
+    try {
+        return runPrintCheck(o.output, s);
+    } catch (const SlicerError& e) {
+        std::cerr << "tsf: error: the model was written, but the print check failed: " << e.what() << "\n";
+        throw CLI::RuntimeError(kExitToolFailed);
+    }
+}
+
+void runGen(GenCommandOptions o) {
+    if (o.output.empty() && o.scad.empty())
+        throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
+    const ScadOptions so = scadOptions(o);
+    checkOutputs(o, so);
+    const std::string model_ext = o.output.empty() ? "" : lowerCaseExtension(o.output);
+    if (o.parts && model_ext != ".3mf")
+        throw InputError(o.output.empty() ? "--parts" : o.output, 0, 0,
+                         "--parts writes a 3MF (one object, a part per feature): give -o MODEL.3mf; "
+                         "STL, OFF and OBJ hold one solid");
+    if (o.gen.scene.halves && (o.parts || o.print_check))
+        throw InputError(o.parts ? "--parts" : "--print-check", 0, 0,
+                         "--halves writes each piece to a file of its own (MODEL-upper, MODEL-lower, MODEL-pins); "
+                         "leave out --parts and --print-check and run tsf print-check on each piece");
+    if (o.print_check && model_ext != ".stl" && model_ext != ".3mf")
+        throw InputError(o.output.empty() ? "--print-check" : o.output, 0, 0,
+                         "--print-check slices the model file: give -o MODEL.stl or -o MODEL.3mf");
+    if (!o.preview.empty() && lowerCaseExtension(o.preview) != ".png")
+        throw InputError(o.preview, 0, 0, "--preview writes a PNG picture: give a name ending in .png");
+    StageTimer timer(o.progress);
+    GenSummary summary;
+    summary.input = o.gen.input;
+    summary.printer_notes = applyPrinterFit(o.printer, o.given, o.gen);
+
+    timer.begin("reading");
+    announceLargeInput(o.gen.input, o.progress);
+    const HexField field = loadField(o.gen);
+    summary.field = &field;
+    if (field.grid.cellCount() > kProgressCells && !o.progress && !o.json)
+        std::fprintf(stderr, "tsf: %d x %d cells, this may take a few seconds\n", field.grid.cols, field.grid.rows);
+    timer.begin("scene");
+    const Scene scene = buildScene(field, o.gen.scene);
+    summary.scene = &scene;
+    if (const std::string note = cellNozzleNote(scene.pitch_mm, o.printer); !note.empty())
+        summary.printer_notes.push_back(note);
+    timer.begin("meshing");
+    const Mesh mesh = meshScene(scene);
+    summary.mesh = &mesh;
+    checkFitsBed(mesh, scene.pitch_mm, o.printer);
+
+    std::optional<VerifyReport> report;
+    if (!o.no_verify) {
+        timer.begin("verifying");
+        VerifyOptions vo;
+        vo.name = o.output.empty() ? o.scad : o.output;
+        if (o.printer.nozzle_mm > 0) vo.nozzle_mm = o.printer.nozzle_mm;
+        if (o.printer.layer_mm > 0) vo.layer_mm = o.printer.layer_mm;
+        if (!o.verify_full && mesh.triangleCount() > kQuickVerifyTriangles) {
+            vo.self_intersections = false;
+            vo.printability = false;
+            std::fprintf(stderr, "tsf: %zu triangles: verifying topology and heights only (--verify-full for all checks)\n",
+                         mesh.triangleCount());
+        }
+        report = verifyModel(mesh, &scene, vo);
+        summary.verify = toJson(*report);
+        summary.verify_text = verifyLines(*report);
+        if (!scene.halves) summary.supports_text = supportsText(*report);
+        if (!report->passed()) {
+            // A model that fails its own checks is a bug in tsf: never hand it to a printer.
+            timer.end();
+            std::cerr << formatReport(*report);
+            std::cerr << "tsf: the generated model failed verification; nothing was written. "
+                         "Please report this with the input file.\n";
+            throw CLI::RuntimeError(kExitCheckFailed);
+        }
+    }
+    std::vector<MeshPart> parts;
+    if (o.parts) {
+        timer.begin("meshing parts");
+        parts = meshSceneParts(scene);
+        if (!o.no_verify) {
+            // Each part alone and the parts together; the heights were read back from the one-solid mesh above.
+            timer.begin("verifying parts");
+            VerifyOptions vo;
+            vo.name = o.output;
+            vo.printability = false;
+            const PartsVerifyReport pr = verifyParts(parts, nullptr, vo);
+            summary.verify["parts"] = toJson(pr);
+            summary.verify_text += partsLines(pr);
+            if (!pr.passed()) {
+                timer.end();
+                std::cerr << formatPartsReport(pr);
+                std::cerr << "tsf: the model's parts failed verification; nothing was written. "
+                             "Please report this with the input file.\n";
+                throw CLI::RuntimeError(kExitCheckFailed);
+            }
+        }
+    }
+
+    std::optional<HalvesPieces> halves;
+    if (scene.halves) {
+        timer.begin("halves");
+        VerifyOptions vo;
+        if (o.printer.nozzle_mm > 0) vo.nozzle_mm = o.printer.nozzle_mm;
+        if (o.printer.layer_mm > 0) vo.layer_mm = o.printer.layer_mm;
+        halves = makeHalves(scene, mesh, !o.no_verify, vo, summary);
+    }
+    if (!o.output.empty()) {
+        timer.begin("writing");
+        MeshWriteOptions wo;
+        wo.ascii_stl = o.ascii;
+        wo.title = "tsf " TSF_VERSION " " + o.gen.input;
+        if (halves) {
+            writeHalves(*halves, o.output, wo, summary);
+        } else if (o.parts) {
+            write3mfParts(parts, o.output, wo);
+            std::string names;
+            for (const MeshPart& p : parts) names += (names.empty() ? "" : ", ") + p.name;
+            summary.outputs.push_back({o.output, "model, one object in " + std::to_string(parts.size()) + " parts: " + names});
+        } else {
+            writeMesh(mesh, o.output, wo);
+            summary.outputs.push_back({o.output, "model"});
+        }
+    }
+    if (!o.preview.empty()) {
+        timer.begin("drawing preview");
+        if (halves) writeModelPreview(halvesSideBySide(*halves), o.preview, false);
+        else writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
+        summary.outputs.push_back({o.preview, halves ? "preview picture of the pieces as they print" : "preview picture"});
+    }
+    if (!o.scad.empty()) {
+        timer.begin("writing OpenSCAD");
+        writeScad(scene, so, o.scad);
+        const std::string slow = scadRenderWarning(estimateScadRender(scene, so.strategy), o.scad);
+        if (!slow.empty()) std::fprintf(stderr, "tsf: warning: %s\n", slow.c_str());
+        const std::vector<std::string> paths = scadOutputPaths(so, o.scad);
+        for (size_t k = 0; k < paths.size(); ++k)
+            summary.outputs.push_back({paths[k], k == 0 ? "OpenSCAD"
+                                                 : so.write_parameter_sets && k == 1 ? "OpenSCAD parameter sets, openscad -p"
+                                                                                     : "OpenSCAD library"});
+    }
+    if (!o.no_sidecar) {
+        // The scene sidecar lets `tsf verify --scene` check any mesh of this
+        // model later. It is committed after the model and names the model
+        // file's size and hash: a run killed between the two leaves a new
+        // model beside an older sidecar, and `tsf verify --scene` refuses
+        // that pair instead of judging one model by another's data.
+        const std::string sidecar = sidecarPath(o);
+        std::optional<SceneModelRecord> model;
+        if (!o.output.empty()) model = SceneModelRecord{std::filesystem::path(o.output).filename().string(), stampFile(o.output)};
+        writeSceneJson(scene, sidecar, model ? &*model : nullptr);
+        summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
+    }
+    std::optional<PrintCheckReport> printed;
+    if (o.print_check) {
+        timer.begin("print check");
+        printed = printCheck(o);
+    }
+    timer.end();
+    summary.timings_ms = timer.stagesMs();
+    if (o.json) {
+        nlohmann::json j = summaryJson(summary);
+        if (printed) j["print_check"] = toJson(*printed);
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << formatSummary(summary);
+        if (printed) std::cout << "\n" << formatPrintCheck(*printed);
+    }
+}
+
+}  // namespace
+
+void addGenCommand(CLI::App& app) {
+    auto opts = std::make_shared<GenCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("gen", "Generate a printable hex-pillar model from a field");
+    cmd->footer(
+        "Examples:\n"
+        "  tsf gen examples/volcano.csv -o volcano.stl\n"
+        "  tsf gen examples/airports-europe.csv --points x=lon,y=lat --bins 40 --mirror -o europe.3mf\n"
+        "  tsf gen examples/airports-europe.csv --points x=lon,y=lat --bins 40 --title \"European airports\" \\\n"
+        "      --units airports --parts --print-check -o airports.3mf\n"
+        "Frame: x east, y north, z up, millimetres; the model stands on z = 0.");
+    addGenOptions(cmd, opts->gen);
+    cmd->add_option("-o,--output", opts->output, "Model file: .stl (binary), .3mf, .off or .obj");
+    cmd->add_option("--scad", opts->scad, "Also write a parametric OpenSCAD file");
+    cmd->add_flag("--ascii", opts->ascii, "Write ASCII STL instead of binary");
+    cmd->add_option("--preview", opts->preview,
+                    "Also draw the model to this PNG: framed to fill it, coloured by height, north arrow, scale bar "
+                    "and size in mm; with --mirror the underside beside the top (drawn by tsf, no OpenSCAD needed)");
+    cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
+    cmd->add_flag("--verify-full", opts->verify_full,
+                  "Run every check even on very large models (self-intersections, printability; minutes)");
+    cmd->add_flag("--json", opts->json, "Print the summary as JSON");
+    cmd->add_flag("--progress", opts->progress, "Print each stage and its time on stderr");
+    cmd->add_flag("--no-scene", opts->no_sidecar, "Do not write the MODEL.scene.json sidecar");
+    cmd->add_flag("--force", opts->force,
+                  "Replace MODEL.json (parameter sets beside --scad) and MODEL.scene.json even when they exist "
+                  "and were not written by tsf");
+    cmd->add_option("--scad-strategy", opts->scad_strategy,
+                    "polyhedron: one polyhedron() built from the values (fast, default) | csg: union of one prism "
+                    "per cell (slow, tolerant of hand-added geometry); see docs/openscad.md")
+        ->check(CLI::IsMember({"polyhedron", "csg"}))->capture_default_str();
+    cmd->add_flag("--scad-library-beside", opts->scad_library_beside,
+                  "Copy the OpenSCAD library into a folder beside the .scad instead of inlining it");
+    auto* printer = "Printer (docs/printing.md)";
+    cmd->add_option("--bed", opts->printer.bed,
+                    "Bed WIDTHxDEPTH, mm: the model is fitted into it less 5 mm on each side (unless --width/--depth); "
+                    "a larger model is refused")
+        ->group(printer);
+    cmd->add_option("--nozzle", opts->printer.nozzle_mm,
+                    "Nozzle diameter, mm: raster cells at least 4 nozzle widths; thin walls flagged")
+        ->check(CLI::Range(0.05, 3.0))->group(printer);
+    cmd->add_option("--layer", opts->printer.layer_mm,
+                    "Layer height, mm: heights snap to whole layers (unless --snap)")
+        ->check(CLI::Range(0.01, 2.0))->group(printer);
+    cmd->add_flag("--parts", opts->parts,
+                  "Write the 3MF as one object made of parts - pillars (with the notch), marks (the raised "
+                  "triangle), legend (the braille dots) - so a slicer can give each its own colour or material; "
+                  "each part is verified alone and with the others (docs/printing.md)");
+    cmd->add_flag("--print-check", opts->print_check,
+                  "After writing -o MODEL.stl|.3mf, slice it with PrusaSlicer as tsf print-check does (with --layer, "
+                  "--nozzle, --bed when given) and add its report: supports?, layers, time, filament");
+    cmd->callback([cmd, opts] {
+        // The command line goes into the OpenSCAD header so a file says how it was made.
+        opts->command_line = invocation();
+        opts->given.width = cmd->get_option("--width")->count() > 0;
+        opts->given.depth = cmd->get_option("--depth")->count() > 0;
+        opts->given.snap = cmd->get_option("--snap")->count() > 0;
+        // The pieces are not the model the sidecar describes: none is written for them.
+        if (opts->gen.scene.halves) opts->no_sidecar = true;
+        runGen(*opts);
+    });
+}
+
+void addInfoCommand(CLI::App& app) {
+    auto opts = std::make_shared<GenOptions>();
+    auto json = std::make_shared<bool>(false);
+    CLI::App* cmd = app.add_subcommand("info", "Show what tsf sees in an input file and the model it would make");
+    addGenOptions(cmd, *opts);
+    cmd->add_flag("--json", *json, "Print as JSON");
+    cmd->callback([opts, json] {
+        const HexField field = loadField(*opts);
+        const Scene scene = buildScene(field, opts->scene);
+        if (*json) {
+            nlohmann::json j = sceneFactsJson(scene);
+            j["input"] = opts->input;
+            j["read"] = fieldInputJson(field.input);
+            j["field"] = {{"how", field.how}, {"pitch_data_units", field.pitch_data}};
+            std::cout << j.dump(2) << "\n";
+        } else {
+            std::cout << "tsf info: " << opts->input << "\n"
+                      << formatFieldInput(field.input) << "  input     " << field.how << "\n"
+                      << formatSceneFacts(scene);
+        }
+    });
+}
+
+}  // namespace tsf::cli

@@ -1,0 +1,164 @@
+#include "app/gen_options.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "gen/util/error.h"
+
+namespace tsf::cli {
+namespace {
+
+// Accepts "auto", "zero", "min" or a number.
+void parseBaseline(const std::string& text, SceneParams& p) {
+    if (text == "auto") p.baseline_mode = BaselineMode::Auto;
+    else if (text == "zero") p.baseline_mode = BaselineMode::Zero;
+    else if (text == "min") p.baseline_mode = BaselineMode::Min;
+    else {
+        size_t used = 0;
+        double v = NAN;
+        try { v = std::stod(text, &used); } catch (const std::exception&) { used = 0; }
+        if (used != text.size() || !std::isfinite(v))
+            throw InputError("--baseline: expected auto, zero, min or a number, got '" + text + "'");
+        p.baseline_mode = BaselineMode::Value;
+        p.baseline_value = v;
+    }
+}
+
+}  // namespace
+
+void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
+    if (with_input)
+        cmd->add_option("input", o.input,
+                        "Field file: grid CSV, PGM (P2/P5), PNG (grey), ESRI ASCII grid (.asc), GeoTIFF or any other "
+                        "raster GDAL reads, or a CSV of points with --points. Row 0 of a raster is its top (north) "
+                        "edge.")
+            ->required();
+    auto* in = "Input";
+    cmd->add_option("--points", o.points,
+                    "Read the CSV as points and bin them into hexagons: x=COL,y=COL[,w=COL] "
+                    "(COL = header name or 0-based index)")->group(in);
+    cmd->add_option("--aggregate", o.aggregate, "Points: value of a hexagon = count | sum | mean (of w)")
+        ->check(CLI::IsMember({"count", "sum", "mean"}))->capture_default_str()->group(in);
+    cmd->add_option("--bin", o.bin_size, "Points: hexagon centre spacing in data units (default: from --bins)")
+        ->check(CLI::PositiveNumber)->group(in);
+    cmd->add_option("--bins", o.bins,
+                    "Number of hexagon columns (points: default 30; rasters: default one per raster column, at most 1000)")
+        ->check(CLI::Range(1, 100000))->group(in);
+    cmd->add_option("--sample", o.sample, "Raster -> hexagons: mean (of the pixels in a hexagon) | nearest | bilinear")
+        ->check(CLI::IsMember({"mean", "nearest", "bilinear"}))->capture_default_str()->group(in);
+    cmd->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; tab space (default: detect)")->group(in);
+    cmd->add_flag("--decimal-comma", o.decimal_comma,
+                  "Grid CSV: read 1,5 as 1.5 (spreadsheet exports; default: detected when the delimiter is ; "
+                  "tab or space)")
+        ->group(in);
+    cmd->add_option_function<double>(
+           "--nodata", [&o](double v) { o.nodata = v; },
+           "This value means 'no data' (e.g. -9999): such cells become pits, never heights. Empty cells, "
+           "nan, NA, N/A and - are always no data")
+        ->group(in);
+    cmd->add_option("--project", o.project,
+                    "Points: auto (equirectangular when the columns are named lon/lat), none, equirect "
+                    "(x = longitude x cos(mean latitude))")
+        ->check(CLI::IsMember({"auto", "none", "equirect"}))->capture_default_str()->group(in);
+
+    auto* model = "Model (millimetres)";
+    SceneParams& p = o.scene;
+    // The cell size and the box also decide how a raster becomes hexagons
+    // (one pillar per value when it fits), so they go to the field loader too.
+    cmd->add_option_function<double>(
+           "--cell", [&o, &p](double v) { p.pitch_mm = v; o.cell_mm = v; },
+           "Hexagon width across flats = centre spacing, mm (default: fit --width/--depth)")
+        ->check(CLI::PositiveNumber)->group(model);
+    cmd->add_option_function<double>(
+           "--width", [&o, &p](double v) { p.fit_width_mm = v; o.fit_width_mm = v; p.fit_box_given = true; },
+           "Fit the grid into this width, mm (printer bed; default 150). With --cell: the model must fit it")
+        ->check(CLI::PositiveNumber)->group(model);
+    cmd->add_option_function<double>(
+           "--depth", [&o, &p](double v) { p.fit_depth_mm = v; o.fit_depth_mm = v; p.fit_box_given = true; },
+           "Fit the grid into this depth, mm (default 150). With --cell: the model must fit it")
+        ->check(CLI::PositiveNumber)->group(model);
+    cmd->add_option("--height", p.max_height_mm, "Height of the largest value above the floor, mm")
+        ->check(CLI::NonNegativeNumber)->capture_default_str()->group(model);
+    cmd->add_option("--base", p.base_mm, "Flat: base under the floor; mirrored: thinnest slab, mm")
+        ->check(CLI::PositiveNumber)->capture_default_str()->group(model);
+    cmd->add_option_function<std::string>(
+           "--transfer",
+           [&p](const std::string& t) {
+               p.transfer = t == "sqrt" ? Transfer::Sqrt : t == "log" ? Transfer::Log : Transfer::Linear;
+           },
+           "Value -> height: linear (default) | sqrt | log (log10(1+99t)/2, two decades)")
+        ->check(CLI::IsMember({"linear", "sqrt", "log"}))->group(model);
+    cmd->add_option_function<std::string>(
+           "--baseline", [&p](const std::string& t) { parseBaseline(t, p); },
+           "Value at height 0: auto (0, or the minimum if any value is negative) | zero | min | NUMBER")
+        ->group(model);
+    cmd->add_option_function<double>(
+           "--value-max", [&p](double v) { p.value_max = v; }, "Value at full height (default: the largest value)")
+        ->group(model);
+    cmd->add_option("--snap", p.z_snap_mm, "Height grid, mm; e.g. your layer height (0.2) so steps print as steps")
+        ->check(CLI::Range(1e-6, 1.0))->capture_default_str()->group(model);
+    cmd->add_option_function<std::string>(
+           "--cull",
+           [&p](const std::string& t) { p.cull = t == "none" ? Cull::None : t == "concave" ? Cull::Concave : Cull::Hull; },
+           "Which cells to model: hull (inside the convex hull of the non-empty cells, default) | concave (fewer "
+           "empty cells: gaps wider than about 4 cells stay open; still one piece) | none (all)")
+        ->check(CLI::IsMember({"hull", "concave", "none"}))->group(model);
+    cmd->add_flag_callback(
+           "--mirror", [&p] { p.bottom = Bottom::Mirrored; },
+           "Mirrored bottom: the underside shows the negated data, so cells hidden between tall neighbours "
+           "can be felt from below")
+        ->group(model);
+    cmd->add_flag("--halves", p.halves,
+                  "With --mirror: write two halves cut at the slab's middle that print without supports, flat "
+                  "side down, and three pins that join them one way only: -o M.stl writes M-upper.stl, "
+                  "M-lower.stl, M-pins.stl (docs/printing.md)")
+        ->group(model);
+    cmd->add_option_function<std::string>(
+           "--tilt",
+           [&p](const std::string& t) {
+               p.tilt = t == "points" ? TiltSource::Points : t == "gradient" ? TiltSource::Gradient : TiltSource::None;
+           },
+           "Tilt each pillar top, still at its height at the centre: none (default) | points (each bin's "
+           "regression plane; --points input) | gradient (the field's own slope). docs/model.md")
+        ->check(CLI::IsMember({"none", "points", "gradient"}))->group(model);
+    cmd->add_option("--steepness", p.steepness, "Multiplies every tilt's slope (tops never go below the floor)")
+        ->check(CLI::PositiveNumber)->capture_default_str()->group(model);
+    // On by default on the command line (thesis 7.1.2): a reader must never take
+    // a cell kept only to hold the model together for a value. The library's
+    // SceneParams default stays off so a bare Scene is the plain model.
+    p.structural_texture = true;
+    cmd->add_flag("--texture-structural,!--no-texture-structural", p.structural_texture,
+                  "Dimple the cells kept only to hold the model together (empty bins, resampled cells at the "
+                  "floor), so they are not felt as data (default on; --no-texture-structural: level tops)")
+        ->group(model);
+    auto* marks = "Orientation marks (docs/model.md)";
+    cmd->add_flag_callback("--no-notch", [&p] { p.marks.notch = false; },
+                           "Leave out the V notch at the origin (south-west) corner")->group(marks);
+    cmd->add_flag_callback("--no-triangle", [&p] { p.marks.triangle = false; },
+                           "Leave out the raised right triangle (x leg east, the longer; y leg north)")->group(marks);
+    cmd->add_option("--notch-depth", p.marks.notch_depth_mm, "How far the notch reaches into the corner, mm")
+        ->check(CLI::Range(0.5, 100.0))->capture_default_str()->group(marks);
+    auto* legend = "Braille legend (docs/printing.md)";
+    cmd->add_option("--title", p.legend.title,
+                    "Title embossed in braille on a plate grown north of the pillars, with the value range")
+        ->group(legend);
+    cmd->add_option("--units", p.legend.units, "Units of the values, after the range in the legend (e.g. airports)")
+        ->group(legend);
+    cmd->add_option("--braille-table", p.legend.table,
+                    "liblouis table for the legend (uncontracted US English by default; e.g. en-ueb-g1.ctb, de-g0.utb)")
+        ->capture_default_str()->group(legend);
+    auto* scale = "Tactile scale (docs/model.md)";
+    cmd->add_flag("--scale", p.scale.wanted,
+                  "A staircase east of the pillars, on the floor: each tread at the height of a round value "
+                  "(every --scale-step from the baseline), to measure a pillar in value units")
+        ->group(scale);
+    cmd->add_option_function<double>(
+           "--scale-step", [&p](double v) { p.scale.step = v; p.scale.wanted = true; },
+           "Values between the scale's treads (implies --scale; default: the smallest 1, 2 or 5 x 10^k whose "
+           "treads are at least 1 mm apart, at most 10 steps)")
+        ->check(CLI::PositiveNumber)->group(scale);
+    cmd->add_option("--triangle-leg", p.marks.triangle_leg_mm, "Preferred east leg of the triangle, mm (north leg 0.6 of it)")
+        ->check(CLI::Range(5.0, 200.0))->capture_default_str()->group(marks);
+}
+
+}  // namespace tsf::cli

@@ -1,0 +1,241 @@
+#include "app/gen_summary.h"
+
+#include "gen/model/features/braille.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace tsf::cli {
+
+std::string fmt(const char* format, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+namespace {
+
+std::string mappingText(const Scene& s) {
+    const ValueMapping& m = s.mapping;
+    std::ostringstream o;
+    o << toString(m.transfer) << ": value " << m.baseline << " -> 0 mm, value " << m.value_max << " -> "
+      << fmt("%.2f", m.max_height_mm) << " mm above the floor";
+    if (m.transfer == Transfer::Linear && m.value_max > m.baseline && m.max_height_mm > 0) {
+        // The span of two finite values can exceed the largest double
+        // (1e308 and -1e308): divide the halves, then double.
+        double per_mm = (m.value_max - m.baseline) / m.max_height_mm;
+        if (!std::isfinite(per_mm)) per_mm = 2.0 * ((m.value_max / 2 - m.baseline / 2) / m.max_height_mm);
+        o << " (1 mm = " << (std::isfinite(per_mm) ? fmt("%.4g", per_mm) : std::string("more than 1.797e+308"))
+          << " data units)";
+    }
+    return o.str();
+}
+}  // namespace
+
+nlohmann::json sceneFactsJson(const Scene& s) {
+    nlohmann::json j;
+    j["grid"] = {{"cols", s.grid.cols}, {"rows", s.grid.rows}};
+    j["cells"] = {{"total", s.grid.cellCount()}, {"with_data", s.cells_with_data},
+                  {"nonempty", s.cells_nonempty}, {"kept", s.keptCount()}, {"kept_without_data", s.cells_nodata_kept}};
+    j["pitch_mm"] = s.pitch_mm;
+    double zmax = 0;
+    for (int64_t t : s.top) zmax = std::max(zmax, s.zMm(t));
+    j["size_mm"] = {gridWidth(s.grid, s.pitch_mm), gridDepth(s.grid, s.pitch_mm), zmax};
+    j["z_snap_mm"] = s.z_snap_mm;
+    j["mapping"] = {{"transfer", toString(s.mapping.transfer)}, {"baseline", s.mapping.baseline},
+                    {"value_max", s.mapping.value_max}, {"max_height_mm", s.mapping.max_height_mm},
+                    {"base_mm", s.params.base_mm}};
+    j["cull"] = toString(s.params.cull);
+    j["bottom"] = toString(s.params.bottom);
+    if (s.params.bottom == Bottom::Mirrored) j["mirror_thickness_mm"] = s.zMm(s.mirror_thickness_units);
+    if (s.halves) {
+        const SceneHalves& h = *s.halves;
+        nlohmann::json holes = nlohmann::json::array();
+        for (const auto& [x, y] : holeCentresMm(s)) holes.push_back({x, y});
+        j["halves"] = {{"cut_z_mm", s.zMm(h.split_units)},
+                       {"slab_mm", {s.zMm(h.slab_bottom_units), s.zMm(h.slab_top_units)}},
+                       {"thickness_grown_mm", s.zMm(h.thickness_grown_units)},
+                       {"hole_centres_mm", holes},
+                       {"hole_diameter_mm", 2 * h.pins.hole_radius_mm},
+                       {"hole_depth_mm", s.zMm(h.hole_depth_units)},
+                       {"hole_tip_mm", s.zMm(h.hole_apex_units)},
+                       {"pin_diameter_mm", 2 * h.pins.pin_radius_mm},
+                       {"pin_length_mm", h.pins.pin_length_mm},
+                       {"clearance_per_side_mm", kPinClearanceMm}};
+    }
+    j["one_pillar_per_value"] = s.one_to_one;
+    if (s.params.cull == Cull::Concave)
+        j["concave"] = {{"cells_convex_hull", s.cells_convex}, {"volume_saved_mm3", s.volume_saved_mm3}};
+    j["nodata_pit_mm"] = s.zMm(s.nodata_pit_units);
+    j["tilt"] = {{"source", toString(s.params.tilt)}, {"steepness", s.params.steepness},
+                 {"cells_tilted", s.shapes.cells_tilted}, {"cells_clamped", s.shapes.cells_clamped},
+                 {"cells_clamped_level", s.shapes.cells_flat_clamped}};
+    j["structural_texture"] = {{"enabled", s.params.structural_texture}, {"cells", s.shapes.cells_textured},
+                               {"dimple_mm", s.zMm(s.shapes.dimple_units)}};
+    nlohmann::json marks = nlohmann::json::object();
+    if (s.marks.notch)
+        marks["notch"] = {{"depth_mm", s.marks.notch->depth_mm}, {"width_mm", s.marks.notch->width_mm},
+                          {"opening_deg", s.marks.notch->opening_deg},
+                          {"apex_mm", {planarX(s.marks.notch->apex, s.pitch_mm), planarY(s.marks.notch->apex, s.pitch_mm)}}};
+    else
+        marks["notch"] = nullptr;
+    if (s.marks.triangle)
+        marks["triangle"] = {{"leg_x_mm", s.marks.triangle->leg_x_mm}, {"leg_y_mm", s.marks.triangle->leg_y_mm},
+                             {"height_mm", s.zMm(s.marks.triangle->raise_units)},
+                             {"corner_mm", {planarX(s.marks.triangle->corner, s.pitch_mm),
+                                            planarY(s.marks.triangle->corner, s.pitch_mm)}}};
+    else
+        marks["triangle"] = nullptr;
+    j["marks"] = marks;
+    if (s.legend) {
+        const SceneLegend& l = *s.legend;
+        const BrailleStandard& st = l.layout.standard;
+        size_t cells = 0;
+        for (const auto& line : l.layout.cells) cells += line.size();
+        nlohmann::json lines = nlohmann::json::array();
+        for (size_t k = 0; k < l.layout.text.size(); ++k)
+            lines.push_back({{"text", l.layout.text[k]}, {"braille", brailleUnicode(l.layout.cells[k])}});
+        j["legend"] = {{"lines", lines}, {"table", s.params.legend.table}, {"cells", cells}, {"dots", l.layout.dots.size()},
+                       {"plate_mm", {{0, l.plate_south_mm}, {l.plate_east_mm, l.plate_north_mm}}},
+                       {"standard", st.name}, {"dot_base_mm", st.dot_base_mm}, {"dot_height_mm", st.dot_height_mm},
+                       {"dot_pitch_mm", st.dot_pitch_mm}, {"cell_pitch_mm", st.cell_pitch_mm},
+                       {"line_pitch_mm", st.line_pitch_mm}};
+    } else {
+        j["legend"] = nullptr;
+    }
+    if (s.scale) {
+        const SceneScale& sc = *s.scale;
+        nlohmann::json steps = nlohmann::json::array();
+        for (const ScaleStep& st : sc.steps)
+            steps.push_back({{"value", st.value}, {"top_mm", s.zMm(st.top_units)},
+                             {"height_above_floor_mm", s.zMm(st.top_units - sc.foot_top_units)}});
+        j["scale"] = {{"step", sc.step}, {"step_given", sc.step_given}, {"floor_value", s.mapping.baseline},
+                      {"floor_mm", s.zMm(sc.foot_top_units)}, {"steps", steps},
+                      {"footprint_mm", {{sc.x0_mm, sc.y0_mm}, {sc.x1_mm, sc.y1_mm}}},
+                      {"tread_mm", {sc.x1_mm - sc.xs_mm, sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm}},
+                      {"contacts", sc.contacts.size()}};
+    } else {
+        j["scale"] = nullptr;
+    }
+    j["notes"] = s.notes;
+    return j;
+}
+
+std::string formatSceneFacts(const Scene& s) {
+    std::ostringstream o;
+    const double w = gridWidth(s.grid, s.pitch_mm), d = gridDepth(s.grid, s.pitch_mm);
+    double zmax = 0;
+    for (int64_t t : s.top) zmax = std::max(zmax, s.zMm(t));
+    o << "  cells     " << s.keptCount() << " kept of " << s.grid.cols << " x " << s.grid.rows << " = "
+      << s.grid.cellCount() << " (" << s.cells_nonempty << " above the floor, " << s.cells_with_data - s.cells_nonempty
+      << " at the floor, " << s.grid.cellCount() - s.cells_with_data << " without data; culling: "
+      << toString(s.params.cull) << ")\n";
+    o << "  size      " << fmt("%.1f", w) << " x " << fmt("%.1f", d) << " x " << fmt("%.1f", zmax)
+      << " mm (grid box), hexagons " << fmt("%.2f", s.pitch_mm) << " mm across flats\n";
+    o << "  heights   " << mappingText(s) << "\n";
+    if (s.params.bottom == Bottom::Flat)
+        o << "  bottom    flat, base " << fmt("%.2f", s.params.base_mm) << " mm\n";
+    else
+        o << "  bottom    mirrored: every pillar " << fmt("%.2f", s.zMm(s.mirror_thickness_units))
+          << " mm thick; the underside shows the negated data\n";
+    o << "  z snap    " << fmt("%.4g", s.z_snap_mm) << " mm\n";
+    if (s.one_to_one)
+        o << "  values    one pillar per value: each of the " << s.cells_with_data << " values stands at its own height\n";
+    if (s.marks.notch)
+        o << "  notch     V " << fmt("%.1f", s.marks.notch->depth_mm) << " mm deep, " << fmt("%.1f", s.marks.notch->width_mm)
+          << " mm wide, at the origin (south-west) corner, through the whole height\n";
+    if (s.marks.triangle) {
+        const OrientationTriangle& t = *s.marks.triangle;
+        o << "  triangle  raised " << fmt("%.2f", s.zMm(t.raise_units)) << " mm, legs " << fmt("%.1f", t.leg_x_mm)
+          << " mm east (x) and " << fmt("%.1f", t.leg_y_mm) << " mm north (y), right angle at ("
+          << fmt("%.1f", planarX(t.corner, s.pitch_mm)) << ", " << fmt("%.1f", planarY(t.corner, s.pitch_mm)) << ") mm\n";
+    }
+    if (s.params.tilt != TiltSource::None)
+        o << "  tilt      " << toString(s.params.tilt) << " x " << fmt("%.3g", s.params.steepness) << ": "
+          << s.shapes.cells_tilted << " tops tilted (" << s.shapes.cells_clamped << " clamped at the floor or a mark, "
+          << s.shapes.cells_flat_clamped << " of them level); each reads its value at its centre\n";
+    if (s.shapes.cells_textured > 0)
+        o << "  texture   " << s.shapes.cells_textured << " structural cells (kept only to hold the model together, "
+          << "no data) carry a cone-shaped dimple " << fmt("%.2f", s.zMm(s.shapes.dimple_units))
+          << " mm deep at the centre\n";
+    if (s.legend) {
+        const SceneLegend& l = *s.legend;
+        const BrailleStandard& st = l.layout.standard;
+        o << "  legend    braille (" << s.params.legend.table << ") on a plate " << fmt("%.1f", l.plate_east_mm) << " x "
+          << fmt("%.1f", l.plate_north_mm - l.plate_south_mm) << " mm north of the pillars, " << l.layout.dots.size()
+          << " dots " << fmt("%.2f", st.dot_base_mm) << " mm across, " << fmt("%.2f", st.dot_height_mm) << " mm high ("
+          << st.name << ")\n";
+        for (size_t k = 0; k < l.layout.text.size(); ++k)
+            o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
+    }
+    if (s.scale) {
+        const SceneScale& sc = *s.scale;
+        std::ostringstream values;
+        for (size_t k = 0; k < sc.steps.size(); ++k) values << (k ? ", " : "") << fmt("%.6g", sc.steps[k].value);
+        o << "  scale     " << sc.steps.size() << " steps every " << fmt("%.6g", sc.step) << (sc.step_given ? "" : " (chosen)")
+          << " east of the pillars, lowest in the south, on a foot at the floor (= " << fmt("%.6g", s.mapping.baseline)
+          << "): " << values.str() << "; treads " << fmt("%.1f", sc.x1_mm - sc.xs_mm) << " x "
+          << fmt("%.1f", sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm) << " mm, rising "
+          << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps[0].top_units - sc.foot_top_units)) << " mm to "
+          << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units))
+          << " mm above the floor\n";
+    }
+    if (s.halves) {
+        const SceneHalves& h = *s.halves;
+        o << "  halves    cut at z = " << fmt("%.2f", s.zMm(h.split_units)) << " mm, the middle of the slab every pillar "
+          << "crosses (" << fmt("%.2f", s.zMm(h.slab_bottom_units)) << " to " << fmt("%.2f", s.zMm(h.slab_top_units))
+          << " mm";
+        if (h.thickness_grown_units > 0)
+            o << "; the thickness grew by " << fmt("%.2f", s.zMm(h.thickness_grown_units)) << " mm to make room for the pins";
+        o << ")\n            " << h.hole_centres.size() << " pin holes " << fmt("%.2f", 2 * h.pins.hole_radius_mm)
+          << " mm across, " << fmt("%.2f", s.zMm(h.hole_apex_units)) << " mm deep to the cone's tip, at";
+        for (const auto& [x, y] : holeCentresMm(s)) o << " (" << fmt("%.1f", x) << ", " << fmt("%.1f", y) << ")";
+        o << " mm; pins " << fmt("%.1f", 2 * h.pins.pin_radius_mm) << " mm x " << fmt("%.1f", h.pins.pin_length_mm)
+          << " mm, " << fmt("%.2f", kPinClearanceMm) << " mm clearance per side\n";
+    }
+    for (const std::string& n : s.notes) o << "  note      " << n << "\n";
+    return o.str();
+}
+
+nlohmann::json summaryJson(const GenSummary& s) {
+    nlohmann::json j;
+    j["input"] = s.input;
+    if (s.field) j["field"] = {{"how", s.field->how}, {"pitch_data_units", s.field->pitch_data}};
+    if (s.scene) j["scene"] = sceneFactsJson(*s.scene);
+    if (s.mesh) {
+        const Bounds b = meshBounds(*s.mesh);
+        j["mesh"] = {{"vertices", s.mesh->vertexCount()}, {"triangles", s.mesh->triangleCount()},
+                     {"volume_mm3", signedVolume(*s.mesh)},
+                     {"bounds_mm", {{b.min.x, b.min.y, b.min.z}, {b.max.x, b.max.y, b.max.z}}}};
+    }
+    j["outputs"] = nlohmann::json::array();
+    for (const auto& [path, what] : s.outputs) j["outputs"].push_back({{"path", path}, {"kind", what}});
+    for (const auto& [stage, ms] : s.timings_ms) j["timings_ms"][stage] = ms;
+    if (!s.verify.is_null()) j["verify"] = s.verify;
+    if (!s.halves.is_null()) j["halves"] = s.halves;
+    j["printer"] = s.printer_notes;
+    return j;
+}
+
+std::string formatSummary(const GenSummary& s) {
+    std::ostringstream o;
+    o << "tsf gen: " << s.input << "\n";
+    if (s.field) o << "  input     " << s.field->how << "\n";
+    for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
+    if (s.scene) o << formatSceneFacts(*s.scene);
+    if (s.mesh)
+        o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
+          << fmt("%.1f", signedVolume(*s.mesh)) << " mm^3\n";
+    if (!s.verify_text.empty()) o << s.verify_text;
+    o << s.supports_text << s.halves_text;
+    for (const auto& [path, what] : s.outputs) o << "  wrote     " << path << " (" << what << ")\n";
+    if (!s.timings_ms.empty()) {
+        o << "  time     ";
+        for (const auto& [stage, ms] : s.timings_ms) o << " " << stage << " " << fmt("%.0f", ms) << " ms";
+        o << "\n";
+    }
+    return o.str();
+}
+
+}  // namespace tsf::cli

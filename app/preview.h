@@ -1,0 +1,19 @@
+// A preview picture of a generated model, so a sighted helper can check it
+// before hours of printing: drawn by tsf from the mesh it writes
+// (gen/mesh/mesh_picture.h), framed to fill the picture, coloured by height, with
+// north and a scale bar, and the underside beside the top for a mirrored
+// model. Needs no OpenSCAD and no display.
+#pragma once
+
+#include <string>
+
+#include "gen/geometry/mesh.h"
+
+namespace tsf::cli {
+
+/// Draws `mesh` to png_path (width x height pixels); `underside` adds the
+/// view from below. Throws tsf::OutputError when the file cannot be written.
+void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, int width_px = 1200,
+                       int height_px = 800);
+
+}  // namespace tsf::cli

@@ -1,0 +1,57 @@
+// Printer fit: `tsf gen --bed WxD --nozzle D --layer H` shape the model's
+// defaults for one printer, and a model larger than the bed is refused.
+//
+// Rules (docs/printing.md, "Printer fit"):
+//   - --bed: without --width/--depth the grid is fitted into the bed less
+//     kBedMarginMm on every side (room for the slicer's skirt and for taking
+//     the print off); a --width or --depth larger than that is refused. A
+//     model that still does not fit (a --cell too large) is refused after
+//     meshing, with the largest --cell that fits. tsf does not tile a model
+//     over several prints.
+//   - --nozzle: a pillar narrower than kCellNozzleWidths nozzle widths is a
+//     blob of perimeters, not a hexagon; the default cell for rasters is at
+//     least that wide (never below the 3 mm tactile minimum), and narrower
+//     cells (--cell, --bins) get a note. The verifier's wall and gap checks use it.
+//   - --layer: without --snap, heights snap to whole layers, so each value
+//     step the model shows is one the printer prints; the verifier's base
+//     check uses it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/gen_options.h"
+#include "gen/geometry/mesh.h"
+
+namespace tsf::cli {
+
+/// Free space kept between the model and each edge of the bed, mm.
+inline constexpr double kBedMarginMm = 5.0;
+/// Narrowest pillar, in nozzle widths: two perimeters on each side.
+inline constexpr double kCellNozzleWidths = 4.0;
+
+struct PrinterSpec {
+    std::string bed;       ///< --bed "WxD" as given; "" = no bed
+    double nozzle_mm = 0;  ///< --nozzle; 0 = not given
+    double layer_mm = 0;   ///< --layer; 0 = not given
+};
+
+/// Which model options the user gave himself (the printer never overrides them).
+struct GivenOptions {
+    bool width = false, depth = false, snap = false;
+};
+
+/// Shapes `gen` for the printer before the field is loaded; returns what it
+/// changed, one line each, for the summary. Throws InputError for a bad
+/// --bed or a --width/--depth larger than the bed.
+std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const GivenOptions& given, GenOptions& gen);
+
+/// A note when cells pitch_mm across are narrower than kCellNozzleWidths
+/// nozzle widths; "" when they are not or no nozzle was given.
+std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer);
+
+/// After meshing: throws InputError when the mesh's footprint is larger
+/// than the bed less its margins, naming the largest --cell that fits.
+void checkFitsBed(const Mesh& mesh, double pitch_mm, const PrinterSpec& printer);
+
+}  // namespace tsf::cli

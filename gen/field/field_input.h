@@ -1,0 +1,28 @@
+// FieldInput: what was read from an input file before it became hexagons,
+// for `tsf info` and the summary of `tsf gen`: the reader's detections and
+// the raw values' range, in the file's own units.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "gen/field/raster.h"
+
+namespace tsf {
+
+struct FieldInput {
+    std::string kind;             ///< "csv", "png", "esri-ascii", "points", ...
+    int64_t cols = 0, rows = 0;   ///< raster size in values (0 for points)
+    int64_t values = 0;           ///< values read: raster cells, or points
+    int64_t nodata = 0;           ///< of them without data (NaN, a placeholder, --nodata)
+    double min = NAN, max = NAN, mean = NAN;  ///< over the values with data; NaN when none
+    std::vector<ReadFact> facts;  ///< what the reader detected, in reading order
+};
+
+/// Counts `values` (NaN = no data) and takes min, max and mean of the others.
+void describeValues(std::span<const double> values, FieldInput& into);
+
+}  // namespace tsf

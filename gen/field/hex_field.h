@@ -1,0 +1,42 @@
+// HexField: scalar values on the hexagonal lattice described by HexGrid.
+//
+// Layout is the same as HexGrid: row-major over (col, row), row 0 = north,
+// odd rows shifted east by half a cell ("odd-r"). NaN = no data.
+// Produced by resampling a Raster (gen/field/resample.h) or by binning points
+// (gen/readers/point_binning.h); consumed by buildScene (gen/model/scene.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gen/field/bin_regression.h"
+#include "gen/field/field_input.h"
+#include "gen/field/hex_grid.h"
+
+namespace tsf {
+
+struct HexField {
+    HexGrid grid;
+    std::vector<double> values;  ///< grid.cols * grid.rows, row-major, NaN = no data
+    std::string source;          ///< input file, for reports and headers
+    std::string how;             ///< one line: how the values were made ("mean of 2x2 px", "count of points")
+    /// Centre spacing of the lattice in data units (1 = one raster pixel), so a
+    /// reader of the model can relate millimetres back to data coordinates.
+    double pitch_data = 1.0;
+    /// True when every cell holds one input value as read (no averaging,
+    /// no interpolation, no cell repeated): one pillar per value.
+    bool one_to_one = false;
+    /// What was read from the file (filled by loadField, gen/readers/load_field.h).
+    FieldInput input;
+    /// Point input (gen/readers/point_binning.h): per cell, the sums of its points'
+    /// offsets from the centre (and weights), for the tilt of its top
+    /// (gen/model/features/tilt.h). Empty for rasters.
+    std::vector<BinMoments> moments;
+    BinStatistic statistic = BinStatistic::Density;  ///< what a cell's value is, with moments
+
+    double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }
+    double& at(int32_t col, int32_t row) { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }
+};
+
+}  // namespace tsf

@@ -1,0 +1,219 @@
+#include "gen/field/resample.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "gen/util/error.h"
+
+namespace tsf {
+namespace {
+
+constexpr double kRowSpacing = kSqrt3 / 2.0;  // hex row spacing in pitches
+
+std::string formatNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+int32_t clampIndex(double v, int32_t n) {
+    if (!(v >= 0.0)) return 0;  // also NaN
+    if (v >= double(n)) return n - 1;
+    return int32_t(v);
+}
+
+struct PixelPoint {
+    double x = 0.0;  ///< pixels, east
+    double y = 0.0;  ///< pixels, down
+};
+
+PixelPoint hexCentrePx(const ResampleLayout& layout, int32_t col, int32_t row) {
+    const LatticePoint c = hexCentre(layout.grid, col, row);
+    return {layout.x0_px + latticeX(c, layout.pitch_px), layout.y0_px - latticeY(c, layout.pitch_px)};
+}
+
+double nearestValue(const Raster& raster, PixelPoint p) {
+    return raster.at(clampIndex(std::floor(p.x), raster.cols), clampIndex(std::floor(p.y), raster.rows));
+}
+
+double bilinearValue(const Raster& raster, PixelPoint p) {
+    const double u = std::clamp(p.x - 0.5, 0.0, double(raster.cols - 1));
+    const double v = std::clamp(p.y - 0.5, 0.0, double(raster.rows - 1));
+    const int32_t c0 = int32_t(std::floor(u));
+    const int32_t r0 = int32_t(std::floor(v));
+    const double fu = u - c0;
+    const double fv = v - r0;
+    // A neighbour with zero weight is not read, so it cannot turn the result into NaN.
+    const int32_t c1 = fu > 0.0 ? std::min(c0 + 1, raster.cols - 1) : c0;
+    const int32_t r1 = fv > 0.0 ? std::min(r0 + 1, raster.rows - 1) : r0;
+    const double z00 = raster.at(c0, r0), z10 = raster.at(c1, r0);
+    const double z01 = raster.at(c0, r1), z11 = raster.at(c1, r1);
+    if (std::isnan(z00) || std::isnan(z10) || std::isnan(z01) || std::isnan(z11)) return NAN;
+    // Interpolation by differences: a constant neighbourhood gives the constant exactly.
+    const double top = z00 + fu * (z10 - z00);
+    const double bottom = z01 + fu * (z11 - z01);
+    return top + fv * (bottom - top);
+}
+
+}  // namespace
+
+ResampleLayout resampleLayout(int32_t raster_cols, int32_t raster_rows, int hex_cols) {
+    if (raster_cols <= 0 || raster_rows <= 0)
+        throw InputError("cannot resample an empty raster (" + std::to_string(raster_cols) + " x " +
+                         std::to_string(raster_rows) + ")");
+    if (hex_cols < 0 || hex_cols > kMaxResampleCols)
+        throw InputError("hex columns " + std::to_string(hex_cols) + " out of range; expected 1.." +
+                         std::to_string(kMaxResampleCols) + " (0 = one per raster column)");
+    const int32_t cols = hex_cols > 0 ? hex_cols : std::min(raster_cols, kMaxResampleCols);
+    ResampleLayout layout;
+    // A single row needs no room for the shifted odd row.
+    const double p_single = double(raster_cols) / cols;
+    if (std::round(raster_rows / (p_single * kRowSpacing)) <= 1.0) {
+        layout.pitch_px = p_single;
+        layout.grid = {cols, 1};
+    } else {
+        layout.pitch_px = double(raster_cols) / (cols + 0.5);
+        const double rows = std::max(1.0, std::round(raster_rows / (layout.pitch_px * kRowSpacing)));
+        if (rows * cols > double(kMaxResampleCells))
+            throw InputError("resampling " + std::to_string(raster_cols) + " x " + std::to_string(raster_rows) +
+                             " pixels to " + std::to_string(cols) + " hex columns gives " +
+                             formatNumber(rows * cols) + " hexagons; the most is " +
+                             std::to_string(kMaxResampleCells) + " (use fewer hex columns)");
+        layout.grid = {cols, int32_t(rows)};
+    }
+    const double width = gridWidth(layout.grid, layout.pitch_px);
+    const double depth = gridDepth(layout.grid, layout.pitch_px);
+    layout.x0_px = 0.5 * (raster_cols - width);
+    layout.y0_px = 0.5 * (raster_rows + depth);
+    return layout;
+}
+
+HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
+    const ResampleLayout layout = resampleLayout(raster.cols, raster.rows, opts.hex_cols);
+    if (raster.values.size() != size_t(raster.cols) * size_t(raster.rows))
+        throw InputError(raster.source, 0, 0,
+                         "the raster holds " + std::to_string(raster.values.size()) + " values, not " +
+                             std::to_string(raster.cols) + " x " + std::to_string(raster.rows));
+    const HexGrid& grid = layout.grid;
+    const double p = layout.pitch_px;
+
+    HexField field;
+    field.grid = grid;
+    field.source = raster.source;
+    field.pitch_data = p * raster.cell_size;
+    field.values.assign(size_t(grid.cellCount()), NAN);
+
+    switch (opts.method) {
+        case ResampleOptions::Method::Nearest:
+        case ResampleOptions::Method::Bilinear:
+            for (int32_t r = 0; r < grid.rows; ++r)
+                for (int32_t c = 0; c < grid.cols; ++c) {
+                    const PixelPoint centre = hexCentrePx(layout, c, r);
+                    field.at(c, r) = opts.method == ResampleOptions::Method::Nearest ? nearestValue(raster, centre)
+                                                                                     : bilinearValue(raster, centre);
+                }
+            break;
+        case ResampleOptions::Method::Mean: {
+            std::vector<double> sum(size_t(grid.cellCount()), 0.0);
+            std::vector<int64_t> finite(size_t(grid.cellCount()), 0);
+            std::vector<int64_t> inside(size_t(grid.cellCount()), 0);
+            for (int32_t pr = 0; pr < raster.rows; ++pr) {
+                const double y_pitch = (layout.y0_px - (pr + 0.5)) / p;
+                for (int32_t pc = 0; pc < raster.cols; ++pc) {
+                    const double x_pitch = (pc + 0.5 - layout.x0_px) / p;
+                    int32_t c = 0, r = 0;
+                    if (!hexCellAt(grid, x_pitch, y_pitch, c, r)) continue;
+                    const size_t k = size_t(grid.index(c, r));
+                    ++inside[k];
+                    const double v = raster.at(pc, pr);
+                    if (std::isnan(v)) continue;
+                    sum[k] += v;
+                    ++finite[k];
+                }
+            }
+            for (int32_t r = 0; r < grid.rows; ++r)
+                for (int32_t c = 0; c < grid.cols; ++c) {
+                    const size_t k = size_t(grid.index(c, r));
+                    if (inside[k] == 0) field.at(c, r) = nearestValue(raster, hexCentrePx(layout, c, r));
+                    else if (finite[k] > 0) field.at(c, r) = sum[k] / double(finite[k]);
+                }
+            break;
+        }
+    }
+
+    std::string what;
+    switch (opts.method) {
+        case ResampleOptions::Method::Mean: what = "mean of the pixels in each hexagon"; break;
+        case ResampleOptions::Method::Nearest: what = "nearest pixel to each hexagon centre"; break;
+        case ResampleOptions::Method::Bilinear: what = "bilinear interpolation at each hexagon centre"; break;
+    }
+    field.how = what + ": " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) + " px -> " +
+                std::to_string(grid.cols) + " x " + std::to_string(grid.rows) + " hexagons, pitch " +
+                formatNumber(p) + " px";
+    return field;
+}
+
+HexField rasterOneToOne(const Raster& raster) {
+    if (raster.empty()) throw InputError(raster.source, 0, 0, "the raster is empty");
+    HexField field;
+    field.grid = {raster.cols, raster.rows};
+    field.source = raster.source;
+    field.values = raster.values;
+    field.pitch_data = raster.cell_size;
+    field.one_to_one = true;
+    field.how = "one pillar per value: " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
+                " values -> " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
+                " hexagons (odd rows shifted half a cell east; rows are 0.866 of a cell apart, so the model is "
+                "13% shallower north-south than the grid)";
+    return field;
+}
+
+HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
+    if (raster.empty()) throw InputError(raster.source, 0, 0, "the raster is empty");
+    ResampleOptions rs;
+    rs.method = pl.method;
+    if (pl.hex_cols > 0) {
+        rs.hex_cols = pl.hex_cols;
+        return resampleRaster(raster, rs);
+    }
+    const HexGrid grid{raster.cols, raster.rows};
+    if (pl.pitch_mm > 0) return rasterOneToOne(raster);
+    const double pitch = std::min(pl.fit_width_mm / gridWidth(grid, 1.0), pl.fit_depth_mm / gridDepth(grid, 1.0));
+    const double min_cell_mm = std::max(kMinTactileCellMm, pl.min_cell_mm);
+    if (pitch >= min_cell_mm) return rasterOneToOne(raster);
+    // Too many values for pillars a finger can tell apart: the most columns
+    // whose cells are still min_cell_mm wide, in both directions.
+    int cols = std::max(1, int(std::floor(pl.fit_width_mm / min_cell_mm - 0.5)));
+    cols = std::min<int>(cols, raster.cols);
+    for (; cols > 1; --cols) {
+        const ResampleLayout l = resampleLayout(raster.cols, raster.rows, cols);
+        const double p = std::min(pl.fit_width_mm / gridWidth(l.grid, 1.0), pl.fit_depth_mm / gridDepth(l.grid, 1.0));
+        if (p >= min_cell_mm) break;
+    }
+    rs.hex_cols = cols;
+    HexField f = resampleRaster(raster, rs);
+    f.how += "; resampled because one pillar per value would be " + formatNumber(pitch) +
+             " mm across, below the " + formatNumber(min_cell_mm) +
+             (min_cell_mm > kMinTactileCellMm ? " mm the nozzle prints as pillars" : " mm a fingertip tells apart") +
+             " (--bins N or --cell MM to choose)";
+    return f;
+}
+
+const char* resampleMethodName(ResampleOptions::Method method) {
+    switch (method) {
+        case ResampleOptions::Method::Nearest: return "nearest";
+        case ResampleOptions::Method::Bilinear: return "bilinear";
+        default: return "mean";
+    }
+}
+
+ResampleOptions::Method parseResampleMethod(const std::string& name) {
+    if (name == "mean") return ResampleOptions::Method::Mean;
+    if (name == "nearest") return ResampleOptions::Method::Nearest;
+    if (name == "bilinear") return ResampleOptions::Method::Bilinear;
+    throw InputError("unknown sampling method \"" + name + "\"; expected mean, nearest or bilinear");
+}
+
+}  // namespace tsf

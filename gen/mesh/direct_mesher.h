@@ -1,0 +1,34 @@
+// DirectMesher: the boundary of a Scene's solid as an exact triangle mesh.
+//
+// meshScene returns the boundary of the union of the Scene's prisms:
+//   - a top face per kept cell (hexagon, 4 triangles), except that
+//     edge-connected plain level cells of one height share one top polygon
+//     whose interior lattice vertices are left out but for a sparse
+//     sublattice (every 4th row and column), so its triangles are a few
+//     cells across;
+//   - a bottom face per kept cell when mirrored; a flat bottom is ONE polygon
+//     (the outline of the kept region) with the same sparse interior vertices;
+//   - a vertical wall wherever a neighbour's z interval does not cover this
+//     cell's (only where heights differ; outer walls on the kept region's rim).
+// Every corner line is split at every height that meets it, so there are no
+// T-junctions; vertices are identified by lattice id and snapped height, never
+// by comparing floats. The result is closed, 2-manifold, outward-oriented
+// (CCW from outside) and has no zero-area triangles.
+#pragma once
+
+#include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
+
+namespace tsf {
+
+/// Mesh the Scene. An empty Scene (no kept cells) gives an empty Mesh. A
+/// Scene that breaks the invariants the mesher builds on (gen/model/scene_check.h;
+/// buildScene never makes one) is a tsf::InputError.
+Mesh meshScene(const Scene& scene);
+
+/// The same without the braille legend's plate and dots (the Scene's legend
+/// still shapes the mesh as it is before the union: gen/mesh/legend_join.h
+/// unionWithLegend joins them). For the parts of a multi-part 3MF.
+Mesh meshSceneBeforeLegend(const Scene& scene);
+
+}  // namespace tsf

@@ -1,0 +1,85 @@
+// The braille legend's layout: lines of text -> braille cells (braille.h)
+// -> dot centres in millimetres at a stated braille standard.
+//
+// Frame: the legend's own, x east from its west edge, y north from its south
+// edge, mm; the first line is the northernmost. Inside a cell dots 1-2-3 run
+// down the west column and 4-5-6 down the east column (7-8 below them), the
+// columns dot_pitch_mm apart, cells cell_pitch_mm apart centre to centre,
+// lines line_pitch_mm apart. Every centre is rounded to the model's 1 um
+// grid. A margin of margin_mm surrounds the dots' bases on every side.
+//
+// Lines longer than max_cells are broken at spaces (a word longer than the
+// line is an InputError that says how wide the legend would have to be).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tsf {
+
+/// Braille dimensions, mm.
+struct BrailleStandard {
+    const char* name;
+    double dot_base_mm;    ///< diameter of a dot where it meets the surface
+    double dot_height_mm;  ///< how far a dot stands above the surface
+    double dot_pitch_mm;   ///< centre to centre of neighbouring dots in a cell
+    double cell_pitch_mm;  ///< centre to centre of the same dot in neighbouring cells
+    double line_pitch_mm;  ///< centre to centre of the same dot in neighbouring lines
+};
+
+/// NLS Specification 800, "Braille Books and Pamphlets" (Library of Congress,
+/// 2008), section 3.2, as quoted by the Braille Authority of North America
+/// (nominal values).
+inline constexpr BrailleStandard kNlsSpec800{"NLS Specification 800 (2008) 3.2", 1.44, 0.48, 2.34, 6.2, 10.0};
+
+struct LegendParams {
+    std::vector<std::string> lines;            ///< text, UTF-8; empty lines are skipped
+    std::string table = "en-us-g1.ctb";        ///< liblouis table (braille.h)
+    BrailleStandard standard = kNlsSpec800;
+    double margin_mm = 3.0;                    ///< clear space around the dots
+    int max_cells = 0;                         ///< cells per line before a break; 0 = no limit
+};
+
+struct LegendDot {
+    double x_mm = 0, y_mm = 0;  ///< centre, legend frame
+};
+
+struct LegendLayout {
+    BrailleStandard standard = kNlsSpec800;
+    std::vector<std::string> text;               ///< the lines as laid out (after breaking)
+    std::vector<std::vector<uint8_t>> cells;     ///< braille cells of each line
+    std::vector<LegendDot> dots;                 ///< every raised dot
+    double width_mm = 0, depth_mm = 0;           ///< the area the legend needs, margins included
+};
+
+/// What the user asks the legend to say (tsf gen --title, --units,
+/// --braille-table). No title and no units: no legend.
+struct LegendRequest {
+    std::string title;                      ///< first line, UTF-8
+    std::string units;                      ///< after the value range ("0 to 27 airports")
+    std::string table = "en-us-g1.ctb";     ///< liblouis table
+    bool wanted() const { return !title.empty() || !units.empty(); }
+};
+
+/// The legend as placed on a model (gen/model/features/legend_scene.h): a plate north of
+/// the pillars, its top at the floor, the braille on it.
+struct SceneLegend {
+    LegendLayout layout;          ///< the braille, in the legend's frame
+    double x0_mm = 0, y0_mm = 0;  ///< where the legend frame's origin is in the model frame
+    int32_t reach_row = 0;        ///< the southmost grid row the plate reaches under (its north tips)
+    double plate_south_mm = 0;    ///< y (model frame) of the plate's south edge: the upper side corners of reach_row
+    double plate_north_mm = 0;    ///< y of its north edge
+    double plate_east_mm = 0;     ///< x of its east edge (its west edge is x = 0)
+    int64_t plate_top_units = 0;  ///< z of its top (the floor), z snap units
+};
+
+/// Lays the legend out as described above. Throws InputError for a table
+/// liblouis cannot load or a word wider than max_cells.
+LegendLayout layoutLegend(const LegendParams& params);
+
+/// "0 to 27 airports" (units "" -> "0 to 27"): the value range a legend states,
+/// with up to 4 significant digits.
+std::string legendRangeText(double low, double high, const std::string& units);
+
+}  // namespace tsf

@@ -1,0 +1,77 @@
+#include "gen/model/features/legend_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "gen/model/scene.h"
+#include "gen/util/error.h"
+
+namespace tsf {
+namespace {
+
+double snapUm(double mm) { return std::round(mm * 1000.0) / 1000.0; }
+
+// Share of the grid's columns the kept cells of the plate's southmost row must span.
+constexpr double kPlateHoldFraction = 0.6;
+
+}  // namespace
+
+void placeLegend(Scene& s) {
+    const LegendRequest& rq = s.params.legend;
+    if (!rq.wanted() || s.keptCount() == 0) return;
+    if (s.params.bottom == Bottom::Mirrored)
+        throw InputError("--title/--units: the braille legend stands on the floor of a flat model; a mirrored model "
+                         "has none. Leave out --mirror, or leave out --title and --units");
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const double v : s.value)
+        if (!std::isnan(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    LegendParams p;
+    if (!rq.title.empty()) p.lines.push_back(rq.title);
+    if (std::isfinite(lo)) p.lines.push_back(legendRangeText(lo, hi, rq.units));
+    p.table = rq.table;
+    const double width = gridWidth(s.grid, s.pitch_mm);
+    const BrailleStandard& st = p.standard;
+    p.max_cells = std::max(1, int(std::floor((width - 2 * p.margin_mm - st.dot_base_mm - st.dot_pitch_mm) /
+                                              st.cell_pitch_mm)) + 1);
+    SceneLegend l;
+    l.layout = layoutLegend(p);
+    if (l.layout.dots.empty()) return;
+    // The plate reaches south over the culled corners to row `reach`, the
+    // first row (from the north) whose kept cells span kPlateHoldFraction of
+    // the grid's columns, so it holds on along much of its length; never over
+    // a whole row that holds a no-data pit (a pit must stay a pit).
+    int32_t reach = 0;
+    for (int32_t r = 0; r < s.grid.rows; ++r) {
+        int32_t lo_col = s.grid.cols, hi_col = -1;
+        bool pit = false;
+        for (int32_t c = 0; c < s.grid.cols; ++c) {
+            const int32_t k = s.keptAt(c, r);
+            if (k < 0) continue;
+            lo_col = std::min(lo_col, c);
+            hi_col = std::max(hi_col, c);
+            pit = pit || s.kind[size_t(k)] == CellKind::NoData;
+        }
+        reach = r;
+        if (hi_col >= lo_col && double(hi_col - lo_col + 1) >= kPlateHoldFraction * s.grid.cols) break;
+        if (pit) break;  // this row's tips are covered, the row itself is not
+    }
+    // The south edge: the line through the upper side corners of row `reach`
+    // (it meets hexagon walls only at their corners); the braille begins north
+    // of the tips of row 0.
+    l.reach_row = reach;
+    const LatticePoint south = hexCentre(s.grid, 0, reach), north = hexCentre(s.grid, 0, 0);
+    l.plate_south_mm = s.point(LatticePoint{south.i, south.j + 1}, 0).y;
+    const double tips_mm = s.point(LatticePoint{north.i, north.j + 2}, 0).y;
+    l.x0_mm = 0;
+    l.y0_mm = tips_mm;
+    l.plate_north_mm = snapUm(tips_mm + l.layout.depth_mm);
+    l.plate_east_mm = snapUm(std::max(width, l.layout.width_mm));
+    l.plate_top_units = s.floor_units;
+    s.legend = l;
+}
+
+}  // namespace tsf

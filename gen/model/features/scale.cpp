@@ -1,0 +1,452 @@
+#include "gen/model/features/scale.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include "gen/util/error.h"
+#include "gen/field/hex_grid.h"
+#include "gen/model/scene.h"
+
+namespace tsf {
+namespace {
+
+std::string num(double v) {
+    std::ostringstream o;
+    o.precision(6);
+    o << v;
+    return o.str();
+}
+
+// A multiple of the step as the number a person would write (0.1 * 3 -> 0.3).
+double roundedMultiple(int64_t k, double step) {
+    const double v = double(k) * step;
+    const double decimals = std::max(0.0, -std::floor(std::log10(step)) + 1);
+    const double scale = std::pow(10.0, decimals);
+    const double r = std::round(v * scale) / scale;
+    return std::isfinite(r) ? r : v;
+}
+
+bool drawnByFace(const Scene& s, size_t k) { return !s.drawn_by_face.empty() && s.drawn_by_face[k]; }
+
+// The foot stands against a cell's walls from 0 to the floor: the cell must
+// be kept, rise to the floor at every corner, and be drawn as a hexagon.
+bool touchable(const Scene& s, int32_t k) {
+    if (k < 0 || drawnByFace(s, size_t(k))) return false;
+    for (int e = 0; e < kHexCorners; ++e)
+        if (cornerTop(s, size_t(k), e) < s.floor_units) return false;
+    return true;
+}
+
+// The kept index of the cell whose centre is at lattice (i, j), or -1.
+int32_t keptAtCentre(const Scene& s, int64_t i, int64_t j) {
+    if ((j - 2) % 3 != 0) return -1;
+    const int64_t row = int64_t(s.grid.rows) - 1 - (j - 2) / 3;
+    if (row < 0 || row >= s.grid.rows) return -1;
+    const int64_t twice = i - 1 - (row % 2);
+    if (twice < 0 || twice % 2 != 0) return -1;
+    return s.keptAt(int32_t(twice / 2), int32_t(row));
+}
+
+}  // namespace
+
+std::vector<ScaleLevel> scaleLevels(const ValueMapping& m, double step, double z_snap_mm, int max_steps,
+                                    std::string* error) {
+    std::vector<ScaleLevel> levels;
+    std::string why;
+    const int64_t min_riser = std::max<int64_t>(1, snapUnits(kScaleMinRiserMm, z_snap_mm));
+    if (!(step > 0) || !std::isfinite(step) || !(m.value_max > m.baseline)) {
+        why = "the values have no range to measure";
+    } else {
+        // Multiples of the step above the baseline, up to value_max (with a
+        // relative allowance for the rounding of k * step).
+        const double first = std::floor(m.baseline / step) + 1;
+        const double count = std::floor((m.value_max - m.baseline) / step) + 2;
+        if (std::fabs(first) > 1e15) {
+            why = "the step " + num(step) + " is too small for values as large as " + num(m.baseline);
+        } else if (count > double(max_steps) * 4 + 8) {
+            why = "the step " + num(step) + " makes about " + num(std::floor(count)) + " steps; at most " +
+                  std::to_string(max_steps) + " fit";
+        } else {
+            int64_t previous = 0;
+            for (int64_t k = int64_t(first);; ++k) {
+                const double v = roundedMultiple(k, step);
+                if (v <= m.baseline) continue;
+                if (v > m.value_max + 1e-9 * std::fabs(step)) break;
+                const int64_t h = snapUnits(m.heightMm(v), z_snap_mm);
+                if (h - previous < min_riser) {
+                    if (levels.empty()) continue;  // too close to the floor: the foot stands for the baseline
+                    why = "the levels " + num(levels.back().value) + " and " + num(v) + " differ by " +
+                          num(double(h - previous) * z_snap_mm) + " mm in height, less than the " +
+                          num(kScaleMinRiserMm) + " mm a finger tells apart";
+                    break;
+                }
+                levels.push_back({v, h});
+                previous = h;
+            }
+            if (why.empty() && levels.empty()) why = "no multiple of " + num(step) + " lies in the values' range";
+            if (why.empty() && int(levels.size()) > max_steps)
+                why = "the step " + num(step) + " makes " + std::to_string(levels.size()) + " steps; at most " +
+                      std::to_string(max_steps) + " fit";
+        }
+    }
+    if (error) *error = why;
+    return levels;
+}
+
+std::optional<double> chooseScaleStep(const ValueMapping& m, double z_snap_mm) {
+    if (!(m.value_max > m.baseline)) return std::nullopt;
+    const double range = m.value_max - m.baseline;
+    // The smallest nice step at or above range / kScaleMaxAutoSteps, then larger ones.
+    double decade = std::pow(10.0, std::floor(std::log10(range / kScaleMaxAutoSteps)));
+    for (int tries = 0; tries < 12; ++tries, decade *= 10)
+        for (const double mantissa : {1.0, 2.0, 5.0}) {
+            const double step = roundedMultiple(1, mantissa * decade);
+            if (step < range / kScaleMaxAutoSteps * (1 - 1e-12)) continue;
+            if (step > range) return std::nullopt;
+            std::string why;
+            scaleLevels(m, step, z_snap_mm, kScaleMaxAutoSteps, &why);
+            if (why.empty()) return step;
+        }
+    return std::nullopt;
+}
+
+void placeScale(Scene& s) {
+    const ScaleRequest& rq = s.params.scale;
+    if (!rq.wanted || s.keptCount() == 0) return;
+    if (s.params.bottom == Bottom::Mirrored)
+        throw InputError("--scale: the tactile scale stands on the floor of a flat model; a mirrored model has none. "
+                         "Leave out --mirror, or leave out --scale");
+    if (!(s.mapping.value_max > s.mapping.baseline))
+        throw InputError("--scale: every value maps to one height (a constant field, or value_max at the baseline): "
+                         "there is nothing to measure. Leave out --scale");
+    SceneScale sc;
+    sc.step_given = rq.step.has_value();
+    std::string why;
+    if (rq.step) {
+        if (!(*rq.step > 0) || !std::isfinite(*rq.step))
+            throw InputError("--scale-step: must be a number > 0, got " + num(*rq.step));
+        sc.step = *rq.step;
+        scaleLevels(s.mapping, sc.step, s.z_snap_mm, kScaleMaxSteps, &why);
+        if (!why.empty()) {
+            const std::optional<double> fits = chooseScaleStep(s.mapping, s.z_snap_mm);
+            throw InputError("--scale-step " + num(sc.step) + ": " + why +
+                             (fits ? "; --scale-step " + num(*fits) + " (or leaving it out) works" : std::string()));
+        }
+    } else {
+        const std::optional<double> step = chooseScaleStep(s.mapping, s.z_snap_mm);
+        if (!step)
+            throw InputError("--scale: the values' whole range rises " +
+                             num(s.mapping.heightMm(s.mapping.value_max)) + " mm, too little for steps " +
+                             num(kScaleMinRiserMm) + " mm apart; give a larger --height, or leave out --scale");
+        sc.step = *step;
+    }
+    const std::vector<ScaleLevel> levels = scaleLevels(s.mapping, sc.step, s.z_snap_mm, kScaleMaxSteps, &why);
+    assert(why.empty() && !levels.empty());
+    const int n = int(levels.size());
+
+    // The foot's west face: the easternmost hexagon edge of the kept cells.
+    // Every kept cell with its east edge there is a candidate contact.
+    int64_t i_east = INT64_MIN;
+    for (size_t k = 0; k < s.keptCount(); ++k) i_east = std::max(i_east, hexCentre(s.grid, s.col[k], s.row[k]).i + 1);
+    struct Candidate {
+        int32_t kept;
+        int64_t j;  // the centre's lattice j; its east edge spans j - 1 .. j + 1
+        bool ok;
+    };
+    std::vector<Candidate> cand;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
+        if (c.i + 1 != i_east) continue;
+        const bool ok = touchable(s, int32_t(k));
+        cand.push_back({int32_t(k), c.j, ok});
+    }
+    std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
+    auto inBand = [&](int64_t j) {
+        for (const Candidate& c : cand)
+            if (j >= c.j - 1 && j <= c.j + 1) return true;
+        return false;
+    };
+    const double unit_y_mm = s.pitch_mm / (2.0 * kSqrt3);  // one lattice j step
+    const double need_mm = n * kScaleTreadMm;
+    auto yOf = [&](int64_t j) { return s.point(LatticePoint{i_east, j}, 0).y; };
+    std::string blocked;
+    for (const Candidate& start : cand) {
+        if (!start.ok) continue;
+        const int64_t j0 = std::max<int64_t>(0, start.j - 3);  // the middle of the gap below it
+        if (inBand(j0)) continue;
+        int64_t j1 = j0 + int64_t(std::ceil(need_mm / unit_y_mm - 1e-9));
+        while (inBand(j1)) ++j1;
+        // Every candidate in the run is touched; consecutive ones are one
+        // notch apart, and the cell in the notch is touched too.
+        bool clear = true;
+        std::vector<int32_t> contacts, fillers;
+        for (const Candidate& c : cand) {
+            if (c.j <= j0 || c.j >= j1) continue;
+            clear = clear && c.ok;
+            if (!contacts.empty()) {
+                const int64_t previous_j = hexCentre(s.grid, s.col[size_t(contacts.back())], s.row[size_t(contacts.back())]).j;
+                const int32_t filler = keptAtCentre(s, i_east - 2, previous_j + 3);
+                clear = clear && c.j - previous_j == 6 && touchable(s, filler);
+                fillers.push_back(filler);
+            }
+            contacts.push_back(c.kept);
+        }
+        if (!clear) {
+            blocked = "cells without data, under a mark or culled";
+            continue;
+        }
+        const double y1 = yOf(j1);
+        if (s.legend && y1 + kScaleLegendClearanceMm > s.legend->plate_south_mm) {
+            blocked = "the braille legend's plate";
+            continue;
+        }
+        sc.x0_i = i_east;
+        sc.y0_j = j0;
+        sc.y1_j = j1;
+        sc.x0_mm = s.point(LatticePoint{i_east, j0}, 0).x;
+        sc.xs_mm = snapXy(sc.x0_mm + kScaleGapMm);
+        sc.x1_mm = snapXy(sc.xs_mm + kScaleStepWidthMm);
+        sc.y0_mm = yOf(j0);
+        sc.y1_mm = y1;
+        sc.foot_top_units = s.floor_units;
+        for (int i = 0; i < n; ++i) {
+            ScaleStep st;
+            st.value = levels[size_t(i)].value;
+            st.top_units = s.floor_units + levels[size_t(i)].height_units;
+            st.y_south_mm = i == 0 ? sc.y0_mm : sc.steps.back().y_north_mm;
+            st.y_north_mm = i + 1 == n ? sc.y1_mm : snapXy(sc.y0_mm + (sc.y1_mm - sc.y0_mm) * (i + 1) / n);
+            sc.steps.push_back(st);
+        }
+        sc.contacts = std::move(contacts);
+        sc.fillers = std::move(fillers);
+        s.scale = std::move(sc);
+        return;
+    }
+    throw InputError("--scale: the tactile scale needs " + num(std::round(need_mm)) + " mm (" + std::to_string(n) +
+                     " steps of " + num(kScaleTreadMm) + " mm) along the model's east side, and the run there is cut by " +
+                     (blocked.empty() ? std::string("the model's shape") : blocked) +
+                     ". Give a larger --scale-step, or leave out --title/--units or --scale");
+}
+
+std::vector<std::pair<int32_t, int>> scaleTouchedEdges(const Scene& s) {
+    std::vector<std::pair<int32_t, int>> edges;
+    if (!s.scale) return edges;
+    const std::vector<int32_t>& c = s.scale->contacts;
+    for (size_t n = 0; n < c.size(); ++n) {
+        edges.push_back({c[n], 0});
+        if (n + 1 < c.size()) edges.push_back({c[n], 1});
+        if (n > 0) edges.push_back({c[n], 5});
+    }
+    for (const int32_t f : s.scale->fillers) edges.push_back({f, 0});
+    return edges;
+}
+
+std::optional<int64_t> scaleTopAt(const SceneScale& sc, double x, double y) {
+    if (x < sc.x0_mm || x > sc.x1_mm || y < sc.y0_mm || y > sc.y1_mm) return std::nullopt;
+    if (x <= sc.xs_mm) return sc.foot_top_units;
+    for (const ScaleStep& st : sc.steps)
+        if (y <= st.y_north_mm) return st.top_units;
+    return sc.steps.empty() ? sc.foot_top_units : sc.steps.back().top_units;
+}
+
+namespace {
+
+// Builds the scale's closed surface. Columns of vertices: 0 = the west face
+// (x0: the corners y0, every contact's two corners, y1), 1 = the steps' west
+// face (xs), 2 = the east face (x1); 1 and 2 at y0, each step boundary, y1.
+class ScaleBuilder {
+public:
+    ScaleBuilder(const Scene& s, bool joined) : s_(s), sc_(*s.scale), joined_(joined) {
+        west_.push_back({sc_.y0_mm, -1});
+        for (const int32_t k : sc_.contacts) {
+            const size_t kk = size_t(k);
+            for (int corner = 0; corner < 2; ++corner)  // lower-right, upper-right: south to north
+                west_.push_back({s.point(hexCorner(s.grid, s.col[kk], s.row[kk], corner), 0).y,
+                                 hexCornerId(s.grid, s.col[kk], s.row[kk], corner)});
+        }
+        west_.push_back({sc_.y1_mm, -1});
+        ys_.push_back(sc_.y0_mm);
+        for (const ScaleStep& st : sc_.steps) ys_.push_back(st.y_north_mm);
+    }
+
+    ScaleBody build() {
+        const int64_t floor = sc_.foot_top_units;
+        const size_t n = sc_.steps.size();
+        // Bottom and the floor strip's top: the west column zipped with the steps' west column.
+        zipPlane(0, /*up=*/false);
+        zipPlane(floor, /*up=*/true);
+        for (size_t i = 1; i <= n; ++i) {
+            const int64_t z = top(i);
+            quad(v(1, i - 1, 0), v(1, i, 0), v(2, i, 0), v(2, i - 1, 0));  // bottom, facing down
+            quad(v(1, i - 1, z), v(2, i - 1, z), v(2, i, z), v(1, i, z));  // tread, facing up
+            // The east face (outward +x) from 0 to the tread.
+            wall(chain(2, i - 1, 0, z), chain(2, i, 0, z));
+            // The steps' west face (outward -x) from the floor to the tread.
+            wall(chain(1, i, floor, z), chain(1, i - 1, floor, z));
+            // The riser up to the next step (outward -y).
+            if (i < n) wall(chain(1, i, z, top(i + 1)), chain(2, i, z, top(i + 1)));
+        }
+        // South face (outward -y): the foot, then the first step.
+        wall(westChain(0, 0, floor), chain(1, 0, 0, floor));
+        wall(chain(1, 0, 0, top(1)), chain(2, 0, 0, top(1)));
+        // North face (outward +y): the last step, then the foot.
+        wall(chain(2, n, 0, top(n)), chain(1, n, 0, top(n)));
+        wall(chain(1, n, 0, floor), westChain(west_.size() - 1, 0, floor));
+        // West face (outward -x), north to south, but where it touches the
+        // model (west_ is y0, then each contact's two corners, then y1).
+        for (size_t a = west_.size() - 1; a > 0; --a) {
+            const bool contact = a % 2 == 0 && a + 1 < west_.size();
+            const bool notch = a % 2 == 1 && a >= 3 && a + 1 < west_.size();
+            if (notch) {
+                addNotch((a - 3) / 2, floor);
+                continue;
+            }
+            if (contact && joined_) continue;
+            wall(westChain(a, 0, floor), westChain(a - 1, 0, floor));
+        }
+        return std::move(body_);
+    }
+
+private:
+    // The notch between contact n (0-based) and the next: A, D on the west
+    // face (contact n's upper-right corner, the next one's lower-right), B
+    // its top tip, C the next one's bottom tip; its walls are the model's.
+    void addNotch(size_t n, int64_t floor) {
+        const size_t a = 2 * n + 2, d = a + 1;
+        const Scene& s = s_;
+        auto corner = [&](int32_t k, int e, int64_t z) {
+            const auto key = std::make_tuple(3 + e, size_t(k), z);
+            const auto it = ids_.find(key);
+            if (it != ids_.end()) return it->second;
+            const uint32_t id = uint32_t(body_.mesh.positions.size());
+            body_.mesh.positions.push_back(s.point(hexCorner(s.grid, s.col[size_t(k)], s.row[size_t(k)], e), z));
+            body_.lattice_id.push_back(hexCornerId(s.grid, s.col[size_t(k)], s.row[size_t(k)], e));
+            ids_[key] = id;
+            return id;
+        };
+        const int32_t lower = sc_.contacts[n], upper = sc_.contacts[n + 1];
+        for (const int64_t z : {int64_t(0), floor}) {
+            const uint32_t A = v(0, a, z), D = v(0, d, z), B = corner(lower, 2, z), C = corner(upper, 5, z);
+            if (z == floor) {
+                tri(A, D, C);
+                tri(A, C, B);
+            } else {
+                tri(A, C, D);
+                tri(A, B, C);
+            }
+        }
+        if (joined_) return;
+        const Chain A{{0, v(0, a, 0)}, {floor, v(0, a, floor)}}, D{{0, v(0, d, 0)}, {floor, v(0, d, floor)}};
+        const Chain B{{0, corner(lower, 2, 0)}, {floor, corner(lower, 2, floor)}};
+        const Chain C{{0, corner(upper, 5, 0)}, {floor, corner(upper, 5, floor)}};
+        wall(D, C);
+        wall(C, B);
+        wall(B, A);
+    }
+
+    struct WestPoint {
+        double y_mm;
+        int64_t lattice;  // -1: the scale's own corner
+    };
+    using Chain = std::vector<std::pair<int64_t, uint32_t>>;  // (z units, vertex) ascending
+
+    int64_t top(size_t i) const { return sc_.steps[i - 1].top_units; }
+
+    // Vertex of column col (0 west, 1 steps' west, 2 east) at point index i and height z.
+    uint32_t v(int col, size_t i, int64_t z) {
+        const auto key = std::make_tuple(col, i, z);
+        const auto it = ids_.find(key);
+        if (it != ids_.end()) return it->second;
+        const uint32_t id = uint32_t(body_.mesh.positions.size());
+        if (col == 0) {
+            body_.mesh.positions.push_back({sc_.x0_mm, west_[i].y_mm, s_.zMm(z)});
+            body_.lattice_id.push_back(west_[i].lattice);
+        } else {
+            body_.mesh.positions.push_back({col == 1 ? sc_.xs_mm : sc_.x1_mm, ys_[i], s_.zMm(z)});
+            body_.lattice_id.push_back(-1);
+        }
+        ids_[key] = id;
+        return id;
+    }
+
+    // The heights used at column col (1 or 2), point i: 0, the floor (column
+    // 1), and the treads on either side.
+    std::vector<int64_t> heights(int col, size_t i) const {
+        std::vector<int64_t> z{0};
+        if (col == 1) z.push_back(sc_.foot_top_units);
+        if (i >= 1) z.push_back(top(i));
+        if (i < sc_.steps.size()) z.push_back(top(i + 1));
+        std::sort(z.begin(), z.end());
+        z.erase(std::unique(z.begin(), z.end()), z.end());
+        return z;
+    }
+    Chain chain(int col, size_t i, int64_t lo, int64_t hi) {
+        Chain c;
+        for (const int64_t z : heights(col, i))
+            if (z >= lo && z <= hi) c.push_back({z, v(col, i, z)});
+        return c;
+    }
+    Chain westChain(size_t a, int64_t lo, int64_t hi) { return {{lo, v(0, a, lo)}, {hi, v(0, a, hi)}}; }
+
+    void tri(uint32_t a, uint32_t b, uint32_t c) { body_.mesh.triangles.push_back({a, b, c}); }
+    void quad(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+        tri(a, b, c);
+        tri(a, c, d);
+    }
+
+    // A vertical wall between chain l (at the start of the edge, seen with the
+    // outside in front, l on the left) and chain r: the zipper of the direct
+    // mesher, one point from each side per triangle, the lower next first.
+    void wall(const Chain& l, const Chain& r) {
+        size_t li = 0, ri = 0;
+        while (li + 1 < l.size() || ri + 1 < r.size()) {
+            const bool left = ri + 1 == r.size() || (li + 1 < l.size() && l[li + 1].first <= r[ri + 1].first);
+            if (left) {
+                tri(l[li].second, r[ri].second, l[li + 1].second);
+                ++li;
+            } else {
+                tri(l[li].second, r[ri].second, r[ri + 1].second);
+                ++ri;
+            }
+        }
+    }
+
+    // The horizontal strip [x0, xs] x [y0, y1] at height z: the west column
+    // zipped with the steps' west column by y; up: facing +z.
+    void zipPlane(int64_t z, bool up) {
+        size_t a = 0, b = 0;
+        const size_t na = west_.size(), nb = ys_.size();
+        auto t = [&](uint32_t p, uint32_t q, uint32_t r) { up ? tri(p, q, r) : tri(p, r, q); };
+        while (a + 1 < na || b + 1 < nb) {
+            const bool west = b + 1 == nb || (a + 1 < na && west_[a + 1].y_mm <= ys_[b + 1]);
+            if (west) {
+                t(v(0, a, z), v(1, b, z), v(0, a + 1, z));
+                ++a;
+            } else {
+                t(v(0, a, z), v(1, b, z), v(1, b + 1, z));
+                ++b;
+            }
+        }
+    }
+
+    const Scene& s_;
+    const SceneScale& sc_;
+    const bool joined_;
+    std::vector<WestPoint> west_;
+    std::vector<double> ys_;
+    std::map<std::tuple<int, size_t, int64_t>, uint32_t> ids_;
+    ScaleBody body_;
+};
+
+}  // namespace
+
+ScaleBody meshScaleBody(const Scene& s, bool joined) {
+    if (!s.scale || s.scale->steps.empty()) return {};
+    return ScaleBuilder(s, joined).build();
+}
+
+}  // namespace tsf

@@ -1,0 +1,550 @@
+// Scene <-> JSON sidecar. See scene_json.h.
+#include "gen/model/scene_json.h"
+
+#include <array>
+#include "gen/model/features/legend_scene.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+#include "gen/util/error.h"
+#include "gen/util/atomic_file.h"
+#include "gen/util/file_bytes.h"
+
+namespace tsf {
+namespace {
+
+using nlohmann::json;
+
+json numberOrNull(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
+
+// --- reading helpers: every error names the JSON path ---------------------
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw InputError((path.empty() ? std::string("(top level)") : path) + ": " + what);
+}
+
+const char* typeName(const json& v) { return v.type_name(); }
+
+const json& member(const json& obj, const std::string& path, const char* key) {
+    if (!obj.is_object()) fail(path, std::string("expected an object, found ") + typeName(obj));
+    const auto it = obj.find(key);
+    const std::string p = path.empty() ? key : path + "." + key;
+    if (it == obj.end()) fail(p, "missing");
+    return *it;
+}
+
+std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
+
+int64_t toInt(const json& v, const std::string& path) {
+    if (v.is_number_unsigned()) {
+        if (v.get<uint64_t>() > uint64_t(std::numeric_limits<int64_t>::max())) fail(path, "integer out of range");
+        return int64_t(v.get<uint64_t>());
+    }
+    if (v.is_number_integer()) return v.get<int64_t>();
+    fail(path, std::string("expected an integer, found ") + typeName(v));
+}
+
+int64_t getInt(const json& obj, const std::string& path, const char* key) {
+    return toInt(member(obj, path, key), join(path, key));
+}
+
+int32_t getInt32(const json& obj, const std::string& path, const char* key, int64_t lo, int64_t hi) {
+    const int64_t v = getInt(obj, path, key);
+    if (v < lo || v > hi)
+        fail(join(path, key), "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + " (got " +
+                                  std::to_string(v) + ")");
+    return int32_t(v);
+}
+
+double toNumber(const json& v, const std::string& path) {
+    if (!v.is_number()) fail(path, std::string("expected a number, found ") + typeName(v));
+    return v.get<double>();
+}
+
+double getNumber(const json& obj, const std::string& path, const char* key) {
+    return toNumber(member(obj, path, key), join(path, key));
+}
+
+double getPositive(const json& obj, const std::string& path, const char* key) {
+    const double v = getNumber(obj, path, key);
+    if (!(v > 0) || !std::isfinite(v)) fail(join(path, key), "must be a number > 0");
+    return v;
+}
+
+std::string getString(const json& obj, const std::string& path, const char* key) {
+    const json& v = member(obj, path, key);
+    if (!v.is_string()) fail(join(path, key), std::string("expected a string, found ") + typeName(v));
+    return v.get<std::string>();
+}
+
+template <class E, size_t N>
+E getEnum(const json& obj, const std::string& path, const char* key, const E (&all)[N]) {
+    const std::string s = getString(obj, path, key);
+    std::string names;
+    for (E e : all) {
+        if (s == toString(e)) return e;
+        names += std::string(names.empty() ? "" : ", ") + toString(e);
+    }
+    fail(join(path, key), "unknown value \"" + s + "\" (expected one of: " + names + ")");
+}
+
+const json& getArray(const json& obj, const std::string& path, const char* key) {
+    const json& v = member(obj, path, key);
+    if (!v.is_array()) fail(join(path, key), std::string("expected an array, found ") + typeName(v));
+    return v;
+}
+
+constexpr Transfer kTransfers[] = {Transfer::Linear, Transfer::Sqrt, Transfer::Log};
+constexpr Cull kCulls[] = {Cull::None, Cull::Hull, Cull::Concave};
+constexpr Bottom kBottoms[] = {Bottom::Flat, Bottom::Mirrored};
+constexpr BaselineMode kBaselines[] = {BaselineMode::Auto, BaselineMode::Zero, BaselineMode::Min, BaselineMode::Value};
+
+// 1-based line and column of a byte offset in text.
+void lineColumn(const std::string& text, size_t byte, int& line, int& column) {
+    line = 1;
+    column = 1;
+    for (size_t i = 0; i < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+}
+
+// nlohmann's messages start "[json.exception.parse_error.101] parse error at
+// line L, column C: "; keep what follows the last such prefix.
+std::string withoutPrefix(const std::string& what) {
+    const auto colon = what.find(": ");
+    if (what.rfind("[json.exception.", 0) == 0 && colon != std::string::npos) return what.substr(colon + 2);
+    const auto bracket = what.find("] ");
+    return bracket != std::string::npos ? what.substr(bracket + 2) : what;
+}
+
+}  // namespace
+
+namespace {
+json cellJson(const Scene& s, size_t k) {
+    json c = {{"col", s.col[k]}, {"row", s.row[k]}, {"value", numberOrNull(s.value[k])}, {"top", s.top[k]},
+              {"bottom", s.bottom[k]}};
+    const TopShapes& t = s.shapes;
+    if (t.empty()) return c;
+    bool any = t.top_centre_dz[k] != 0 || t.structural[k];
+    for (int32_t dz : t.top_dz[k]) any = any || dz != 0;
+    if (!any) return c;
+    json shape = {{"top_dz", t.top_dz[k]}, {"centre_dz", t.top_centre_dz[k]}, {"slope", {t.slope_x[k], t.slope_y[k]}},
+                  {"structural", bool(t.structural[k])}};
+    if (!t.bottom_dz.empty()) {
+        shape["bottom_dz"] = t.bottom_dz[k];
+        shape["bottom_centre_dz"] = t.bottom_centre_dz[k];
+    }
+    c["shape"] = std::move(shape);
+    return c;
+}
+
+json shapesJson(const Scene& s) {
+    const TopShapes& t = s.shapes;
+    if (t.empty()) return nullptr;
+    return {{"tilt", toString(s.params.tilt)}, {"steepness", s.params.steepness},
+            {"structural_texture", s.params.structural_texture}, {"cells_tilted", t.cells_tilted},
+            {"cells_clamped", t.cells_clamped}, {"cells_clamped_level", t.cells_flat_clamped},
+            {"cells_textured", t.cells_textured}, {"dimple_units", t.dimple_units}};
+}
+
+json pointJson(const PlanarPoint& p) { return json::array({p.i, p.j}); }
+
+json marksJson(const Marks& m) {
+    json j = json::object();
+    if (m.notch)
+        j["notch"] = {{"apex", pointJson(m.notch->apex)},         {"mouth_a", pointJson(m.notch->mouth_a)},
+                      {"mouth_b", pointJson(m.notch->mouth_b)},   {"depth_mm", m.notch->depth_mm},
+                      {"width_mm", m.notch->width_mm},            {"opening_deg", m.notch->opening_deg}};
+    else
+        j["notch"] = nullptr;
+    if (m.triangle)
+        j["triangle"] = {{"corner", pointJson(m.triangle->corner)}, {"east", pointJson(m.triangle->east)},
+                         {"north", pointJson(m.triangle->north)},   {"leg_x_mm", m.triangle->leg_x_mm},
+                         {"leg_y_mm", m.triangle->leg_y_mm},        {"raise_units", m.triangle->raise_units},
+                         {"anchor", m.triangle->anchor}};
+    else
+        j["triangle"] = nullptr;
+    return j;
+}
+
+PlanarPoint pointFrom(const json& obj, const std::string& path, const char* key) {
+    const json& v = member(obj, path, key);
+    const std::string p = join(path, key);
+    if (!v.is_array() || v.size() != 2) fail(p, "expected [i, j]");
+    const PlanarPoint q{toNumber(v[0], p + "[0]"), toNumber(v[1], p + "[1]")};
+    if (!std::isfinite(q.i) || !std::isfinite(q.j)) fail(p, "expected finite numbers");
+    return q;
+}
+
+Marks marksFrom(const json& j, const std::string& path) {
+    Marks m;
+    const json& notch = member(j, path, "notch");
+    if (!notch.is_null()) {
+        const std::string np = join(path, "notch");
+        Notch n;
+        n.apex = pointFrom(notch, np, "apex");
+        n.mouth_a = pointFrom(notch, np, "mouth_a");
+        n.mouth_b = pointFrom(notch, np, "mouth_b");
+        n.depth_mm = getNumber(notch, np, "depth_mm");
+        n.width_mm = getNumber(notch, np, "width_mm");
+        n.opening_deg = getNumber(notch, np, "opening_deg");
+        m.notch = n;
+    }
+    const json& tri = member(j, path, "triangle");
+    if (!tri.is_null()) {
+        const std::string tp = join(path, "triangle");
+        OrientationTriangle t;
+        t.corner = pointFrom(tri, tp, "corner");
+        t.east = pointFrom(tri, tp, "east");
+        t.north = pointFrom(tri, tp, "north");
+        t.leg_x_mm = getNumber(tri, tp, "leg_x_mm");
+        t.leg_y_mm = getNumber(tri, tp, "leg_y_mm");
+        t.raise_units = getInt(tri, tp, "raise_units");
+        if (t.raise_units < 1) fail(join(tp, "raise_units"), "must be at least 1");
+        t.anchor = getInt32(tri, tp, "anchor", 0, std::numeric_limits<int32_t>::max());
+        m.triangle = t;
+    }
+    return m;
+}
+
+// Everything but the cells.
+json scaleJson(const Scene& s) {
+    const SceneScale& sc = *s.scale;
+    json steps = json::array();
+    for (const ScaleStep& st : sc.steps) steps.push_back({st.value, st.top_units, st.y_south_mm, st.y_north_mm});
+    return {{"step", sc.step},         {"step_given", sc.step_given}, {"x0_i", sc.x0_i},
+            {"y0_j", sc.y0_j},         {"y1_j", sc.y1_j},             {"x_mm", {sc.x0_mm, sc.xs_mm, sc.x1_mm}},
+            {"y_mm", {sc.y0_mm, sc.y1_mm}}, {"foot_top_units", sc.foot_top_units},
+            {"steps", steps},          {"contacts", sc.contacts}, {"fillers", sc.fillers}};
+}
+
+json sceneHeadJson(const Scene& s) {
+    const SceneParams& p = s.params;
+    json hull = json::array();
+    for (const LatticePoint& q : s.hull) hull.push_back({q.i, q.j});
+    return {
+        {"format", kSceneJsonFormat},
+        {"version", kSceneJsonVersion},
+        {"grid", {{"cols", s.grid.cols}, {"rows", s.grid.rows}}},
+        {"pitch_mm", s.pitch_mm},
+        {"z_snap_mm", s.z_snap_mm},
+        {"params",
+         {{"pitch_mm", p.pitch_mm},
+          {"fit_width_mm", p.fit_width_mm},
+          {"fit_depth_mm", p.fit_depth_mm},
+          {"max_height_mm", p.max_height_mm},
+          {"base_mm", p.base_mm},
+          {"transfer", toString(p.transfer)},
+          {"baseline_mode", toString(p.baseline_mode)},
+          {"baseline_value", p.baseline_value},
+          {"value_max", p.value_max ? json(*p.value_max) : json(nullptr)},
+          {"z_snap_mm", p.z_snap_mm},
+          {"cull", toString(p.cull)},
+          {"bottom", toString(p.bottom)}}},
+        {"mapping",
+         {{"transfer", toString(s.mapping.transfer)},
+          {"baseline", s.mapping.baseline},
+          {"value_max", s.mapping.value_max},
+          {"max_height_mm", s.mapping.max_height_mm}}},
+        {"floor_units", s.floor_units},
+        {"mirror_thickness_units", s.mirror_thickness_units},
+        {"cells_with_data", s.cells_with_data},
+        {"cells_nonempty", s.cells_nonempty},
+        {"cells_nodata_kept", s.cells_nodata_kept},
+        {"nodata_pit_units", s.nodata_pit_units},
+        {"one_to_one", s.one_to_one},
+        {"marks", marksJson(s.marks)},
+        {"shapes", shapesJson(s)},
+        // The braille legend as asked for; placeLegend places it again on reading.
+        {"legend", s.legend ? json{{"title", s.params.legend.title}, {"units", s.params.legend.units},
+                                   {"table", s.params.legend.table}}
+                            : json(nullptr)},
+        // The tactile scale as placed; on reading it is placed again from its step and must come out the same.
+        {"scale", s.scale ? scaleJson(s) : json(nullptr)},
+        {"hull", hull},
+        {"notes", s.notes},
+    };
+}
+}  // namespace
+
+json sceneToJson(const Scene& s) {
+    json j = sceneHeadJson(s);
+    json cells = json::array();
+    for (size_t k = 0; k < s.keptCount(); ++k) cells.push_back(cellJson(s, k));
+    j["cells"] = std::move(cells);
+    return j;
+}
+
+namespace {
+std::array<int32_t, 6> getCorners(const json& obj, const std::string& path, const char* key) {
+    const json& a = getArray(obj, path, key);
+    const std::string p = path + "." + key;
+    if (a.size() != 6) fail(p, "expected 6 corner offsets");
+    std::array<int32_t, 6> out{};
+    for (size_t e = 0; e < 6; ++e) {
+        const int64_t v = toInt(a[e], p + "[" + std::to_string(e) + "]");
+        if (v < -(int64_t(1) << 30) || v > (int64_t(1) << 30)) fail(p, "corner offset out of range");
+        out[e] = int32_t(v);
+    }
+    return out;
+}
+
+// Shaped tops (version 3): per-cell offsets, then the geometry made from them.
+void readShapes(const json& j, const json& cells, Scene& s) {
+    const auto it = j.find("shapes");
+    if (it == j.end() || it->is_null()) return;
+    const json& h = *it;
+    if (!h.is_object()) fail("shapes", "expected an object or null");
+    const std::string tilt = getString(h, "shapes", "tilt");
+    s.params.tilt = tilt == "points" ? TiltSource::Points : tilt == "gradient" ? TiltSource::Gradient : TiltSource::None;
+    s.params.steepness = toNumber(member(h, "shapes", "steepness"), "shapes.steepness");
+    TopShapes& t = s.shapes;
+    const size_t n = s.keptCount();
+    const bool mirrored = s.params.bottom == Bottom::Mirrored;
+    t = levelTopShapes(n, mirrored);
+    t.cells_tilted = getInt(h, "shapes", "cells_tilted");
+    t.cells_clamped = getInt(h, "shapes", "cells_clamped");
+    t.cells_flat_clamped = getInt(h, "shapes", "cells_clamped_level");
+    t.cells_textured = getInt(h, "shapes", "cells_textured");
+    t.dimple_units = getInt(h, "shapes", "dimple_units");
+    for (size_t k = 0; k < n; ++k) {
+        const auto sh = cells[k].find("shape");
+        if (sh == cells[k].end()) continue;
+        const std::string cp = "cells[" + std::to_string(k) + "].shape";
+        t.top_dz[k] = getCorners(*sh, cp, "top_dz");
+        t.top_centre_dz[k] = int32_t(getInt32(*sh, cp, "centre_dz", -(int64_t(1) << 30), int64_t(1) << 30));
+        if (mirrored) {
+            t.bottom_dz[k] = getCorners(*sh, cp, "bottom_dz");
+            t.bottom_centre_dz[k] = int32_t(getInt32(*sh, cp, "bottom_centre_dz", -(int64_t(1) << 30), int64_t(1) << 30));
+        }
+        const json& slope = getArray(*sh, cp, "slope");
+        if (slope.size() != 2) fail(cp + ".slope", "expected [x, y]");
+        t.slope_x[k] = toNumber(slope[0], cp + ".slope[0]");
+        t.slope_y[k] = toNumber(slope[1], cp + ".slope[1]");
+        const json& st = member(*sh, cp, "structural");
+        if (!st.is_boolean()) fail(cp + ".structural", "expected true or false");
+        t.structural[k] = st.get<bool>();
+    }
+    buildTopShapeGeometry(s);
+}
+}  // namespace
+
+Scene sceneFromJson(const json& j) {
+    if (!j.is_object()) fail("", std::string("expected an object, found ") + typeName(j));
+    const std::string format = getString(j, "", "format");
+    if (format != kSceneJsonFormat) fail("format", "expected \"" + std::string(kSceneJsonFormat) + "\", found \"" + format + "\"");
+    const int64_t version = getInt(j, "", "version");
+    if (version != kSceneJsonVersion && version != 1 && version != 2 && version != 3)
+        fail("version", "unsupported version " + std::to_string(version) + " (this tsf reads version " +
+                            std::to_string(kSceneJsonVersion) + ")");
+
+    Scene s;
+    const json& grid = member(j, "", "grid");
+    s.grid.cols = getInt32(grid, "grid", "cols", 0, std::numeric_limits<int32_t>::max());
+    s.grid.rows = getInt32(grid, "grid", "rows", 0, std::numeric_limits<int32_t>::max());
+    if (s.grid.cellCount() > kMaxSceneJsonCells)
+        fail("grid", "a grid of " + std::to_string(s.grid.cellCount()) + " cells is larger than the " +
+                         std::to_string(kMaxSceneJsonCells) + " a sidecar may describe");
+    s.pitch_mm = getPositive(j, "", "pitch_mm");
+    s.z_snap_mm = getPositive(j, "", "z_snap_mm");
+
+    const json& params = member(j, "", "params");
+    SceneParams& p = s.params;
+    p.pitch_mm = getNumber(params, "params", "pitch_mm");
+    p.fit_width_mm = getNumber(params, "params", "fit_width_mm");
+    p.fit_depth_mm = getNumber(params, "params", "fit_depth_mm");
+    p.max_height_mm = getNumber(params, "params", "max_height_mm");
+    p.base_mm = getNumber(params, "params", "base_mm");
+    p.transfer = getEnum(params, "params", "transfer", kTransfers);
+    p.baseline_mode = getEnum(params, "params", "baseline_mode", kBaselines);
+    p.baseline_value = getNumber(params, "params", "baseline_value");
+    const json& vmax = member(params, "params", "value_max");
+    if (!vmax.is_null()) p.value_max = toNumber(vmax, "params.value_max");
+    p.z_snap_mm = getPositive(params, "params", "z_snap_mm");
+    p.cull = getEnum(params, "params", "cull", kCulls);
+    p.bottom = getEnum(params, "params", "bottom", kBottoms);
+
+    const json& mapping = member(j, "", "mapping");
+    s.mapping.transfer = getEnum(mapping, "mapping", "transfer", kTransfers);
+    s.mapping.baseline = getNumber(mapping, "mapping", "baseline");
+    s.mapping.value_max = getNumber(mapping, "mapping", "value_max");
+    s.mapping.max_height_mm = getNumber(mapping, "mapping", "max_height_mm");
+
+    s.floor_units = getInt(j, "", "floor_units");
+    s.mirror_thickness_units = getInt(j, "", "mirror_thickness_units");
+    s.cells_with_data = getInt(j, "", "cells_with_data");
+    s.cells_nonempty = getInt(j, "", "cells_nonempty");
+    s.cells_nodata_kept = getInt(j, "", "cells_nodata_kept");
+    if (version >= 2) {
+        s.nodata_pit_units = getInt(j, "", "nodata_pit_units");
+        const json& one = member(j, "", "one_to_one");
+        if (!one.is_boolean()) fail("one_to_one", std::string("expected true or false, found ") + typeName(one));
+        s.one_to_one = one.get<bool>();
+        s.marks = marksFrom(member(j, "", "marks"), "marks");
+    }
+
+    const json& hull = getArray(j, "", "hull");
+    for (size_t i = 0; i < hull.size(); ++i) {
+        const std::string hp = "hull[" + std::to_string(i) + "]";
+        if (!hull[i].is_array() || hull[i].size() != 2) fail(hp, "expected [i, j]");
+        s.hull.push_back({toInt(hull[i][0], hp + "[0]"), toInt(hull[i][1], hp + "[1]")});
+    }
+    const json& notes = getArray(j, "", "notes");
+    for (size_t i = 0; i < notes.size(); ++i) {
+        if (!notes[i].is_string()) fail("notes[" + std::to_string(i) + "]", "expected a string");
+        s.notes.push_back(notes[i].get<std::string>());
+    }
+
+    const json& cells = getArray(j, "", "cells");
+    if (int64_t(cells.size()) > s.grid.cellCount())
+        fail("cells", std::to_string(cells.size()) + " cells do not fit a grid of " +
+                          std::to_string(s.grid.cellCount()));
+    s.kept_index.assign(size_t(s.grid.cellCount()), -1);
+    s.col.reserve(cells.size());
+    s.row.reserve(cells.size());
+    s.value.reserve(cells.size());
+    s.top.reserve(cells.size());
+    s.bottom.reserve(cells.size());
+    int64_t previous = -1;
+    for (size_t k = 0; k < cells.size(); ++k) {
+        const std::string cp = "cells[" + std::to_string(k) + "]";
+        const json& c = cells[k];
+        const int32_t col = getInt32(c, cp, "col", 0, int64_t(s.grid.cols) - 1);
+        const int32_t row = getInt32(c, cp, "row", 0, int64_t(s.grid.rows) - 1);
+        const int64_t index = s.grid.index(col, row);
+        if (index <= previous) fail(cp, "cells must be listed once each, ordered by row then column");
+        previous = index;
+        const json& v = member(c, cp, "value");
+        const double value = v.is_null() ? std::numeric_limits<double>::quiet_NaN() : toNumber(v, cp + ".value");
+        const int64_t top = getInt(c, cp, "top");
+        const int64_t bottom = getInt(c, cp, "bottom");
+        if (!(bottom < top)) fail(cp + ".top", "must be above bottom (" + std::to_string(top) + " <= " + std::to_string(bottom) + ")");
+        s.kept_index[size_t(index)] = int32_t(k);
+        s.col.push_back(col);
+        s.row.push_back(row);
+        s.value.push_back(value);
+        s.top.push_back(top);
+        s.bottom.push_back(bottom);
+        s.kind.push_back(std::isnan(value) ? CellKind::NoData : CellKind::Data);
+    }
+    if (s.marks.triangle && size_t(s.marks.triangle->anchor) >= s.keptCount())
+        fail("marks.triangle.anchor", "is not the index of a cell");
+    buildMarkFaces(s);
+    readShapes(j, cells, s);
+    if (j.contains("legend") && !j["legend"].is_null()) {
+        const json& l = j["legend"];
+        for (const char* key : {"title", "units", "table"})
+            if (!l.contains(key) || !l[key].is_string()) fail(std::string("legend.") + key, "expected a string");
+        s.params.legend.title = l["title"].get<std::string>();
+        s.params.legend.units = l["units"].get<std::string>();
+        s.params.legend.table = l["table"].get<std::string>();
+        placeLegend(s);
+    }
+    if (j.contains("scale") && !j["scale"].is_null()) {
+        const json& recorded = j["scale"];
+        if (!recorded.is_object()) fail("scale", std::string("expected an object, found ") + typeName(recorded));
+        s.params.scale.wanted = true;
+        s.params.scale.step = getNumber(recorded, "scale", "step");
+        if (!(*s.params.scale.step > 0)) fail("scale.step", "must be > 0");
+        try {
+            placeScale(s);
+        } catch (const InputError& e) {
+            fail("scale", std::string("cannot be placed on this model: ") + e.detail());
+        }
+        if (!recorded.contains("step_given") || !recorded["step_given"].is_boolean())
+            fail("scale.step_given", "expected true or false");
+        s.scale->step_given = recorded["step_given"].get<bool>();
+        s.params.scale.step.reset();
+        if (s.scale->step_given) s.params.scale.step = s.scale->step;
+        if (scaleJson(s) != recorded)
+            fail("scale", "is not where this tsf places a scale of step " + recorded["step"].dump() +
+                              " on this model (written by another version?)");
+    }
+    return s;
+}
+
+void writeSceneJson(const Scene& scene, const std::string& path, const SceneModelRecord* model) {
+    // Everything but the cells indented; then one cell per line, so a person
+    // can find a cell with a text editor and the file stays compact. Cells are
+    // streamed one at a time: a million-cell scene never exists as a JSON tree.
+    json head_json = sceneHeadJson(scene);
+    if (model)
+        head_json["model"] = {{"file", model->file}, {"bytes", model->stamp.bytes}, {"fnv1a64", toHex(model->stamp.fnv1a64)}};
+    std::string head = head_json.dump(2);
+    head.pop_back();  // the closing brace
+    while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
+    writeFileAtomically(path, [&](std::ostream& out) {
+        out << head << ",\n  \"cells\": [";
+        const size_t n = scene.keptCount();
+        for (size_t k = 0; k < n; ++k) out << (k ? ",\n    " : "\n    ") << cellJson(scene, k).dump();
+        out << (n == 0 ? "]\n}\n" : "\n  ]\n}\n");
+    });
+}
+
+namespace {
+
+std::optional<SceneModelRecord> modelRecordFromJson(const json& j) {
+    if (!j.is_object() || !j.contains("model")) return std::nullopt;
+    const json& m = j["model"];
+    if (!m.is_object()) fail("model", std::string("expected an object, found ") + typeName(m));
+    SceneModelRecord r;
+    r.file = getString(m, "model", "file");
+    r.stamp.bytes = getInt(m, "model", "bytes");
+    if (r.file.empty() || r.file.find('/') != std::string::npos) fail("model.file", "expected a file name without folder");
+    if (r.stamp.bytes < 0) fail("model.bytes", "must not be negative");
+    if (!parseHex64(getString(m, "model", "fnv1a64"), r.stamp.fnv1a64))
+        fail("model.fnv1a64", "expected 16 lower-case hex digits");
+    return r;
+}
+
+}  // namespace
+
+void checkSceneModelRecord(const SceneModelRecord& record, const std::string& sidecar_path,
+                           const std::string& model_path) {
+    if (std::filesystem::path(model_path).filename().string() != record.file) return;
+    const FileStamp now = stampFile(model_path);
+    if (now == record.stamp) return;
+    throw InputError(sidecar_path, 0, 0,
+                     "was written with another version of " + record.file + " (" + std::to_string(record.stamp.bytes) +
+                         " bytes, hash " + toHex(record.stamp.fnv1a64) + "; " + model_path + " has " +
+                         std::to_string(now.bytes) + " bytes, hash " + toHex(now.fnv1a64) +
+                         "): the model and its sidecar come from different runs of tsf gen (one may have been "
+                         "interrupted); run tsf gen again");
+}
+
+Scene parseSceneJson(const std::string& text, const std::string& path, std::optional<SceneModelRecord>* model) {
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::parse_error& e) {
+        int line = 0, column = 0;
+        lineColumn(text, e.byte > 0 ? e.byte - 1 : 0, line, column);
+        throw InputError(path, line, column, "not valid JSON: " + withoutPrefix(e.what()));
+    } catch (const json::exception& e) {
+        // e.g. a number too large for a double: no position is known.
+        throw InputError(path, 0, 0, "not valid JSON: " + withoutPrefix(e.what()));
+    }
+    try {
+        Scene s = sceneFromJson(j);
+        if (model) *model = modelRecordFromJson(j);
+        return s;
+    } catch (const InputError& e) {
+        throw InputError(path, 0, 0, e.detail());
+    }
+}
+
+Scene readSceneJson(const std::string& path, std::optional<SceneModelRecord>* model) {
+    return parseSceneJson(readFileBytes(path, kMaxSceneJsonBytes), path, model);
+}
+
+}  // namespace tsf

@@ -1,0 +1,95 @@
+// Scene sidecar: a Scene as JSON, written beside a model (`model.stl.scene.json`)
+// so that `tsf verify --scene` can check the model's heights without the
+// original field and options.
+//
+// Format ("format": "tsf-scene", "version": 1), one object:
+//   grid {cols, rows}, pitch_mm, z_snap_mm,
+//   params {pitch_mm, fit_width_mm, fit_depth_mm, max_height_mm, base_mm,
+//           transfer, baseline_mode, baseline_value, value_max (null = unset),
+//           z_snap_mm, cull, bottom}           -- enums by their CLI names (scene.h toString)
+//   mapping {transfer, baseline, value_max, max_height_mm},
+//   floor_units, mirror_thickness_units, cells_with_data, cells_nonempty,
+//   cells_nodata_kept, nodata_pit_units, one_to_one,
+//   marks {notch: null | {apex, mouth_a, mouth_b: [i, j] lattice coordinates,
+//                         depth_mm, width_mm, opening_deg},
+//          triangle: null | {corner, east, north: [i, j], leg_x_mm, leg_y_mm,
+//                            raise_units, anchor (kept index)}},
+//   shapes: null | {tilt, steepness, structural_texture, cells_tilted, cells_clamped,
+//                   cells_clamped_level, cells_textured, dimple_units},
+//   hull [[i, j], ...], notes [...],
+//   model (optional) {file, bytes, fnv1a64}: the model file written with
+//         this sidecar (tsf gen -o): its name without folder, its size and
+//         the FNV-1a 64 hash of its bytes as 16 hex digits
+//         (gen/util/file_stamp.h), so a sidecar from another run is refused,
+//   cells [{col, row, value (null = no data), top, bottom,
+//           shape (only a tilted or structural cell): {top_dz [6], centre_dz,
+//                  bottom_dz [6], bottom_centre_dz (mirrored), slope [x, y] mm/mm,
+//                  structural}}, ...]   -- ordered by (row, col)
+// Heights (top, bottom, floor_units, ...) are integers in z_snap_mm units;
+// lengths are millimetres; doubles are written in their shortest form that
+// reads back to the same bits, so a Scene round-trips exactly.
+// Scene::kept_index, kind and faces are not stored: they follow from the
+// cells, the grid and the marks (buildMarkFaces, gen/model/features/marks.h).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/model/scene.h"
+#include "gen/util/file_stamp.h"
+
+namespace tsf {
+
+inline constexpr const char* kSceneJsonFormat = "tsf-scene";
+inline constexpr int kSceneJsonVersion = 4;  // 4: scale; 3: shapes; 2: marks, nodata_pit_units, one_to_one (1 to 3 are still read)
+/// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
+/// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
+inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;
+
+/// Largest sidecar file read (bytes): a sidecar at kMaxSceneJsonCells kept
+/// cells would be larger, but models that size are not verified through a
+/// sidecar; the cap keeps an endless stream (/dev/zero) from filling memory.
+inline constexpr int64_t kMaxSceneJsonBytes = int64_t(2) << 30;  // 2 GiB
+
+/// The model file a sidecar belongs to (its "model" member).
+struct SceneModelRecord {
+    std::string file;  ///< file name, no folder
+    FileStamp stamp;   ///< its size and hash when the sidecar was written
+};
+
+/// Every field of the Scene (see the file comment).
+nlohmann::json sceneToJson(const Scene& scene);
+
+/// The Scene described by j. Throws InputError (no file, no line) whose
+/// message starts with the JSON path of the problem ("cells[12].top: expected
+/// an integer") for a missing or mistyped member, an unknown enum name, a
+/// wrong format or version, a cell outside the grid, cells out of
+/// (row, col) order or repeated, or a cell whose bottom is not below its top.
+Scene sceneFromJson(const nlohmann::json& j);
+
+/// Writes sceneToJson(scene) to path atomically (gen/util/atomic_file.h),
+/// one cell per line, with the "model" member when `model` is given. Throws
+/// InputError for an unusable folder, std::runtime_error for I/O failures.
+void writeSceneJson(const Scene& scene, const std::string& path, const SceneModelRecord* model = nullptr);
+
+/// Reads a sidecar (at most kMaxSceneJsonBytes). Throws InputError naming
+/// path: with line and column for malformed JSON, with the JSON path (as
+/// sceneFromJson) for a bad Scene or a bad "model" member. `model`, when
+/// given, receives the "model" member (empty when the sidecar has none).
+Scene readSceneJson(const std::string& path, std::optional<SceneModelRecord>* model = nullptr);
+
+/// The same for text already in memory; `path` names the source in errors.
+Scene parseSceneJson(const std::string& text, const std::string& path,
+                     std::optional<SceneModelRecord>* model = nullptr);
+
+/// Throws InputError naming sidecar_path when `record` names the file at
+/// model_path (same file name) but the file there is not the one the sidecar
+/// was written with (another size or hash): the model and its sidecar come
+/// from different runs of tsf gen. Files of other names (an OpenSCAD render
+/// of the same model) are not compared.
+void checkSceneModelRecord(const SceneModelRecord& record, const std::string& sidecar_path,
+                           const std::string& model_path);
+
+}  // namespace tsf

@@ -1,0 +1,185 @@
+// The GDAL module (tsf-gdal.so): the only code that includes or links GDAL.
+// tsf loads it with dlopen the first time a raster needs GDAL (gdal_reader.cpp),
+// so the hundred-odd libraries GDAL pulls in cost nothing to the commands
+// that never read a GeoTIFF (about 70 ms at every start when linked).
+#include "gen/readers/gdal/gdal_module_abi.h"
+
+#include <atomic>
+#include <cmath>
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <cpl_vsi.h>
+#include <gdal.h>
+#include <mutex>
+#include <ogr_srs_api.h>
+#include <sstream>
+#include <vector>
+
+#include "gen/util/error.h"
+#include "gen/readers/raster_limits.h"
+
+namespace tsf {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void registerDrivers() {
+    static std::once_flag once;
+    std::call_once(once, [] { GDALAllRegister(); });
+}
+
+// Keeps GDAL from printing on stderr while it works; its last message goes
+// into our InputError instead.
+struct QuietGdal {
+    QuietGdal() {
+        CPLPushErrorHandler(CPLQuietErrorHandler);
+        CPLErrorReset();
+    }
+    ~QuietGdal() { CPLPopErrorHandler(); }
+    static std::string lastMessage() {
+        const char* m = CPLGetLastErrorMsg();
+        return m && *m ? std::string(m) : std::string("unknown GDAL error");
+    }
+};
+
+struct Dataset {
+    GDALDatasetH h = nullptr;
+    ~Dataset() {
+        if (h) GDALClose(h);
+    }
+};
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+std::string crsName(OGRSpatialReferenceH srs) {
+    const char* name = OSRGetName(srs);
+    std::string out = name ? name : "unnamed CRS";
+    const char* auth = OSRGetAuthorityName(srs, nullptr);
+    const char* code = OSRGetAuthorityCode(srs, nullptr);
+    if (auth && code) out += std::string(" (") + auth + ":" + code + ")";
+    return out;
+}
+
+Raster readDataset(const std::string& gdal_name, const std::string& path) {
+    registerDrivers();
+    QuietGdal quiet;
+    Dataset ds;
+    ds.h = GDALOpenEx(gdal_name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
+    if (!ds.h) throw InputError(path, 0, 0, "GDAL cannot read it as a raster: " + QuietGdal::lastMessage());
+    const int cols = GDALGetRasterXSize(ds.h), rows = GDALGetRasterYSize(ds.h), bands = GDALGetRasterCount(ds.h);
+    if (bands < 1) throw InputError(path, 0, 0, "has no raster band");
+    checkRasterSize(path, 0, cols, rows);
+    GDALRasterBandH band = GDALGetRasterBand(ds.h, 1);
+
+    Raster r;
+    r.source = path;
+    const char* driver = GDALGetDriverShortName(GDALGetDatasetDriver(ds.h));
+    r.kind = std::string("gdal/") + (driver ? driver : "?");
+    r.facts.push_back({"format", std::string(driver ? GDALGetDriverLongName(GDALGetDatasetDriver(ds.h)) : "?") +
+                                     " through GDAL " + GDALVersionInfo("RELEASE_NAME")});
+    if (bands > 1) r.facts.push_back({"band", "1 of " + std::to_string(bands)});
+
+    // Pixel size on the ground (CRS units) and whether x is degrees of longitude.
+    double gt[6] = {0, 1, 0, 0, -1, 0};
+    const bool has_gt = GDALGetGeoTransform(ds.h, gt) == CE_None;
+    double px_w = std::abs(gt[1]), px_h = std::abs(gt[5]);
+    if (px_w == 0 || px_h == 0 || !std::isfinite(px_w) || !std::isfinite(px_h)) px_w = px_h = 1;
+    if (has_gt && (gt[2] != 0 || gt[4] != 0)) r.facts.push_back({"note", "rotated geotransform read as north-up"});
+    OGRSpatialReferenceH srs = GDALGetSpatialRef(ds.h);
+    double x_scale = 1.0;  // ground width of one unit of x, in units of y
+    if (srs && OSRIsGeographic(srs)) {
+        const double lat = gt[3] + gt[5] * rows / 2.0;  // mean latitude, degrees
+        x_scale = std::cos(lat * kPi / 180.0);
+        r.facts.push_back({"crs", crsName(srs) + ", geographic: longitude scaled by cos(" + number(lat) +
+                                      " deg) = " + number(x_scale)});
+        r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h) + " degrees"});
+    } else if (srs) {
+        char* unit = nullptr;
+        OSRGetLinearUnits(srs, &unit);
+        const std::string u = unit ? unit : "units";
+        r.facts.push_back({"crs", crsName(srs) + (OSRIsProjected(srs) ? ", projected: true aspect" : "")});
+        r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h) + " " + u});
+    } else {
+        r.facts.push_back({"crs", has_gt ? "none; pixel sizes taken as they are" : "none (no georeference)"});
+        if (has_gt) r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h)});
+    }
+
+    // Square pixels on the ground: stretch the shorter side of the pixel.
+    const double ground_w = px_w * x_scale;
+    int out_cols = cols, out_rows = rows;
+    if (ground_w > px_h) out_cols = int(std::lround(cols * ground_w / px_h));
+    else out_rows = int(std::lround(rows * px_h / ground_w));
+    checkRasterSize(path, 0, out_cols, out_rows);
+    r.cell_size = std::min(ground_w, px_h);
+    r.x_origin = gt[0];
+    r.y_origin = gt[3] + gt[5] * rows;
+    if (out_cols != cols || out_rows != rows)
+        r.facts.push_back({"resampled", std::to_string(cols) + " x " + std::to_string(rows) + " -> " +
+                                            std::to_string(out_cols) + " x " + std::to_string(out_rows) +
+                                            " square pixels (nearest) to keep the ground's aspect"});
+
+    r.cols = out_cols;
+    r.rows = out_rows;
+    r.values.assign(size_t(out_cols) * size_t(out_rows), 0.0);
+    GDALRasterIOExtraArg extra;
+    INIT_RASTERIO_EXTRA_ARG(extra);
+    extra.eResampleAlg = GRIORA_NearestNeighbour;
+    if (GDALRasterIOEx(band, GF_Read, 0, 0, cols, rows, r.values.data(), out_cols, out_rows, GDT_Float64, 0, 0,
+                       &extra) != CE_None)
+        throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
+
+    int has_nodata = 0;
+    const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
+    for (double& v : r.values)
+        if ((has_nodata && v == nodata) || !std::isfinite(v)) v = NAN;
+    if (has_nodata) r.facts.push_back({"no-data value", number(nodata) + " (from the file)"});
+    return r;
+}
+
+Raster readGdalFile(const std::string& path) { return readDataset(path, path); }
+
+Raster parseGdalBytes(std::string_view bytes, const std::string& path) {
+    registerDrivers();
+    static std::atomic<unsigned> counter{0};
+    std::string ext;
+    const size_t dot = path.find_last_of('.');
+    if (dot != std::string::npos && path.find('/', dot) == std::string::npos) ext = path.substr(dot);
+    const std::string name = "/vsimem/tsf-" + std::to_string(counter++) + ext;
+    VSILFILE* f = VSIFileFromMemBuffer(name.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
+                                       vsi_l_offset(bytes.size()), /*bTakeOwnership=*/FALSE);
+    if (!f) throw InputError(path, 0, 0, "GDAL cannot take the file's bytes");
+    VSIFCloseL(f);
+    struct Unlink {
+        std::string n;
+        ~Unlink() { VSIUnlink(n.c_str()); }
+    } unlink{name};
+    return readDataset(name, path);
+}
+
+}  // namespace
+}  // namespace tsf
+
+extern "C" __attribute__((visibility("default"))) int tsf_gdal_module_abi() { return tsf::kGdalModuleAbi; }
+
+// No exception crosses the module's edge: an InputError comes back as its
+// parts, anything else as its message.
+extern "C" __attribute__((visibility("default"))) int tsf_gdal_read(const tsf::GdalCall* call) {
+    try {
+        *call->raster = call->bytes ? tsf::parseGdalBytes(*call->bytes, *call->path) : tsf::readGdalFile(*call->path);
+        return tsf::kGdalOk;
+    } catch (const tsf::InputError& e) {
+        call->error->path = e.path();
+        call->error->line = e.line();
+        call->error->column = e.column();
+        call->error->detail = e.detail();
+        return tsf::kGdalInputError;
+    } catch (const std::exception& e) {
+        call->error->detail = e.what();
+        return tsf::kGdalFailed;
+    }
+}

@@ -1,0 +1,41 @@
+// What tsf and its GDAL module (tsf-gdal.so, gdal_module.cpp) pass each
+// other. Both are built together from one tree with one compiler, so plain
+// C++ types cross; the version below keeps a module of another build from
+// being used. No exception crosses: errors come back as GdalModuleError.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "gen/field/raster.h"
+
+namespace tsf {
+
+/// The module's file name (CMakeLists.txt builds it under this name).
+inline constexpr const char* kGdalModuleName = "tsf-gdal.so";
+
+/// Bumped whenever GdalCall, GdalModuleError or Raster change.
+inline constexpr int kGdalModuleAbi = 1;
+
+inline constexpr int kGdalOk = 0;
+inline constexpr int kGdalInputError = 1;  ///< error holds an InputError's parts
+inline constexpr int kGdalFailed = 2;      ///< error.detail holds what failed
+
+struct GdalModuleError {
+    std::string path;
+    int line = 0, column = 0;
+    std::string detail;
+};
+
+struct GdalCall {
+    const std::string* path = nullptr;        ///< the file, or the name of the bytes in messages
+    const std::string_view* bytes = nullptr;  ///< the file's bytes in memory; nullptr: read `path`
+    Raster* raster = nullptr;                 ///< out
+    GdalModuleError* error = nullptr;         ///< out, when the result is not kGdalOk
+};
+
+// The module's two entry points (extern "C", looked up with dlsym):
+//   int tsf_gdal_module_abi();                 returns kGdalModuleAbi
+//   int tsf_gdal_read(const GdalCall* call);   returns kGdalOk, kGdalInputError or kGdalFailed
+
+}  // namespace tsf

@@ -1,0 +1,97 @@
+// readGdalRaster, parseGdalRaster: through the GDAL module, loaded on first
+// use. See gdal_reader.h and gdal/gdal_module_abi.h.
+#include "gen/readers/gdal_reader.h"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+#include <vector>
+
+#include "gen/util/error.h"
+#include "gen/readers/gdal/gdal_module_abi.h"
+
+namespace tsf {
+namespace {
+
+using ReadFn = int (*)(const GdalCall*);
+using AbiFn = int (*)();
+
+struct Module {
+    ReadFn read = nullptr;
+    std::string problem;  // why there is no module, when read is null
+};
+
+// Where the module may be: $TSF_GDAL_MODULE alone when set; else beside the
+// running binary (the build tree), in <prefix>/lib/tsf beside <prefix>/bin
+// (installed), and where this build put it (tests, tools run from elsewhere).
+std::vector<std::string> candidates() {
+    if (const char* env = std::getenv("TSF_GDAL_MODULE"); env && *env) return {env};
+    std::vector<std::string> out;
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        out.push_back((exe.parent_path() / kGdalModuleName).string());
+        out.push_back((exe.parent_path().parent_path() / "lib" / "tsf" / kGdalModuleName).string());
+    }
+#ifdef TSF_GDAL_MODULE_BUILD_PATH
+    out.push_back(TSF_GDAL_MODULE_BUILD_PATH);
+#endif
+    return out;
+}
+
+Module load() {
+    Module m;
+    std::string tried;
+    for (const std::string& path : candidates()) {
+        tried += (tried.empty() ? "" : ", ") + path;
+        if (::access(path.c_str(), F_OK) != 0) continue;
+        void* h = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!h) {
+            const char* why = ::dlerror();
+            m.problem = path + " cannot be loaded: " + (why ? why : "unknown reason");
+            return m;
+        }
+        const auto abi = reinterpret_cast<AbiFn>(::dlsym(h, "tsf_gdal_module_abi"));
+        const auto read = reinterpret_cast<ReadFn>(::dlsym(h, "tsf_gdal_read"));
+        if (!abi || !read || abi() != kGdalModuleAbi) {
+            m.problem = path + " is from another build of tsf (reinstall tsf)";
+            ::dlclose(h);
+            return m;
+        }
+        m.read = read;  // kept loaded for the life of the process
+        return m;
+    }
+    m.problem = std::string(kGdalModuleName) + " was not found (looked in: " + tried +
+                "); reinstall tsf, or name it in TSF_GDAL_MODULE";
+    return m;
+}
+
+const Module& module() {
+    static const Module m = load();
+    return m;
+}
+
+Raster call(const std::string& path, const std::string_view* bytes) {
+    const Module& m = module();
+    if (!m.read)
+        throw std::runtime_error(path + ": this raster is read through GDAL, and tsf's GDAL module " + m.problem);
+    Raster r;
+    GdalModuleError e;
+    const GdalCall c{&path, bytes, &r, &e};
+    const int status = m.read(&c);
+    if (status == kGdalInputError) throw InputError(e.path, e.line, e.column, e.detail);
+    if (status != kGdalOk) throw std::runtime_error(path + ": GDAL failed: " + e.detail);
+    return r;
+}
+
+}  // namespace
+
+Raster readGdalRaster(const std::string& path) { return call(path, nullptr); }
+
+Raster parseGdalRaster(std::string_view bytes, const std::string& path) { return call(path, &bytes); }
+
+}  // namespace tsf

@@ -1,0 +1,49 @@
+// GDAL reader: GeoTIFF and every other raster GDAL reads (Debian libgdal-dev),
+// the way elevation data usually comes.
+//
+// GDAL itself lives in a module, tsf-gdal.so (gdal/gdal_module.cpp, the only
+// file that includes GDAL), loaded with dlopen on the first call: linked
+// into tsf, GDAL's hundred-odd libraries cost every command about 70 ms at
+// start. It is looked for in $TSF_GDAL_MODULE (alone, when set), beside the
+// running binary, in <prefix>/lib/tsf for <prefix>/bin/tsf, and where the
+// build put it. A missing or foreign module is a std::runtime_error naming
+// the places looked in (exit code 3 in the CLI: a missing tool).
+//
+// Reads band 1 as doubles. Layout as every Raster: row 0 north, column 0
+// west (GDAL's own order for north-up rasters).
+//   - no data: the band's no-data value becomes NaN (so do NaN pixels);
+//   - pixel size and CRS (from the geotransform and the spatial reference):
+//       projected CRS (or none, or a local one): the pixels' width and height
+//         in its units; true aspect is kept;
+//       geographic CRS (degrees): a degree of longitude is cos(latitude)
+//         of a degree of latitude, at the raster's mean latitude; the pixel
+//         width is scaled by it;
+//     when the pixels are then not square, the raster is resampled (nearest
+//     neighbour, so no-data and values stay exact) to square pixels the size
+//     of the smaller side, so the model keeps the ground's aspect;
+//     Raster::cell_size is that side, in the CRS's units (degrees of
+//     latitude for a geographic CRS);
+//   - a rotated geotransform is read as north-up (a fact says so).
+// Raster::facts names the GDAL driver, the band, the CRS, the pixel size, the
+// no-data value and any resampling; Raster::kind is "gdal/<driver>"
+// ("gdal/GTiff").
+// Errors (tsf::InputError naming the file): GDAL cannot open it (GDAL's
+// message), no raster band, a size over raster_limits.h, a read failure.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "gen/field/raster.h"
+
+namespace tsf {
+
+/// Reads the raster file at `path` through GDAL.
+Raster readGdalRaster(const std::string& path);
+
+/// Same on bytes in memory (GDAL's /vsimem/); `path` names them in messages
+/// and tells GDAL the extension. Files that need a sidecar (.hdr, .prj)
+/// must be read with readGdalRaster.
+Raster parseGdalRaster(std::string_view bytes, const std::string& path);
+
+}  // namespace tsf

@@ -1,0 +1,103 @@
+#include "gen/readers/load_field.h"
+
+#include "gen/util/error.h"
+#include <cmath>
+#include <sstream>
+
+#include "gen/readers/point_binning.h"
+#include "gen/readers/point_projection.h"
+#include "gen/readers/point_reader.h"
+#include "gen/readers/raster_reader.h"
+#include "gen/field/resample.h"
+
+namespace tsf {
+namespace {
+
+// Values GIS tools and loggers write for "no data"; a raster whose smallest
+// value is one of them almost certainly means it as no data.
+bool looksLikeNoDataPlaceholder(double v) {
+    return v == -9999.0 || v == -99999.0 || v == -32768.0 || v == -32767.0 || v == -3.4028234663852886e38 ||
+           v == -1e30;
+}
+
+std::string formatValue(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+}  // namespace
+
+HexField loadField(const FieldLoadOptions& o) {
+    if (!o.delimiter.empty() && o.delimiter != "," && o.delimiter != ";" && o.delimiter != "tab" &&
+        o.delimiter != "\t" && o.delimiter != "space" && o.delimiter != " ")
+        throw InputError("--delimiter: expected , ; tab or space, got '" + o.delimiter + "'");
+    const char delimiter = o.delimiter.empty()                              ? 0
+                           : (o.delimiter == "tab" || o.delimiter == "\t") ? '\t'
+                           : (o.delimiter == "space" || o.delimiter == " ") ? ' '
+                                                                            : o.delimiter[0];
+    if (!o.points.empty()) {
+        PointColumns cols = parsePointColumns(o.points);
+        cols.delimiter = delimiter;
+        const PointTable table = readPointsCsv(o.input, cols);
+        BinOptions b;
+        b.aggregate = parseAggregate(o.aggregate);
+        b.bin_size = o.bin_size;
+        b.hex_cols = o.bins;
+        PointTable points = table;
+        const std::string projected = projectPoints(points, parseProjection(o.project));
+        HexField f = binPoints(points, b);
+        f.source = o.input;
+        f.input.kind = "points";
+        describeValues(table.weight, f.input);
+        f.input.values = int64_t(table.size());
+        if (!projected.empty()) f.how += "; " + projected;
+        return f;
+    }
+    RasterReadOptions ro;
+    ro.delimiter = delimiter;
+    ro.decimal = o.decimal_comma ? DecimalMark::Comma : DecimalMark::Detect;
+    Raster raster = readRaster(o.input, ro);
+    int64_t nodata_cells = 0;
+    if (o.nodata)
+        for (double& v : raster.values)
+            if (v == *o.nodata) {
+                v = NAN;
+                ++nodata_cells;
+            }
+    FieldInput input;
+    input.kind = raster.kind;
+    input.cols = raster.cols;
+    input.rows = raster.rows;
+    input.facts = raster.facts;
+    describeValues(raster.values, input);
+    std::string placeholder_note;
+    if (o.nodata) {
+        input.facts.push_back({"no-data value", formatValue(*o.nodata) + " (--nodata), " +
+                                                    std::to_string(nodata_cells) + " cells"});
+    } else if (looksLikeNoDataPlaceholder(input.min)) {
+        placeholder_note = "; the smallest value " + formatValue(input.min) +
+                           " looks like a no-data placeholder: give --nodata " + formatValue(input.min) +
+                           " if it is one";
+        input.facts.push_back({"note", placeholder_note.substr(2)});
+    }
+    RasterPlacement pl;
+    pl.hex_cols = o.bins;
+    pl.method = parseResampleMethod(o.sample);
+    pl.pitch_mm = o.cell_mm;
+    pl.fit_width_mm = o.fit_width_mm;
+    pl.fit_depth_mm = o.fit_depth_mm;
+    pl.min_cell_mm = o.min_cell_mm;
+    HexField f = placeRaster(raster, pl);
+    f.source = o.input;
+    f.input = std::move(input);
+    f.how += placeholder_note;
+    if (o.nodata) {
+        std::ostringstream s;
+        s << "; " << nodata_cells << " values equal to --nodata " << *o.nodata << " are no data";
+        f.how += s.str();
+    }
+    return f;
+}
+
+}  // namespace tsf

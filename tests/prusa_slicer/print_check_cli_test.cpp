@@ -1,0 +1,146 @@
+// tsf print-check end to end with the real PrusaSlicer: a pillar model from
+// tsf gen prints without supports in height / layer layers; a solid with a
+// slab overhanging a stem needs supports; bad input and a missing slicer
+// give their exit codes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/mesh_io/mesh_reader.h"
+#include "gen/mesh_io/mesh_writer.h"
+#include "tests/support/meshes.h"
+#include "tests/support/run.h"
+#include "runners/process_runner.h"
+
+namespace tsf {
+namespace {
+
+bool haveSlicer() { return !findExecutable("prusa-slicer").empty(); }
+
+#define REQUIRE_SLICER() \
+    if (!haveSlicer()) GTEST_SKIP() << "prusa-slicer is not installed (setup.sh installs it)"
+
+nlohmann::json printCheck(const std::string& args, const std::filesystem::path& dir) {
+    const test::RunResult r = test::runTsf("print-check " + args + " --json", dir);
+    EXPECT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    return r.exit_code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+}
+
+TEST(PrintCheckCli, PillarModelPrintsWithoutSupportsInHeightOverLayerLayers) {
+    REQUIRE_SLICER();
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "field.csv", "1,2,3\n2,3,4\n3,4,5\n");
+    const std::string model = (dir / "pillars.stl").string();
+    const auto gen = test::runTsf("gen " + (dir / "field.csv").string() + " --width 30 --depth 30 --height 6 -o " + model, dir);
+    ASSERT_EQ(gen.exit_code, 0) << gen.out << gen.err;
+    const Bounds b = meshBounds(readMesh(model));
+    const double height_mm = b.max.z - b.min.z;
+
+    for (const double layer_mm : {0.2, 0.3}) {
+        const auto j = printCheck(model + " --layer " + std::to_string(layer_mm), dir);
+        ASSERT_TRUE(j.contains("layers")) << j.dump(2);
+        EXPECT_EQ(j["layers"].get<int>(), int(std::ceil(height_mm / layer_mm - 1e-6))) << "height " << height_mm;
+        EXPECT_EQ(j["repair_needed"], false);
+        EXPECT_EQ(j["parts"], 1);
+        EXPECT_EQ(j["supports_needed"], false);
+        EXPECT_EQ(j["with_supports"]["support_extruded"], false);
+        EXPECT_GT(j["filament_mm"].get<double>(), 0);
+        EXPECT_GT(j["filament_cm3"].get<double>(), 0);
+        // Mass = volume x the density given to the slicer (1.24 g/cm3 by default).
+        EXPECT_NEAR(j["filament_g"].get<double>(), 1.24 * j["filament_cm3"].get<double>(), 0.02);
+        EXPECT_GT(j["print_time_s"].get<double>(), 60);
+        EXPECT_NEAR(j["without_supports"]["max_z_mm"].get<double>(), height_mm, layer_mm);
+    }
+    // Halving the layer height means more layers and more time.
+    const auto fine = printCheck(model + " --layer 0.1", dir);
+    const auto coarse = printCheck(model + " --layer 0.2", dir);
+    EXPECT_GT(fine["layers"].get<int>(), coarse["layers"].get<int>());
+    EXPECT_GT(fine["print_time_s"].get<double>(), coarse["print_time_s"].get<double>());
+}
+
+TEST(PrintCheckCli, SlabOverAStemNeedsSupportsAndSaysHowMuchMore) {
+    REQUIRE_SLICER();
+    const auto dir = test::scratchDir();
+    // A 6 x 6 x 10 mm stem carrying a 30 x 30 x 2 mm slab: 864 mm^2 hang in the air.
+    const Mesh table =
+        test::append(test::box({12, 12, 0}, {18, 18, 10}), test::box({0, 0, 10}, {30, 30, 12}));
+    const std::string model = (dir / "table.stl").string();
+    writeMesh(table, model);
+    const auto j = printCheck(model, dir);
+    ASSERT_TRUE(j.contains("supports_needed")) << j.dump(2);
+    EXPECT_EQ(j["supports_needed"], true);
+    EXPECT_EQ(j["with_supports"]["support_extruded"], true);
+    EXPECT_GT(j["with_supports"]["filament_cm3"].get<double>(), j["without_supports"]["filament_cm3"].get<double>());
+    EXPECT_EQ(j["layers"].get<int>(), 60);  // 12 mm at 0.2 mm
+
+    const auto text = test::runTsf("print-check " + model, dir);
+    EXPECT_EQ(text.exit_code, 0) << text.out << text.err;
+    EXPECT_NE(text.out.find("supports:          NEEDED"), std::string::npos) << text.out;
+}
+
+TEST(PrintCheckCli, BadInputIsExitTwoAndAMissingSlicerExitThree) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "junk.stl", "solid x\n  facet normal 0 0 1\n    outer loop\n");
+    const auto junk = test::runTsf("print-check " + (dir / "junk.stl").string(), dir);
+    EXPECT_EQ(junk.exit_code, test::kExitBadInput) << junk.out << junk.err;
+    EXPECT_NE(junk.err.find("junk.stl"), std::string::npos) << junk.err;
+
+    const std::string wide = (dir / "wide.stl").string();
+    writeMesh(test::box({0, 0, 0}, {260, 20, 5}), wide);
+    const auto big = test::runTsf("print-check " + wide + " --bed 250x210", dir);
+    EXPECT_EQ(big.exit_code, test::kExitBadInput) << big.out << big.err;
+    EXPECT_NE(big.err.find("larger than the 250 x 210 mm bed"), std::string::npos) << big.err;
+
+    const auto bad_bed = test::runTsf("print-check " + wide + " --bed 250", dir);
+    EXPECT_EQ(bad_bed.exit_code, test::kExitBadInput) << bad_bed.err;
+
+    const std::string small = (dir / "small.stl").string();
+    writeMesh(test::box({0, 0, 0}, {20, 20, 5}), small);
+    const auto none = test::runTsf("print-check " + small + " --slicer " + (dir / "no-such-slicer").string(), dir);
+    EXPECT_EQ(none.exit_code, test::kExitToolFailed) << none.out << none.err;
+    EXPECT_NE(none.err.find("prusa-slicer"), std::string::npos) << none.err;
+}
+
+// tsf gen --parts --print-check: PrusaSlicer loads the 3MF as ONE object
+// (its --info prints one block) whose volumes are the parts, and the gen
+// summary carries the print check (time, filament). Small field, one gen.
+TEST(PrintCheckCli, MultiPart3mfIsOneObjectToPrusaSlicerAndGenPrintChecksIt) {
+    REQUIRE_SLICER();
+    const auto dir = test::scratchDir();
+    std::string csv;
+    for (int r = 0; r < 10; ++r) {  // a varied strip in the north, a flat region for the triangle
+        for (int c = 0; c < 14; ++c) csv += (c ? "," : "") + std::to_string(r >= 3 ? 4 : (c + r) % 3);
+        csv += "\n";
+    }
+    test::writeText(dir / "field.csv", csv);
+    const std::string model = (dir / "parts.3mf").string();
+    const auto gen = test::runTsf("gen " + (dir / "field.csv").string() +
+                                      " --cell 4 --height 4 --title T --parts --print-check --layer 0.3 --json -o " + model,
+                                  dir);
+    ASSERT_EQ(gen.exit_code, test::kExitOk) << gen.out << gen.err;
+    const auto j = nlohmann::json::parse(gen.out);
+    ASSERT_TRUE(j.contains("print_check")) << j.dump(2);
+    ASSERT_EQ(j["verify"]["parts"]["parts"].size(), 3u);  // pillars, marks, legend
+    EXPECT_EQ(j["print_check"]["objects"], 1);
+    EXPECT_EQ(j["print_check"]["repair_needed"], false);
+    EXPECT_GT(j["print_check"]["print_time_s"].get<double>(), 0);
+    EXPECT_GT(j["print_check"]["filament_g"].get<double>(), 0);
+    EXPECT_DOUBLE_EQ(j["print_check"]["settings"]["layer_mm"].get<double>(), 0.3);  // --layer reaches the slicer
+
+    // PrusaSlicer's own --info: one object of all the parts' triangles.
+    const auto info = test::runCommand("prusa-slicer --loglevel 1 --datadir " + (dir / "ps").string() + " --info " + model);
+    ASSERT_EQ(info.exit_code, 0) << info.output;
+    size_t blocks = 0;
+    for (size_t at = info.output.find("number_of_facets"); at != std::string::npos;
+         at = info.output.find("number_of_facets", at + 1))
+        ++blocks;
+    EXPECT_EQ(blocks, 1u) << info.output;
+    size_t triangles = 0;
+    for (const MeshPart& p : readMeshParts(model)) triangles += p.mesh.triangleCount();
+    EXPECT_NE(info.output.find("number_of_facets = " + std::to_string(triangles)), std::string::npos) << info.output;
+}
+
+}  // namespace
+}  // namespace tsf

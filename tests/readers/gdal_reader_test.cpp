@@ -1,0 +1,171 @@
+// GDAL rasters: a GeoTIFF's no-data value, pixel size and CRS give the model a
+// user expects, and a binary file is never parsed as text.
+#include "gen/readers/gdal_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gen/readers/load_field.h"
+#include "gen/readers/raster_reader.h"
+#include "tests/readers/geotiff_test_writer.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+// 4 x 3 values 1..12, -9999 at (1, 0) and (3, 2).
+test::GeoTiffSpec demSpec() {
+    test::GeoTiffSpec s;
+    s.cols = 4;
+    s.rows = 3;
+    for (int k = 0; k < 12; ++k) s.values.push_back(float(k + 1));
+    s.values[1] = -9999.0f;
+    s.values[11] = -9999.0f;
+    s.nodata = -9999.0;
+    return s;
+}
+
+TEST(GdalReader, ProjectedGeoTiffWithNoData) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s = demSpec();
+    s.epsg = 32633;  // WGS 84 / UTM zone 33N, metres
+    s.west = 500000;
+    s.north = 5200000;
+    s.pixel_w = s.pixel_h = 30;
+    const std::string path = (dir / "dem.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const Raster r = readRaster(path);
+    ASSERT_EQ(r.cols, 4);
+    ASSERT_EQ(r.rows, 3);
+    EXPECT_EQ(r.kind, "gdal/GTiff");
+    EXPECT_EQ(r.at(0, 0), 1.0);
+    EXPECT_TRUE(std::isnan(r.at(1, 0)));
+    EXPECT_TRUE(std::isnan(r.at(3, 2)));
+    EXPECT_EQ(r.at(2, 2), 11.0);
+    EXPECT_EQ(r.cell_size, 30.0);
+    EXPECT_NE(r.fact("crs").find("EPSG:32633"), std::string::npos) << r.fact("crs");
+    EXPECT_NE(r.fact("crs").find("projected: true aspect"), std::string::npos);
+    EXPECT_EQ(r.fact("pixel"), "30 x 30 metre");
+    EXPECT_EQ(r.fact("no-data value"), "-9999 (from the file)");
+}
+
+TEST(GdalReader, OblongPixelsAreMadeSquareOnTheGround) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s = demSpec();
+    s.epsg = 32633;
+    s.pixel_w = 30;
+    s.pixel_h = 60;  // each pixel twice as tall as wide: 120 m x 180 m on the ground
+    const std::string path = (dir / "tall.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const Raster r = readRaster(path);
+    EXPECT_EQ(r.cols, 4);
+    EXPECT_EQ(r.rows, 6);
+    EXPECT_EQ(r.cell_size, 30.0);
+    EXPECT_EQ(r.at(0, 1), 1.0) << "nearest neighbour repeats the row";
+    EXPECT_NE(r.fact("resampled"), "");
+}
+
+TEST(GdalReader, GeographicLongitudeIsScaledByCosLatitude) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s = demSpec();
+    s.epsg = 4326;
+    s.west = 10;
+    s.north = 60.015;  // mean latitude 60: a degree of longitude is half a degree of latitude
+    s.pixel_w = s.pixel_h = 0.01;
+    const std::string path = (dir / "geo.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const Raster r = readRaster(path);
+    EXPECT_EQ(r.cols, 4);
+    EXPECT_EQ(r.rows, 6) << "4 x 3 pixels of 0.005 x 0.01 degrees of latitude on the ground";
+    EXPECT_NE(r.fact("crs").find("cos(60 deg) = 0.5"), std::string::npos) << r.fact("crs");
+}
+
+TEST(GdalReader, LoadFieldReportsWhatWasRead) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s = demSpec();
+    s.epsg = 32633;
+    s.pixel_w = s.pixel_h = 30;
+    FieldLoadOptions in;
+    in.input = (dir / "dem.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(in.input, s));
+    const HexField f = loadField(in);
+    EXPECT_EQ(f.input.nodata, 2);
+    EXPECT_EQ(f.input.min, 1.0);
+    EXPECT_EQ(f.input.max, 11.0);
+    EXPECT_TRUE(f.one_to_one);
+}
+
+TEST(GdalReader, InfoSaysWhatWasRead) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s = demSpec();
+    s.epsg = 32633;
+    s.pixel_w = s.pixel_h = 30;
+    ASSERT_TRUE(test::writeGeoTiff((dir / "dem.tif").string(), s));
+    const auto r = test::runTsf("info " + (dir / "dem.tif").string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const char* said : {"EPSG:32633", "projected: true aspect", "pixel: 30 x 30 metre", "no-data value: -9999",
+                             "2 of 12 without data"})
+        EXPECT_NE(r.output.find(said), std::string::npos) << said << "\n" << r.output;
+}
+
+TEST(GdalReader, BinaryFilesAreNeverParsedAsText) {
+    const auto dir = test::scratchDir();
+    // TIFF magic under a .csv name, but no valid TIFF behind it.
+    test::writeText(dir / "fake.csv", std::string("II*\0\x08\0\0\0garbage", 16));
+    EXPECT_INPUT_ERROR(readRaster((dir / "fake.csv").string()), "is a TIFF image; GDAL cannot read it");
+    // A spreadsheet saved as .xlsx is a ZIP archive: say so.
+    test::writeText(dir / "sheet.csv", std::string("PK\x03\x04\x14\0\0\0", 8));
+    EXPECT_INPUT_ERROR(readRaster((dir / "sheet.csv").string()), ".xlsx");
+    const InputError e = test::catchInputError([&] { readRaster((dir / "fake.csv").string()); });
+    EXPECT_EQ(std::string(e.what()).find("separated"), std::string::npos) << e.what();
+}
+
+TEST(GdalReader, BytesInMemoryReadLikeTheFile) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s = demSpec();
+    const std::string path = (dir / "mem.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const Raster r = parseRaster(test::readText(path), "mem.tif");
+    ASSERT_EQ(r.cols, 4);
+    EXPECT_TRUE(std::isnan(r.at(1, 0)));
+}
+
+// GDAL is a module loaded when a raster needs it: the tsf binary itself does
+// not link it (the dynamic loader lists what a binary needs, and exits).
+TEST(GdalReader, TsfStartsWithoutLoadingGdal) {
+    const auto r = test::runCommand(std::string("LD_TRACE_LOADED_OBJECTS=1 ") + TSF_BINARY);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("libstdc++"), std::string::npos) << r.output;  // the listing is there
+    EXPECT_EQ(r.output.find("libgdal"), std::string::npos) << r.output;
+}
+
+TEST(GdalReader, AMissingModuleIsAToolErrorNamingWhereItLooked) {
+    const auto dir = test::scratchDir();
+    ASSERT_TRUE(test::writeGeoTiff((dir / "dem.tif").string(), demSpec()));
+    const std::string nowhere = (dir / "no-such-folder" / "tsf-gdal.so").string();
+    const auto r = test::runTsf("info " + (dir / "dem.tif").string(), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+
+    const auto missing = test::runCommand("TSF_GDAL_MODULE=" + nowhere + " " + TSF_BINARY + " info " +
+                                          (dir / "dem.tif").string());
+    EXPECT_EQ(missing.exit_code, test::kExitToolFailed) << missing.output;
+    EXPECT_NE(missing.output.find("dem.tif: this raster is read through GDAL"), std::string::npos) << missing.output;
+    EXPECT_NE(missing.output.find("was not found (looked in: " + nowhere + ")"), std::string::npos) << missing.output;
+
+    // Something that is not a module: the loader's reason is passed on.
+    test::writeText(dir / "not-a-module.so", "text");
+    const auto foreign = test::runCommand("TSF_GDAL_MODULE=" + (dir / "not-a-module.so").string() + " " +
+                                          TSF_BINARY + " info " + (dir / "dem.tif").string());
+    EXPECT_EQ(foreign.exit_code, test::kExitToolFailed) << foreign.output;
+    EXPECT_NE(foreign.output.find("not-a-module.so cannot be loaded"), std::string::npos) << foreign.output;
+    // Formats tsf reads itself never need it.
+    test::writeText(dir / "f.csv", "1,2\n3,4\n");
+    EXPECT_EQ(test::runCommand("TSF_GDAL_MODULE=" + nowhere + " " + TSF_BINARY + " info " +
+                               (dir / "f.csv").string()).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace tsf

@@ -1,0 +1,48 @@
+// Writes small GeoTIFFs for the GDAL reader's tests through GDAL's own C API,
+// so no binary test file is checked in. Test-only: the library reads GDAL
+// only in gen/readers/gdal_reader.cpp.
+#pragma once
+
+#include <gdal.h>
+#include <ogr_srs_api.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tsf::test {
+
+struct GeoTiffSpec {
+    int cols = 0, rows = 0;
+    std::vector<float> values;  ///< row-major, row 0 north
+    int epsg = 0;               ///< 0 = no CRS
+    double west = 0, north = 0; ///< top-left corner, CRS units
+    double pixel_w = 1, pixel_h = 1;  ///< CRS units, positive
+    std::optional<double> nodata;
+};
+
+/// Writes spec as a Float32 GeoTIFF; returns false when GDAL refuses.
+inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
+    GDALAllRegister();
+    GDALDriverH driver = GDALGetDriverByName("GTiff");
+    if (!driver) return false;
+    GDALDatasetH ds = GDALCreate(driver, path.c_str(), s.cols, s.rows, 1, GDT_Float32, nullptr);
+    if (!ds) return false;
+    double gt[6] = {s.west, s.pixel_w, 0, s.north, 0, -s.pixel_h};
+    GDALSetGeoTransform(ds, gt);
+    if (s.epsg != 0) {
+        OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
+        OSRImportFromEPSG(srs, s.epsg);
+        GDALSetSpatialRef(ds, srs);
+        OSRDestroySpatialReference(srs);
+    }
+    GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+    if (s.nodata) GDALSetRasterNoDataValue(band, *s.nodata);
+    std::vector<float> v = s.values;
+    const bool ok = GDALRasterIO(band, GF_Write, 0, 0, s.cols, s.rows, v.data(), s.cols, s.rows, GDT_Float32, 0, 0) ==
+                    CE_None;
+    GDALClose(ds);
+    return ok;
+}
+
+}  // namespace tsf::test
