@@ -22,6 +22,7 @@
 #include "app/gen_options.h"
 #include "gen/util/error.h"
 #include "gen/readers/load_field.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "haptics/coverage.h"
 #include "haptics/falcon/falcon_device.h"

@@ -26,6 +26,7 @@
 #include "runners/prusa_slicer/print_check.h"
 #include "verify/verify_model.h"
 #include "verify/verify_parts.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf::cli {
 namespace {

@@ -1,6 +1,7 @@
 #include "app/gen_summary.h"
 
 #include "gen/model/features/braille.h"
+#include "gen/model/features/halves.h"
 
 #include <cmath>
 #include <cstdio>

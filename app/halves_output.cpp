@@ -9,6 +9,7 @@
 #include "gen/mesh/halves_mesh.h"
 #include "verify/halves_check.h"
 #include "verify/overhang.h"
+#include "gen/model/features/halves.h"
 
 namespace tsf::cli {
 namespace {

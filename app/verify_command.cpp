@@ -13,6 +13,7 @@
 #include "gen/model/scene_json.h"
 #include "verify/verify_model.h"
 #include "verify/verify_parts.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf::cli {
 namespace {

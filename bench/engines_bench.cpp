@@ -30,6 +30,7 @@
 #include "runners/openscad/engine_output_check.h"
 #include "gen/scad/scad_emitter.h"
 #include "runners/openscad/wasm_engine.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "verify/verify_model.h"
 

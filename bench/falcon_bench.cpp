@@ -14,6 +14,7 @@
 #include <benchmark/benchmark.h>
 
 #include "gen/readers/load_field.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "haptics/falcon/falcon_device.h"
 #include "haptics/falcon/falcon_kinematics.h"

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gen/mesh/direct_mesher.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 
 namespace {

@@ -32,6 +32,7 @@
 #include "gen/mesh_io/mesh_reader.h"
 #include "runners/openscad/openscad_runner.h"
 #include "gen/scad/scad_emitter.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "verify/mesh_topology.h"
 #include "verify/triangle_bvh.h"

@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "gen/mesh/direct_mesher.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "verify/agreement.h"
 #include "verify/printability.h"

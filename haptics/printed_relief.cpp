@@ -1,4 +1,5 @@
 #include "haptics/printed_relief.h"
+#include "gen/model/features/marks.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,6 +8,10 @@
 #include <thread>
 
 #include "verify/detail/format.h"
+#include "gen/model/features/halves.h"
+#include "gen/model/features/top_shapes.h"
+#include "gen/model/features/marks.h"
+#include "gen/model/features/scale.h"
 
 namespace tsf {
 namespace {

@@ -67,6 +67,7 @@
 #include "gen/mesh/legend_join.h"
 #include "gen/model/features/scale.h"
 #include "gen/model/scene_check.h"
+#include "gen/model/features/top_shapes.h"
 
 namespace tsf {
 namespace {

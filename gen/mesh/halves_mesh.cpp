@@ -6,6 +6,7 @@
 
 #include "gen/mesh/direct_mesher.h"
 #include "gen/model/scene.h"
+#include "gen/model/features/halves.h"
 
 namespace tsf {
 namespace {

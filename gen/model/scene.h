@@ -13,7 +13,8 @@
 // Frame: x east, y north, z up, millimetres; the grid's bounding box starts at
 // (0, 0) (see hex_grid.h); the lowest bottom is z = 0.
 //
-// Invariants (made by buildScene, checked by the mesher: gen/model/scene_check.h):
+// Invariants (made by buildScene, gen/model/build_scene.h; checked by the
+// mesher: gen/model/scene_check.h):
 //   - kept cells form one edge-connected piece;
 //   - every kept cell has bottom < top;
 //   - the z intervals of two neighbouring kept cells overlap by at least one
@@ -26,14 +27,13 @@
 #include <vector>
 
 #include "gen/field/hex_field.h"
-#include "gen/model/features/halves.h"
 #include "gen/field/hex_grid.h"
-#include "gen/model/features/legend.h"
-#include "gen/model/features/marks.h"
-#include "gen/model/features/scale.h"
 #include "gen/geometry/mesh.h"
-#include "gen/model/features/tilt.h"
-#include "gen/model/features/top_shapes.h"
+#include "gen/model/features/legend.h"
+#include "gen/model/scene_halves.h"
+#include "gen/model/scene_marks.h"
+#include "gen/model/scene_scale.h"
+#include "gen/model/scene_top_shapes.h"
 
 namespace tsf {
 
@@ -45,6 +45,13 @@ enum class Transfer {
     Linear,  ///< h = H * t             (default; heights proportional to values)
     Sqrt,    ///< h = H * sqrt(t)       (area-like quantities, counts)
     Log,     ///< h = H * log10(1 + 99 t) / 2   (two decades of range)
+};
+
+/// Where the slope of a tilted top comes from (gen/model/features/tilt.h).
+enum class TiltSource : uint8_t {
+    None,      ///< every top level (default)
+    Points,    ///< each bin's regression plane (point input only)
+    Gradient,  ///< the field's gradient
 };
 
 /// Which cells are modelled.
@@ -193,28 +200,6 @@ struct Scene {
     }
 };
 
-/// Builds the Scene for a field. Throws InputError for invalid parameters or a
-/// field with no usable value (empty grid, all NaN).
-///
-/// Defined outcomes (docs/model.md):
-///   - NaN cells are "no data": never non-empty, modelled at the floor when kept;
-///   - constant field: all cells at the same height (full height if the constant
-///     is above the baseline, else the floor), with a note;
-///   - a single non-empty cell or collinear non-empty cells: the hull is
-///     degenerate; cells within one circumradius of it are kept so the model is
-///     one piece, with a note;
-///   - no non-empty cell at all (all at the floor): with Cull::Hull every cell
-///     with data is kept (a flat slab) and a note says so;
-///   - kept cells without data are pits nodata_pit_units below the floor
-///     (mirrored: also above the underside), so touch never reads them as the
-///     lowest value;
-///   - the orientation marks (notch, triangle) are placed as MarkParams asks,
-///     where they fit; a note says when one does not;
-///   - tops tilt as params.tilt asks (gen/model/features/tilt.h), clamped so no corner goes
-///     below the floor; structural cells (params.structural_texture) get a
-///     dimple; a note says when a tilt was clamped.
-Scene buildScene(const HexField& field, const SceneParams& params);
-
 /// (v - lo) / (hi - lo) for finite v, lo < hi, also when hi - lo exceeds the
 /// largest double (then computed on the halves). The OpenSCAD library's
 /// _tsf_height_mm does the same, so both give the same heights.
@@ -231,5 +216,6 @@ const char* toString(Transfer);
 const char* toString(Cull);
 const char* toString(Bottom);
 const char* toString(BaselineMode);
+const char* toString(TiltSource);
 
 }  // namespace tsf

@@ -14,6 +14,9 @@
 #include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
 #include "gen/util/file_bytes.h"
+#include "gen/model/features/marks.h"
+#include "gen/model/features/scale.h"
+#include "gen/model/features/top_shapes.h"
 
 namespace tsf {
 namespace {

@@ -5,7 +5,7 @@
 //   FieldLoadOptions in;
 //   in.input = "examples/volcano.csv";
 //   const HexField field = loadField(in);              // gen/readers/load_field.h
-//   const Scene scene = buildScene(field, params);     // gen/model/scene.h
+//   const Scene scene = buildScene(field, params);     // gen/model/build_scene.h
 //
 // Rasters (grid CSV, PGM, PNG, ESRI ASCII grid; raster_reader.h) become one
 // hexagon per value when they fit the box at tactile cell sizes, and are

@@ -10,9 +10,6 @@
 namespace tsf {
 namespace {
 
-// `openscad --help` prints its options and exits at once.
-constexpr double kHelpTimeoutS = 30.0;
-
 // Unions of more cells than this take minutes on every engine (docs/engines.md:
 // 1 600 cells took 7 s with Manifold and 100 s with CGAL; 10 000 cells 104 s
 // with Manifold, more than 15 minutes with CGAL).
@@ -20,11 +17,6 @@ constexpr size_t kCsgMinutesCells = 1600;
 
 // A cell count in a header longer than this is not one tsf wrote.
 constexpr size_t kMaxCellDigits = 12;
-
-std::string lower(std::string s) {
-    for (char& ch : s) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    return s;
-}
 
 std::string describe(const ScadEngine& engine) {
     return engine.name() + " (" + engine.version() + ", " + engine.executable() + ")";
@@ -120,16 +112,6 @@ bool parseEngineChoice(const std::string& text, EngineChoice& choice) {
     else if (text == "wasm") choice = EngineChoice::Wasm;
     else return false;
     return true;
-}
-
-bool openScadHasManifoldBackend(const std::string& executable) {
-    ProcessOptions po;
-    po.timeout_s = kHelpTimeoutS;
-    const ProcessResult pr = runProcess({executable, "--help"}, po);
-    if (pr.end != ProcessResult::End::Exited) return false;
-    const std::string help = lower(pr.output);
-    const size_t at = help.find("--backend");
-    return at != std::string::npos && help.find("manifold", at) != std::string::npos;
 }
 
 std::unique_ptr<ScadEngine> selectEngine(EngineChoice choice, const std::string& strategy,

@@ -34,12 +34,6 @@ const char* toString(EngineChoice choice);  ///< "auto", "openscad", "wasm" (the
 /// Parses "auto", "openscad" or "wasm"; false for anything else.
 bool parseEngineChoice(const std::string& text, EngineChoice& choice);
 
-/// Does this OpenSCAD binary have the Manifold backend, i.e. does
-/// `executable --help` list --backend with a Manifold option? (OpenSCAD
-/// 2021.01 rejects --backend=manifold; nightlies since late 2024 and the 2025
-/// builds accept it.) False when it cannot be run. Runs the binary once.
-bool openScadHasManifoldBackend(const std::string& executable);
-
 /// What a .scad file written by tsf says about itself.
 struct ScadFileFacts {
     std::string strategy;  ///< "csg", "polyhedron", or "" (not a tsf model, or both)

@@ -1,7 +1,5 @@
 #include "runners/openscad/openscad_runner.h"
 
-#include "runners/openscad/engine_select.h"  // openScadHasManifoldBackend
-
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -25,6 +23,8 @@ namespace {
 
 // `openscad --version` prints one line and exits; anything slower is broken.
 constexpr double kVersionTimeoutS = 30.0;
+// `openscad --help` prints its options and exits at once.
+constexpr double kHelpTimeoutS = 30.0;
 
 const char* const kOpenScadInstallHint =
     "install OpenSCAD (Debian/Ubuntu: sudo apt install openscad; others: https://openscad.org/downloads.html) "
@@ -339,6 +339,16 @@ ScadRenderResult renderScad(const ScadEngine& engine, const ScadRenderRequest& r
         }
     }
     return r;
+}
+
+bool openScadHasManifoldBackend(const std::string& executable) {
+    ProcessOptions po;
+    po.timeout_s = kHelpTimeoutS;
+    const ProcessResult pr = runProcess({executable, "--help"}, po);
+    if (pr.end != ProcessResult::End::Exited) return false;
+    const std::string help = lower(pr.output);
+    const size_t at = help.find("--backend");
+    return at != std::string::npos && help.find("manifold", at) != std::string::npos;
 }
 
 }  // namespace tsf

@@ -154,4 +154,10 @@ void finishEngineResult(ScadRenderResult& r, const ProcessResult& process, const
 ScadRenderResult renderScad(const ScadEngine& engine, const ScadRenderRequest& request,
                             const ScadProgress& progress = {});
 
+/// Does this OpenSCAD binary have the Manifold backend, i.e. does
+/// `executable --help` list --backend with a Manifold option? (OpenSCAD
+/// 2021.01 rejects --backend=manifold; nightlies since late 2024 and the 2025
+/// builds accept it.) False when it cannot be run. Runs the binary once.
+bool openScadHasManifoldBackend(const std::string& executable);
+
 }  // namespace tsf

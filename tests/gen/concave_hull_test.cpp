@@ -4,6 +4,7 @@
 
 #include "gen/model/concave_hull.h"
 #include "gen/mesh/direct_mesher.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/mesh_invariants.h"

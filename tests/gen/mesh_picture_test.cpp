@@ -7,6 +7,7 @@
 #include <set>
 
 #include "gen/mesh/direct_mesher.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
 

@@ -8,6 +8,7 @@
 #include "tests/support/fields.h"
 #include "tests/support/mesh_invariants.h"
 #include "verify/verify_parts.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

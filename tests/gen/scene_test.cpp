@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "gen/util/error.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
 

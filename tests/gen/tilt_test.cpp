@@ -12,6 +12,7 @@
 #include "gen/field/bin_regression.h"
 #include "gen/mesh/direct_mesher.h"
 #include "gen/util/error.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_json.h"
 #include "tests/support/fields.h"
@@ -19,6 +20,8 @@
 #include "tests/support/mesh_invariants.h"
 #include "tests/support/run.h"
 #include "verify/verify_model.h"
+#include "gen/model/features/tilt.h"
+#include "gen/model/features/top_shapes.h"
 
 namespace tsf {
 namespace {

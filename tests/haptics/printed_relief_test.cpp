@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "haptics/field_mapping.h"
 #include "haptics/force_model.h"

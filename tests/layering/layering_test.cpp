@@ -16,7 +16,9 @@
 //   app       app/: main, exit codes, every subcommand
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -147,9 +149,90 @@ TEST(Layering, NoFolderIsNamedCli) {
     // The commands live in app/ only; a cli/ folder next to a library
     // would be a second application folder.
     const fs::path root(TSF_SOURCE_DIR);
-    for (const char* top : {"gen", "verify", "haptics"})
+    for (const char* top : {"gen", "verify", "runners", "haptics", "app"})
         for (const auto& entry : fs::recursive_directory_iterator(root / top))
             EXPECT_FALSE(entry.is_directory() && entry.path().filename() == "cli") << entry.path();
+}
+
+// A module is a header and its source (x.h + x.cpp, or either alone), named
+// by its path without the extension ("gen/model/scene").
+std::string moduleOf(const std::string& path) {
+    const size_t dot = path.rfind('.');
+    return dot == std::string::npos ? path : path.substr(0, dot);
+}
+
+bool isLibraryPath(const std::string& path) {
+    const Layer l = layerOf(path);
+    return l != Layer::Tests && l != Layer::Unknown;
+}
+
+TEST(Layering, NoIncludeCycleBetweenModules) {
+    // Edges module -> module from every quoted include of the libraries and
+    // the application; a cycle means two modules cannot be understood, tested
+    // or moved apart (Tarjan's strongly connected components).
+    std::map<std::string, std::set<std::string>> edges;
+    const std::vector<Include> all = includes();
+    std::set<std::string> modules;
+    for (const Include& inc : all)
+        if (isLibraryPath(inc.file)) modules.insert(moduleOf(inc.file));
+    for (const Include& inc : all) {
+        if (inc.angle || !isLibraryPath(inc.file)) continue;
+        const std::string from = moduleOf(inc.file), to = moduleOf(inc.target);
+        if (from != to && modules.count(to)) edges[from].insert(to);
+    }
+    ASSERT_GT(edges.size(), 100u);
+    std::map<std::string, int> index, low;
+    std::vector<std::string> stack;
+    std::set<std::string> on_stack;
+    int next = 0;
+    std::vector<std::vector<std::string>> cycles;
+    std::function<void(const std::string&)> visit = [&](const std::string& v) {
+        index[v] = low[v] = next++;
+        stack.push_back(v);
+        on_stack.insert(v);
+        for (const std::string& w : edges[v]) {
+            if (!index.count(w)) {
+                visit(w);
+                low[v] = std::min(low[v], low[w]);
+            } else if (on_stack.count(w)) {
+                low[v] = std::min(low[v], index[w]);
+            }
+        }
+        if (low[v] != index[v]) return;
+        std::vector<std::string> component;
+        std::string w;
+        do {
+            w = stack.back();
+            stack.pop_back();
+            on_stack.erase(w);
+            component.push_back(w);
+        } while (w != v);
+        if (component.size() > 1) cycles.push_back(component);
+    };
+    for (const std::string& m : modules)
+        if (!index.count(m)) visit(m);
+    for (const auto& cycle : cycles) {
+        std::string text;
+        for (const std::string& m : cycle) text += " " + m;
+        ADD_FAILURE() << "modules include each other:" << text;
+    }
+}
+
+TEST(Layering, NoFolderHoldsMoreThan24Modules) {
+    // A folder of more than two dozen modules side by side no longer shows
+    // the flow; split it into subfolders that do.
+    const fs::path root(TSF_SOURCE_DIR);
+    std::map<std::string, std::set<std::string>> per_folder;
+    for (const char* top : {"gen", "verify", "runners", "haptics", "app"})
+        for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
+            const std::string ext = entry.path().extension().string();
+            if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
+            const std::string rel = fs::relative(entry.path(), root).string();
+            if (rel.find("node_modules") != std::string::npos) continue;
+            per_folder[fs::path(rel).parent_path().string()].insert(moduleOf(rel));
+        }
+    ASSERT_GT(per_folder.size(), 10u);
+    for (const auto& [folder, mods] : per_folder) EXPECT_LE(mods.size(), 24u) << folder;
 }
 
 }  // namespace

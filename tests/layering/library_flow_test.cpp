@@ -6,6 +6,7 @@
 #include "gen/readers/load_field.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/scad/scad_emitter.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "tests/support/files.h"
 #include "runners/openscad/engine_output_check.h"

@@ -8,6 +8,7 @@
 #include "tests/support/run.h"
 #include "verify/mesh_topology.h"
 #include "runners/process_runner.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

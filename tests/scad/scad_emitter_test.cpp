@@ -13,6 +13,7 @@
 #include "gen/scad/scad_emitter.h"
 #include "gen/scad/scad_library.h"
 #include "scad_test_support.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

@@ -4,6 +4,7 @@
 
 #include "gen/scad/scad_render_cost.h"
 #include "tests/support/fields.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

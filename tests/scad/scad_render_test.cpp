@@ -15,6 +15,7 @@
 #include "verify/triangle_bvh.h"
 #include "verify/readback.h"
 #include "verify/verify_model.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

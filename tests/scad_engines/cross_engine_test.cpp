@@ -17,6 +17,7 @@
 #include "runners/openscad/engine_output_check.h"
 #include "gen/scad/scad_emitter.h"
 #include "verify/verify_model.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

@@ -8,6 +8,7 @@
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/mesh_io/stl_reader.h"
 #include "runners/openscad/engine_output_check.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

@@ -9,6 +9,7 @@
 #include "engine_fixtures.h"
 #include "runners/openscad/engine_select.h"
 #include "gen/scad/scad_emitter.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

@@ -8,6 +8,7 @@
 #include "gen/mesh/direct_mesher.h"
 #include "gen/model/features/halves.h"
 #include "gen/mesh/halves_mesh.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "verify/halves_check.h"

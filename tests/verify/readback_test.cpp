@@ -9,6 +9,7 @@
 #include "tests/verify/verify_test_support.h"
 #include "verify/triangle_bvh.h"
 #include "verify/readback.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

@@ -11,6 +11,7 @@
 #include "gen/util/error.h"
 #include "gen/model/scene_json.h"
 #include "tests/verify/verify_test_support.h"
+#include "gen/model/build_scene.h"
 
 namespace tsf {
 namespace {

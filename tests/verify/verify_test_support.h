@@ -15,6 +15,7 @@
 #include "gen/mesh/direct_mesher.h"
 #include "gen/field/hex_field.h"
 #include "gen/geometry/mesh.h"
+#include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/files.h"

@@ -10,6 +10,7 @@
 #include "gen/util/error.h"
 #include "gen/field/hex_grid.h"
 #include "gen/model/scene.h"
+#include "gen/model/features/top_shapes.h"
 
 namespace tsf {
 namespace {

@@ -43,11 +43,9 @@
 #include <vector>
 
 #include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 
 namespace tsf {
-
-struct Scene;
-struct ValueMapping;
 
 /// Smallest height difference between neighbouring levels, mm: above the
 /// 1/32 in (0.8 mm) US sign rules ask raised characters to stand above their
@@ -68,12 +66,6 @@ inline constexpr double kScaleGapMm = 4.0;
 /// Clear space kept from the braille legend's plate, mm.
 inline constexpr double kScaleLegendClearanceMm = 2.0;
 
-/// What the user asks for (tsf gen --scale, --scale-step).
-struct ScaleRequest {
-    bool wanted = false;
-    std::optional<double> step;  ///< data units; none = chosen by chooseScaleStep
-};
-
 /// One level of the scale.
 struct ScaleLevel {
     double value = 0;           ///< data units (a multiple of the step)
@@ -90,29 +82,6 @@ std::vector<ScaleLevel> scaleLevels(const ValueMapping& mapping, double step, do
 /// kScaleMaxAutoSteps steps; none when no step does (a range too low to
 /// rise kScaleMinRiserMm).
 std::optional<double> chooseScaleStep(const ValueMapping& mapping, double z_snap_mm);
-
-struct ScaleStep {
-    double value = 0;           ///< the level it stands for, data units
-    int64_t top_units = 0;      ///< z of its tread
-    double y_south_mm = 0, y_north_mm = 0;
-};
-
-/// The scale as placed on a model (see above).
-struct SceneScale {
-    double step = 0;               ///< data units between levels
-    bool step_given = false;       ///< --scale-step (else chosen)
-    int64_t x0_i = 0;              ///< lattice i of the foot's west face
-    int64_t y0_j = 0, y1_j = 0;    ///< lattice j of its south and north faces
-    double x0_mm = 0, xs_mm = 0, x1_mm = 0, y0_mm = 0, y1_mm = 0;
-    int64_t foot_top_units = 0;    ///< the floor
-    std::vector<ScaleStep> steps;  ///< south to north, lowest first
-    std::vector<int32_t> contacts; ///< kept cells it touches along their east walls, south to north
-    /// Between two contacts (6 lattice rows apart) the foot fills the notch
-    /// the hexagons leave (a trapezoid: the upper contact's south-east wall,
-    /// the lower's north-east wall, and the east wall of the cell between,
-    /// kept here in order), so the join leaves no hole down to the bed.
-    std::vector<int32_t> fillers;
-};
 
 /// The hexagon edges (kept cell, edge 0..5 as in hex_grid.h) the scale's
 /// foot covers from z = 0 to the floor: each contact's east edge (0), its

@@ -10,16 +10,9 @@
 #include "gen/util/error.h"
 #include "gen/field/hex_field.h"
 #include "gen/model/scene.h"
+#include "gen/model/features/top_shapes.h"
 
 namespace tsf {
-
-const char* toString(TiltSource t) {
-    switch (t) {
-        case TiltSource::Points: return "points";
-        case TiltSource::Gradient: return "gradient";
-        default: return "none";
-    }
-}
 
 namespace {
 

@@ -26,19 +26,9 @@
 #include <vector>
 
 #include "gen/field/bin_regression.h"
+#include "gen/model/scene.h"
 
 namespace tsf {
-
-struct HexField;
-struct Scene;
-
-enum class TiltSource : uint8_t {
-    None,      ///< every top level (default)
-    Points,    ///< each bin's regression plane (point input only)
-    Gradient,  ///< the field's gradient
-};
-
-const char* toString(TiltSource);
 
 /// Per kept cell of `scene` (cells, heights and marks set), the slope its top
 /// should take, mm per mm (x east, y north), before the steepness and the
