@@ -40,6 +40,7 @@
 #include "haptics/replay_device.h"
 #include "haptics/scale_space.h"
 #include "haptics/sim_device.h"
+#include "gen/util/number_format.h"
 
 namespace tsf::cli {
 namespace {
@@ -205,11 +206,8 @@ ForceParams forceParams(const FeelOptions& o) {
     return p;
 }
 
-std::string mm(double m) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.1f mm", m * 1000.0);
-    return b;
-}
+// Metres (the device frame) shown in millimetres.
+std::string mm(double m) { return formatFixed(m * 1000.0, 1) + " mm"; }
 
 void runFeel(const FeelOptions& o) {
     if (!(o.rate_Hz >= 100.0 && o.rate_Hz <= 10000.0))

@@ -2,6 +2,7 @@
 
 #include "gen/model/features/braille.h"
 #include "gen/model/features/halves.h"
+#include "gen/util/number_format.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,25 +10,19 @@
 
 namespace tsf::cli {
 
-std::string fmt(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
-
 namespace {
 
 std::string mappingText(const Scene& s) {
     const ValueMapping& m = s.mapping;
     std::ostringstream o;
     o << toString(m.transfer) << ": value " << m.baseline << " -> 0 mm, value " << m.value_max << " -> "
-      << fmt("%.2f", m.max_height_mm) << " mm above the floor";
+      << formatFixed(m.max_height_mm, 2) << " mm above the floor";
     if (m.transfer == Transfer::Linear && m.value_max > m.baseline && m.max_height_mm > 0) {
         // The span of two finite values can exceed the largest double
         // (1e308 and -1e308): divide the halves, then double.
         double per_mm = (m.value_max - m.baseline) / m.max_height_mm;
         if (!std::isfinite(per_mm)) per_mm = 2.0 * ((m.value_max / 2 - m.baseline / 2) / m.max_height_mm);
-        o << " (1 mm = " << (std::isfinite(per_mm) ? fmt("%.4g", per_mm) : std::string("more than 1.797e+308"))
+        o << " (1 mm = " << (std::isfinite(per_mm) ? formatSignificant(per_mm, 4) : std::string("more than 1.797e+308"))
           << " data units)";
     }
     return o.str();
@@ -132,40 +127,40 @@ std::string formatSceneFacts(const Scene& s) {
       << s.grid.cellCount() << " (" << s.cells_nonempty << " above the floor, " << s.cells_with_data - s.cells_nonempty
       << " at the floor, " << s.grid.cellCount() - s.cells_with_data << " without data; culling: "
       << toString(s.params.cull) << ")\n";
-    o << "  size      " << fmt("%.1f", w) << " x " << fmt("%.1f", d) << " x " << fmt("%.1f", zmax)
-      << " mm (grid box), hexagons " << fmt("%.2f", s.pitch_mm) << " mm across flats\n";
+    o << "  size      " << formatFixed(w, 1) << " x " << formatFixed(d, 1) << " x " << formatFixed(zmax, 1)
+      << " mm (grid box), hexagons " << formatFixed(s.pitch_mm, 2) << " mm across flats\n";
     o << "  heights   " << mappingText(s) << "\n";
     if (s.params.bottom == Bottom::Flat)
-        o << "  bottom    flat, base " << fmt("%.2f", s.params.base_mm) << " mm\n";
+        o << "  bottom    flat, base " << formatFixed(s.params.base_mm, 2) << " mm\n";
     else
-        o << "  bottom    mirrored: every pillar " << fmt("%.2f", s.zMm(s.mirror_thickness_units))
+        o << "  bottom    mirrored: every pillar " << formatFixed(s.zMm(s.mirror_thickness_units), 2)
           << " mm thick; the underside shows the negated data\n";
-    o << "  z snap    " << fmt("%.4g", s.z_snap_mm) << " mm\n";
+    o << "  z snap    " << formatSignificant(s.z_snap_mm, 4) << " mm\n";
     if (s.one_to_one)
         o << "  values    one pillar per value: each of the " << s.cells_with_data << " values stands at its own height\n";
     if (s.marks.notch)
-        o << "  notch     V " << fmt("%.1f", s.marks.notch->depth_mm) << " mm deep, " << fmt("%.1f", s.marks.notch->width_mm)
+        o << "  notch     V " << formatFixed(s.marks.notch->depth_mm, 1) << " mm deep, " << formatFixed(s.marks.notch->width_mm, 1)
           << " mm wide, at the origin (south-west) corner, through the whole height\n";
     if (s.marks.triangle) {
         const OrientationTriangle& t = *s.marks.triangle;
-        o << "  triangle  raised " << fmt("%.2f", s.zMm(t.raise_units)) << " mm, legs " << fmt("%.1f", t.leg_x_mm)
-          << " mm east (x) and " << fmt("%.1f", t.leg_y_mm) << " mm north (y), right angle at ("
-          << fmt("%.1f", planarX(t.corner, s.pitch_mm)) << ", " << fmt("%.1f", planarY(t.corner, s.pitch_mm)) << ") mm\n";
+        o << "  triangle  raised " << formatFixed(s.zMm(t.raise_units), 2) << " mm, legs " << formatFixed(t.leg_x_mm, 1)
+          << " mm east (x) and " << formatFixed(t.leg_y_mm, 1) << " mm north (y), right angle at ("
+          << formatFixed(planarX(t.corner, s.pitch_mm), 1) << ", " << formatFixed(planarY(t.corner, s.pitch_mm), 1) << ") mm\n";
     }
     if (s.params.tilt != TiltSource::None)
-        o << "  tilt      " << toString(s.params.tilt) << " x " << fmt("%.3g", s.params.steepness) << ": "
+        o << "  tilt      " << toString(s.params.tilt) << " x " << formatSignificant(s.params.steepness, 3) << ": "
           << s.shapes.cells_tilted << " tops tilted (" << s.shapes.cells_clamped << " clamped at the floor or a mark, "
           << s.shapes.cells_flat_clamped << " of them level); each reads its value at its centre\n";
     if (s.shapes.cells_textured > 0)
         o << "  texture   " << s.shapes.cells_textured << " structural cells (kept only to hold the model together, "
-          << "no data) carry a cone-shaped dimple " << fmt("%.2f", s.zMm(s.shapes.dimple_units))
+          << "no data) carry a cone-shaped dimple " << formatFixed(s.zMm(s.shapes.dimple_units), 2)
           << " mm deep at the centre\n";
     if (s.legend) {
         const SceneLegend& l = *s.legend;
         const BrailleStandard& st = l.layout.standard;
-        o << "  legend    braille (" << s.params.legend.table << ") on a plate " << fmt("%.1f", l.plate_east_mm) << " x "
-          << fmt("%.1f", l.plate_north_mm - l.plate_south_mm) << " mm north of the pillars, " << l.layout.dots.size()
-          << " dots " << fmt("%.2f", st.dot_base_mm) << " mm across, " << fmt("%.2f", st.dot_height_mm) << " mm high ("
+        o << "  legend    braille (" << s.params.legend.table << ") on a plate " << formatFixed(l.plate_east_mm, 1) << " x "
+          << formatFixed(l.plate_north_mm - l.plate_south_mm, 1) << " mm north of the pillars, " << l.layout.dots.size()
+          << " dots " << formatFixed(st.dot_base_mm, 2) << " mm across, " << formatFixed(st.dot_height_mm, 2) << " mm high ("
           << st.name << ")\n";
         for (size_t k = 0; k < l.layout.text.size(); ++k)
             o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
@@ -173,27 +168,27 @@ std::string formatSceneFacts(const Scene& s) {
     if (s.scale) {
         const SceneScale& sc = *s.scale;
         std::ostringstream values;
-        for (size_t k = 0; k < sc.steps.size(); ++k) values << (k ? ", " : "") << fmt("%.6g", sc.steps[k].value);
-        o << "  scale     " << sc.steps.size() << " steps every " << fmt("%.6g", sc.step) << (sc.step_given ? "" : " (chosen)")
-          << " east of the pillars, lowest in the south, on a foot at the floor (= " << fmt("%.6g", s.mapping.baseline)
-          << "): " << values.str() << "; treads " << fmt("%.1f", sc.x1_mm - sc.xs_mm) << " x "
-          << fmt("%.1f", sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm) << " mm, rising "
-          << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps[0].top_units - sc.foot_top_units)) << " mm to "
-          << fmt("%.2f", s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units))
+        for (size_t k = 0; k < sc.steps.size(); ++k) values << (k ? ", " : "") << formatSignificant(sc.steps[k].value, 6);
+        o << "  scale     " << sc.steps.size() << " steps every " << formatSignificant(sc.step, 6) << (sc.step_given ? "" : " (chosen)")
+          << " east of the pillars, lowest in the south, on a foot at the floor (= " << formatSignificant(s.mapping.baseline, 6)
+          << "): " << values.str() << "; treads " << formatFixed(sc.x1_mm - sc.xs_mm, 1) << " x "
+          << formatFixed(sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm, 1) << " mm, rising "
+          << formatFixed(s.zMm(sc.steps.empty() ? 0 : sc.steps[0].top_units - sc.foot_top_units), 2) << " mm to "
+          << formatFixed(s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units), 2)
           << " mm above the floor\n";
     }
     if (s.halves) {
         const SceneHalves& h = *s.halves;
-        o << "  halves    cut at z = " << fmt("%.2f", s.zMm(h.split_units)) << " mm, the middle of the slab every pillar "
-          << "crosses (" << fmt("%.2f", s.zMm(h.slab_bottom_units)) << " to " << fmt("%.2f", s.zMm(h.slab_top_units))
+        o << "  halves    cut at z = " << formatFixed(s.zMm(h.split_units), 2) << " mm, the middle of the slab every pillar "
+          << "crosses (" << formatFixed(s.zMm(h.slab_bottom_units), 2) << " to " << formatFixed(s.zMm(h.slab_top_units), 2)
           << " mm";
         if (h.thickness_grown_units > 0)
-            o << "; the thickness grew by " << fmt("%.2f", s.zMm(h.thickness_grown_units)) << " mm to make room for the pins";
-        o << ")\n            " << h.hole_centres.size() << " pin holes " << fmt("%.2f", 2 * h.pins.hole_radius_mm)
-          << " mm across, " << fmt("%.2f", s.zMm(h.hole_apex_units)) << " mm deep to the cone's tip, at";
-        for (const auto& [x, y] : holeCentresMm(s)) o << " (" << fmt("%.1f", x) << ", " << fmt("%.1f", y) << ")";
-        o << " mm; pins " << fmt("%.1f", 2 * h.pins.pin_radius_mm) << " mm x " << fmt("%.1f", h.pins.pin_length_mm)
-          << " mm, " << fmt("%.2f", kPinClearanceMm) << " mm clearance per side\n";
+            o << "; the thickness grew by " << formatFixed(s.zMm(h.thickness_grown_units), 2) << " mm to make room for the pins";
+        o << ")\n            " << h.hole_centres.size() << " pin holes " << formatFixed(2 * h.pins.hole_radius_mm, 2)
+          << " mm across, " << formatFixed(s.zMm(h.hole_apex_units), 2) << " mm deep to the cone's tip, at";
+        for (const auto& [x, y] : holeCentresMm(s)) o << " (" << formatFixed(x, 1) << ", " << formatFixed(y, 1) << ")";
+        o << " mm; pins " << formatFixed(2 * h.pins.pin_radius_mm, 1) << " mm x " << formatFixed(h.pins.pin_length_mm, 1)
+          << " mm, " << formatFixed(kPinClearanceMm, 2) << " mm clearance per side\n";
     }
     for (const std::string& n : s.notes) o << "  note      " << n << "\n";
     return o.str();
@@ -227,13 +222,13 @@ std::string formatSummary(const GenSummary& s) {
     if (s.scene) o << formatSceneFacts(*s.scene);
     if (s.mesh)
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
-          << fmt("%.1f", signedVolume(*s.mesh)) << " mm^3\n";
+          << formatFixed(signedVolume(*s.mesh), 1) << " mm^3\n";
     if (!s.verify_text.empty()) o << s.verify_text;
     o << s.supports_text << s.halves_text;
     for (const auto& [path, what] : s.outputs) o << "  wrote     " << path << " (" << what << ")\n";
     if (!s.timings_ms.empty()) {
         o << "  time     ";
-        for (const auto& [stage, ms] : s.timings_ms) o << " " << stage << " " << fmt("%.0f", ms) << " ms";
+        for (const auto& [stage, ms] : s.timings_ms) o << " " << stage << " " << formatFixed(ms, 0) << " ms";
         o << "\n";
     }
     return o.str();

@@ -36,7 +36,4 @@ nlohmann::json summaryJson(const GenSummary& s);
 nlohmann::json sceneFactsJson(const Scene& scene);
 std::string formatSceneFacts(const Scene& scene);
 
-/// One number printed with a printf format (e.g. "%.2f"): the summaries' figures.
-std::string fmt(const char* format, double v);
-
 }  // namespace tsf::cli

@@ -10,6 +10,7 @@
 #include "verify/halves_check.h"
 #include "verify/overhang.h"
 #include "gen/model/features/halves.h"
+#include "gen/util/number_format.h"
 
 namespace tsf::cli {
 namespace {
@@ -79,11 +80,11 @@ HalvesPieces makeHalves(const Scene& scene, const Mesh& whole, bool verify, Veri
         }
         text += "  halves    each verified (closed, manifold, outward, heights read back, nothing overhangs: no "
                 "supports); joined they are the whole model less the pin holes (volume within " +
-                fmt("%.2g", std::fabs(f.volume_error_mm3)) + " mm^3, surface within " + fmt("%.2g", f.max_distance_mm) +
+                formatSignificant(std::fabs(f.volume_error_mm3), 2) + " mm^3, surface within " + formatSignificant(f.max_distance_mm, 2) +
                 " mm); the holes admit one way of joining only\n";
     }
     const Bounds bu = meshBounds(p.upper), bl = meshBounds(p.lower);
-    text += "  pieces    upper " + fmt("%.1f", bu.max.z - bu.min.z) + " mm tall, lower " + fmt("%.1f", bl.max.z - bl.min.z) +
+    text += "  pieces    upper " + formatFixed(bu.max.z - bu.min.z, 1) + " mm tall, lower " + formatFixed(bl.max.z - bl.min.z, 1) +
             " mm tall, each flat side down; " + std::to_string(kPinCount) + " pins standing\n";
     j["upper_height_mm"] = bu.max.z - bu.min.z;
     j["lower_height_mm"] = bl.max.z - bl.min.z;
@@ -116,8 +117,8 @@ Mesh halvesSideBySide(const HalvesPieces& p) {
 
 std::string supportsText(const VerifyReport& r) {
     if (!r.printability || r.printability->overhang_area_mm2 <= 0) return "";
-    return "  supports  needed: " + fmt("%.0f", r.printability->overhang_area_mm2) +
-           " mm^2 of the underside overhangs up to " + fmt("%.1f", r.printability->overhang_max_height_mm) +
+    return "  supports  needed: " + formatFixed(r.printability->overhang_area_mm2, 0) +
+           " mm^2 of the underside overhangs up to " + formatFixed(r.printability->overhang_max_height_mm, 1) +
            " mm above the bed, and supports would scar the surface a reader feels; --halves prints it in two "
            "support-free halves (docs/printing.md)\n";
 }

@@ -8,18 +8,9 @@
 #include "gen/util/error.h"
 #include "gen/field/resample.h"
 #include "gen/model/features/scale.h"
+#include "gen/util/number_format.h"
 
 namespace tsf::cli {
-namespace {
-
-std::string mm(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
-
-}  // namespace
-
 std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const GivenOptions& given, GenOptions& gen) {
     std::vector<std::string> notes;
     SceneParams& p = gen.scene;
@@ -27,15 +18,15 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
         const BedSize bed = parseBedSize(printer.bed, "--bed", /*need_height=*/false);
         const double w = bed.width_mm - 2 * kBedMarginMm, d = bed.depth_mm - 2 * kBedMarginMm;
         if (!(w > 0) || !(d > 0))
-            throw InputError("--bed " + printer.bed + ": a bed must be larger than twice the " + mm(kBedMarginMm) +
+            throw InputError("--bed " + printer.bed + ": a bed must be larger than twice the " + formatSignificant(kBedMarginMm, 4) +
                              " mm margin kept on each side");
         if (given.width && p.fit_width_mm > w)
-            throw InputError("--width " + mm(p.fit_width_mm) + " mm does not fit the " + mm(bed.width_mm) +
-                             " mm bed less " + mm(kBedMarginMm) + " mm on each side: give --width " + mm(w) +
+            throw InputError("--width " + formatSignificant(p.fit_width_mm, 4) + " mm does not fit the " + formatSignificant(bed.width_mm, 4) +
+                             " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side: give --width " + formatSignificant(w, 4) +
                              " or less, or leave it out");
         if (given.depth && p.fit_depth_mm > d)
-            throw InputError("--depth " + mm(p.fit_depth_mm) + " mm does not fit the " + mm(bed.depth_mm) +
-                             " mm bed less " + mm(kBedMarginMm) + " mm on each side: give --depth " + mm(d) +
+            throw InputError("--depth " + formatSignificant(p.fit_depth_mm, 4) + " mm does not fit the " + formatSignificant(bed.depth_mm, 4) +
+                             " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side: give --depth " + formatSignificant(d, 4) +
                              " or less, or leave it out");
         // The tactile scale stands east of the pillars (gen/model/features/scale.h): the pillars get the rest of the width.
         const double scale_mm = p.scale.wanted ? kScaleGapMm + kScaleStepWidthMm : 0.0;
@@ -43,31 +34,31 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
             const bool room = w > 2 * scale_mm;
             p.fit_width_mm = gen.fit_width_mm = room ? w - scale_mm : w;
             if (scale_mm > 0 && room)
-                notes.push_back("the pillars get " + mm(w - scale_mm) + " mm of the width, the tactile scale " +
-                                mm(scale_mm) + " mm");
+                notes.push_back("the pillars get " + formatSignificant(w - scale_mm, 4) + " mm of the width, the tactile scale " +
+                                formatSignificant(scale_mm, 4) + " mm");
         }
         if (!given.depth) p.fit_depth_mm = gen.fit_depth_mm = d;
         if (!given.width || !given.depth)
-            notes.push_back("fitted into " + mm(p.fit_width_mm) + " x " + mm(p.fit_depth_mm) + " mm: the " +
-                            mm(bed.width_mm) + " x " + mm(bed.depth_mm) + " mm bed less " + mm(kBedMarginMm) +
+            notes.push_back("fitted into " + formatSignificant(p.fit_width_mm, 4) + " x " + formatSignificant(p.fit_depth_mm, 4) + " mm: the " +
+                            formatSignificant(bed.width_mm, 4) + " x " + formatSignificant(bed.depth_mm, 4) + " mm bed less " + formatSignificant(kBedMarginMm, 4) +
                             " mm on each side");
     }
     if (printer.nozzle_mm > 0) {
         const double min_cell = kCellNozzleWidths * printer.nozzle_mm;
         gen.min_cell_mm = std::max(kMinTactileCellMm, min_cell);
         if (min_cell > kMinTactileCellMm)
-            notes.push_back("raster cells at least " + mm(min_cell) + " mm (" + mm(kCellNozzleWidths) + " widths of the " +
-                            mm(printer.nozzle_mm) + " mm nozzle)");
+            notes.push_back("raster cells at least " + formatSignificant(min_cell, 4) + " mm (" + formatSignificant(kCellNozzleWidths, 4) + " widths of the " +
+                            formatSignificant(printer.nozzle_mm, 4) + " mm nozzle)");
     }
     if (printer.layer_mm > 0) {
         if (given.snap) {
             if (std::fabs(std::remainder(p.z_snap_mm, printer.layer_mm)) > 1e-9 &&
                 std::fabs(std::remainder(printer.layer_mm, p.z_snap_mm)) > 1e-9)
-                notes.push_back("--snap " + mm(p.z_snap_mm) + " mm is not a multiple of the " + mm(printer.layer_mm) +
+                notes.push_back("--snap " + formatSignificant(p.z_snap_mm, 4) + " mm is not a multiple of the " + formatSignificant(printer.layer_mm, 4) +
                                 " mm layer: some steps will print a layer higher or lower");
         } else {
             p.z_snap_mm = printer.layer_mm;
-            notes.push_back("heights snapped to whole " + mm(printer.layer_mm) + " mm layers (--snap to choose)");
+            notes.push_back("heights snapped to whole " + formatSignificant(printer.layer_mm, 4) + " mm layers (--snap to choose)");
         }
     }
     return notes;
@@ -76,8 +67,8 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
 std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer) {
     const double min_cell = kCellNozzleWidths * printer.nozzle_mm;
     if (!(printer.nozzle_mm > 0) || pitch_mm >= min_cell) return "";
-    return "cells " + mm(pitch_mm) + " mm across are narrower than " + mm(kCellNozzleWidths) + " widths of the " +
-           mm(printer.nozzle_mm) + " mm nozzle (" + mm(min_cell) +
+    return "cells " + formatSignificant(pitch_mm, 4) + " mm across are narrower than " + formatSignificant(kCellNozzleWidths, 4) + " widths of the " +
+           formatSignificant(printer.nozzle_mm, 4) + " mm nozzle (" + formatSignificant(min_cell, 4) +
            " mm): pillars print as blobs of perimeters (a larger --cell, or fewer --bins)";
 }
 
@@ -90,9 +81,9 @@ void checkFitsBed(const Mesh& mesh, double pitch_mm, const PrinterSpec& printer)
     if (mw <= w && md <= d) return;
     // The footprint scales with the cell: the largest cell that fits, rounded down to 0.01 mm.
     const double cell = std::floor(pitch_mm * std::min(w / mw, d / md) * 100.0) / 100.0;
-    throw InputError("the model is " + mm(mw) + " x " + mm(md) + " mm, larger than the " + mm(bed.width_mm) + " x " +
-                     mm(bed.depth_mm) + " mm bed less " + mm(kBedMarginMm) + " mm on each side (" + mm(w) + " x " +
-                     mm(d) + " mm); give --cell " + mm(cell) + " or less, or leave --cell out to fit the bed " +
+    throw InputError("the model is " + formatSignificant(mw, 4) + " x " + formatSignificant(md, 4) + " mm, larger than the " + formatSignificant(bed.width_mm, 4) + " x " +
+                     formatSignificant(bed.depth_mm, 4) + " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side (" + formatSignificant(w, 4) + " x " +
+                     formatSignificant(d, 4) + " mm); give --cell " + formatSignificant(cell, 4) + " or less, or leave --cell out to fit the bed " +
                      "(tsf does not split a model over several prints)");
 }
 

@@ -26,6 +26,7 @@
 #include "gen/util/rgb_image.h"
 #include "gen/util/output_paths.h"
 #include "gen/util/temp_files.h"
+#include "gen/util/number_format.h"
 
 namespace tsf::cli {
 namespace {
@@ -55,11 +56,7 @@ std::string megabytes(long kb) {
     return buf;
 }
 
-std::string seconds(double s) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, s < 10 ? "%.2f s" : "%.1f s", s);
-    return buf;
-}
+std::string seconds(double s) { return formatFixed(s, s < 10 ? 2 : 1) + " s"; }
 
 // Prints what OpenSCAD said that a person needs: errors (with their trace)
 // and warnings; everything when verbose.

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "gen/util/error.h"
+#include "gen/util/number_format.h"
 
 namespace tsf::haptics {
 namespace {
@@ -53,11 +54,6 @@ Vec3 clampMagnitude(const Vec3& v, double limit, bool* clamped = nullptr) noexce
 }
 
 /// A number for a message: shortest form that round-trips to 4 digits.
-std::string num(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v);
-    return b;
-}
 
 void require(bool ok, const std::string& what) {
     if (!ok) throw InputError(what);
@@ -99,17 +95,17 @@ ForceModel makeForceModel(const ScaleSpace& space, const FieldMapping& mapping, 
     require(mapping.cell_m > 0.0 && mapping.relief_m > 0.0, "the field mapping is empty");
     require(rate_Hz > 0.0 && std::isfinite(rate_Hz), "--rate must be a positive number of ticks per second");
     require(p.max_force_N > 0.0 && p.max_force_N <= limits.max_force_N,
-            "--max-force must be above 0 and at most the device's limit of " + num(limits.max_force_N) +
+            "--max-force must be above 0 and at most the device's limit of " + formatSignificant(limits.max_force_N, 4) +
                 " N");
     const double k_bound = passiveStiffnessBound(limits, rate_Hz);
     const double k_guidance = p.guidance_N > 0.0 ? p.guidance_N / p.guidance_ramp_m : 0.0;
     require(p.stiffness_N_per_m > 0.0 && std::isfinite(p.stiffness_N_per_m),
             "--stiffness must be a positive number of N/m");
     require(p.stiffness_N_per_m + k_guidance <= k_bound,
-            "--stiffness " + num(p.stiffness_N_per_m) + " N/m" +
-                (k_guidance > 0.0 ? " plus the guidance spring " + num(k_guidance) + " N/m" : "") +
-                " is above the passive bound of " + num(k_bound) + " N/m for this device at " +
-                num(rate_Hz) + " Hz (b > K T / 2); lower it or raise --rate");
+            "--stiffness " + formatSignificant(p.stiffness_N_per_m, 4) + " N/m" +
+                (k_guidance > 0.0 ? " plus the guidance spring " + formatSignificant(k_guidance, 4) + " N/m" : "") +
+                " is above the passive bound of " + formatSignificant(k_bound, 4) + " N/m for this device at " +
+                formatSignificant(rate_Hz, 4) + " Hz (b > K T / 2); lower it or raise --rate");
     require(p.proxy_iterations >= 1 && p.proxy_iterations <= 16, "proxy iterations must be between 1 and 16");
     require(p.entry_depth_m >= 0.0 && p.entry_depth_m <= 0.01, "the entry depth must be between 0 and 10 mm");
     require(p.mu_static >= 0.0 && p.mu_static <= 1.0 && p.mu_kinetic >= 0.0 && p.mu_kinetic <= p.mu_static,
@@ -125,7 +121,7 @@ ForceModel makeForceModel(const ScaleSpace& space, const FieldMapping& mapping, 
     require(p.lod_rate_levels_per_s > 0.0 && p.volume_fade_s > 0.0, "mode transition rates must be positive");
     require(p.max_damping_Ns_per_m >= 0.0 && p.max_damping_Ns_per_m <= limits.max_damping_Ns_per_m,
             "the observer's damping must be between 0 and the device's limit of " +
-                num(limits.max_damping_Ns_per_m) + " N s/m");
+                formatSignificant(limits.max_damping_Ns_per_m, 4) + " N s/m");
     require(!p.sampling.central_differences || p.sampling.central_step_texels > 0.0,
             "the central-difference step must be positive");
     ForceModel m;

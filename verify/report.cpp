@@ -1,6 +1,8 @@
 // VerifyReport printing and JSON. See report.h.
 #include "verify/report.h"
 
+#include "gen/util/number_format.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -46,11 +48,7 @@ const char* label(CheckStatus s) {
     }
 }
 
-std::string fmtMs(double ms) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, ms < 10 ? "%.1f ms" : "%.0f ms", ms);
-    return buf;
-}
+std::string fmtMs(double ms) { return formatFixed(ms, ms < 10 ? 1 : 0) + " ms"; }
 
 nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 nlohmann::json point(const Vec3& p) { return nlohmann::json::array({num(p.x), num(p.y), num(p.z)}); }

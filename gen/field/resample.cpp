@@ -6,17 +6,12 @@
 #include <vector>
 
 #include "gen/util/error.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
 
 constexpr double kRowSpacing = kSqrt3 / 2.0;  // hex row spacing in pitches
-
-std::string formatNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
 
 int32_t clampIndex(double v, int32_t n) {
     if (!(v >= 0.0)) return 0;  // also NaN
@@ -79,7 +74,7 @@ ResampleLayout resampleLayout(int32_t raster_cols, int32_t raster_rows, int hex_
         if (rows * cols > double(kMaxResampleCells))
             throw InputError("resampling " + std::to_string(raster_cols) + " x " + std::to_string(raster_rows) +
                              " pixels to " + std::to_string(cols) + " hex columns gives " +
-                             formatNumber(rows * cols) + " hexagons; the most is " +
+                             formatSignificant(rows * cols, 4) + " hexagons; the most is " +
                              std::to_string(kMaxResampleCells) + " (use fewer hex columns)");
         layout.grid = {cols, int32_t(rows)};
     }
@@ -151,7 +146,7 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
     }
     field.how = what + ": " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) + " px -> " +
                 std::to_string(grid.cols) + " x " + std::to_string(grid.rows) + " hexagons, pitch " +
-                formatNumber(p) + " px";
+                formatSignificant(p, 4) + " px";
     return field;
 }
 
@@ -194,8 +189,8 @@ HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
     }
     rs.hex_cols = cols;
     HexField f = resampleRaster(raster, rs);
-    f.how += "; resampled because one pillar per value would be " + formatNumber(pitch) +
-             " mm across, below the " + formatNumber(min_cell_mm) +
+    f.how += "; resampled because one pillar per value would be " + formatSignificant(pitch, 4) +
+             " mm across, below the " + formatSignificant(min_cell_mm, 4) +
              (min_cell_mm > kMinTactileCellMm ? " mm the nozzle prints as pillars" : " mm a fingertip tells apart") +
              " (--bins N or --cell MM to choose)";
     return f;

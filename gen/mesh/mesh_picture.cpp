@@ -1,4 +1,5 @@
 #include "gen/mesh/mesh_picture.h"
+#include "gen/util/number_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,12 +52,6 @@ double niceLength(double extent_mm) {
     for (double m : {5.0, 2.0, 1.0})
         if (m * p <= target) return m * p;
     return p;
-}
-
-std::string mm(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.0f", v);
-    return buf;
 }
 
 // Draws one view into the rectangle [x0, x0 + w) x [y0, y0 + h) of img.
@@ -128,8 +123,8 @@ void drawView(RgbImage& img, int x0, int y0, int w, int h, const Mesh& mesh, con
     const double bar_mm = niceLength(b.max.x - b.min.x);
     const int bx = x0 + kMarginPx, by = y0 + h - kMarginPx - textHeight(kFontScale);
     img.fill(bx, by, bx + int(std::lround(bar_mm * scale)), by + kFontScale * 2, kInk);
-    const std::string size = mm(bar_mm) + " mm;  model " + mm(b.max.x - b.min.x) + " x " + mm(b.max.y - b.min.y) +
-                             " x " + mm(b.max.z - b.min.z) + " mm";
+    const std::string size = formatFixed(bar_mm, 0) + " mm;  model " + formatFixed(b.max.x - b.min.x, 0) + " x " + formatFixed(b.max.y - b.min.y, 0) +
+                             " x " + formatFixed(b.max.z - b.min.z, 0) + " mm";
     drawText(img, bx + int(std::lround(bar_mm * scale)) + 2 * kFontScale, by - kFontScale, size, kFontScale, kInk);
 }
 

@@ -9,6 +9,7 @@
 #include "gen/readers/point_reader.h"
 #include "gen/readers/raster_reader.h"
 #include "gen/field/resample.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
@@ -18,12 +19,6 @@ namespace {
 bool looksLikeNoDataPlaceholder(double v) {
     return v == -9999.0 || v == -99999.0 || v == -32768.0 || v == -32767.0 || v == -3.4028234663852886e38 ||
            v == -1e30;
-}
-
-std::string formatValue(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
 }
 
 }  // namespace
@@ -73,11 +68,11 @@ HexField loadField(const FieldLoadOptions& o) {
     describeValues(raster.values, input);
     std::string placeholder_note;
     if (o.nodata) {
-        input.facts.push_back({"no-data value", formatValue(*o.nodata) + " (--nodata), " +
+        input.facts.push_back({"no-data value", formatSignificant(*o.nodata) + " (--nodata), " +
                                                     std::to_string(nodata_cells) + " cells"});
     } else if (looksLikeNoDataPlaceholder(input.min)) {
-        placeholder_note = "; the smallest value " + formatValue(input.min) +
-                           " looks like a no-data placeholder: give --nodata " + formatValue(input.min) +
+        placeholder_note = "; the smallest value " + formatSignificant(input.min) +
+                           " looks like a no-data placeholder: give --nodata " + formatSignificant(input.min) +
                            " if it is one";
         input.facts.push_back({"note", placeholder_note.substr(2)});
     }

@@ -7,17 +7,12 @@
 #include <vector>
 
 #include "gen/util/error.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
 
 constexpr double kRowBottom = 1.0 / (2.0 * kSqrt3);  // covered band starts this far above the grid's bottom (pitches)
-
-std::string formatNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
 
 // Hex rows needed so that the covered band, 3R/(2 sqrt 3) - 1/(2 sqrt 3)
 // pitches tall, holds `h` pitches.
@@ -31,7 +26,7 @@ BinLayout binLayout(const PointTable& points, const BinOptions& opts) {
     if (points.y.size() != n || (points.hasWeight() && points.weight.size() != n))
         throw InputError(points.source, 0, 0, "the point table's columns differ in length");
     if (!std::isfinite(opts.bin_size) || opts.bin_size < 0.0)
-        throw InputError("bin size must be a positive number of data units, got " + formatNumber(opts.bin_size));
+        throw InputError("bin size must be a positive number of data units, got " + formatSignificant(opts.bin_size, 4));
     if (opts.hex_cols < 0) throw InputError("hex columns must be >= 1 (0 = default), got " + std::to_string(opts.hex_cols));
 
     double x_min = INFINITY, x_max = -INFINITY, y_min = INFINITY, y_max = -INFINITY;
@@ -66,14 +61,14 @@ BinLayout binLayout(const PointTable& points, const BinOptions& opts) {
     const double w = width / p;
     const double h = depth / p;
     if (!std::isfinite(w) || !std::isfinite(h))
-        throw InputError("bin size " + formatNumber(p) + " is too small for points spanning " + formatNumber(width) +
-                         " x " + formatNumber(depth));
+        throw InputError("bin size " + formatSignificant(p, 4) + " is too small for points spanning " + formatSignificant(width, 4) +
+                         " x " + formatSignificant(depth, 4));
     const double rows = rowsFor(h + 2.0 * kCoverMargin);
     const double x_lo = rows > 1.0 ? 0.5 : 0.0;  // a single row has no shifted odd row
     const double cols = std::max(1.0, std::ceil(w + x_lo + 2.0 * kCoverMargin));
     if (cols * rows > double(kMaxBinCells))
-        throw InputError("bin size " + formatNumber(p) + " gives " + formatNumber(cols) + " x " + formatNumber(rows) +
-                         " hexagons for points spanning " + formatNumber(width) + " x " + formatNumber(depth) +
+        throw InputError("bin size " + formatSignificant(p, 4) + " gives " + formatSignificant(cols, 4) + " x " + formatSignificant(rows, 4) +
+                         " hexagons for points spanning " + formatSignificant(width, 4) + " x " + formatSignificant(depth, 4) +
                          "; the most is " + std::to_string(kMaxBinCells) + " (use a larger bin size)");
     layout.grid = {int32_t(cols), int32_t(rows)};
     // Centre the bounding box in the covered rectangle.
@@ -139,7 +134,7 @@ HexField binPoints(const PointTable& points, const BinOptions& opts) {
     }
     field.how = what + " per hexagon: " + std::to_string(points.size()) + " points (" + points.x_name + ", " +
                 points.y_name + ") -> " + std::to_string(grid.cols) + " x " + std::to_string(grid.rows) +
-                " hexagons, pitch " + formatNumber(layout.pitch) + " data units";
+                " hexagons, pitch " + formatSignificant(layout.pitch, 4) + " data units";
     if (weighted && points.missing_weights > 0)
         field.how += ", " + std::to_string(points.missing_weights) + " missing weights skipped";
     return field;

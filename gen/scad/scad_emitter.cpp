@@ -18,6 +18,7 @@
 #include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
 #include "gen/scad/scad_library.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace fs = std::filesystem;
@@ -26,11 +27,6 @@ namespace {
 
 // Shortest decimal text that OpenSCAD parses back to exactly `v` (OpenSCAD
 // 2021.01 reads decimals correctly rounded; checked in tests/scad).
-std::string number(double v) {
-    char buf[64];
-    const auto res = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, res.ptr);
-}
 
 // One line of text safe inside a // comment.
 std::string oneLine(const std::string& s) {
@@ -49,7 +45,7 @@ double sliderStep(double v, std::initializer_list<double> steps) {
 }
 
 std::string range(double lo, double step, double hi) {
-    return "// [" + number(lo) + ":" + number(step) + ":" + number(hi) + "]";
+    return "// [" + formatShortest(lo) + ":" + formatShortest(step) + ":" + formatShortest(hi) + "]";
 }
 
 // The customizer parameters with their values for a Scene, in file order.
@@ -121,28 +117,28 @@ void emitParameters(std::string& o, const Scene& s) {
     const Parameters p = parametersOf(s);
     o += "/* [Model size] */\n"
          "// Distance between neighbouring hexagon centres = width across flats (mm)\n"
-         "cell = " + number(p.cell_mm) + ";  " +
+         "cell = " + formatShortest(p.cell_mm) + ";  " +
          range(p.cell_mm < 1 ? 0.05 : 1, sliderStep(p.cell_mm, {0.5, 0.1, 0.01, 0.001}),
                std::max(50.0, std::ceil(2 * p.cell_mm))) + "\n\n";
 
     o += "/* [Heights] */\n"
          "// Height of the pillar for value_max above the floor (mm)\n"
-         "height = " + number(p.max_height_mm) + ";  " +
+         "height = " + formatShortest(p.max_height_mm) + ";  " +
          range(0, sliderStep(p.max_height_mm, {0.5, 0.1, 0.01, 0.001}), std::max(100.0, std::ceil(2 * p.max_height_mm))) +
          "\n"
          "// How a value becomes a height: linear, sqrt (counts, areas) or log (two decades)\n"
          "transfer = \"" + p.transfer + "\";  // [linear, sqrt, log]\n"
          "// Value at the floor, height 0 (data units); smaller values sit at the floor\n"
-         "baseline = " + number(p.baseline) + ";\n"
+         "baseline = " + formatShortest(p.baseline) + ";\n"
          "// Value at full height (data units); larger values are capped\n"
-         "value_max = " + number(p.value_max) + ";\n"
+         "value_max = " + formatShortest(p.value_max) + ";\n"
          "// Height grid (mm): every height is rounded to a multiple of it; your layer height gives crisp steps\n"
-         "snap = " + number(p.z_step_mm) + ";  " +
+         "snap = " + formatShortest(p.z_step_mm) + ";  " +
          range(std::min(0.001, p.z_step_mm), sliderStep(p.z_step_mm, {0.001, 0.0001, 0.00001, 0.000001}), 1) + "\n\n";
 
     o += "/* [Base] */\n"
          "// Flat bottom: thickness under the floor. Mirrored bottom: thinnest point of the slab (mm, >= snap)\n"
-         "base = " + number(p.base_mm) + ";  " +
+         "base = " + formatShortest(p.base_mm) + ";  " +
          range(std::min(0.1, p.base_mm), sliderStep(p.base_mm, {0.1, 0.01, 0.001, 0.0001, 0.00001, 0.000001}),
                std::max(20.0, std::ceil(2 * p.base_mm))) + "\n\n";
 
@@ -155,7 +151,7 @@ void emitParameters(std::string& o, const Scene& s) {
          "// The V notch at the origin (south-west) corner and the raised right triangle (long leg east)\n"
          "orientation_marks = true;\n"
          "// How far the triangle stands above its flat region (mm)\n"
-         "mark_height = " + number(s.params.marks.triangle_height_mm) + ";  " +
+         "mark_height = " + formatShortest(s.params.marks.triangle_height_mm) + ";  " +
          range(0.1, 0.1, std::max(5.0, std::ceil(2 * s.params.marks.triangle_height_mm))) + "\n\n";
 }
 
@@ -197,7 +193,7 @@ void emitMarks(std::string& o, const Scene& s) {
             } else {
                 p = s.faces.extra[size_t(id - lattice)];
             }
-            points += std::string(points.empty() ? "" : ", ") + "[" + number(p.i) + ", " + number(p.j) + "]";
+            points += std::string(points.empty() ? "" : ", ") + "[" + formatShortest(p.i) + ", " + formatShortest(p.j) + "]";
             std::string refs;
             if (id < lattice) {
                 int32_t col[3], row[3];
@@ -256,7 +252,7 @@ std::string crossingList(const Scene& s, const std::vector<int64_t>& crossing, s
             continue;
         }
         const size_t n = size_t(id - s.shapes.first_id);
-        t += "[" + number(s.shapes.extra[n].i) + ", " + number(s.shapes.extra[n].j) + ", " +
+        t += "[" + formatShortest(s.shapes.extra[n].i) + ", " + formatShortest(s.shapes.extra[n].j) + ", " +
              std::to_string(s.shapes.extra_z[n]) + "]";
     }
     return t + "]";
@@ -274,8 +270,8 @@ void emitTops(std::string& o, const Scene& s) {
          "// centre offset, the same for a mirrored bottom, where the top crosses each\n"
          "// neighbour [i, j, z], the same for the bottoms] (format: tsf_tilt.scad).\n"
          "// They hold for the values and parameters above: run tsf gen again to change those.\n"
-         "tops_made_for = [" + number(p.cell_mm) + ", " + number(p.max_height_mm) + ", \"" + p.transfer + "\", " +
-         number(p.baseline) + ", " + number(p.value_max) + ", " + number(p.z_step_mm) + ", " + number(p.base_mm) + ", " +
+         "tops_made_for = [" + formatShortest(p.cell_mm) + ", " + formatShortest(p.max_height_mm) + ", \"" + p.transfer + "\", " +
+         formatShortest(p.baseline) + ", " + formatShortest(p.value_max) + ", " + formatShortest(p.z_step_mm) + ", " + formatShortest(p.base_mm) + ", " +
          (p.mirrored ? "true" : "false") + "];\n"
          "tops_thickness = " + std::to_string(mirrored ? s.mirror_thickness_units : 0) + ";\n"
          "tops = [\n";
@@ -307,7 +303,7 @@ void emitValues(std::string& o, const Scene& s) {
         for (int32_t c = 0; c < g.cols; ++c) {
             const int32_t k = s.keptAt(c, r);
             std::string& text = cells[size_t(g.index(c, r))];
-            text = k < 0 ? "undef" : std::isnan(s.value[size_t(k)]) ? "nodata" : number(s.value[size_t(k)]);
+            text = k < 0 ? "undef" : std::isnan(s.value[size_t(k)]) ? "nodata" : formatShortest(s.value[size_t(k)]);
             width = std::max(width, text.size());
         }
     }
@@ -428,32 +424,32 @@ constexpr const char* kSetHalfSize = "half size";
 std::string emitScadParameterSets(const Scene& scene) {
     const Parameters p = parametersOf(scene);
     nlohmann::ordered_json all;
-    all["cell"] = number(p.cell_mm);
-    all["height"] = number(p.max_height_mm);
+    all["cell"] = formatShortest(p.cell_mm);
+    all["height"] = formatShortest(p.max_height_mm);
     all["transfer"] = p.transfer;
-    all["baseline"] = number(p.baseline);
-    all["value_max"] = number(p.value_max);
-    all["snap"] = number(p.z_step_mm);
-    all["base"] = number(p.base_mm);
+    all["baseline"] = formatShortest(p.baseline);
+    all["value_max"] = formatShortest(p.value_max);
+    all["snap"] = formatShortest(p.z_step_mm);
+    all["base"] = formatShortest(p.base_mm);
     all["mirror"] = p.mirrored ? "true" : "false";
     if (!scene.faces.empty()) {
         all["orientation_marks"] = "true";
-        all["mark_height"] = number(scene.params.marks.triangle_height_mm);
+        all["mark_height"] = formatShortest(scene.params.marks.triangle_height_mm);
     }
 
     // A coarse height grid must stay below the base (base >= snap).
     constexpr double kLayerMm = 0.2;  // a common FDM layer height
     nlohmann::ordered_json layers;
-    layers["snap"] = number(kLayerMm);
-    if (p.base_mm < kLayerMm) layers["base"] = number(kLayerMm);
+    layers["snap"] = formatShortest(kLayerMm);
+    if (p.base_mm < kLayerMm) layers["base"] = formatShortest(kLayerMm);
 
     nlohmann::ordered_json flip;
     flip["mirror"] = p.mirrored ? "false" : "true";
 
     nlohmann::ordered_json half;
-    half["cell"] = number(p.cell_mm / 2);
-    half["height"] = number(p.max_height_mm / 2);
-    half["base"] = number(std::max(p.base_mm / 2, p.z_step_mm));
+    half["cell"] = formatShortest(p.cell_mm / 2);
+    half["height"] = formatShortest(p.max_height_mm / 2);
+    half["base"] = formatShortest(std::max(p.base_mm / 2, p.z_step_mm));
 
     nlohmann::ordered_json sets;
     sets[kSetAsGenerated] = all;

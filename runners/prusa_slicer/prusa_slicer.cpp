@@ -8,6 +8,7 @@
 
 #include "gen/util/temp_files.h"
 #include "runners/process_runner.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace fs = std::filesystem;
@@ -20,13 +21,6 @@ constexpr double kQuickCommandTimeoutS = 60.0;
 const char* const kInstallHint =
     "install PrusaSlicer (Debian/Ubuntu: sudo apt install prusa-slicer; others: https://www.prusa3d.com/prusaslicer/) "
     "or give its path with --slicer PATH";
-
-std::string number(double v) {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
-}
 
 // The slicer's output without its "[trace]"-style log lines: what it says to a person.
 std::string messages(const std::string& output) {
@@ -75,7 +69,7 @@ ProcessResult run(std::vector<std::string> argv, double timeout_s) {
         case ProcessResult::End::NotStarted:
             throw SlicerError("PrusaSlicer (" + argv[0] + ") could not be started: " + r.start_error);
         case ProcessResult::End::TimedOut:
-            throw SlicerError("PrusaSlicer did not finish within " + number(timeout_s) + " s");
+            throw SlicerError("PrusaSlicer did not finish within " + formatSignificant(timeout_s, 10) + " s");
         case ProcessResult::End::Interrupted: throw SlicerError("PrusaSlicer was interrupted");
         case ProcessResult::End::Signalled:
             throw SlicerError("PrusaSlicer crashed (signal " + std::to_string(r.signal) + "): " + messages(r.output));
@@ -129,14 +123,14 @@ SlicerModelInfo prusaSlicerInfo(const std::string& model_path, const SlicerSetti
 }
 
 std::vector<std::string> prusaSliceArguments(const SlicerSettings& s, bool with_support) {
-    const std::string w = number(s.bed_width_mm), d = number(s.bed_depth_mm);
+    const std::string w = formatSignificant(s.bed_width_mm, 10), d = formatSignificant(s.bed_depth_mm, 10);
     std::vector<std::string> a = {
-        "--layer-height", number(s.layer_mm),
-        "--first-layer-height", number(s.layer_mm),
-        "--nozzle-diameter", number(s.nozzle_mm),
-        "--filament-density", number(s.filament_density_g_cm3),
+        "--layer-height", formatSignificant(s.layer_mm, 10),
+        "--first-layer-height", formatSignificant(s.layer_mm, 10),
+        "--nozzle-diameter", formatSignificant(s.nozzle_mm, 10),
+        "--filament-density", formatSignificant(s.filament_density_g_cm3, 10),
         "--bed-shape", "0x0," + w + "x0," + w + "x" + d + ",0x" + d,
-        "--center", number(s.bed_width_mm / 2) + "," + number(s.bed_depth_mm / 2),
+        "--center", formatSignificant(s.bed_width_mm / 2, 10) + "," + formatSignificant(s.bed_depth_mm / 2, 10),
     };
     if (with_support) a.push_back("--support-material");
     return a;

@@ -1,4 +1,5 @@
-// Number formatting shared by the verifier's messages (internal to verify/).
+// The verifier's messages' number conventions (internal to verify/): "n/a"
+// for a figure that could not be measured, else gen/util/number_format.h.
 #pragma once
 
 #include <cmath>
@@ -6,24 +7,15 @@
 #include <string>
 
 #include "gen/geometry/mesh.h"
+#include "gen/util/number_format.h"
 
 namespace tsf::detail {
 
 /// Millimetres with 3 decimals (1 um), the precision of the model's xy grid.
-inline std::string fmtMm(double v) {
-    if (std::isnan(v)) return "n/a";
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    return buf;
-}
+inline std::string fmtMm(double v) { return std::isnan(v) ? "n/a" : formatFixed(v, 3); }
 
 /// A general number with up to 6 significant digits.
-inline std::string fmtNum(double v) {
-    if (std::isnan(v)) return "n/a";
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+inline std::string fmtNum(double v) { return std::isnan(v) ? "n/a" : formatSignificant(v, 6); }
 
 /// "(x, y, z) mm".
 inline std::string fmtPoint(const Vec3& p) {

@@ -25,6 +25,7 @@
 #include "gen/geometry/cdt_parity.h"
 #include "gen/util/error.h"
 #include "gen/model/scene.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
@@ -92,13 +93,6 @@ bool hexMeetsTriangle(const Scene& s, int32_t c, int32_t r, const Xy& a, const X
         for (int e = 0; e < 3; ++e)
             if (segmentsCross(h[k], h[(k + 1) % kHexCorners], tri[e], tri[(e + 1) % 3])) return true;
     return false;
-}
-
-std::string mmText(double v) {
-    std::ostringstream s;
-    s.precision(3);
-    s << v;
-    return s.str();
 }
 
 // ---------------------------------------------------------------- notch ---
@@ -246,7 +240,7 @@ void placeNotch(Scene& s) {
     // The apex must keep kMarkClearanceMm from the edges of the hexagon it
     // stands in: impossible when the cells are narrower than twice that.
     if (s.pitch_mm < 2 * kMarkClearanceMm) {
-        s.notes.push_back("orientation notch left out: cells of " + mmText(s.pitch_mm) +
+        s.notes.push_back("orientation notch left out: cells of " + formatSignificant(s.pitch_mm, 3) +
                           " mm are too small to cut a notch into without thin slivers (use larger cells)");
         return;
     }
@@ -279,7 +273,7 @@ void placeNotch(Scene& s) {
         if (best_depth >= mp.notch_depth_mm - 1e-9) break;
     }
     if (best_depth == 0) {
-        s.notes.push_back("orientation notch left out: a V at least " + mmText(mp.notch_min_depth_mm) +
+        s.notes.push_back("orientation notch left out: a V at least " + formatSignificant(mp.notch_min_depth_mm, 3) +
                           " mm deep would cut away more than half of a corner pillar (use larger cells)");
         return;
     }
@@ -294,7 +288,7 @@ void placeNotch(Scene& s) {
     n.opening_deg = best_opening;
     s.marks.notch = n;
     if (best_depth < mp.notch_depth_mm - 1e-9)
-        s.notes.push_back("orientation notch: " + mmText(best_depth) + " mm deep (asked " + mmText(mp.notch_depth_mm) +
+        s.notes.push_back("orientation notch: " + formatSignificant(best_depth, 3) + " mm deep (asked " + formatSignificant(mp.notch_depth_mm, 3) +
                           " mm): a deeper V would cut away more than half of a corner pillar");
 }
 
@@ -397,7 +391,6 @@ std::vector<int64_t> outline(const Scene& s, const std::vector<int32_t>& cells, 
     return loop;
 }
 
-
 // Hex cells (kept indices) the triangle fits in: the cells of its region within
 // `radius_mm` of its circumcentre, provided the triangle keeps `margin_mm`
 // from their outline. Empty if not.
@@ -493,7 +486,7 @@ void placeTriangle(Scene& s) {
     }
     if (!s.marks.triangle)
         s.notes.push_back("orientation triangle left out: no flat region is large enough for legs of " +
-                          mmText(mp.triangle_min_leg_mm) + " x " + mmText(kTriangleLegRatio * mp.triangle_min_leg_mm) +
+                          formatSignificant(mp.triangle_min_leg_mm, 3) + " x " + formatSignificant(kTriangleLegRatio * mp.triangle_min_leg_mm, 3) +
                           std::string(" mm") + (s.marks.notch ? "; the notch marks the origin" : ""));
 }
 

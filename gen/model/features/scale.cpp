@@ -11,16 +11,10 @@
 #include "gen/field/hex_grid.h"
 #include "gen/model/scene.h"
 #include "gen/model/features/top_shapes.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
-
-std::string num(double v) {
-    std::ostringstream o;
-    o.precision(6);
-    o << v;
-    return o.str();
-}
 
 // A multiple of the step as the number a person would write (0.1 * 3 -> 0.3).
 double roundedMultiple(int64_t k, double step) {
@@ -67,9 +61,9 @@ std::vector<ScaleLevel> scaleLevels(const ValueMapping& m, double step, double z
         const double first = std::floor(m.baseline / step) + 1;
         const double count = std::floor((m.value_max - m.baseline) / step) + 2;
         if (std::fabs(first) > 1e15) {
-            why = "the step " + num(step) + " is too small for values as large as " + num(m.baseline);
+            why = "the step " + formatSignificant(step) + " is too small for values as large as " + formatSignificant(m.baseline);
         } else if (count > double(max_steps) * 4 + 8) {
-            why = "the step " + num(step) + " makes about " + num(std::floor(count)) + " steps; at most " +
+            why = "the step " + formatSignificant(step) + " makes about " + formatSignificant(std::floor(count)) + " steps; at most " +
                   std::to_string(max_steps) + " fit";
         } else {
             int64_t previous = 0;
@@ -80,17 +74,17 @@ std::vector<ScaleLevel> scaleLevels(const ValueMapping& m, double step, double z
                 const int64_t h = snapUnits(m.heightMm(v), z_snap_mm);
                 if (h - previous < min_riser) {
                     if (levels.empty()) continue;  // too close to the floor: the foot stands for the baseline
-                    why = "the levels " + num(levels.back().value) + " and " + num(v) + " differ by " +
-                          num(double(h - previous) * z_snap_mm) + " mm in height, less than the " +
-                          num(kScaleMinRiserMm) + " mm a finger tells apart";
+                    why = "the levels " + formatSignificant(levels.back().value) + " and " + formatSignificant(v) + " differ by " +
+                          formatSignificant(double(h - previous) * z_snap_mm) + " mm in height, less than the " +
+                          formatSignificant(kScaleMinRiserMm) + " mm a finger tells apart";
                     break;
                 }
                 levels.push_back({v, h});
                 previous = h;
             }
-            if (why.empty() && levels.empty()) why = "no multiple of " + num(step) + " lies in the values' range";
+            if (why.empty() && levels.empty()) why = "no multiple of " + formatSignificant(step) + " lies in the values' range";
             if (why.empty() && int(levels.size()) > max_steps)
-                why = "the step " + num(step) + " makes " + std::to_string(levels.size()) + " steps; at most " +
+                why = "the step " + formatSignificant(step) + " makes " + std::to_string(levels.size()) + " steps; at most " +
                       std::to_string(max_steps) + " fit";
         }
     }
@@ -129,20 +123,20 @@ void placeScale(Scene& s) {
     std::string why;
     if (rq.step) {
         if (!(*rq.step > 0) || !std::isfinite(*rq.step))
-            throw InputError("--scale-step: must be a number > 0, got " + num(*rq.step));
+            throw InputError("--scale-step: must be a number > 0, got " + formatSignificant(*rq.step));
         sc.step = *rq.step;
         scaleLevels(s.mapping, sc.step, s.z_snap_mm, kScaleMaxSteps, &why);
         if (!why.empty()) {
             const std::optional<double> fits = chooseScaleStep(s.mapping, s.z_snap_mm);
-            throw InputError("--scale-step " + num(sc.step) + ": " + why +
-                             (fits ? "; --scale-step " + num(*fits) + " (or leaving it out) works" : std::string()));
+            throw InputError("--scale-step " + formatSignificant(sc.step) + ": " + why +
+                             (fits ? "; --scale-step " + formatSignificant(*fits) + " (or leaving it out) works" : std::string()));
         }
     } else {
         const std::optional<double> step = chooseScaleStep(s.mapping, s.z_snap_mm);
         if (!step)
             throw InputError("--scale: the values' whole range rises " +
-                             num(s.mapping.heightMm(s.mapping.value_max)) + " mm, too little for steps " +
-                             num(kScaleMinRiserMm) + " mm apart; give a larger --height, or leave out --scale");
+                             formatSignificant(s.mapping.heightMm(s.mapping.value_max)) + " mm, too little for steps " +
+                             formatSignificant(kScaleMinRiserMm) + " mm apart; give a larger --height, or leave out --scale");
         sc.step = *step;
     }
     const std::vector<ScaleLevel> levels = scaleLevels(s.mapping, sc.step, s.z_snap_mm, kScaleMaxSteps, &why);
@@ -227,8 +221,8 @@ void placeScale(Scene& s) {
         s.scale = std::move(sc);
         return;
     }
-    throw InputError("--scale: the tactile scale needs " + num(std::round(need_mm)) + " mm (" + std::to_string(n) +
-                     " steps of " + num(kScaleTreadMm) + " mm) along the model's east side, and the run there is cut by " +
+    throw InputError("--scale: the tactile scale needs " + formatSignificant(std::round(need_mm)) + " mm (" + std::to_string(n) +
+                     " steps of " + formatSignificant(kScaleTreadMm) + " mm) along the model's east side, and the run there is cut by " +
                      (blocked.empty() ? std::string("the model's shape") : blocked) +
                      ". Give a larger --scale-step, or leave out --title/--units or --scale");
 }

@@ -17,6 +17,7 @@
 
 #include "gen/util/error.h"
 #include "gen/readers/raster_limits.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
@@ -48,13 +49,6 @@ struct Dataset {
         if (h) GDALClose(h);
     }
 };
-
-std::string number(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
 
 std::string crsName(OGRSpatialReferenceH srs) {
     const char* name = OSRGetName(srs);
@@ -95,18 +89,18 @@ Raster readDataset(const std::string& gdal_name, const std::string& path) {
     if (srs && OSRIsGeographic(srs)) {
         const double lat = gt[3] + gt[5] * rows / 2.0;  // mean latitude, degrees
         x_scale = std::cos(lat * kPi / 180.0);
-        r.facts.push_back({"crs", crsName(srs) + ", geographic: longitude scaled by cos(" + number(lat) +
-                                      " deg) = " + number(x_scale)});
-        r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h) + " degrees"});
+        r.facts.push_back({"crs", crsName(srs) + ", geographic: longitude scaled by cos(" + formatSignificant(lat) +
+                                      " deg) = " + formatSignificant(x_scale)});
+        r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h) + " degrees"});
     } else if (srs) {
         char* unit = nullptr;
         OSRGetLinearUnits(srs, &unit);
         const std::string u = unit ? unit : "units";
         r.facts.push_back({"crs", crsName(srs) + (OSRIsProjected(srs) ? ", projected: true aspect" : "")});
-        r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h) + " " + u});
+        r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h) + " " + u});
     } else {
         r.facts.push_back({"crs", has_gt ? "none; pixel sizes taken as they are" : "none (no georeference)"});
-        if (has_gt) r.facts.push_back({"pixel", number(px_w) + " x " + number(px_h)});
+        if (has_gt) r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h)});
     }
 
     // Square pixels on the ground: stretch the shorter side of the pixel.
@@ -137,7 +131,7 @@ Raster readDataset(const std::string& gdal_name, const std::string& path) {
     const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
     for (double& v : r.values)
         if ((has_nodata && v == nodata) || !std::isfinite(v)) v = NAN;
-    if (has_nodata) r.facts.push_back({"no-data value", number(nodata) + " (from the file)"});
+    if (has_nodata) r.facts.push_back({"no-data value", formatSignificant(nodata) + " (from the file)"});
     return r;
 }
 
