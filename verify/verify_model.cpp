@@ -6,7 +6,7 @@
 
 #include "verify/triangle_bvh.h"
 #include "verify/readback.h"
-#include "verify/scale_readback.h"
+#include "verify/attachment_readback.h"
 #include "verify/solid_checks.h"
 #include "verify/tilt_readback.h"
 
@@ -53,7 +53,7 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
         ReadbackResult rb = readBack(mesh, *scene, *caster, ro);
         report.readback = std::move(rb.figures);
         append(report, std::move(rb));
-        if (scene->scale) append(report, readBackScale(mesh, *scene, *caster));
+        append(report, readBackAttachments(mesh, *scene, *caster, options.max_offenders));
         TiltReadbackResult tb = readBackTilt(mesh, *scene, *caster);
         if (!tb.checks.empty()) {
             report.tilt = std::move(tb.figures);

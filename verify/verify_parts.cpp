@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "verify/assembly_checks.h"
+#include "verify/attachment_readback.h"
 #include "verify/readback.h"
 #include "verify/tilt_readback.h"
 #include "verify/triangle_bvh.h"
@@ -81,6 +82,7 @@ PartsVerifyReport verifyParts(const std::vector<MeshPart>& parts, const Scene* s
         ReadbackResult rb = readBack(joined, *scene, caster, ro);
         a.readback = std::move(rb.figures);
         append(a, std::move(rb));
+        append(a, readBackAttachments(joined, *scene, caster, options.max_offenders));
         TiltReadbackResult tb = readBackTilt(joined, *scene, caster);
         if (!tb.checks.empty()) {
             a.tilt = std::move(tb.figures);

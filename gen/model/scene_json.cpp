@@ -2,20 +2,19 @@
 #include "gen/model/scene_json.h"
 
 #include <array>
-#include "gen/model/features/legend_scene.h"
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
 #include "gen/util/file_bytes.h"
 #include "gen/model/features/marks.h"
-#include "gen/model/features/scale.h"
 #include "gen/model/features/top_shapes.h"
 
 namespace tsf {
@@ -220,6 +219,167 @@ Marks marksFrom(const json& j, const std::string& path) {
     return m;
 }
 
+// The braille legend as placed: its request (for reports), the standard its
+// dots were laid out at, the text and braille cells, every dot and the plate.
+// Read back as is: verifying a model needs no braille table and no placement.
+json legendJson(const Scene& s) {
+    const SceneLegend& l = *s.legend;
+    const BrailleStandard& st = l.layout.standard;
+    json dots = json::array();
+    for (const LegendDot& d : l.layout.dots) dots.push_back({d.x_mm, d.y_mm});
+    return {{"title", s.params.legend.title},
+            {"units", s.params.legend.units},
+            {"table", s.params.legend.table},
+            {"standard",
+             {{"name", st.name},
+              {"dot_base_mm", st.dot_base_mm},
+              {"dot_height_mm", st.dot_height_mm},
+              {"dot_pitch_mm", st.dot_pitch_mm},
+              {"cell_pitch_mm", st.cell_pitch_mm},
+              {"line_pitch_mm", st.line_pitch_mm}}},
+            {"text", l.layout.text},
+            {"cells", l.layout.cells},
+            {"dots", dots},
+            {"size_mm", {l.layout.width_mm, l.layout.depth_mm}},
+            {"origin_mm", {l.x0_mm, l.y0_mm}},
+            {"reach_row", l.reach_row},
+            {"plate_mm", {{"south", l.plate_south_mm}, {"north", l.plate_north_mm}, {"east", l.plate_east_mm}}},
+            {"plate_top_units", l.plate_top_units}};
+}
+
+double getFinite(const json& obj, const std::string& path, const char* key) {
+    const double v = getNumber(obj, path, key);
+    if (!std::isfinite(v)) fail(join(path, key), "expected a finite number");
+    return v;
+}
+
+std::pair<double, double> getFinitePair(const json& obj, const std::string& path, const char* key) {
+    const json& a = getArray(obj, path, key);
+    const std::string p = join(path, key);
+    if (a.size() != 2) fail(p, "expected two numbers");
+    const double x = toNumber(a[0], p + "[0]"), y = toNumber(a[1], p + "[1]");
+    if (!std::isfinite(x) || !std::isfinite(y)) fail(p, "expected finite numbers");
+    return {x, y};
+}
+
+// The standards tsf lays braille out at, by the name a sidecar records.
+const BrailleStandard* knownStandard(const std::string& name) {
+    for (const BrailleStandard* st : {&kNlsSpec800})
+        if (name == st->name) return st;
+    return nullptr;
+}
+
+void readLegend(const json& l, const Scene& s, SceneLegend& out, LegendRequest& request) {
+    const std::string lp = "legend";
+    if (!l.is_object()) fail(lp, std::string("expected an object or null, found ") + typeName(l));
+    request.title = getString(l, lp, "title");
+    request.units = getString(l, lp, "units");
+    request.table = getString(l, lp, "table");
+    const json& st = member(l, lp, "standard");
+    const std::string sp = join(lp, "standard");
+    const BrailleStandard* known = knownStandard(getString(st, sp, "name"));
+    if (!known) fail(join(sp, "name"), "not a braille standard this tsf knows (" + std::string(kNlsSpec800.name) + ")");
+    BrailleStandard standard = *known;
+    standard.dot_base_mm = getPositive(st, sp, "dot_base_mm");
+    standard.dot_height_mm = getPositive(st, sp, "dot_height_mm");
+    standard.dot_pitch_mm = getPositive(st, sp, "dot_pitch_mm");
+    standard.cell_pitch_mm = getPositive(st, sp, "cell_pitch_mm");
+    standard.line_pitch_mm = getPositive(st, sp, "line_pitch_mm");
+    LegendLayout& layout = out.layout;
+    layout.standard = standard;
+    const json& text = getArray(l, lp, "text");
+    for (size_t i = 0; i < text.size(); ++i) {
+        if (!text[i].is_string()) fail(lp + ".text[" + std::to_string(i) + "]", "expected a string");
+        layout.text.push_back(text[i].get<std::string>());
+    }
+    const json& cells = getArray(l, lp, "cells");
+    for (size_t i = 0; i < cells.size(); ++i) {
+        const std::string cp = lp + ".cells[" + std::to_string(i) + "]";
+        if (!cells[i].is_array()) fail(cp, "expected an array of braille cells");
+        std::vector<uint8_t> line;
+        for (size_t k = 0; k < cells[i].size(); ++k) {
+            const int64_t v = toInt(cells[i][k], cp + "[" + std::to_string(k) + "]");
+            if (v < 0 || v > 255) fail(cp + "[" + std::to_string(k) + "]", "expected a braille cell 0..255");
+            line.push_back(uint8_t(v));
+        }
+        layout.cells.push_back(std::move(line));
+    }
+    std::tie(layout.width_mm, layout.depth_mm) = getFinitePair(l, lp, "size_mm");
+    std::tie(out.x0_mm, out.y0_mm) = getFinitePair(l, lp, "origin_mm");
+    out.reach_row = getInt32(l, lp, "reach_row", 0, std::max<int64_t>(0, int64_t(s.grid.rows) - 1));
+    const json& plate = member(l, lp, "plate_mm");
+    const std::string pp = join(lp, "plate_mm");
+    out.plate_south_mm = getFinite(plate, pp, "south");
+    out.plate_north_mm = getFinite(plate, pp, "north");
+    out.plate_east_mm = getFinite(plate, pp, "east");
+    if (!(out.plate_north_mm > out.plate_south_mm)) fail(join(pp, "north"), "must be north of the plate's south edge");
+    if (!(out.plate_east_mm > 0)) fail(join(pp, "east"), "must be east of the plate's west edge (x = 0)");
+    out.plate_top_units = getInt(l, lp, "plate_top_units");
+    const double r = 0.5 * standard.dot_base_mm;
+    const json& dots = getArray(l, lp, "dots");
+    for (size_t i = 0; i < dots.size(); ++i) {
+        const std::string dp = lp + ".dots[" + std::to_string(i) + "]";
+        if (!dots[i].is_array() || dots[i].size() != 2) fail(dp, "expected [x, y]");
+        const LegendDot d{toNumber(dots[i][0], dp + "[0]"), toNumber(dots[i][1], dp + "[1]")};
+        const double x = d.x_mm + out.x0_mm, y = d.y_mm + out.y0_mm;
+        if (!(x - r >= 0 && x + r <= out.plate_east_mm && y - r >= out.plate_south_mm && y + r <= out.plate_north_mm))
+            fail(dp, "the dot does not lie on the legend's plate");
+        layout.dots.push_back(d);
+    }
+    if (layout.dots.empty()) fail(join(lp, "dots"), "a legend has at least one dot");
+}
+
+// The tactile scale as placed (written since version 4), read as recorded.
+SceneScale scaleFrom(const json& j, const Scene& s) {
+    const std::string sp = "scale";
+    if (!j.is_object()) fail(sp, std::string("expected an object, found ") + typeName(j));
+    SceneScale sc;
+    sc.step = getPositive(j, sp, "step");
+    const json& given = member(j, sp, "step_given");
+    if (!given.is_boolean()) fail(join(sp, "step_given"), "expected true or false");
+    sc.step_given = given.get<bool>();
+    sc.x0_i = getInt(j, sp, "x0_i");
+    sc.y0_j = getInt(j, sp, "y0_j");
+    sc.y1_j = getInt(j, sp, "y1_j");
+    const json& x = getArray(j, sp, "x_mm");
+    if (x.size() != 3) fail(join(sp, "x_mm"), "expected [west, steps' west, east]");
+    sc.x0_mm = toNumber(x[0], sp + ".x_mm[0]");
+    sc.xs_mm = toNumber(x[1], sp + ".x_mm[1]");
+    sc.x1_mm = toNumber(x[2], sp + ".x_mm[2]");
+    if (!(sc.x0_mm < sc.xs_mm && sc.xs_mm < sc.x1_mm)) fail(join(sp, "x_mm"), "expected three increasing x");
+    std::tie(sc.y0_mm, sc.y1_mm) = getFinitePair(j, sp, "y_mm");
+    if (!(sc.y0_mm < sc.y1_mm)) fail(join(sp, "y_mm"), "expected south < north");
+    sc.foot_top_units = getInt(j, sp, "foot_top_units");
+    const json& steps = getArray(j, sp, "steps");
+    for (size_t i = 0; i < steps.size(); ++i) {
+        const std::string p = sp + ".steps[" + std::to_string(i) + "]";
+        if (!steps[i].is_array() || steps[i].size() != 4) fail(p, "expected [value, top_units, y_south_mm, y_north_mm]");
+        ScaleStep st;
+        st.value = toNumber(steps[i][0], p + "[0]");
+        st.top_units = toInt(steps[i][1], p + "[1]");
+        st.y_south_mm = toNumber(steps[i][2], p + "[2]");
+        st.y_north_mm = toNumber(steps[i][3], p + "[3]");
+        if (!(st.y_south_mm < st.y_north_mm) || st.y_south_mm < sc.y0_mm || st.y_north_mm > sc.y1_mm)
+            fail(p, "the step does not lie on the scale");
+        sc.steps.push_back(st);
+    }
+    if (sc.steps.empty()) fail(join(sp, "steps"), "a scale has at least one step");
+    auto keptList = [&](const char* key) {
+        std::vector<int32_t> out;
+        const json& a = getArray(j, sp, key);
+        for (size_t i = 0; i < a.size(); ++i) {
+            const std::string p = sp + "." + key + "[" + std::to_string(i) + "]";
+            const int64_t k = toInt(a[i], p);
+            if (k < 0 || size_t(k) >= s.keptCount()) fail(p, "is not the index of a cell");
+            out.push_back(int32_t(k));
+        }
+        return out;
+    };
+    sc.contacts = keptList("contacts");
+    sc.fillers = keptList("fillers");
+    return sc;
+}
+
 // Everything but the cells.
 json scaleJson(const Scene& s) {
     const SceneScale& sc = *s.scale;
@@ -268,11 +428,8 @@ json sceneHeadJson(const Scene& s) {
         {"one_to_one", s.one_to_one},
         {"marks", marksJson(s.marks)},
         {"shapes", shapesJson(s)},
-        // The braille legend as asked for; placeLegend places it again on reading.
-        {"legend", s.legend ? json{{"title", s.params.legend.title}, {"units", s.params.legend.units},
-                                   {"table", s.params.legend.table}}
-                            : json(nullptr)},
-        // The tactile scale as placed; on reading it is placed again from its step and must come out the same.
+        // The braille legend and the tactile scale as placed: read back as recorded.
+        {"legend", s.legend ? legendJson(s) : json(nullptr)},
         {"scale", s.scale ? scaleJson(s) : json(nullptr)},
         {"hull", hull},
         {"notes", s.notes},
@@ -347,7 +504,7 @@ Scene sceneFromJson(const json& j) {
     const std::string format = getString(j, "", "format");
     if (format != kSceneJsonFormat) fail("format", "expected \"" + std::string(kSceneJsonFormat) + "\", found \"" + format + "\"");
     const int64_t version = getInt(j, "", "version");
-    if (version != kSceneJsonVersion && version != 1 && version != 2 && version != 3)
+    if (version < 1 || version > kSceneJsonVersion)
         fail("version", "unsupported version " + std::to_string(version) + " (this tsf reads version " +
                             std::to_string(kSceneJsonVersion) + ")");
 
@@ -445,33 +602,21 @@ Scene sceneFromJson(const json& j) {
     buildMarkFaces(s);
     readShapes(j, cells, s);
     if (j.contains("legend") && !j["legend"].is_null()) {
-        const json& l = j["legend"];
-        for (const char* key : {"title", "units", "table"})
-            if (!l.contains(key) || !l[key].is_string()) fail(std::string("legend.") + key, "expected a string");
-        s.params.legend.title = l["title"].get<std::string>();
-        s.params.legend.units = l["units"].get<std::string>();
-        s.params.legend.table = l["table"].get<std::string>();
-        placeLegend(s);
+        // Up to version 4 the sidecar held the legend as asked for, and reading
+        // placed and translated it again (with whatever braille table was
+        // installed): such a sidecar cannot say what was printed.
+        if (version < 5)
+            fail("legend", "this sidecar (version " + std::to_string(version) +
+                               ") records the braille legend as asked for, not as placed; make the model and its "
+                               "sidecar again with this tsf (tsf gen ... --title ...)");
+        SceneLegend legend;
+        readLegend(j["legend"], s, legend, s.params.legend);
+        s.legend = std::move(legend);
     }
     if (j.contains("scale") && !j["scale"].is_null()) {
-        const json& recorded = j["scale"];
-        if (!recorded.is_object()) fail("scale", std::string("expected an object, found ") + typeName(recorded));
+        s.scale = scaleFrom(j["scale"], s);
         s.params.scale.wanted = true;
-        s.params.scale.step = getNumber(recorded, "scale", "step");
-        if (!(*s.params.scale.step > 0)) fail("scale.step", "must be > 0");
-        try {
-            placeScale(s);
-        } catch (const InputError& e) {
-            fail("scale", std::string("cannot be placed on this model: ") + e.detail());
-        }
-        if (!recorded.contains("step_given") || !recorded["step_given"].is_boolean())
-            fail("scale.step_given", "expected true or false");
-        s.scale->step_given = recorded["step_given"].get<bool>();
-        s.params.scale.step.reset();
         if (s.scale->step_given) s.params.scale.step = s.scale->step;
-        if (scaleJson(s) != recorded)
-            fail("scale", "is not where this tsf places a scale of step " + recorded["step"].dump() +
-                              " on this model (written by another version?)");
     }
     return s;
 }

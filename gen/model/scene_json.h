@@ -2,7 +2,7 @@
 // so that `tsf verify --scene` can check the model's heights without the
 // original field and options.
 //
-// Format ("format": "tsf-scene", "version": 1), one object:
+// Format ("format": "tsf-scene", "version": 5), one object:
 //   grid {cols, rows}, pitch_mm, z_snap_mm,
 //   params {pitch_mm, fit_width_mm, fit_depth_mm, max_height_mm, base_mm,
 //           transfer, baseline_mode, baseline_value, value_max (null = unset),
@@ -16,6 +16,17 @@
 //                            raise_units, anchor (kept index)}},
 //   shapes: null | {tilt, steepness, structural_texture, cells_tilted, cells_clamped,
 //                   cells_clamped_level, cells_textured, dimple_units},
+//   legend: null | {title, units, table (as asked for, for reports),
+//            standard {name, dot_base_mm, dot_height_mm, dot_pitch_mm,
+//                      cell_pitch_mm, line_pitch_mm},
+//            text [lines], cells [[braille cell 0..255, ...] per line],
+//            dots [[x, y] legend frame mm], size_mm [w, d], origin_mm [x, y]
+//            (the legend frame's origin in the model frame), reach_row,
+//            plate_mm {south, north, east}, plate_top_units},
+//   scale: null | {step, step_given, x0_i, y0_j, y1_j, x_mm [west, steps'
+//           west, east], y_mm [south, north], foot_top_units,
+//           steps [[value, top_units, y_south_mm, y_north_mm], ...],
+//           contacts [kept index], fillers [kept index]},
 //   hull [[i, j], ...], notes [...],
 //   model (optional) {file, bytes, fnv1a64}: the model file written with
 //         this sidecar (tsf gen -o): its name without folder, its size and
@@ -28,6 +39,8 @@
 // Heights (top, bottom, floor_units, ...) are integers in z_snap_mm units;
 // lengths are millimetres; doubles are written in their shortest form that
 // reads back to the same bits, so a Scene round-trips exactly.
+// The legend and the scale are recorded as placed and read as recorded:
+// reading a sidecar translates no braille and places nothing.
 // Scene::kept_index, kind and faces are not stored: they follow from the
 // cells, the grid and the marks (buildMarkFaces, gen/model/features/marks.h).
 #pragma once
@@ -43,7 +56,10 @@
 namespace tsf {
 
 inline constexpr const char* kSceneJsonFormat = "tsf-scene";
-inline constexpr int kSceneJsonVersion = 4;  // 4: scale; 3: shapes; 2: marks, nodata_pit_units, one_to_one (1 to 3 are still read)
+/// 5: the legend as placed (dots, plate, standard), not as asked for; 4: scale;
+/// 3: shapes; 2: marks, nodata_pit_units, one_to_one. 1 to 4 are still read,
+/// except a version 4 sidecar with a legend (it recorded only the request).
+inline constexpr int kSceneJsonVersion = 5;
 /// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
 /// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
 inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;

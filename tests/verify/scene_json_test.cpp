@@ -81,6 +81,85 @@ TEST(SceneJson, RoundTripsEveryField) {
     }
 }
 
+// A flat scene with a braille legend and a tactile scale.
+Scene sceneWithAttachments() {
+    SceneParams p = vtest::smallFieldParams(Bottom::Flat, 0.01);
+    p.pitch_mm = 8.0;
+    p.legend.title = "Depth";
+    p.legend.units = "m";
+    p.scale.wanted = true;
+    return buildScene(vtest::smallField(), p);
+}
+
+TEST(SceneJson, TheLegendAndTheScaleAreRecordedAsPlacedAndReadWithoutPlacingThem) {
+    const Scene s = sceneWithAttachments();
+    ASSERT_TRUE(s.legend);
+    ASSERT_TRUE(s.scale);
+    const nlohmann::json j = sceneToJson(s);
+    EXPECT_EQ(j["version"], kSceneJsonVersion);
+    EXPECT_EQ(j["legend"]["dots"].size(), s.legend->layout.dots.size());
+    // Every member survives the trip, the placed legend and scale included.
+    const Scene back = sceneFromJson(j);
+    expectSameScene(s, back);
+    EXPECT_EQ(sceneToJson(back), j);
+    // A table that does not exist: reading translates nothing, so nothing
+    // notices; the dots are the recorded ones.
+    nlohmann::json other = j;
+    other["legend"]["table"] = "no-such-table.ctb";
+    other["legend"]["dots"][0] = {j["legend"]["dots"][0][0].get<double>() + 0.25, j["legend"]["dots"][0][1]};
+    const Scene moved = sceneFromJson(other);
+    ASSERT_TRUE(moved.legend);
+    EXPECT_EQ(moved.params.legend.table, "no-such-table.ctb");
+    EXPECT_DOUBLE_EQ(moved.legend->layout.dots[0].x_mm, s.legend->layout.dots[0].x_mm + 0.25);
+}
+
+TEST(SceneJson, AVersion4SidecarWithALegendIsRefusedSayingHowToRemakeIt) {
+    nlohmann::json j = sceneToJson(sceneWithAttachments());
+    j["version"] = 4;
+    j["legend"] = {{"title", "Depth"}, {"units", "m"}, {"table", "en-us-g1.ctb"}};
+    try {
+        (void)sceneFromJson(j);
+        FAIL() << "a version 4 legend was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("legend: this sidecar (version 4) records the braille legend as asked for"),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("tsf gen"), std::string::npos) << e.what();
+    }
+    // Without a legend a version 4 sidecar is read, its scale as recorded.
+    j["legend"] = nullptr;
+    const Scene s = sceneFromJson(j);
+    ASSERT_TRUE(s.scale);
+    EXPECT_EQ(s.scale->steps.size(), sceneWithAttachments().scale->steps.size());
+}
+
+TEST(SceneJson, ARecordedLegendOrScaleThatDoesNotFitIsAnInputError) {
+    const nlohmann::json good = sceneToJson(sceneWithAttachments());
+    auto expectError = [](const nlohmann::json& j, const std::string& start) {
+        try {
+            (void)sceneFromJson(j);
+            ADD_FAILURE() << "no error, expected " << start;
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(start, 0), 0u) << e.what();
+        }
+    };
+    auto j = good;
+    j["legend"]["dots"][0] = {-50.0, 0.0};
+    expectError(j, "legend.dots[0]: the dot does not lie on the legend's plate");
+    j = good;
+    j["legend"]["reach_row"] = 1000000;
+    expectError(j, "legend.reach_row");
+    j = good;
+    j["legend"]["standard"]["name"] = "my own";
+    expectError(j, "legend.standard.name: not a braille standard this tsf knows");
+    j = good;
+    j["scale"]["contacts"] = {123456};
+    expectError(j, "scale.contacts[0]: is not the index of a cell");
+    j = good;
+    j["scale"]["steps"] = nlohmann::json::array();
+    expectError(j, "scale.steps: a scale has at least one step");
+}
+
 TEST(SceneJson, FileRoundTripOneCellPerLineAndNoTemporaryLeft) {
     const auto dir = vtest::scratchDir("scene_json_file");
     const Scene s = awkwardScene();
@@ -176,8 +255,8 @@ TEST(SceneJson, MalformedMembersNameTheirPath) {
     }
     {
         auto j = good;
-        j["version"] = 5;
-        expectError(j, "version: unsupported version 5");
+        j["version"] = kSceneJsonVersion + 1;
+        expectError(j, "version: unsupported version " + std::to_string(kSceneJsonVersion + 1));
     }
     {
         auto j = good;
