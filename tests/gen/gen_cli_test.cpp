@@ -10,6 +10,7 @@
 
 #include "tests/support/mesh_invariants.h"
 #include "tests/support/run.h"
+#include "tests/support/required_tools.h"
 
 namespace tsf {
 namespace {
@@ -86,7 +87,7 @@ TEST(GenCli, PointsAreBinnedAndMirrored) {
 
 TEST(GenCli, AdmeshReportsOneCleanPart) {
     const auto probe = runCommand("admesh --version");
-    if (probe.exit_code != 0) GTEST_SKIP() << "admesh is not installed (setup.sh installs it)";
+    TSF_NEED_TOOL(probe.exit_code == 0, "admesh");
     const auto dir = scratchDir("gen_admesh");
     writeText(dir / "field.csv", volcanoLike(15, 13));
     for (const char* extra : {"", " --mirror", " --cull none"}) {

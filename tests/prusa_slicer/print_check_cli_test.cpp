@@ -13,14 +13,14 @@
 #include "tests/support/meshes.h"
 #include "tests/support/run.h"
 #include "runners/process_runner.h"
+#include "tests/support/required_tools.h"
 
 namespace tsf {
 namespace {
 
 bool haveSlicer() { return !findExecutable("prusa-slicer").empty(); }
 
-#define REQUIRE_SLICER() \
-    if (!haveSlicer()) GTEST_SKIP() << "prusa-slicer is not installed (setup.sh installs it)"
+#define REQUIRE_SLICER() TSF_NEED_TOOL(haveSlicer(), "prusa-slicer")
 
 nlohmann::json printCheck(const std::string& args, const std::filesystem::path& dir) {
     const test::RunResult r = test::runTsf("print-check " + args + " --json", dir);

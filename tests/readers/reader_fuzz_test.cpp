@@ -90,9 +90,11 @@ void fuzz(const char* name, const Parser& parse, const std::vector<std::string>&
         }
     }
     std::printf("[ fuzz     ] %s: %d accepted, %d rejected\n", name, accepted, rejected);
-    // Both outcomes occur: the mutations are neither all fatal nor all harmless.
+    // Both outcomes occur: the mutations are neither all fatal nor all
+    // harmless (a parser that rejects everything, or accepts everything,
+    // would pass a test of exceptions alone).
     EXPECT_GT(rejected, 0) << name;
-    EXPECT_GT(accepted + rejected, 0) << name;
+    EXPECT_GT(accepted, 0) << name;
 }
 
 TEST(ReaderFuzz, CsvGrid) {

@@ -3,7 +3,7 @@
 // support (tests/support/).
 //
 // A missing engine makes a test SKIP with the reason. Set
-// TSF_REQUIRE_SCAD_ENGINES=1 (the CI machine has both) to make it FAIL instead.
+// TSF_REQUIRE_TOOLS=1 (the CI machine has both) to make it FAIL instead.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -19,6 +19,7 @@
 #include "tests/support/files.h"
 #include "runners/openscad/openscad_runner.h"
 #include "runners/openscad/wasm_engine.h"
+#include "tests/support/required_tools.h"
 
 namespace tsf::test {
 
@@ -53,10 +54,7 @@ inline const EngineOrReason& wasmEngine() {
     return e;
 }
 
-inline bool enginesRequired() {
-    const char* v = std::getenv("TSF_REQUIRE_SCAD_ENGINES");
-    return v && *v && std::string(v) != "0";
-}
+inline bool enginesRequired() { return toolsRequired(); }
 
 /// Use as: TSF_NEED_ENGINE(nativeEngine()); skips (or fails when required) without it.
 #define TSF_NEED_ENGINE(e)                                                                                  \

@@ -14,6 +14,7 @@
 #include "gen/field/hex_grid.h"
 #include "tests/verify/verify_test_support.h"
 #include "verify/agreement.h"
+#include "tests/support/required_tools.h"
 
 namespace tsf {
 namespace {
@@ -367,7 +368,7 @@ TEST(Agreement, EmptyReferenceFails) {
 // The use the check exists for: OpenSCAD's render of the generated .scad
 // against the direct mesh, through the command line.
 TEST(Agreement, OpenScadRenderIsProvenTheSameSolid) {
-    if (!std::filesystem::exists("/usr/bin/openscad")) GTEST_SKIP() << "no /usr/bin/openscad";
+    TSF_NEED_TOOL(std::filesystem::exists("/usr/bin/openscad"), "/usr/bin/openscad");
     const auto dir = vtest::scratchDir("agreement_openscad");
     std::string csv;
     const HexField f = vtest::smallField();

@@ -8,6 +8,7 @@
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/model/scene_json.h"
 #include "tests/verify/verify_test_support.h"
+#include "tests/support/required_tools.h"
 
 namespace tsf {
 namespace {
@@ -153,7 +154,7 @@ TEST(VerifyCli, OverlappingShellsFromOutsideTsfAreCaught) {
 // second piece and its negative volume. Runs where OpenSCAD's examples are installed.
 TEST(VerifyCli, BlenderExportWithInnerShellIsCaught) {
     const std::string path = "/usr/share/openscad/examples/Basics/projection.stl";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not installed";
+    TSF_NEED_TOOL(std::filesystem::exists(path), path + " (OpenSCAD's examples)");
     const auto dir = vtest::scratchDir("cli_blender");
     const auto r = runTsf("verify " + path + " --json", dir);
     EXPECT_EQ(r.exit_code, 1);
@@ -171,7 +172,7 @@ TEST(VerifyCli, BlenderExportWithInnerShellIsCaught) {
 // OpenSCAD versions: whatever this one makes of it, the verdict must agree with
 // the figures. Runs only where openscad is installed.
 TEST(VerifyCli, OpenScadTouchingPrismsVerdictMatchesFigures) {
-    if (std::system("command -v openscad >/dev/null 2>&1") != 0) GTEST_SKIP() << "openscad not installed";
+    TSF_NEED_TOOL(std::system("command -v openscad >/dev/null 2>&1") == 0, "openscad");
     const auto dir = vtest::scratchDir("cli_openscad");
     vtest::writeText(dir / "touching.scad",
                      "for (i = [0:1], j = [0:1]) translate([i * 10, j * 10, 0]) cube([10, 10, 2 + 3 * (i + 2 * j)]);\n");
