@@ -1,4 +1,6 @@
 #include "haptics/printed_relief.h"
+
+#include "gen/mesh/direct_mesher.h"
 #include "gen/model/features/marks.h"
 
 #include <algorithm>
@@ -19,23 +21,36 @@ double printedHeightFraction(const Scene& scene, size_t k) {
 
 namespace {
 
-// Height (mm) of kept cell k's printed top at (dx, dy) mm from its centre,
-// relative to the centre: a tilted top's plane, a structural cell's cone
-// rising from its lowered centre to the hexagon's edge (gen/model/features/top_shapes.h).
-double shapedTopOffsetMm(const Scene& scene, size_t k, double dx, double dy) {
-    const TopShapes& t = scene.shapes;
-    if (t.empty()) return 0.0;
-    double z = t.slope_x[k] * dx + t.slope_y[k] * dy;
-    if (t.top_centre_dz[k] != 0) {
-        // How far out the point is, 0 at the centre and 1 on the edge: the
-        // largest projection on the six edge normals (0, 60, ... 300 degrees)
-        // over the inradius (half the pitch).
-        double out = 0;
-        for (int e = 0; e < 6; ++e) {
-            const double a = e * (3.14159265358979323846 / 3.0);  // radians
-            out = std::max(out, (dx * std::cos(a) + dy * std::sin(a)) / (0.5 * scene.pitch_mm));
-        }
-        z -= scene.zMm(t.top_centre_dz[k]) * (std::min(1.0, out) - 1.0);
+// The z (mm) of the highest upward-facing surface of `mesh` over the centre
+// of every sample (side side_mm, sample (i, j) centred at ((i + 0.5) side,
+// (j + 0.5) side)); NaN where no surface is. Walls (no upward normal) are
+// skipped: a vertical line meets them only along an edge that the tops
+// beside them share.
+std::vector<double> topsOver(const Mesh& mesh, double side_mm, int32_t cols, int32_t rows) {
+    std::vector<double> z(size_t(cols) * size_t(rows), std::nan(""));
+    for (const auto& t : mesh.triangles) {
+        const tsf::Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+        const double area2 = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);  // > 0: facing up
+        if (!(area2 > 0)) continue;
+        const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
+        const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+        const auto i0 = std::max<int32_t>(0, int32_t(std::ceil(lo_x / side_mm - 0.5)));
+        const auto i1 = std::min<int32_t>(cols - 1, int32_t(std::floor(hi_x / side_mm - 0.5)));
+        const auto j0 = std::max<int32_t>(0, int32_t(std::ceil(lo_y / side_mm - 0.5)));
+        const auto j1 = std::min<int32_t>(rows - 1, int32_t(std::floor(hi_y / side_mm - 0.5)));
+        for (int32_t j = j0; j <= j1; ++j)
+            for (int32_t i = i0; i <= i1; ++i) {
+                const double x = (i + 0.5) * side_mm, y = (j + 0.5) * side_mm;
+                // Barycentric weights; a point on an edge belongs to both
+                // triangles that share it (the same z on a continuous top).
+                const double wa = (b.x - x) * (c.y - y) - (b.y - y) * (c.x - x);
+                const double wb = (c.x - x) * (a.y - y) - (c.y - y) * (a.x - x);
+                const double wc = (a.x - x) * (b.y - y) - (a.y - y) * (b.x - x);
+                if (wa < 0 || wb < 0 || wc < 0) continue;
+                const double zz = (wa * a.z + wb * b.z + wc * c.z) / area2;
+                double& cell = z[size_t(j) * size_t(cols) + size_t(i)];
+                if (std::isnan(cell) || zz > cell) cell = zz;
+            }
     }
     return z;
 }
@@ -43,35 +58,31 @@ double shapedTopOffsetMm(const Scene& scene, size_t k, double dx, double dy) {
 }  // namespace
 
 HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
-    const double width_p = gridWidth(scene.grid, 1.0), depth_p = gridDepth(scene.grid, 1.0);  // in pitches
+    // What is felt is the model as meshed, every feature included (the
+    // notch, the triangle, tilted and dimpled tops, the legend's plate and
+    // dots, the scale): nothing about the model is decided again here.
+    const Mesh mesh = meshScene(scene);
+    const Bounds b = meshBounds(mesh);
+    const double width_p = std::max(gridWidth(scene.grid, 1.0), std::isfinite(b.max.x) ? b.max.x / scene.pitch_mm : 0.0);
+    const double depth_p = std::max(gridDepth(scene.grid, 1.0), std::isfinite(b.max.y) ? b.max.y / scene.pitch_mm : 0.0);
     int per_pitch = kReliefSamplesPerPitch;
     while (per_pitch > 1 && std::max(width_p, depth_p) * per_pitch > kMaxReliefSamples) --per_pitch;
     const double side_p = 1.0 / per_pitch;
     const auto cols = int32_t(std::max(1.0, std::ceil(width_p * per_pitch - 1e-9)));
     const auto rows = int32_t(std::max(1.0, std::ceil(depth_p * per_pitch - 1e-9)));
 
-    std::vector<float> kept_height(scene.keptCount());
-    for (size_t k = 0; k < kept_height.size(); ++k) kept_height[k] = float(printedHeightFraction(scene, k));
-
     HeightGrid g;
     g.cols = cols;
     g.rows = rows;
     g.heights.assign(size_t(cols) * size_t(rows), 0.0f);
-    for (int32_t j = 0; j < rows; ++j)
-        for (int32_t i = 0; i < cols; ++i) {
-            int32_t c = 0, r = 0;
-            if (!hexCellAt(scene.grid, (i + 0.5) * side_p, (j + 0.5) * side_p, c, r)) continue;
-            const int32_t k = scene.keptAt(c, r);
-            if (k < 0) continue;
-            g.at(i, j) = kept_height[size_t(k)];
-            if (!scene.shapes.empty() && scene.shapes.shaped[size_t(k)] && scene.mapping.max_height_mm > 0) {
-                const LatticePoint centre = hexCentre(scene.grid, c, r);
-                const double dx = ((i + 0.5) * side_p - latticeX(centre, 1.0)) * scene.pitch_mm;
-                const double dy = ((j + 0.5) * side_p - latticeY(centre, 1.0)) * scene.pitch_mm;
-                const double h = kept_height[size_t(k)] + shapedTopOffsetMm(scene, size_t(k), dx, dy) / scene.mapping.max_height_mm;
-                g.at(i, j) = float(std::clamp(h, -1.0, 2.0));
-            }
-        }
+    const double max_mm = scene.mapping.max_height_mm;
+    if (max_mm > 0) {
+        const int64_t zero = scene.params.bottom == Bottom::Mirrored ? scene.mirror_thickness_units : scene.floor_units;
+        const std::vector<double> tops = topsOver(mesh, side_p * scene.pitch_mm, cols, rows);
+        for (size_t n = 0; n < tops.size(); ++n)
+            if (!std::isnan(tops[n]))  // beside the model: the floor
+                g.heights[n] = float(std::clamp((tops[n] - scene.zMm(zero)) / max_mm, -1.0, 2.0));
+    }
     if (info) {
         info->samples_per_pitch = per_pitch;
         info->sample_mm = scene.pitch_mm * side_p;

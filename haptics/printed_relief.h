@@ -5,15 +5,16 @@
 //
 // Sampling: square samples of side pitch / samples_per_pitch over the
 // model's bounding box (Scene frame: x east, y north, origin at the
-// south-west corner; HeightGrid rows run south to north, so row j is
-// y = (j + 0.5) * side). Each sample takes the printed height of the kept
-// hexagonal cell it lies in - the snapped height of ValueMapping::heightMm,
-// divided by the height of the largest value (max_height_mm) - or 0, the
-// floor, outside every kept cell (culled cells, the bounding box's corners)
-// and for no-data cells, as printed. The felt surface is thus the pillars'
-// tops, their edges rounded only by the renderer's interpolation. A tilted
-// top (gen/model/features/tilt.h) is sampled on its plane and a structural cell's dimple as
-// its cone (gen/model/features/top_shapes.h), so they are felt as printed.
+// south-west corner of the grid; HeightGrid rows run south to north, so row
+// j is y = (j + 0.5) * side; the box reaches north over the legend's plate
+// and east over the tactile scale). Each sample is the height of the highest
+// top of the model's mesh (meshScene, gen/mesh/direct_mesher.h) above the
+// sample's centre, less the floor (flat) or the mirrored slab's top of a
+// zero, divided by the height of the largest value (max_height_mm); beside
+// the model it is 0, the floor. So everything printed is felt as printed,
+// from the one mesh: pillars and no-data pits, tilted tops and dimples, the
+// notch, the orientation triangle, the legend's dots, the scale's steps.
+// Nothing about the model is decided a second time here.
 //
 // With kReliefSamplesPerPitch samples per pitch, every tap the bicubic or
 // bilinear sampler takes around a cell's centre lies inside that cell (a

@@ -1,5 +1,6 @@
 // Feel what you print: the relief `tsf feel` renders is the relief `tsf gen`
 // prints - one value -> height rule, the same cells, the same footprint.
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -210,6 +211,40 @@ TEST(PrintedRelief, TiltedTopsAndDimplesAreFeltAsPrinted) {
     const int32_t ei = int32_t(std::lround(e.gi)), ej = int32_t(std::lround(e.gj));
     EXPECT_LT(h.at(ei, ej), h.at(ei + 2, ej));
     EXPECT_LT(h.at(ei, ej), 0.0);  // below the floor at the centre
+}
+
+TEST(PrintedRelief, TheMarksTheLegendAndTheScaleAreFeltAsPrinted) {
+    // A plateau wide enough for the triangle, with a braille legend and a scale.
+    SceneParams p = tsf::test::smallParams(Bottom::Flat, Cull::None);
+    p.pitch_mm = 4.0;
+    p.legend.title = "Hi";
+    p.scale.wanted = true;
+    p.marks = MarkParams{};
+    const Scene s = buildScene(fieldFromFunction(16, 26, [](int c, int r) { return c < 8 && r > 15 ? 10.0 : 2.0 + c % 3; }), p);
+    ASSERT_TRUE(s.marks.triangle);
+    ASSERT_TRUE(s.legend);
+    ASSERT_TRUE(s.scale);
+    ReliefInfo info;
+    const HeightGrid g = printedRelief(s, &info);
+    const double side = info.sample_mm, max_mm = s.mapping.max_height_mm;
+    auto feltAt = [&](double x_mm, double y_mm) {
+        const auto i = int32_t(std::floor(x_mm / side)), j = int32_t(std::floor(y_mm / side));
+        EXPECT_TRUE(i >= 0 && i < g.cols && j >= 0 && j < g.rows) << x_mm << ", " << y_mm;
+        return double(g.at(std::clamp(i, 0, g.cols - 1), std::clamp(j, 0, g.rows - 1))) * max_mm;  // mm above the floor
+    };
+    // The triangle stands on its region by its own height, felt where it is.
+    const OrientationTriangle& t = *s.marks.triangle;
+    const tsf::Vec3 centroid = s.point(PlanarPoint{(t.corner.i + t.east.i + t.north.i) / 3, (t.corner.j + t.east.j + t.north.j) / 3}, 0);
+    const double region = s.zMm(s.top[size_t(t.anchor)] - s.floor_units);
+    EXPECT_NEAR(feltAt(centroid.x, centroid.y), region + s.zMm(t.raise_units), 1e-4);
+    // Every braille dot stands above the plate (the floor): felt near its apex.
+    for (const LegendDot& d : s.legend->layout.dots)
+        EXPECT_GT(feltAt(d.x_mm + s.legend->x0_mm, d.y_mm + s.legend->y0_mm), 0.5 * s.legend->layout.standard.dot_height_mm);
+    // Each tread of the scale at its height above the floor.
+    const SceneScale& sc = *s.scale;
+    for (const ScaleStep& st : sc.steps)
+        EXPECT_NEAR(feltAt(0.5 * (sc.xs_mm + sc.x1_mm), 0.5 * (st.y_south_mm + st.y_north_mm)),
+                    s.zMm(st.top_units - s.floor_units), 1e-4);
 }
 
 }  // namespace
