@@ -21,6 +21,7 @@
 #include "gen/scad/scad_emitter.h"
 #include "gen/scad/scad_render_cost.h"
 #include "gen/model/scene_json.h"
+#include "pipeline/verified_model.h"
 #include "gen/util/file_bytes.h"
 #include "gen/util/output_paths.h"
 #include "runners/prusa_slicer/print_check.h"
@@ -128,11 +129,6 @@ void announceLargeInput(const std::string& input, bool progress) {
     std::fprintf(stderr, "tsf: reading %s (%lld MiB), this may take a while\n", input.c_str(),
                  static_cast<long long>(bytes >> 20));
 }
-// Above this many triangles the self-check skips CGAL's self-intersection test
-// and the printability rays (minutes at 10^7 triangles); the mesher builds no
-// intersections by construction and the test suite checks that on large
-// grids. --verify-full runs everything.
-constexpr size_t kQuickVerifyTriangles = 3'000'000;
 
 // One line per verifier outcome for the summary; failures are listed fully.
 std::string verifyLines(const VerifyReport& r) {
@@ -223,68 +219,44 @@ void runGen(GenCommandOptions o) {
     summary.scene = &scene;
     if (const std::string note = cellNozzleNote(scene.pitch_mm, o.printer); !note.empty())
         summary.printer_notes.push_back(note);
-    timer.begin("meshing");
-    const Mesh mesh = meshScene(scene);
-    summary.mesh = &mesh;
-    checkFitsBed(mesh, scene.pitch_mm, o.printer);
-
-    std::optional<VerifyReport> report;
-    if (!o.no_verify) {
-        timer.begin("verifying");
-        VerifyOptions vo;
-        vo.name = o.output.empty() ? o.scad : o.output;
-        if (o.printer.nozzle_mm > 0) vo.nozzle_mm = o.printer.nozzle_mm;
-        if (o.printer.layer_mm > 0) vo.layer_mm = o.printer.layer_mm;
-        if (!o.verify_full && mesh.triangleCount() > kQuickVerifyTriangles) {
-            vo.self_intersections = false;
-            vo.printability = false;
+    ModelRequest rq;
+    rq.verify = !o.no_verify;
+    rq.verify_full = o.verify_full;
+    rq.parts = o.parts;
+    rq.verify_options.name = o.output.empty() ? o.scad : o.output;
+    if (o.printer.nozzle_mm > 0) rq.verify_options.nozzle_mm = o.printer.nozzle_mm;
+    if (o.printer.layer_mm > 0) rq.verify_options.layer_mm = o.printer.layer_mm;
+    rq.on_mesh = [&](const Mesh& mesh) {
+        checkFitsBed(mesh, scene.pitch_mm, o.printer);
+        if (rq.verify && !rq.verify_full && mesh.triangleCount() > kQuickVerifyTriangles)
             std::fprintf(stderr, "tsf: %zu triangles: verifying topology and heights only (--verify-full for all checks)\n",
                          mesh.triangleCount());
-        }
-        report = verifyModel(mesh, &scene, vo);
-        summary.verify = toJson(*report);
-        summary.verify_text = verifyLines(*report);
-        if (!scene.halves) summary.supports_text = supportsText(*report);
-        if (!report->passed()) {
-            // A model that fails its own checks is a bug in tsf: never hand it to a printer.
-            timer.end();
-            std::cerr << formatReport(*report);
-            std::cerr << "tsf: the generated model failed verification; nothing was written. "
-                         "Please report this with the input file.\n";
-            throw CLI::RuntimeError(kExitCheckFailed);
-        }
+    };
+    VerifiedModel made;
+    try {
+        made = makeVerifiedModel(scene, rq, [&](const std::string& stage) { timer.begin(stage.c_str()); });
+    } catch (const ModelVerificationFailed& e) {
+        // A model that fails its own checks is a bug in tsf: never hand it to a printer.
+        timer.end();
+        std::cerr << e.report();
+        std::cerr << "tsf: the " << e.piece() << " failed verification; nothing was written. "
+                     "Please report this with the input file.\n";
+        throw CLI::RuntimeError(kExitCheckFailed);
     }
-    std::vector<MeshPart> parts;
-    if (o.parts) {
-        timer.begin("meshing parts");
-        parts = meshSceneParts(scene);
-        if (!o.no_verify) {
-            // Each part alone and the parts together; the heights were read back from the one-solid mesh above.
-            timer.begin("verifying parts");
-            VerifyOptions vo;
-            vo.name = o.output;
-            vo.printability = false;
-            const PartsVerifyReport pr = verifyParts(parts, nullptr, vo);
-            summary.verify["parts"] = toJson(pr);
-            summary.verify_text += partsLines(pr);
-            if (!pr.passed()) {
-                timer.end();
-                std::cerr << formatPartsReport(pr);
-                std::cerr << "tsf: the model's parts failed verification; nothing was written. "
-                             "Please report this with the input file.\n";
-                throw CLI::RuntimeError(kExitCheckFailed);
-            }
-        }
+    const Mesh& mesh = made.mesh;
+    summary.mesh = &mesh;
+    if (made.report) {
+        summary.verify = toJson(*made.report);
+        summary.verify_text = verifyLines(*made.report);
+        if (!scene.halves) summary.supports_text = supportsText(*made.report);
     }
-
-    std::optional<HalvesPieces> halves;
-    if (scene.halves) {
-        timer.begin("halves");
-        VerifyOptions vo;
-        if (o.printer.nozzle_mm > 0) vo.nozzle_mm = o.printer.nozzle_mm;
-        if (o.printer.layer_mm > 0) vo.layer_mm = o.printer.layer_mm;
-        halves = makeHalves(scene, mesh, !o.no_verify, vo, summary);
+    const std::vector<MeshPart>& parts = made.parts;
+    if (made.parts_report) {
+        summary.verify["parts"] = toJson(*made.parts_report);
+        summary.verify_text += partsLines(*made.parts_report);
     }
+    const std::optional<VerifiedHalves>& halves = made.halves;
+    if (halves) summarizeHalves(*halves, summary);
     if (!o.output.empty()) {
         timer.begin("writing");
         MeshWriteOptions wo;

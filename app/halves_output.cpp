@@ -6,31 +6,11 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "gen/mesh/halves_mesh.h"
-#include "verify/halves_check.h"
-#include "verify/overhang.h"
 #include "gen/model/features/halves.h"
 #include "gen/util/number_format.h"
 
 namespace tsf::cli {
 namespace {
-
-// A piece that fails its own checks is a bug in tsf: never hand it to a printer.
-[[noreturn]] void failPiece(const VerifyReport& r, const std::string& what) {
-    std::cerr << formatReport(r);
-    std::cerr << "tsf: the " << what << " failed verification; nothing was written. Please report this with the input file.\n";
-    throw CLI::RuntimeError(kExitCheckFailed);
-}
-
-// Checks one piece as it prints: the verifier's checks, and no overhang at all.
-nlohmann::json verifyPiece(const Mesh& mesh, const Scene* scene, VerifyOptions vo, const std::string& name,
-                           const std::string& what) {
-    vo.name = name;
-    const VerifyReport r = verifyModel(mesh, scene, vo);
-    const Check* over = r.find("overhang");
-    if (!r.passed() || (over && over->status != CheckStatus::Pass)) failPiece(r, what);
-    return toJson(r);
-}
 
 Mesh append(Mesh m, const Mesh& b, double dx) {
     const uint32_t base = uint32_t(m.positions.size());
@@ -47,23 +27,16 @@ HalvesPaths halvesPaths(const std::string& output) {
     return {stem + "-upper" + ext, stem + "-lower" + ext, stem + "-pins" + ext};
 }
 
-HalvesPieces makeHalves(const Scene& scene, const Mesh& whole, bool verify, VerifyOptions vo, GenSummary& summary) {
-    HalvesPieces p;
-    const Scene upper_scene = halfScene(scene, HalfKind::Upper), lower_scene = halfScene(scene, HalfKind::Lower);
-    p.upper = meshHalf(scene, HalfKind::Upper);
-    p.lower = meshHalf(scene, HalfKind::Lower);
-    p.pins = pinsMesh(scene.halves->pins);
+void summarizeHalves(const VerifiedHalves& p, GenSummary& summary) {
     nlohmann::json j;
     std::string text;
-    if (verify) {
-        // The lower half is read back in halfScene's frame (its print turned back, a rigid motion away).
-        j["upper"] = verifyPiece(p.upper, &upper_scene, vo, "upper half", "upper half");
-        j["lower"] = verifyPiece(turnLowerHalf(p.lower, scene), &lower_scene, vo, "lower half", "lower half");
-        j["pin"] = verifyPiece(pinMesh(scene.halves->pins, 0, 0), nullptr, vo, "pin", "pin");
-        const HalvesCheckResult pair = checkHalves(scene, whole, p.upper, p.lower);
+    if (p.pair) {
+        j["upper"] = toJson(*p.upper_report);
+        j["lower"] = toJson(*p.lower_report);
+        j["pin"] = toJson(*p.pin_report);
         nlohmann::json checks = nlohmann::json::array();
-        for (const Check& c : pair.checks) checks.push_back({{"id", c.id}, {"status", toString(c.status)}, {"note", c.note}});
-        const HalvesJoinFigures& f = pair.figures;
+        for (const Check& c : p.pair->checks) checks.push_back({{"id", c.id}, {"status", toString(c.status)}, {"note", c.note}});
+        const HalvesJoinFigures& f = p.pair->figures;
         j["pair"] = {{"checks", checks},
                      {"upper_volume_mm3", f.upper_volume_mm3},
                      {"lower_volume_mm3", f.lower_volume_mm3},
@@ -72,12 +45,6 @@ HalvesPieces makeHalves(const Scene& scene, const Mesh& whole, bool verify, Veri
                      {"volume_error_mm3", f.volume_error_mm3},
                      {"max_distance_mm", f.max_distance_mm},
                      {"samples", f.samples}};
-        if (!pair.passed()) {
-            for (const Check& c : pair.checks) std::cerr << toString(c.status) << "  " << c.title << ": " << c.note << "\n";
-            std::cerr << "tsf: the halves failed verification as a pair; nothing was written. Please report this with "
-                         "the input file.\n";
-            throw CLI::RuntimeError(kExitCheckFailed);
-        }
         text += "  halves    each verified (closed, manifold, outward, heights read back, nothing overhangs: no "
                 "supports); joined they are the whole model less the pin holes (volume within " +
                 formatSignificant(std::fabs(f.volume_error_mm3), 2) + " mm^3, surface within " + formatSignificant(f.max_distance_mm, 2) +
@@ -93,10 +60,9 @@ HalvesPieces makeHalves(const Scene& scene, const Mesh& whole, bool verify, Veri
     j["pins_volume_mm3"] = signedVolume(p.pins);
     summary.halves = j;
     summary.halves_text = text;
-    return p;
 }
 
-void writeHalves(const HalvesPieces& p, const std::string& output, const MeshWriteOptions& wo, GenSummary& summary) {
+void writeHalves(const VerifiedHalves& p, const std::string& output, const MeshWriteOptions& wo, GenSummary& summary) {
     const HalvesPaths paths = halvesPaths(output);
     writeMesh(p.upper, paths.upper, wo);
     writeMesh(p.lower, paths.lower, wo);
@@ -107,7 +73,7 @@ void writeHalves(const HalvesPieces& p, const std::string& output, const MeshWri
     summary.halves["files"] = {{"upper", paths.upper}, {"lower", paths.lower}, {"pins", paths.pins}};
 }
 
-Mesh halvesSideBySide(const HalvesPieces& p) {
+Mesh halvesSideBySide(const VerifiedHalves& p) {
     constexpr double kGapMm = 10;
     const Bounds bu = meshBounds(p.upper), bl = meshBounds(p.lower);
     Mesh m = append({}, p.upper, 0);

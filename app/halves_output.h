@@ -8,6 +8,7 @@
 #include "gen/geometry/mesh.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/model/scene.h"
+#include "pipeline/verified_model.h"
 #include "verify/verify_model.h"
 
 namespace tsf::cli {
@@ -18,23 +19,15 @@ struct HalvesPaths {
 };
 HalvesPaths halvesPaths(const std::string& output);
 
-/// The printed pieces: each half flat side down, the pins standing.
-struct HalvesPieces {
-    Mesh upper, lower, pins;
-};
-
-/// Meshes the pieces of `scene` (which has halves) and, with `verify`,
-/// checks each half alone (verifyModel against its halfScene, with no
-/// overhang allowed), each pin, and the pair against `whole`
-/// (verify/halves_check.h). Fills summary.halves / halves_text. Throws
-/// CLI::RuntimeError(kExitCheckFailed) when a check fails (a bug in tsf).
-HalvesPieces makeHalves(const Scene& scene, const Mesh& whole, bool verify, VerifyOptions vo, GenSummary& summary);
+/// The halves' figures and checks (pipeline/verified_model.h makes and
+/// verifies the pieces) for the summary: summary.halves and halves_text.
+void summarizeHalves(const VerifiedHalves& halves, GenSummary& summary);
 
 /// Writes the pieces to halvesPaths(output) and lists them in the summary.
-void writeHalves(const HalvesPieces& pieces, const std::string& output, const MeshWriteOptions& wo, GenSummary& summary);
+void writeHalves(const VerifiedHalves& pieces, const std::string& output, const MeshWriteOptions& wo, GenSummary& summary);
 
 /// The pieces side by side (upper, lower, pins along x, 10 mm apart), for the preview.
-Mesh halvesSideBySide(const HalvesPieces& pieces);
+Mesh halvesSideBySide(const VerifiedHalves& pieces);
 
 /// The summary line for a one-piece mirrored model: the supports its
 /// underside needs (from the verifier's overhang figures); "" when none.

@@ -12,6 +12,7 @@
 //   scad      gen/scad/: the OpenSCAD emitter
 //   verify    verify/: the self-check of a mesh, and against a Scene
 //   runners   runners/: external tools (OpenSCAD engines, PrusaSlicer)
+//   pipeline  pipeline/: library entry points (a verified model from a Scene)
 //   haptics   haptics/ (beside verify and runners, after gen)
 //   app       app/: main, exit codes, every subcommand
 #include <gtest/gtest.h>
@@ -31,7 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-enum class Layer { Base, Field, Readers, Geometry, Model, Mesh, MeshIo, Scad, Verify, Runners, Haptics, App, Tests, Unknown };
+enum class Layer { Base, Field, Readers, Geometry, Model, Mesh, MeshIo, Scad, Verify, Runners, Pipeline, Haptics, App, Tests, Unknown };
 
 const char* name(Layer l) {
     switch (l) {
@@ -45,6 +46,7 @@ const char* name(Layer l) {
         case Layer::Scad: return "scad (gen/scad)";
         case Layer::Verify: return "verify";
         case Layer::Runners: return "runners";
+        case Layer::Pipeline: return "pipeline";
         case Layer::Haptics: return "haptics";
         case Layer::App: return "app";
         case Layer::Tests: return "tests and bench";
@@ -60,7 +62,8 @@ Layer layerOf(const std::string& path) {
         {"gen/util/", Layer::Base},        {"gen/field/", Layer::Field}, {"gen/readers/", Layer::Readers},
         {"gen/geometry/", Layer::Geometry}, {"gen/model/", Layer::Model}, {"gen/mesh/", Layer::Mesh},
         {"gen/mesh_io/", Layer::MeshIo},   {"gen/scad/", Layer::Scad},   {"verify/", Layer::Verify},
-        {"runners/", Layer::Runners},      {"haptics/", Layer::Haptics}, {"app/", Layer::App},
+        {"runners/", Layer::Runners},      {"pipeline/", Layer::Pipeline}, {"haptics/", Layer::Haptics},
+        {"app/", Layer::App},
         {"tests/", Layer::Tests},          {"bench/", Layer::Tests},
     };
     for (const auto& [prefix, layer] : prefixes)
@@ -73,7 +76,7 @@ const std::map<Layer, std::set<Layer>> kMayInclude = [] {
     using L = Layer;
     const std::set<L> gen = {L::Base, L::Field, L::Readers, L::Geometry, L::Model, L::Mesh, L::MeshIo, L::Scad};
     std::set<L> all_libraries = gen;
-    all_libraries.insert({L::Verify, L::Runners, L::Haptics});
+    all_libraries.insert({L::Verify, L::Runners, L::Pipeline, L::Haptics});
     return std::map<L, std::set<L>>{
         {L::Base, {}},
         {L::Field, {L::Base}},
@@ -85,6 +88,7 @@ const std::map<Layer, std::set<Layer>> kMayInclude = [] {
         {L::Scad, {L::Base, L::Field, L::Geometry, L::Model, L::Mesh, L::MeshIo}},
         {L::Verify, gen},
         {L::Runners, [&] { std::set<L> s = gen; s.insert(L::Verify); return s; }()},
+        {L::Pipeline, [&] { std::set<L> s = gen; s.insert({L::Verify, L::Haptics}); return s; }()},
         {L::Haptics, gen},
         {L::App, all_libraries},
         {L::Tests, all_libraries},  // tests run the application as a process, never include it
@@ -102,7 +106,7 @@ std::vector<Include> includes() {
     const fs::path root(TSF_SOURCE_DIR);
     const std::regex directive(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
     std::vector<Include> out;
-    for (const char* top : {"gen", "verify", "runners", "haptics", "app", "tests", "bench"}) {
+    for (const char* top : {"gen", "verify", "runners", "pipeline", "haptics", "app", "tests", "bench"}) {
         for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
             const std::string rel = fs::relative(entry.path(), root).string();
             if (rel.find("node_modules") != std::string::npos) continue;
@@ -149,7 +153,7 @@ TEST(Layering, NoFolderIsNamedCli) {
     // The commands live in app/ only; a cli/ folder next to a library
     // would be a second application folder.
     const fs::path root(TSF_SOURCE_DIR);
-    for (const char* top : {"gen", "verify", "runners", "haptics", "app"})
+    for (const char* top : {"gen", "verify", "runners", "pipeline", "haptics", "app"})
         for (const auto& entry : fs::recursive_directory_iterator(root / top))
             EXPECT_FALSE(entry.is_directory() && entry.path().filename() == "cli") << entry.path();
 }
@@ -223,7 +227,7 @@ TEST(Layering, NoFolderHoldsMoreThan24Modules) {
     // the flow; split it into subfolders that do.
     const fs::path root(TSF_SOURCE_DIR);
     std::map<std::string, std::set<std::string>> per_folder;
-    for (const char* top : {"gen", "verify", "runners", "haptics", "app"})
+    for (const char* top : {"gen", "verify", "runners", "pipeline", "haptics", "app"})
         for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
             const std::string ext = entry.path().extension().string();
             if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;

@@ -1,0 +1,89 @@
+#include "pipeline/verified_model.h"
+
+#include "gen/mesh/direct_mesher.h"
+#include "gen/mesh/halves_mesh.h"
+#include "gen/mesh/scene_parts.h"
+#include "gen/model/features/halves.h"
+
+namespace tsf {
+namespace {
+
+void say(const std::function<void(const std::string&)>& progress, const char* stage) {
+    if (progress) progress(stage);
+}
+
+// One piece as it prints: the verifier's checks and no overhang at all (a
+// half or a pin needs no supports).
+VerifyReport verifyPiece(const Mesh& mesh, const Scene* scene, VerifyOptions vo, const std::string& name) {
+    vo.name = name;
+    VerifyReport r = verifyModel(mesh, scene, vo);
+    const Check* over = r.find("overhang");
+    if (!r.passed() || (over && over->status != CheckStatus::Pass)) throw ModelVerificationFailed(name, formatReport(r));
+    return r;
+}
+
+std::string pairText(const HalvesCheckResult& pair) {
+    std::string text;
+    for (const Check& c : pair.checks) text += std::string(toString(c.status)) + "  " + c.title + ": " + c.note + "\n";
+    return text;
+}
+
+VerifiedHalves makeHalves(const Scene& scene, const Mesh& whole, const ModelRequest& rq) {
+    VerifiedHalves h;
+    h.upper = meshHalf(scene, HalfKind::Upper);
+    h.lower = meshHalf(scene, HalfKind::Lower);
+    h.pins = pinsMesh(scene.halves->pins);
+    if (!rq.verify) return h;
+    VerifyOptions vo = rq.verify_options;
+    vo.self_intersections = true;
+    vo.printability = true;
+    const Scene upper_scene = halfScene(scene, HalfKind::Upper), lower_scene = halfScene(scene, HalfKind::Lower);
+    h.upper_report = verifyPiece(h.upper, &upper_scene, vo, "upper half");
+    // The lower half is read back in halfScene's frame (its print turned back, a rigid motion away).
+    h.lower_report = verifyPiece(turnLowerHalf(h.lower, scene), &lower_scene, vo, "lower half");
+    h.pin_report = verifyPiece(pinMesh(scene.halves->pins, 0, 0), nullptr, vo, "pin");
+    h.pair = checkHalves(scene, whole, h.upper, h.lower);
+    if (!h.pair->passed()) throw ModelVerificationFailed("halves as a pair", pairText(*h.pair));
+    return h;
+}
+
+}  // namespace
+
+VerifiedModel makeVerifiedModel(const Scene& scene, const ModelRequest& rq,
+                                const std::function<void(const std::string&)>& progress) {
+    VerifiedModel m;
+    say(progress, "meshing");
+    m.mesh = meshScene(scene);
+    if (rq.on_mesh) rq.on_mesh(m.mesh);
+    if (rq.verify) {
+        say(progress, "verifying");
+        VerifyOptions vo = rq.verify_options;
+        if (!rq.verify_full && m.mesh.triangleCount() > kQuickVerifyTriangles) {
+            vo.self_intersections = false;
+            vo.printability = false;
+            m.quick = true;
+        }
+        m.report = verifyModel(m.mesh, &scene, vo);
+        if (!m.report->passed()) throw ModelVerificationFailed("generated model", formatReport(*m.report));
+    }
+    if (rq.parts) {
+        say(progress, "meshing parts");
+        m.parts = meshSceneParts(scene);
+        if (rq.verify) {
+            // Each part alone and the parts together; the heights were read
+            // back from the one-solid mesh above.
+            say(progress, "verifying parts");
+            VerifyOptions vo = rq.verify_options;
+            vo.printability = false;
+            m.parts_report = verifyParts(m.parts, nullptr, vo);
+            if (!m.parts_report->passed()) throw ModelVerificationFailed("model's parts", formatPartsReport(*m.parts_report));
+        }
+    }
+    if (scene.halves) {
+        say(progress, "halves");
+        m.halves = makeHalves(scene, m.mesh, rq);
+    }
+    return m;
+}
+
+}  // namespace tsf
