@@ -132,6 +132,22 @@ std::string withoutPrefix(const std::string& what) {
 }  // namespace
 
 namespace {
+// How a shaped cell is drawn (version 5): the planar ids of its fan's centre
+// and of the points where its edges cross a neighbour's tilted top.
+json fanJson(const Scene& s, size_t k) {
+    const TopShapes& t = s.shapes;
+    const auto crossings = [&](const std::vector<int64_t>& all) {
+        return std::vector<int64_t>(all.begin() + std::ptrdiff_t(kHexCorners * k),
+                                    all.begin() + std::ptrdiff_t(kHexCorners * (k + 1)));
+    };
+    json f = {{"centre_top", t.centre_top_id[k]}, {"crossings_top", crossings(t.crossing_top)}};
+    if (s.params.bottom == Bottom::Mirrored) {
+        f["centre_bottom"] = t.centre_bottom_id[k];
+        f["crossings_bottom"] = crossings(t.crossing_bottom);
+    }
+    return f;
+}
+
 json cellJson(const Scene& s, size_t k) {
     json c = {{"col", s.col[k]}, {"row", s.row[k]}, {"value", numberOrNull(s.value[k])}, {"top", s.top[k]},
               {"bottom", s.bottom[k]}};
@@ -139,6 +155,7 @@ json cellJson(const Scene& s, size_t k) {
     if (t.empty()) return c;
     bool any = t.top_centre_dz[k] != 0 || t.structural[k];
     for (int32_t dz : t.top_dz[k]) any = any || dz != 0;
+    if (!t.shaped.empty() && t.shaped[k]) c["fan"] = fanJson(s, k);
     if (!any) return c;
     json shape = {{"top_dz", t.top_dz[k]}, {"centre_dz", t.top_centre_dz[k]}, {"slope", {t.slope_x[k], t.slope_y[k]}},
                   {"structural", bool(t.structural[k])}};
@@ -150,13 +167,44 @@ json cellJson(const Scene& s, size_t k) {
     return c;
 }
 
+
+json pointsJson(const std::vector<PlanarPoint>& points) {
+    json a = json::array();
+    for (const PlanarPoint& p : points) a.push_back({p.i, p.j});
+    return a;
+}
+
+// The planar faces the marks need, as built (version 5): read back as they
+// are, so reading a sidecar triangulates nothing.
+json facesJson(const Scene& s) {
+    if (s.faces.empty()) return nullptr;
+    json faces = json::array();
+    for (const PlanarFace& f : s.faces.faces) {
+        json across = json::array();
+        for (const auto& ring : f.across) {
+            json r = json::array();
+            for (const Across& a : ring) r.push_back({int(a.kind), a.index});
+            across.push_back(std::move(r));
+        }
+        faces.push_back({{"anchor", f.anchor},
+                         {"raise_units", f.raise_units},
+                         {"cells", f.cells},
+                         {"rings", f.rings},
+                         {"across", across},
+                         {"triangles", f.triangles},
+                         {"read_point", f.read_point ? json{f.read_point->i, f.read_point->j} : json(nullptr)}});
+    }
+    return {{"extra", pointsJson(s.faces.extra)}, {"faces", faces}};
+}
+
 json shapesJson(const Scene& s) {
     const TopShapes& t = s.shapes;
     if (t.empty()) return nullptr;
     return {{"tilt", toString(s.params.tilt)}, {"steepness", s.params.steepness},
             {"structural_texture", s.params.structural_texture}, {"cells_tilted", t.cells_tilted},
             {"cells_clamped", t.cells_clamped}, {"cells_clamped_level", t.cells_flat_clamped},
-            {"cells_textured", t.cells_textured}, {"dimple_units", t.dimple_units}};
+            {"cells_textured", t.cells_textured}, {"dimple_units", t.dimple_units}, {"first_id", t.first_id},
+            {"extra", pointsJson(t.extra)}, {"extra_z", t.extra_z}};
 }
 
 json pointJson(const PlanarPoint& p) { return json::array({p.i, p.j}); }
@@ -427,6 +475,7 @@ json sceneHeadJson(const Scene& s) {
         {"nodata_pit_units", s.nodata_pit_units},
         {"one_to_one", s.one_to_one},
         {"marks", marksJson(s.marks)},
+        {"faces", facesJson(s)},
         {"shapes", shapesJson(s)},
         // The braille legend and the tactile scale as placed: read back as recorded.
         {"legend", s.legend ? legendJson(s) : json(nullptr)},
@@ -459,8 +508,126 @@ std::array<int32_t, 6> getCorners(const json& obj, const std::string& path, cons
     return out;
 }
 
-// Shaped tops (version 3): per-cell offsets, then the geometry made from them.
-void readShapes(const json& j, const json& cells, Scene& s) {
+std::vector<PlanarPoint> pointsFrom(const json& obj, const std::string& path, const char* key) {
+    const json& a = getArray(obj, path, key);
+    const std::string p = join(path, key);
+    std::vector<PlanarPoint> out;
+    out.reserve(a.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        const std::string q = p + "[" + std::to_string(i) + "]";
+        if (!a[i].is_array() || a[i].size() != 2) fail(q, "expected [i, j]");
+        const PlanarPoint pt{toNumber(a[i][0], q + "[0]"), toNumber(a[i][1], q + "[1]")};
+        if (!std::isfinite(pt.i) || !std::isfinite(pt.j)) fail(q, "expected finite numbers");
+        out.push_back(pt);
+    }
+    return out;
+}
+
+// A list of integers each in [lo, hi).
+std::vector<int64_t> idsFrom(const json& a, const std::string& path, int64_t lo, int64_t hi, const char* what) {
+    if (!a.is_array()) fail(path, std::string("expected an array, found ") + typeName(a));
+    std::vector<int64_t> out;
+    out.reserve(a.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        const std::string q = path + "[" + std::to_string(i) + "]";
+        const int64_t v = toInt(a[i], q);
+        if (v < lo || v >= hi) fail(q, std::string("is not ") + what);
+        out.push_back(v);
+    }
+    return out;
+}
+
+// The marks' planar faces as recorded (version 5); every id, cell and
+// neighbour is checked, so a drawn face never reaches outside the Scene.
+void readFaces(const json& j, Scene& s) {
+    s.faces = {};
+    s.drawn_by_face.assign(s.keptCount(), 0);
+    if (j.is_null()) return;
+    const std::string fp = "faces";
+    if (!j.is_object()) fail(fp, std::string("expected an object or null, found ") + typeName(j));
+    s.faces.extra = pointsFrom(j, fp, "extra");
+    const int64_t ids = latticeVertexIdCount(s.grid) + int64_t(s.faces.extra.size());
+    const int64_t n = int64_t(s.keptCount());
+    const json& faces = getArray(j, fp, "faces");
+    for (size_t i = 0; i < faces.size(); ++i) {
+        const std::string p = fp + ".faces[" + std::to_string(i) + "]";
+        const json& f = faces[i];
+        PlanarFace face;
+        face.anchor = getInt32(f, p, "anchor", 0, std::max<int64_t>(0, n - 1));
+        if (n == 0) fail(join(p, "anchor"), "is not the index of a cell");
+        face.raise_units = getInt(f, p, "raise_units");
+        if (face.raise_units < 0 || face.raise_units > (int64_t(1) << 40)) fail(join(p, "raise_units"), "out of range");
+        for (const int64_t k : idsFrom(member(f, p, "cells"), join(p, "cells"), 0, n, "the index of a cell"))
+            face.cells.push_back(int32_t(k));
+        const json& rings = getArray(f, p, "rings");
+        const json& across = getArray(f, p, "across");
+        if (rings.empty()) fail(join(p, "rings"), "a face has at least one ring");
+        if (across.size() != rings.size()) fail(join(p, "across"), "expected one list per ring");
+        for (size_t r = 0; r < rings.size(); ++r) {
+            const std::string rp = join(p, "rings") + "[" + std::to_string(r) + "]";
+            face.rings.push_back(idsFrom(rings[r], rp, 0, ids, "a planar vertex id"));
+            if (face.rings.back().size() < 3) fail(rp, "a ring has at least 3 vertices");
+            const std::string ap = join(p, "across") + "[" + std::to_string(r) + "]";
+            if (!across[r].is_array() || across[r].size() != face.rings.back().size())
+                fail(ap, "expected one entry per edge of the ring");
+            std::vector<Across> ring_across;
+            for (size_t e = 0; e < across[r].size(); ++e) {
+                const std::string ep = ap + "[" + std::to_string(e) + "]";
+                const json& a = across[r][e];
+                if (!a.is_array() || a.size() != 2) fail(ep, "expected [kind, index]");
+                const int64_t kind = toInt(a[0], ep + "[0]"), index = toInt(a[1], ep + "[1]");
+                Across x;
+                if (kind == int(Across::Kind::Outside) && index == -1) x.kind = Across::Kind::Outside;
+                else if (kind == int(Across::Kind::Face) && index >= 0 && index < int64_t(faces.size())) x.kind = Across::Kind::Face;
+                else if (kind == int(Across::Kind::Cell) && index >= 0 && index < n) x.kind = Across::Kind::Cell;
+                else fail(ep, "expected [0, -1] (outside), [1, face] or [2, cell]");
+                x.index = int32_t(index);
+                ring_across.push_back(x);
+            }
+            face.across.push_back(std::move(ring_across));
+        }
+        const json& tris = getArray(f, p, "triangles");
+        for (size_t t = 0; t < tris.size(); ++t) {
+            const std::string tp = join(p, "triangles") + "[" + std::to_string(t) + "]";
+            const std::vector<int64_t> v = idsFrom(tris[t], tp, 0, ids, "a planar vertex id");
+            if (v.size() != 3) fail(tp, "expected three vertex ids");
+            face.triangles.push_back({v[0], v[1], v[2]});
+        }
+        if (face.triangles.empty()) fail(join(p, "triangles"), "a face has at least one triangle");
+        const json& rp = member(f, p, "read_point");
+        if (!rp.is_null()) face.read_point = pointFrom(f, p, "read_point");
+        for (const int32_t k : face.cells) s.drawn_by_face[size_t(k)] = 1;
+        s.faces.faces.push_back(std::move(face));
+    }
+}
+
+// A shaped cell's fan (version 5), as fanJson wrote it.
+void readFan(const json& f, const std::string& p, size_t k, int64_t first, int64_t last, bool mirrored, TopShapes& t) {
+    auto id = [&](const char* key) {
+        const int64_t v = getInt(f, p, key);
+        if (v < first || v >= last) fail(join(p, key), "is not the id of a fan centre");
+        return v;
+    };
+    auto crossings = [&](const char* key, std::vector<int64_t>& into) {
+        const std::vector<int64_t> v = idsFrom(member(f, p, key), join(p, key), -1, last, "a crossing id or -1");
+        if (v.size() != size_t(kHexCorners)) fail(join(p, key), "expected 6 crossing ids");
+        for (size_t e = 0; e < v.size(); ++e) {
+            if (v[e] != -1 && v[e] < first) fail(join(p, key), "is not a crossing id");
+            into[size_t(kHexCorners) * k + e] = v[e];
+        }
+    };
+    t.shaped[k] = 1;
+    t.centre_top_id[k] = id("centre_top");
+    crossings("crossings_top", t.crossing_top);
+    if (mirrored) {
+        t.centre_bottom_id[k] = id("centre_bottom");
+        crossings("crossings_bottom", t.crossing_bottom);
+    }
+}
+
+// Shaped tops (version 3): per-cell offsets, then the geometry made from them
+// (version 5: the geometry as recorded).
+void readShapes(const json& j, const json& cells, Scene& s, int64_t version) {
     const auto it = j.find("shapes");
     if (it == j.end() || it->is_null()) return;
     const json& h = *it;
@@ -495,7 +662,28 @@ void readShapes(const json& j, const json& cells, Scene& s) {
         if (!st.is_boolean()) fail(cp + ".structural", "expected true or false");
         t.structural[k] = st.get<bool>();
     }
-    buildTopShapeGeometry(s);
+    if (version < 5) {
+        buildTopShapeGeometry(s);  // older sidecars: made again from the offsets
+        return;
+    }
+    t.first_id = getInt(h, "shapes", "first_id");
+    if (t.first_id != latticeVertexIdCount(s.grid) + int64_t(s.faces.extra.size()))
+        fail("shapes.first_id", "must follow the lattice's and the faces' ids");
+    t.extra = pointsFrom(h, "shapes", "extra");
+    const std::vector<int64_t> z = idsFrom(member(h, "shapes", "extra_z"), "shapes.extra_z", -(int64_t(1) << 50),
+                                           int64_t(1) << 50, "a height in z units");
+    if (z.size() != t.extra.size()) fail("shapes.extra_z", "expected one height per extra point");
+    t.extra_z = z;
+    const int64_t last = t.first_id + int64_t(t.extra.size());
+    t.shaped.assign(n, 0);
+    t.centre_top_id.assign(n, -1);
+    t.centre_bottom_id.assign(n, -1);
+    t.crossing_top.assign(size_t(kHexCorners) * n, -1);
+    t.crossing_bottom.assign(size_t(kHexCorners) * n, -1);
+    for (size_t k = 0; k < n; ++k) {
+        const auto f = cells[k].find("fan");
+        if (f != cells[k].end()) readFan(*f, "cells[" + std::to_string(k) + "].fan", k, t.first_id, last, mirrored, t);
+    }
 }
 }  // namespace
 
@@ -599,8 +787,9 @@ Scene sceneFromJson(const json& j) {
     }
     if (s.marks.triangle && size_t(s.marks.triangle->anchor) >= s.keptCount())
         fail("marks.triangle.anchor", "is not the index of a cell");
-    buildMarkFaces(s);
-    readShapes(j, cells, s);
+    if (version >= 5) readFaces(j.contains("faces") ? j["faces"] : json(nullptr), s);
+    else buildMarkFaces(s);  // older sidecars: the faces are built again from the marks
+    readShapes(j, cells, s, version);
     if (j.contains("legend") && !j["legend"].is_null()) {
         // Up to version 4 the sidecar held the legend as asked for, and reading
         // placed and translated it again (with whatever braille table was

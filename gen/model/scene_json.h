@@ -14,8 +14,15 @@
 //                         depth_mm, width_mm, opening_deg},
 //          triangle: null | {corner, east, north: [i, j], leg_x_mm, leg_y_mm,
 //                            raise_units, anchor (kept index)}},
+//   faces: null | {extra [[i, j], ...] (planar points after the lattice's ids),
+//                  faces [{anchor, raise_units, cells [kept index], rings [[id, ...]],
+//                          across [[[kind, index], ...] per ring] (kind 0 outside
+//                          with index -1, 1 a face, 2 a kept cell), triangles
+//                          [[id, id, id]], read_point null | [i, j]}]}
+//          -- the marks' planar faces as built (gen/model/scene_marks.h),
 //   shapes: null | {tilt, steepness, structural_texture, cells_tilted, cells_clamped,
-//                   cells_clamped_level, cells_textured, dimple_units},
+//                   cells_clamped_level, cells_textured, dimple_units, first_id,
+//                   extra [[i, j]], extra_z [z units]} -- fan centres and crossings,
 //   legend: null | {title, units, table (as asked for, for reports),
 //            standard {name, dot_base_mm, dot_height_mm, dot_pitch_mm,
 //                      cell_pitch_mm, line_pitch_mm},
@@ -33,16 +40,22 @@
 //         the FNV-1a 64 hash of its bytes as 16 hex digits
 //         (gen/util/file_stamp.h), so a sidecar from another run is refused,
 //   cells [{col, row, value (null = no data), top, bottom,
+//           fan (only a cell drawn as a fan): {centre_top, crossings_top [6],
+//                  centre_bottom, crossings_bottom [6] (mirrored)} planar ids,
 //           shape (only a tilted or structural cell): {top_dz [6], centre_dz,
 //                  bottom_dz [6], bottom_centre_dz (mirrored), slope [x, y] mm/mm,
 //                  structural}}, ...]   -- ordered by (row, col)
 // Heights (top, bottom, floor_units, ...) are integers in z_snap_mm units;
 // lengths are millimetres; doubles are written in their shortest form that
 // reads back to the same bits, so a Scene round-trips exactly.
-// The legend and the scale are recorded as placed and read as recorded:
-// reading a sidecar translates no braille and places nothing.
-// Scene::kept_index, kind and faces are not stored: they follow from the
-// cells, the grid and the marks (buildMarkFaces, gen/model/features/marks.h).
+// Everything is recorded as resolved and read as recorded: reading a sidecar
+// translates no braille, places nothing and triangulates nothing (the
+// legend, the scale, the marks' faces, the tilted tops' fans). Every index
+// read is checked against the Scene, so a hand-edited sidecar is an
+// InputError, never a face reaching outside the model. Scene::kept_index,
+// kind and drawn_by_face follow from the cells and the faces. Sidecars of
+// versions 1 to 4 have their faces and fans built again from the marks and
+// the offsets.
 #pragma once
 
 #include <optional>
@@ -56,7 +69,8 @@
 namespace tsf {
 
 inline constexpr const char* kSceneJsonFormat = "tsf-scene";
-/// 5: the legend as placed (dots, plate, standard), not as asked for; 4: scale;
+/// 5: everything as resolved: the legend as placed (dots, plate, standard), not
+/// as asked for, the marks' faces and the tilted tops' fans; 4: scale;
 /// 3: shapes; 2: marks, nodata_pit_units, one_to_one. 1 to 4 are still read,
 /// except a version 4 sidecar with a legend (it recorded only the request).
 inline constexpr int kSceneJsonVersion = 5;

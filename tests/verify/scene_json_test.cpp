@@ -9,7 +9,9 @@
 #include <random>
 
 #include "gen/util/error.h"
+#include "gen/mesh/direct_mesher.h"
 #include "gen/model/scene_json.h"
+#include "tests/support/fields.h"
 #include "tests/verify/verify_test_support.h"
 #include "gen/model/build_scene.h"
 
@@ -81,6 +83,16 @@ TEST(SceneJson, RoundTripsEveryField) {
     }
 }
 
+// Reading j is an InputError whose message starts with `start`.
+void expectError(const nlohmann::json& j, const std::string& start) {
+    try {
+        (void)sceneFromJson(j);
+        ADD_FAILURE() << "no error, expected " << start;
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(start, 0), 0u) << e.what();
+    }
+}
+
 // A flat scene with a braille legend and a tactile scale.
 Scene sceneWithAttachments() {
     SceneParams p = vtest::smallFieldParams(Bottom::Flat, 0.01);
@@ -135,14 +147,6 @@ TEST(SceneJson, AVersion4SidecarWithALegendIsRefusedSayingHowToRemakeIt) {
 
 TEST(SceneJson, ARecordedLegendOrScaleThatDoesNotFitIsAnInputError) {
     const nlohmann::json good = sceneToJson(sceneWithAttachments());
-    auto expectError = [](const nlohmann::json& j, const std::string& start) {
-        try {
-            (void)sceneFromJson(j);
-            ADD_FAILURE() << "no error, expected " << start;
-        } catch (const InputError& e) {
-            EXPECT_EQ(std::string(e.what()).rfind(start, 0), 0u) << e.what();
-        }
-    };
     auto j = good;
     j["legend"]["dots"][0] = {-50.0, 0.0};
     expectError(j, "legend.dots[0]: the dot does not lie on the legend's plate");
@@ -158,6 +162,75 @@ TEST(SceneJson, ARecordedLegendOrScaleThatDoesNotFitIsAnInputError) {
     j = good;
     j["scale"]["steps"] = nlohmann::json::array();
     expectError(j, "scale.steps: a scale has at least one step");
+}
+
+// Tilted tops (with crossings and fans) beside both orientation marks.
+Scene tiltedMarkedScene(Bottom bottom) {
+    SceneParams p = vtest::smallFieldParams(bottom, 0.01);
+    p.pitch_mm = 9.0;
+    p.marks = MarkParams{};
+    p.tilt = TiltSource::Gradient;
+    const HexField f = test::fieldFromFunction(14, 12, [](int c, int r) { return c < 7 && r > 5 ? 6.0 : 1.0 + 0.4 * c + 0.1 * r; });
+    return buildScene(f, p);
+}
+
+TEST(SceneJson, TheMarksFacesAndTheTiltedTopsAreRecordedAsBuiltAndReadAsRecorded) {
+    for (const Bottom bottom : {Bottom::Flat, Bottom::Mirrored}) {
+        const Scene s = tiltedMarkedScene(bottom);
+        ASSERT_FALSE(s.faces.empty());
+        ASSERT_FALSE(s.shapes.empty());
+        ASSERT_GT(s.shapes.extra.size(), 0u);
+        const nlohmann::json j = sceneToJson(s);
+        ASSERT_TRUE(j["faces"].is_object());
+        const Scene back = sceneFromJson(j);
+        EXPECT_EQ(sceneToJson(back), j);
+        EXPECT_EQ(back.drawn_by_face, s.drawn_by_face);
+        EXPECT_EQ(back.shapes.crossing_top, s.shapes.crossing_top);
+        EXPECT_EQ(back.shapes.centre_top_id, s.shapes.centre_top_id);
+        EXPECT_EQ(back.shapes.extra_z, s.shapes.extra_z);
+        // The Scene read back draws the same solid, vertex for vertex.
+        const Mesh a = meshScene(s), b = meshScene(back);
+        EXPECT_EQ(a.triangles, b.triangles);
+        EXPECT_EQ(a.positions.size(), b.positions.size());
+        // Read as recorded, not built again: a read point moved in the file is the one read.
+        nlohmann::json moved = j;
+        for (auto& f : moved["faces"]["faces"])
+            if (!f["read_point"].is_null()) {
+                f["read_point"][0] = f["read_point"][0].get<double>() + 0.125;
+                const Scene m = sceneFromJson(moved);
+                bool found = false;
+                for (const PlanarFace& face : m.faces.faces)
+                    found = found || (face.read_point && face.read_point->i == f["read_point"][0].get<double>());
+                EXPECT_TRUE(found);
+                break;
+            }
+    }
+}
+
+TEST(SceneJson, RecordedFacesAndFansThatReachOutsideTheSceneAreInputErrors) {
+    const nlohmann::json good = sceneToJson(tiltedMarkedScene(Bottom::Flat));
+    auto j = good;
+    j["faces"]["faces"][0]["rings"][0][0] = 1LL << 40;
+    expectError(j, "faces.faces[0].rings[0][0]: is not a planar vertex id");
+    j = good;
+    j["faces"]["faces"][0]["anchor"] = 999999;
+    expectError(j, "faces.faces[0].anchor");
+    j = good;
+    j["faces"]["faces"][0]["across"][0][0] = {2, 999999};
+    expectError(j, "faces.faces[0].across[0][0]: expected [0, -1] (outside), [1, face] or [2, cell]");
+    j = good;
+    j["faces"]["faces"][0]["triangles"][0] = {0, 1};
+    expectError(j, "faces.faces[0].triangles[0]: expected three vertex ids");
+    j = good;
+    j["shapes"]["first_id"] = 3;
+    expectError(j, "shapes.first_id: must follow the lattice's and the faces' ids");
+    j = good;
+    for (auto& c : j["cells"])
+        if (c.contains("fan")) {
+            c["fan"]["centre_top"] = -5;
+            break;
+        }
+    expectError(j, "cells[");
 }
 
 TEST(SceneJson, FileRoundTripOneCellPerLineAndNoTemporaryLeft) {
@@ -205,15 +278,6 @@ TEST(SceneJson, TheModelItWasWrittenWithIsRecordedAndAnotherVersionRefused) {
     writeSceneJson(s, sidecar.string());
     readSceneJson(sidecar.string(), &read);
     EXPECT_FALSE(read.has_value());
-}
-
-void expectError(nlohmann::json j, const std::string& starts_with) {
-    try {
-        sceneFromJson(j);
-        ADD_FAILURE() << "no error for " << starts_with;
-    } catch (const InputError& e) {
-        EXPECT_EQ(std::string(e.what()).rfind(starts_with, 0), 0u) << e.what();
-    }
 }
 
 TEST(SceneJson, MalformedMembersNameTheirPath) {
