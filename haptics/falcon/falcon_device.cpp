@@ -21,6 +21,8 @@ FalconDevice::~FalconDevice() { close(); }
 void FalconDevice::open() {
     close();
     failed_ = false;
+    unplugged_ = false;
+    silent_ = 0;
     failure_ = nullptr;
     stats_ = {};
     transport_ = opener_();
@@ -75,14 +77,17 @@ void FalconDevice::open() {
 }
 
 void FalconDevice::close() noexcept {
-    if (link_ && !failed_) {
-        // Zero force, acknowledged when the device still answers.
+    if (link_ && !unplugged_) {
+        // Zero force, acknowledged when the device still answers. A device
+        // that stopped answering may still be listening (a hung reply path,
+        // a stalled host buffer): it is told too, without waiting for it.
         const FalconCommand zero{{0, 0, 0}, kFalconHoming};
         for (int k = 0; k < options_.close_packets; ++k) {
             const FalconPacket p = encodeFalconCommand(zero);
             const UsbResult w = link_->write(p, kWriteTimeout_ms);
             if (w.status == UsbStatus::kNoDevice) break;
             sent_ = zero;
+            if (failed_) continue;
             const UsbResult r = link_->read(buf_, kCloseReadTimeout_ms);
             if (r.status == UsbStatus::kNoDevice) break;
         }
@@ -115,6 +120,7 @@ bool FalconDevice::send(const FalconCommand& command) noexcept {
     const FalconPacket p = encodeFalconCommand(command);
     const UsbResult w = link_->write(p, kWriteTimeout_ms);
     if (w.status == UsbStatus::kNoDevice) {
+        unplugged_ = true;
         fail("the Falcon was unplugged or lost power during the session");
         return false;
     }
@@ -154,6 +160,7 @@ ReadStatus FalconDevice::read(double loop_time_s, DeviceState& out) noexcept {
     if (awaiting_) {
         const UsbResult r = link_->read(buf_, options_.tick_read_timeout_ms);
         if (r.status == UsbStatus::kNoDevice) {
+            unplugged_ = true;
             fail("the Falcon was unplugged or lost power during the session");
             return ReadStatus::kFailed;
         }
@@ -199,6 +206,10 @@ bool FalconDevice::writeForce(const Vec3& force_N) noexcept {
             ++stats_.refused_forces;
             accepted = false;
         }
+    } else if (silent_ >= uint64_t(options_.stale_ticks_to_zero)) {
+        // The position has not been heard for a while: a force from it
+        // would push on blind. Zero motors until a frame comes again.
+        if (magnitude > 0.0) ++stats_.stale_zeroed;
     } else if (pose_ok_) {
         const double limit = limits().max_force_N;
         const Vec3 f = magnitude > limit ? force_N * (limit / magnitude) : force_N;

@@ -26,9 +26,15 @@
 //     scaled down as a whole to the command limit (direction kept);
 //   - a pose where the solver fell back, a singular Jacobian or a non-finite
 //     force sends zero motor commands;
+//   - a position that stops updating is not pushed on: after
+//     stale_ticks_to_zero ticks without a frame every motor command is 0
+//     until a frame comes again (a tick or two of USB jitter keeps the force);
 //   - close() (and the destructor) sends zero commands before releasing the
-//     device; a vanished device or silent_ticks_to_fail ticks without a
-//     frame makes read() return kFailed, and the loop ends with zero force.
+//     device, also after a failure: to a device that stopped answering it
+//     writes them without waiting for replies, so the last command the
+//     Falcon holds is zero whenever it can still hear; a vanished device or
+//     silent_ticks_to_fail ticks without a frame makes read() return kFailed,
+//     and the loop ends with zero force.
 //
 // LEDs show the state: red = not homed (no force), green = homed, blue =
 // touching the surface, green + blue = volume mode.
@@ -58,6 +64,7 @@ struct FalconOptions {
     int tick_read_timeout_ms = 1;   ///< the read inside a tick waits at most this long
     int resend_after_ticks = 10;    ///< a packet unanswered this long is presumed lost
     int silent_ticks_to_fail = 250; ///< this many ticks without a frame: the device has failed
+    int stale_ticks_to_zero = 10;   ///< this many ticks without a frame: motors commanded to 0 (no push from a stale position)
     int firmware_check_tries = 20;  ///< zero packets sent to see whether firmware runs
     int close_packets = 5;          ///< zero packets exchanged by close()
 };
@@ -76,6 +83,7 @@ struct FalconLinkStats {
     uint64_t solver_fallbacks = 0;      ///< positions the Newton solve could not produce
     uint64_t limited_commands = 0;      ///< motor vectors scaled down to the command limit
     uint64_t refused_forces = 0;        ///< nonzero forces asked for before homing
+    uint64_t stale_zeroed = 0;          ///< commands sent as zero because the position had gone stale
     uint64_t ticks_homed = 0;
 };
 
@@ -128,6 +136,7 @@ private:
     bool awaiting_ = false;    ///< a packet is in flight
     int since_sent_ = 0;       ///< ticks since the packet in flight was sent
     uint64_t silent_ = 0;      ///< ticks since the last frame
+    bool unplugged_ = false;   ///< the link said the device is gone: nothing more can be sent
     bool contact_ = false, volume_ = false;
     bool failed_ = false;
     const char* failure_ = nullptr;  ///< why read() failed (a static string: the tick cannot allocate)

@@ -142,6 +142,7 @@ void FakeFalcon::onCommand(const FalconCommand& c) {
     stepGrip(force);
 
     const long n = ++replies_;
+    if (cfg_.silent_after_packets >= 0 && n > cfg_.silent_after_packets) silent_ = true;
     if (silent_ || (cfg_.drop_reply_every > 0 && n % cfg_.drop_reply_every == 0)) return;
     FalconReport rep;
     FalconAngles now;

@@ -47,6 +47,7 @@ struct FakeFalconConfig {
     int split_every = 0;             ///< every Nth reply arrives in two reads
     int drop_reply_every = 0;        ///< every Nth command gets no reply
     long unplug_after_packets = -1;  ///< every transfer fails with kNoDevice after this many commands
+    long silent_after_packets = -1;  ///< the firmware hangs after this many commands: taken, never answered
     // The grip.
     std::function<Vec3(double t_s)> pose;  ///< device-frame position (or the hand's target with finger)
     std::function<uint8_t(double t_s)> buttons;

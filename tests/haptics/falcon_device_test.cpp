@@ -238,6 +238,33 @@ TEST(FalconDevice, SilentDeviceFails) {
     EXPECT_EQ(rig.dev.stats().max_silent_ticks, 250u);
 }
 
+TEST(FalconDevice, AFalconThatStopsAnsweringIsToldToStopPushing) {
+    // A homed Falcon pushed hard (the spring's anchor far away), whose
+    // firmware then hangs: it takes commands and answers none.
+    FakeFalconConfig cfg = running();
+    cfg.pose = circle;
+    cfg.silent_after_packets = 600;
+    Rig rig(cfg);
+    Session s;
+    s.handler.anchor = Vec3(0.0, 0.05, 0.0);
+    run(rig.dev, s, 5.0);
+    EXPECT_EQ(s.stats.end, LoopEnd::kDeviceFailed);
+    const std::vector<FalconCommand>& sent = rig.fake.commands();
+    ASSERT_GT(sent.size(), 620u);
+    // It was pushing before it fell silent.
+    EXPECT_FALSE(zero(sent[590])) << "the test needs a push before the silence";
+    // Within stale_ticks_to_zero ticks of the last frame every command is
+    // zero: no push from a position that no longer updates.
+    const size_t stale = 600 + size_t(FalconOptions{}.stale_ticks_to_zero) + 1;
+    for (size_t k = stale; k < sent.size(); ++k) EXPECT_TRUE(zero(sent[k])) << "command " << k << " of " << sent.size();
+    EXPECT_GT(rig.dev.stats().stale_zeroed, 0u);
+    // And closing after the failure still sends zero packets.
+    const size_t before = sent.size();
+    rig.dev.close();
+    ASSERT_GT(rig.fake.commands().size(), before);
+    EXPECT_TRUE(zero(rig.fake.commands().back()));
+}
+
 TEST(FalconDevice, StopRequestAndDestructionLeaveZeroForce) {
     FakeFalconConfig cfg = running();
     cfg.pose = circle;
