@@ -215,6 +215,8 @@ void runGen(GenCommandOptions o) {
     if (field.grid.cellCount() > kProgressCells && !o.progress && !o.json)
         std::fprintf(stderr, "tsf: %d x %d cells, this may take a few seconds\n", field.grid.cols, field.grid.rows);
     timer.begin("scene");
+    // STL and 3MF store float32: the z grid must be one float32 resolves.
+    o.gen.scene.stored_as_float32 = model_ext == ".stl" || model_ext == ".3mf";
     const Scene scene = buildScene(field, o.gen.scene);
     summary.scene = &scene;
     if (const std::string note = cellNozzleNote(scene.pitch_mm, o.printer); !note.empty())

@@ -95,7 +95,9 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option_function<double>(
            "--value-max", [&p](double v) { p.value_max = v; }, "Value at full height (default: the largest value)")
         ->group(model);
-    cmd->add_option("--snap", p.z_snap_mm, "Height grid, mm; e.g. your layer height (0.2) so steps print as steps")
+    cmd->add_option("--snap", p.z_snap_mm,
+                    "Height grid, mm; e.g. your layer height (0.2) so steps print as steps (STL and 3MF: at least "
+                    "what float32 resolves at the model's height)")
         ->check(CLI::Range(1e-6, 1.0))->capture_default_str()->group(model);
     cmd->add_option_function<std::string>(
            "--cull",

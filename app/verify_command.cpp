@@ -10,6 +10,7 @@
 #include "app/gen_options.h"
 #include "gen/util/error.h"
 #include "gen/mesh_io/mesh_reader.h"
+#include "gen/mesh_io/mesh_writer.h"
 #include "gen/model/scene_json.h"
 #include "verify/verify_model.h"
 #include "verify/verify_parts.h"
@@ -79,6 +80,9 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     if (!o.against.empty()) {
         GenOptions g = o.gen;
         g.input = o.against;
+        // As tsf gen made it: an STL or 3MF holds a z grid float32 resolves.
+        const std::string ext = lowerCaseExtension(o.model);
+        g.scene.stored_as_float32 = ext == ".stl" || ext == ".3mf";
         scene = buildScene(loadField(g), g.scene);
     } else if (!o.scene.empty()) {
         std::optional<SceneModelRecord> written_with;

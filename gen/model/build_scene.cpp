@@ -26,6 +26,7 @@
 #include "gen/model/features/tilt.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/util/error.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 
@@ -159,6 +160,38 @@ double resolvePitch(const HexGrid& grid, const SceneParams& p) {
         throw InputError(s.str());
     }
     return pitch;
+}
+
+}  // namespace
+
+namespace {
+
+// The highest z the mesh reaches, mm: tops with their tilted corners and the
+// orientation triangle, and a braille dot's height above a legend's plate.
+double highestZMm(const Scene& s) {
+    int64_t top = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        int64_t t = s.top[k];
+        if (!s.shapes.empty())
+            for (const int32_t dz : s.shapes.top_dz[k]) t = std::max(t, s.top[k] + dz);
+        top = std::max(top, t);
+    }
+    if (s.marks.triangle) top = std::max(top, s.top[size_t(s.marks.triangle->anchor)] + s.marks.triangle->raise_units);
+    double z = s.zMm(top);
+    if (s.legend) z = std::max(z, s.zMm(s.legend->plate_top_units) + s.legend->layout.standard.dot_height_mm);
+    return z;
+}
+
+// The finest "nice" z grid (1, 2 or 5 x 10^k mm) whose steps float32 keeps
+// apart at the Scene's highest z: four times the largest spacing of float32
+// numbers there (2^-23 of the value, relative), so two heights a step apart
+// never round to one and a thin triangle keeps its area.
+double float32SafeSnapMm(const Scene& s) {
+    const double need = 4.0 * std::ldexp(std::max(1.0, highestZMm(s)), -23);
+    double decade = std::pow(10.0, std::floor(std::log10(need)));
+    for (;; decade *= 10.0)
+        for (const double m : {1.0, 2.0, 5.0})
+            if (m * decade >= need * (1 - 1e-12)) return std::max(s.z_snap_mm, m * decade);
 }
 
 }  // namespace
@@ -371,6 +404,26 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     }
     // The scale last: it stands against cells whose tops (tilted or not) rise to the floor.
     placeScale(s);
+    if (params.stored_as_float32) {
+        const double snap = float32SafeSnapMm(s);
+        if (snap > s.z_snap_mm) {
+            if (snap > kMaxSnapMm)
+                throw InputError("the model is " + formatSignificant(highestZMm(s), 4) +
+                                 " mm tall: a float32 STL or 3MF cannot hold its heights to " +
+                                 formatSignificant(kMaxSnapMm) + " mm; make it lower (--height) or write OFF or OBJ");
+            SceneParams coarser = params;
+            coarser.z_snap_mm = snap;
+            coarser.stored_as_float32 = false;
+            Scene again = buildScene(field, coarser);
+            again.params.stored_as_float32 = true;
+            again.notes.push_back("heights snapped to " + formatSignificant(snap) + " mm instead of " +
+                                  formatSignificant(params.z_snap_mm) + " mm: at " +
+                                  formatSignificant(highestZMm(again), 4) +
+                                  " mm the float32 coordinates of STL and 3MF resolve no finer (OFF and OBJ keep the "
+                                  "finer grid)");
+            return again;
+        }
+    }
     return s;
 }
 

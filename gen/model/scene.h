@@ -105,6 +105,12 @@ struct SceneParams {
     ScaleRequest scale;
     // --- support-free halves (gen/model/features/halves.h); mirrored only ---
     bool halves = false;           ///< cut the mirrored model into two halves that print without supports
+    // --- what the model is written as ---
+    /// The model file stores float32 coordinates (STL, 3MF): a z grid finer
+    /// than float32 resolves at the model's height is made coarser (the
+    /// smallest 1/2/5 x 10^k mm it resolves, with a note), so that every
+    /// height stays distinct and every triangle keeps its area in the file.
+    bool stored_as_float32 = false;
 };
 
 /// What a kept cell stands for.
