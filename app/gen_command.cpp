@@ -365,8 +365,8 @@ void addGenCommand(CLI::App& app) {
                     "Nozzle diameter, mm: raster cells at least 4 nozzle widths; thin walls flagged")
         ->check(CLI::Range(0.05, 3.0))->group(printer);
     cmd->add_option("--layer", opts->printer.layer_mm,
-                    "Layer height, mm: heights snap to whole layers (unless --snap)")
-        ->check(CLI::Range(0.01, 2.0))->group(printer);
+                    "Layer height, mm (0.01 to 1): heights snap to whole layers (unless --snap)")
+        ->check(CLI::Range(0.01, 1.0))->group(printer);
     cmd->add_flag("--parts", opts->parts,
                   "Write the 3MF as one object made of parts - pillars (with the notch), marks (the raised "
                   "triangle), legend (the braille dots) - so a slicer can give each its own colour or material; "

@@ -57,6 +57,12 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
                 notes.push_back("--snap " + formatSignificant(p.z_snap_mm, 4) + " mm is not a multiple of the " + formatSignificant(printer.layer_mm, 4) +
                                 " mm layer: some steps will print a layer higher or lower");
         } else {
+            // The options the user gave are the ones an error names.
+            if (p.base_mm < printer.layer_mm)
+                throw InputError("--layer " + formatSignificant(printer.layer_mm, 4) + " with --base " +
+                                 formatSignificant(p.base_mm, 4) +
+                                 ": the base must be at least one layer thick; give a --base of at least " +
+                                 formatSignificant(printer.layer_mm, 4) + " mm or a thinner --layer");
             p.z_snap_mm = printer.layer_mm;
             notes.push_back("heights snapped to whole " + formatSignificant(printer.layer_mm, 4) + " mm layers (--snap to choose)");
         }

@@ -98,3 +98,24 @@ TEST(PrinterFitCli, AWideNozzleMakesRasterCellsFourNozzleWidthsAcross) {
 
 }  // namespace
 }  // namespace tsf
+
+namespace tsf {
+namespace {
+
+TEST(PrinterFitCli, LayerErrorsNameTheOptionsTheUserGave) {
+    const auto dir = test::scratchDir();
+    const std::string in = test::sourcePath("examples/volcano.csv"), out = (dir / "m.stl").string();
+    // The help's range is what is accepted: a 2 mm layer is refused as --layer, not as a --snap never given.
+    const auto tall = test::runTsf("gen " + in + " --layer 2 -o " + out, dir);
+    EXPECT_EQ(tall.exit_code, test::kExitBadInput);
+    EXPECT_NE(tall.err.find("--layer"), std::string::npos) << tall.err;
+    EXPECT_EQ(tall.err.find("snap"), std::string::npos) << tall.err;
+    const auto thin = test::runTsf("gen " + in + " --layer 1 --base 0.5 -o " + out, dir);
+    EXPECT_EQ(thin.exit_code, test::kExitBadInput);
+    EXPECT_NE(thin.err.find("--layer 1"), std::string::npos) << thin.err;
+    EXPECT_NE(thin.err.find("--base 0.5"), std::string::npos) << thin.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace tsf
