@@ -31,7 +31,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "tsf " TSF_VERSION);
     app.footer("Run 'tsf <command> --help' for the options of one command.\n"
-               "Exit codes: 0 ok; 1 a check failed; 2 bad input, a bad option, or an output\n"
+               "Exit codes: 0 ok; 1 a check failed (or an internal error: a bug to report);\n"
+               "2 bad input, a bad option, or an output\n"
                "that cannot be written (missing folder, no permission, disk full, an output\n"
                "that would overwrite an input or another output); 3 only when an external\n"
                "tool (openscad, node, prusa-slicer) failed or is missing; 4 a device failed; 130 interrupted.");
@@ -52,6 +53,14 @@ int main(int argc, char** argv) {
     } catch (const tsf::InputError& e) {
         std::fprintf(stderr, "tsf: error: %s\n", e.what());
         return tsf::cli::kExitBadInput;
+    } catch (const std::logic_error& e) {
+        // A broken precondition inside tsf or a library it uses (CGAL's
+        // checks throw rather than abort): a bug, never the user's input.
+        std::fprintf(stderr,
+                     "tsf: internal error: %s\ntsf: this is a bug in tsf; nothing was written. Please report it with the "
+                     "command and its input file.\n",
+                     e.what());
+        return tsf::cli::kExitCheckFailed;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "tsf: error: %s\n", e.what());
         return tsf::cli::kExitToolFailed;

@@ -12,6 +12,8 @@
 #include "gen/geometry/cgal_surface_mesh.h"
 #include "gen/mesh/legend_mesh.h"
 #include "gen/model/scene.h"
+#include "gen/util/number_format.h"
+#include "gen/util/error.h"
 
 namespace tsf {
 namespace {
@@ -160,11 +162,23 @@ Mesh legendPlateMesh(const Scene& s, bool dots) {
     return meshLegendPlate(spec);
 }
 
+// The join's own failure, on the models it is known to fail on (a few cells,
+// the plate reaching over most of them): the input's size, said as such.
+[[noreturn]] void joinFailed(const Scene& s, const std::string& why) {
+    throw InputError("--title/--units: the braille legend's plate could not be joined to a model this small (" +
+                     std::to_string(s.keptCount()) + (s.keptCount() == 1 ? " cell, " : " cells, ") + formatSignificant(gridWidth(s.grid, s.pitch_mm), 4) +
+                     " mm wide; " + why +
+                     "): give it more cells (more values, a larger --bins) or leave out --title and --units");
+}
+
 Mesh unionWithLegend(const Mesh& pillars, const Scene& s, bool dots) {
     SurfaceMesh a = toSurfaceMesh<Kernel>(pillars), b = toSurfaceMesh<Kernel>(legendPlateMesh(s, dots)), out;
     namespace PMP = CGAL::Polygon_mesh_processing;
-    if (!PMP::corefine_and_compute_union(a, b, out))
-        throw std::runtime_error("the legend plate could not be joined to the pillars (CGAL corefinement failed)");
+    try {
+        if (!PMP::corefine_and_compute_union(a, b, out)) joinFailed(s, "the exact union failed");
+    } catch (const CGAL::Failure_exception& e) {
+        joinFailed(s, "a degenerate configuration in the exact union");
+    }
     Mesh m;
     std::map<SurfaceMesh::Vertex_index, uint32_t> index;
     for (const auto v : out.vertices()) {

@@ -94,3 +94,23 @@ TEST(LegendCli, WhereTheLegendCannotStandTheCommandSaysWhatToChange) {
 
 }  // namespace
 }  // namespace tsf
+
+namespace tsf {
+namespace {
+
+// A legend on a model of one cell: the exact join cannot be made; the user
+// is told what is too small (exit 2), never a library's assertion (exit 3).
+TEST(LegendCli, AModelTooSmallForTheLegendsJoinIsBadInputThatSaysWhy) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "one.csv", "x,y\n0,0\n");
+    const std::string out = (dir / "o.stl").string();
+    const auto r = test::runTsf("gen " + (dir / "one.csv").string() + " --points x=x,y=y --units mm --bed 100x100 -o " + out, dir);
+    EXPECT_EQ(r.exit_code, test::kExitBadInput) << r.out << r.err;
+    EXPECT_NE(r.err.find("--title/--units"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("1 cell,"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("CGAL"), std::string::npos) << "no library message reaches the user: " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace tsf
