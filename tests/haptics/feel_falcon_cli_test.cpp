@@ -169,3 +169,17 @@ TEST(FeelFalconCli, UnpluggedMidSessionExitsFour) {
     EXPECT_EQ(r.exit_code, tsf::test::kExitDeviceFailed) << r.output;
     EXPECT_TRUE(has(r.output, "unplugged or lost power")) << r.output;
 }
+
+TEST(FeelFalconCli, AFalconThatFallsSilentMidContactIsLeftAtZeroForceAndExitsFour) {
+    // The finger is on the volcano from 1.5 s; at 3 s the firmware hangs:
+    // it still takes commands, but no frame comes back.
+    const fs::path report = scratchFile("report.txt");
+    const auto r = runWithFakeFalcon(
+        "TSF_FAKE_FALCON_RUNNING=1 TSF_FAKE_FALCON_SILENT_AFTER=3000 TSF_FAKE_FALCON_REPORT=" + report.string(),
+        "feel " + volcano() + " --device falcon --duration 6 --no-realtime");
+    EXPECT_EQ(r.exit_code, tsf::test::kExitDeviceFailed) << r.output;
+    EXPECT_TRUE(has(r.output, "stopped answering")) << r.output;
+    auto seen = readReport(report);
+    EXPECT_GT(std::stod(seen["max_force_N"]), 0.5) << "the finger was pushed before the silence";
+    EXPECT_EQ(seen["last_command_zero"], "1");  // the last command the device holds is zero
+}

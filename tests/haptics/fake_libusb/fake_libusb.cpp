@@ -8,6 +8,8 @@
 //   TSF_FAKE_FALCON_RUNNING=1       firmware already running
 //   TSF_FAKE_FALCON_FIRMWARE_BYTES  image size that starts the firmware (default: any)
 //   TSF_FAKE_FALCON_UNPLUG_AFTER    unplug after this many command packets
+//   TSF_FAKE_FALCON_SILENT_AFTER    the firmware hangs after this many command packets: the link
+//                                   stays, commands are taken, no reply comes
 //   TSF_FAKE_FALCON_REPORT=FILE     on close, write what the device saw (key=value lines)
 // The grip: a finger held above the workspace until 1.5 s (homing comes
 // after 300 packets), then a soft hand (50 N/m toward y = -50 mm, about 2 N
@@ -129,6 +131,7 @@ int LIBUSB_CALL libusb_open(libusb_device*, libusb_device_handle** handle) {
     cfg.firmware_running = env("TSF_FAKE_FALCON_RUNNING") == "1";
     cfg.firmware_bytes = size_t(std::atol(env("TSF_FAKE_FALCON_FIRMWARE_BYTES", "0").c_str()));
     cfg.unplug_after_packets = std::atol(env("TSF_FAKE_FALCON_UNPLUG_AFTER", "-1").c_str());
+    cfg.silent_after_packets = std::atol(env("TSF_FAKE_FALCON_SILENT_AFTER", "-1").c_str());
     cfg.homing_packets = 300;
     cfg.finger = true;
     cfg.hand_y_N_per_m = 50.0;
