@@ -13,9 +13,13 @@
 // Host -> device the three numbers are motor commands; device -> host they
 // are encoder counts (falcon_kinematics.h turns them into a position).
 //
-// Verified vector (captured from a Falcon, published with libnifalcon):
+// Known vector (published with libnifalcon's util/translate_packet.py): a
+// host -> device COMMAND, as the Novint driver sends it:
 //   3c 41 4d 4b 41 4d 4e 4b 41 49 45 4c 41 45 41 3e
-//   -> encoders 2752, 2780, 2888; buttons 0x4 (centre); not homed.
+//   -> motor commands 2752, 2780, 2888; status 0x4 (the blue LED).
+// The device -> host report has the same layout (encoder counts, buttons,
+// homed flags), but no frame recorded from a device has been checked here:
+// the report layout rests on libnifalcon's decoder, not on a capture.
 //
 // Everything here is a pure function or a fixed-size parser: no allocation,
 // no exceptions, callable from the haptic tick.

@@ -1,4 +1,4 @@
-// The Falcon's 16-byte packets: the captured vector, round trips, framing
+// The Falcon's 16-byte packets: the recorded command vector, round trips, framing
 // errors, resynchronisation in a byte stream, and a randomised (fuzz)
 // property test of the decoder.
 #include <algorithm>
@@ -15,7 +15,8 @@ using namespace tsf::haptics;
 
 namespace {
 
-/// Captured from a Falcon (libnifalcon's util/translate_packet.py).
+/// A host -> device command as the Novint driver sends it (libnifalcon's
+/// util/translate_packet.py); not a frame from a device.
 const FalconPacket kCaptured = {0x3c, 0x41, 0x4d, 0x4b, 0x41, 0x4d, 0x4e, 0x4b,
                                 0x41, 0x49, 0x45, 0x4c, 0x41, 0x45, 0x41, 0x3e};
 
@@ -23,7 +24,20 @@ std::vector<uint8_t> bytes(const FalconPacket& p) { return {p.begin(), p.end()};
 
 }  // namespace
 
-TEST(FalconPacket, CapturedFrameDecodesToKnownCounts) {
+TEST(FalconPacket, TheRecordedCommandDecodesToItsMotorsAndTheBlueLed) {
+    FalconCommand c;
+    ASSERT_TRUE(decodeFalconCommand(kCaptured, c));
+    EXPECT_EQ(c.motor[0], 2752);
+    EXPECT_EQ(c.motor[1], 2780);
+    EXPECT_EQ(c.motor[2], 2888);
+    EXPECT_EQ(c.status, kFalconLedBlue);
+    EXPECT_EQ(encodeFalconCommand(c), kCaptured);  // and back, byte for byte
+}
+
+// The report has the command's layout: the same 16 bytes read as a report
+// give the same three numbers (as encoder counts) and the status nibble as
+// buttons. This checks the shared layout, not a device capture.
+TEST(FalconPacket, TheReportSharesTheCommandsLayout) {
     FalconReport r;
     ASSERT_TRUE(decodeFalconReport(kCaptured, r));
     EXPECT_EQ(r.encoder[0], 2752);
