@@ -169,6 +169,8 @@ nlohmann::json falconJson(const FalconDevice& d, const LoopStats& loop) {
             {"solver_fallbacks", s.solver_fallbacks},
             {"limited_commands", s.limited_commands},
             {"refused_forces", s.refused_forces},
+            {"stale_zeroed_commands", s.stale_zeroed},
+            {"frames_with_unknown_bits", s.frames_with_unknown_bits},
             {"homed_ticks", s.ticks_homed}};
 }
 

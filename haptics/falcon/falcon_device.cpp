@@ -137,6 +137,7 @@ bool FalconDevice::send(const FalconCommand& command) noexcept {
 
 void FalconDevice::takeFrame(const FalconReport& rep) noexcept {
     report_ = rep;
+    if (rep.unknown_bits) ++stats_.frames_with_unknown_bits;
     ++stats_.frames_received;
     homed_ = rep.homed();
     if (!homed_) {

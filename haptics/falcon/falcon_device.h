@@ -84,6 +84,7 @@ struct FalconLinkStats {
     uint64_t limited_commands = 0;      ///< motor vectors scaled down to the command limit
     uint64_t refused_forces = 0;        ///< nonzero forces asked for before homing
     uint64_t stale_zeroed = 0;          ///< commands sent as zero because the position had gone stale
+    uint64_t frames_with_unknown_bits = 0;  ///< frames whose status had an undocumented bit (taken, bit ignored)
     uint64_t ticks_homed = 0;
 };
 

@@ -59,9 +59,10 @@ FalconPacket encodeFalconCommand(const FalconCommand& c) noexcept { return frame
 bool decodeFalconReport(std::span<const uint8_t, kFalconPacketBytes> f, FalconReport& out) noexcept {
     FalconReport r;
     uint8_t status = 0;
-    if (!unframe(f, r.encoder, status, 0x7F)) return false;
+    if (!unframe(f, r.encoder, status, uint8_t(0xFF - kZero))) return false;
     r.buttons = uint8_t(status & 0x0F);
     r.homed_mask = uint8_t((status >> 4) & 0x07);
+    r.unknown_bits = uint8_t(status & 0x80);
     out = r;
     return true;
 }

@@ -56,6 +56,7 @@ struct FalconReport {
     std::array<int16_t, 3> encoder{0, 0, 0};  ///< encoder counts of motors 0, 1, 2
     uint8_t buttons = 0;                      ///< kButton* bits of haptic_device.h (same layout)
     uint8_t homed_mask = 0;                   ///< bit k set: motor k is homed
+    uint8_t unknown_bits = 0;                 ///< status bits no documentation names (bit 7): kept, counted, ignored
     bool homed() const { return (homed_mask & kFalconAllHomed) == kFalconAllHomed; }
 };
 
@@ -64,9 +65,12 @@ struct FalconReport {
 FalconPacket encodeFalconCommand(const FalconCommand& command) noexcept;
 
 /// Decodes one device frame. False (out untouched) when the delimiters are
-/// missing, a number's byte is not 'A' + nibble or the status byte is not
-/// 'A' + 0..0x7F. Byte 14 is not checked (nothing documents that the
-/// firmware keeps it at 'A', and rejecting real frames would stall the link).
+/// missing, a number's byte is not 'A' + nibble or the status byte is below
+/// 'A'. The framing (delimiters 15 bytes apart, twelve nibble bytes) is what
+/// tells a frame from noise; a status bit no documentation names (bit 7) is
+/// kept in unknown_bits and otherwise ignored, so one undocumented firmware
+/// bit cannot drop every frame and end a session. Byte 14 is not checked
+/// either (nothing documents that the firmware keeps it at 'A').
 bool decodeFalconReport(std::span<const uint8_t, kFalconPacketBytes> frame, FalconReport& out) noexcept;
 
 /// Encodes a report the way the device would (for tests and fakes).

@@ -95,9 +95,20 @@ TEST(FalconPacket, RejectsBrokenFrames) {
     p[12] = 0x51;  // 'A' + 16
     EXPECT_FALSE(decodeFalconReport(p, r));
     p = kCaptured;
-    p[13] = 0xC1;  // status above 'A' + 0x7F
+    p[13] = 0x40;  // status below 'A'
     EXPECT_FALSE(decodeFalconReport(p, r));
     EXPECT_EQ(r.encoder[0], 7);  // untouched on failure
+}
+
+TEST(FalconPacket, AnUndocumentedStatusBitIsKeptAndIgnoredNotAReasonToDropTheFrame) {
+    FalconPacket p = kCaptured;
+    p[13] = uint8_t(0x41 + 0x80 + 0x30 + 0x2);  // bit 7, motors 0 and 1 homed, a button (the byte holds 'A' + 0xBE at most)
+    FalconReport r;
+    ASSERT_TRUE(decodeFalconReport(p, r));
+    EXPECT_EQ(r.unknown_bits, 0x80);
+    EXPECT_EQ(r.homed_mask, 0x3);
+    EXPECT_EQ(r.buttons, 0x2);
+    EXPECT_EQ(r.encoder[0], 2752);
 }
 
 TEST(FalconFrameParser, FindsFramesSplitAcrossReads) {
