@@ -40,6 +40,7 @@
 #include "haptics/replay_device.h"
 #include "haptics/scale_space.h"
 #include "haptics/sim_device.h"
+#include "pipeline/feel_session.h"
 #include "gen/util/number_format.h"
 
 namespace tsf::cli {
@@ -112,20 +113,6 @@ private:
     bool installed_ = false;
 };
 
-/// Zero force and close on every way out of the session, exceptions included.
-class DeviceSession {
-public:
-    explicit DeviceSession(HapticDevice& d) : device_(d) { device_.open(); }
-    ~DeviceSession() {
-        device_.writeForce(haptics::Vec3(0.0));
-        device_.close();
-    }
-    DeviceSession(const DeviceSession&) = delete;
-    DeviceSession& operator=(const DeviceSession&) = delete;
-
-private:
-    HapticDevice& device_;
-};
 
 [[noreturn]] void deviceFailed(const std::string& message) {
     std::fprintf(stderr, "tsf: error: %s\n", message.c_str());
@@ -238,13 +225,21 @@ void runFeel(const FeelOptions& o) {
     FalconOptions falcon_options;
     if (is_falcon && !o.firmware.empty()) falcon_options.firmware = readFalconFirmware(o.firmware);
 
+    if (!(o.levels >= 1 && o.levels <= kMaxScaleLevels))
+        throw InputError("--levels must be 1 to " + std::to_string(kMaxScaleLevels));
+    if (!(o.lod >= 0 && o.lod < o.levels)) throw InputError("--lod must be between 0 and --levels - 1");
+
     // The relief tsf gen would print from the same input and options.
     const HexField field = loadField(o.gen);
     const Scene scene = buildScene(field, o.gen.scene);
-    ReliefInfo relief;
-    const HeightGrid grid = printedRelief(scene, &relief);
     const DeviceLimits limits;  // the Falcon's (sim and replay stand in for one)
-    const FieldMapping mapping = mapFieldToWorkspace(grid.cols, grid.rows, limits.workspace);
+    const FeelSurface surface = buildFeelSurface(
+        scene, o.levels, o.scale_space == "mipmap" ? ScaleSpaceKind::kMipmap : ScaleSpaceKind::kGaussian, limits);
+    const ReliefInfo& relief = surface.relief;
+    const HeightGrid& grid = surface.grid;
+    const FieldMapping& mapping = surface.mapping;
+    const ScaleSpace& space = surface.space;
+    const double build_s = surface.build_s;
 
     std::unique_ptr<HapticDevice> device;
     FalconDevice* falcon = nullptr;
@@ -264,53 +259,39 @@ void runFeel(const FeelOptions& o) {
         device = std::move(replay);
     }
 
-    if (!(o.levels >= 1 && o.levels <= kMaxScaleLevels))
-        throw InputError("--levels must be 1 to " + std::to_string(kMaxScaleLevels));
-    if (!(o.lod >= 0 && o.lod < o.levels)) throw InputError("--lod must be between 0 and --levels - 1");
-    const auto t_build = std::chrono::steady_clock::now();
-    const ScaleSpace space =
-        buildScaleSpace(grid, o.levels, o.scale_space == "mipmap" ? ScaleSpaceKind::kMipmap : ScaleSpaceKind::kGaussian,
-                        relief.samples_per_pitch);
-    const double build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_build).count();
-    const ForceModel model = makeForceModel(space, mapping, forceParams(o), limits, o.rate_Hz);
-
-    RendererOptions ro;
-    ro.start_lod = o.lod;
-    ro.start_volume = o.volume;
-    FeelRenderer renderer(model, ro);
-
-    const bool realtime = o.realtime || (!o.no_realtime && device->needsRealtime());
-    SteadyLoopClock steady(o.spin_us * 1e-6);
-    FakeLoopClock fake;
-    LoopClock& clock = realtime ? static_cast<LoopClock&>(steady) : static_cast<LoopClock&>(fake);
-
-    LoopOptions lo;
-    lo.rate_Hz = o.rate_Hz;
-    lo.duration_s = o.duration_s;
-    lo.start_ramp_s = o.start_ramp_s;
+    FeelRequest rq;
+    rq.force = forceParams(o);
+    rq.renderer.start_lod = o.lod;
+    rq.renderer.start_volume = o.volume;
+    rq.realtime = o.realtime || (!o.no_realtime && device->needsRealtime());
+    rq.spin_us = o.spin_us;
+    rq.loop.rate_Hz = o.rate_Hz;
+    rq.loop.duration_s = o.duration_s;
+    rq.loop.start_ramp_s = o.start_ramp_s;
     // A simulated hand that waits for its finger runs longer than its script.
     double expected_s = o.duration_s > 0.0 ? o.duration_s : (is_sim ? kSimLogScriptFactor : 1.0) * script_s;
     if (!(expected_s > 0.0)) expected_s = kMaxLogSeconds;
     // Room for the stop ramp and a second's slack too.
-    ForceLog log(size_t((std::min(expected_s, kMaxLogSeconds) + lo.stop_ramp_s + 1.0) * o.rate_Hz));
+    rq.log_records = size_t((std::min(expected_s, kMaxLogSeconds) + rq.loop.stop_ramp_s + 1.0) * o.rate_Hz);
+    const bool realtime = rq.realtime;
 
-    LoopStats stats;
-    std::string priority;
-    const auto t_wall = std::chrono::steady_clock::now();
+    FeelOutcome session;
     {
         SigintGuard sigint;
-        std::optional<DeviceSession> session;
         try {
-            session.emplace(*device);
+            session = runFeelSession(scene, surface, *device, rq, g_stop, [&] {
+                if (falcon && !falcon->homed())
+                    std::fprintf(stderr, "tsf: home the Falcon: pull the grip all the way out toward you, then push it "
+                                         "back in; forces start when its light turns from red to green (Ctrl-C ends)\n");
+            });
         } catch (const DeviceError& e) {
             deviceFailed(e.what());
         }
-        if (falcon && !falcon->homed())
-            std::fprintf(stderr, "tsf: home the Falcon: pull the grip all the way out toward you, then push it back "
-                                 "in; forces start when its light turns from red to green (Ctrl-C ends)\n");
-        runHapticLoopThread(*device, renderer, clock, lo, g_stop, &log, stats, realtime, &priority);
     }
-    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_wall).count();
+    const LoopStats& stats = session.stats;
+    const ForceLog& log = session.log;
+    const std::string& priority = session.priority;
+    const double wall_s = session.wall_s;
 
     if (!o.log.empty()) writeForceLogCsv(o.log, log);
     if (!o.plot.empty()) {
@@ -320,10 +301,10 @@ void runFeel(const FeelOptions& o) {
         writeForcePlotPng(o.plot, grid, mapping, log, o.max_force_N, po);
     }
 
-    const RendererCounters& c = renderer.counters();
+    const RendererCounters& c = session.counters;
     const double contact_pct = c.ticks ? 100.0 * double(c.contact_ticks) / double(c.ticks) : 0.0;
     const double clamped_pct = c.ticks ? 100.0 * double(c.clamped_ticks) / double(c.ticks) : 0.0;
-    const Coverage coverage = touchedCells(scene, relief, mapping, log);
+    const Coverage& coverage = session.coverage;
     const FieldFacts facts = fieldFacts(field);
     const ValueMapping& vm = scene.mapping;
     const double pitch_m = mapping.cell_m * relief.samples_per_pitch;  // one hexagon's width on the device
