@@ -225,6 +225,7 @@ void runGen(GenCommandOptions o) {
     rq.verify = !o.no_verify;
     rq.verify_full = o.verify_full;
     rq.parts = o.parts;
+    rq.stored_as_float32 = o.gen.scene.stored_as_float32;
     rq.verify_options.name = o.output.empty() ? o.scad : o.output;
     if (o.printer.nozzle_mm > 0) rq.verify_options.nozzle_mm = o.printer.nozzle_mm;
     if (o.printer.layer_mm > 0) rq.verify_options.layer_mm = o.printer.layer_mm;

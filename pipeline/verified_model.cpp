@@ -3,6 +3,7 @@
 #include "gen/mesh/direct_mesher.h"
 #include "gen/mesh/halves_mesh.h"
 #include "gen/mesh/scene_parts.h"
+#include "gen/mesh_io/float32_mesh.h"
 #include "gen/model/features/halves.h"
 
 namespace tsf {
@@ -14,9 +15,10 @@ void say(const std::function<void(const std::string&)>& progress, const char* st
 
 // One piece as it prints: the verifier's checks and no overhang at all (a
 // half or a pin needs no supports).
-VerifyReport verifyPiece(const Mesh& mesh, const Scene* scene, VerifyOptions vo, const std::string& name) {
+VerifyReport verifyPiece(const Mesh& mesh, const Scene* scene, VerifyOptions vo, const std::string& name,
+                         bool float32) {
     vo.name = name;
-    VerifyReport r = verifyModel(mesh, scene, vo);
+    VerifyReport r = verifyModel(float32 ? float32Mesh(mesh) : mesh, scene, vo);
     const Check* over = r.find("overhang");
     if (!r.passed() || (over && over->status != CheckStatus::Pass)) throw ModelVerificationFailed(name, formatReport(r));
     return r;
@@ -38,10 +40,11 @@ VerifiedHalves makeHalves(const Scene& scene, const Mesh& whole, const ModelRequ
     vo.self_intersections = true;
     vo.printability = true;
     const Scene upper_scene = halfScene(scene, HalfKind::Upper), lower_scene = halfScene(scene, HalfKind::Lower);
-    h.upper_report = verifyPiece(h.upper, &upper_scene, vo, "upper half");
+    const bool f32 = rq.stored_as_float32;
+    h.upper_report = verifyPiece(h.upper, &upper_scene, vo, "upper half", f32);
     // The lower half is read back in halfScene's frame (its print turned back, a rigid motion away).
-    h.lower_report = verifyPiece(turnLowerHalf(h.lower, scene), &lower_scene, vo, "lower half");
-    h.pin_report = verifyPiece(pinMesh(scene.halves->pins, 0, 0), nullptr, vo, "pin");
+    h.lower_report = verifyPiece(turnLowerHalf(h.lower, scene), &lower_scene, vo, "lower half", f32);
+    h.pin_report = verifyPiece(pinMesh(scene.halves->pins, 0, 0), nullptr, vo, "pin", f32);
     h.pair = checkHalves(scene, whole, h.upper, h.lower);
     if (!h.pair->passed()) throw ModelVerificationFailed("halves as a pair", pairText(*h.pair));
     return h;
@@ -63,7 +66,10 @@ VerifiedModel makeVerifiedModel(const Scene& scene, const ModelRequest& rq,
             vo.printability = false;
             m.quick = true;
         }
-        m.report = verifyModel(m.mesh, &scene, vo);
+        // In parts, the file holds the parts, checked as float32 below; the
+        // one solid is checked (and read back) as meshed.
+        const bool whole_written = rq.stored_as_float32 && !rq.parts && !scene.halves;
+        m.report = verifyModel(whole_written ? float32Mesh(m.mesh) : m.mesh, &scene, vo);
         if (!m.report->passed()) throw ModelVerificationFailed("generated model", formatReport(*m.report));
     }
     if (rq.parts) {
@@ -75,7 +81,13 @@ VerifiedModel makeVerifiedModel(const Scene& scene, const ModelRequest& rq,
             say(progress, "verifying parts");
             VerifyOptions vo = rq.verify_options;
             vo.printability = false;
-            m.parts_report = verifyParts(m.parts, nullptr, vo);
+            if (rq.stored_as_float32) {
+                std::vector<MeshPart> stored = m.parts;
+                for (MeshPart& p : stored) p.mesh = float32Mesh(p.mesh);
+                m.parts_report = verifyParts(stored, nullptr, vo);
+            } else {
+                m.parts_report = verifyParts(m.parts, nullptr, vo);
+            }
             if (!m.parts_report->passed()) throw ModelVerificationFailed("model's parts", formatPartsReport(*m.parts_report));
         }
     }

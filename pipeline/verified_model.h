@@ -35,6 +35,10 @@ struct ModelRequest {
     bool verify = true;         ///< false: mesh only (tsf gen --no-verify)
     bool verify_full = false;   ///< every check also above kQuickVerifyTriangles
     bool parts = false;         ///< mesh the parts of a multi-part 3MF (gen/mesh/scene_parts.h) and verify them
+    /// The file stores float32 (STL, 3MF): the checks of what is written (the
+    /// one solid, or each part, or each half and pin) run on the mesh as the
+    /// file holds it (gen/mesh_io/float32_mesh.h), not on the doubles.
+    bool stored_as_float32 = false;
     VerifyOptions verify_options;  ///< name, nozzle, layer, ... (the Scene is always the one given)
     /// Called with the mesh as soon as it is made, before any check: a front
     /// end's own early refusal (a model larger than the printer's bed) ends
