@@ -17,7 +17,7 @@ DEPS=(
   libglm-dev libusb-1.0-0-dev libpng-dev lib3mf-dev libzip-dev
   libcli11-dev nlohmann-json3-dev libgdal-dev liblouis-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  openscad admesh xvfb xauth prusa-slicer
+  openscad admesh xvfb xauth prusa-slicer unzip
   clang-14 libclang-rt-14-dev
 )
 

@@ -264,7 +264,9 @@ void runGen(GenCommandOptions o) {
         timer.begin("writing");
         MeshWriteOptions wo;
         wo.ascii_stl = o.ascii;
-        wo.title = "tsf " TSF_VERSION " " + o.gen.input;
+        // The input's file name only: a shared model must not carry the folders
+        // of the machine it was made on.
+        wo.title = "tsf " TSF_VERSION " " + std::filesystem::path(o.gen.input).filename().string();
         if (halves) {
             writeHalves(*halves, o.output, wo, summary);
         } else if (o.parts) {

@@ -106,3 +106,28 @@ TEST(PartsCli, PartsNeedA3mfAndPrintCheckAModelFile) {
 
 }  // namespace
 }  // namespace tsf
+
+namespace tsf {
+namespace {
+
+// A model is shared: it carries the input's file name, never the folders of
+// the machine it was made on (STL header, 3MF object name and title).
+TEST(PartsCli, AWrittenModelNamesTheInputFileNotItsFolders) {
+    const auto dir = test::scratchDir();
+    const std::string input = std::string(TSF_SOURCE_DIR) + "/examples/volcano.csv";
+    const std::string folders = std::filesystem::path(TSF_SOURCE_DIR).filename().string() + "/examples";
+    const auto stl = test::runTsf("gen " + input + " -o " + (dir / "v.stl").string(), dir);
+    ASSERT_EQ(stl.exit_code, test::kExitOk) << stl.err;
+    const std::string header = test::readText(dir / "v.stl").substr(0, 80);
+    EXPECT_NE(header.find("volcano.csv"), std::string::npos) << header;
+    EXPECT_EQ(header.find(folders), std::string::npos) << header;
+    const auto tmf = test::runTsf("gen " + input + " --title Volcano --parts -o " + (dir / "v.3mf").string(), dir);
+    ASSERT_EQ(tmf.exit_code, test::kExitOk) << tmf.err;
+    const auto unzip = test::runCommand("unzip -p " + (dir / "v.3mf").string() + " 3D/3dmodel.model");
+    ASSERT_EQ(unzip.exit_code, 0) << unzip.output;
+    EXPECT_NE(unzip.output.find("volcano.csv"), std::string::npos);
+    EXPECT_EQ(unzip.output.find(folders), std::string::npos) << unzip.output.substr(0, 2000);
+}
+
+}  // namespace
+}  // namespace tsf
