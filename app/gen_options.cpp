@@ -44,8 +44,10 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--bins", o.bins,
                     "Number of hexagon columns (points: default 30; rasters: default one per raster column, at most 1000)")
         ->check(CLI::Range(1, 100000))->group(in);
-    cmd->add_option("--sample", o.sample, "Raster -> hexagons: mean (of the pixels in a hexagon) | nearest | bilinear")
-        ->check(CLI::IsMember({"mean", "nearest", "bilinear"}))->capture_default_str()->group(in);
+    cmd->add_option("--sample", o.sample,
+                    "Raster -> hexagons: auto (mode for a class map with a colour table, else mean) | mean (of the "
+                    "pixels in a hexagon) | mode (their most common value) | nearest | bilinear")
+        ->check(CLI::IsMember({"auto", "mean", "mode", "nearest", "bilinear"}))->capture_default_str()->group(in);
     cmd->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; tab space (default: detect)")->group(in);
     cmd->add_flag("--decimal-comma", o.decimal_comma,
                   "Grid CSV: read 1,5 as 1.5 (spreadsheet exports; default: detected when the delimiter is ; "

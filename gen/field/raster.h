@@ -23,6 +23,10 @@ struct Raster {
     int32_t cols = 0;
     int32_t rows = 0;
     std::vector<double> values;  ///< row-major, row 0 = north; NaN = no data
+    /// The values are class codes, not measurements (a band with a colour
+    /// table): a hexagon takes the class most of its pixels have, never a
+    /// mean of codes (gen/field/resample.h, Method::Mode).
+    bool categorical = false;
     std::string source;          ///< file it came from, for messages and SCAD headers
     std::string kind;            ///< "csv", "pgm", "png", "esri-ascii", ...
     /// Size of one raster cell in data units (ESRI cellsize; 1 for images/CSV).

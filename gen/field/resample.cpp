@@ -136,6 +136,43 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
                 }
             break;
         }
+        case ResampleOptions::Method::Mode: {
+            // Per hexagon the classes seen and their counts: few per hexagon
+            // in class maps, so a short list searched linearly.
+            std::vector<std::vector<std::pair<double, int64_t>>> seen(size_t(grid.cellCount()));
+            std::vector<uint8_t> inside(size_t(grid.cellCount()), 0);
+            for (int32_t pr = 0; pr < raster.rows; ++pr) {
+                const double y_pitch = (layout.y0_px - (pr + 0.5)) / p;
+                for (int32_t pc = 0; pc < raster.cols; ++pc) {
+                    const double x_pitch = (pc + 0.5 - layout.x0_px) / p;
+                    int32_t c = 0, r = 0;
+                    if (!hexCellAt(grid, x_pitch, y_pitch, c, r)) continue;
+                    const size_t k = size_t(grid.index(c, r));
+                    inside[k] = 1;
+                    const double v = raster.at(pc, pr);
+                    if (std::isnan(v)) continue;
+                    auto& list = seen[k];
+                    auto it = std::find_if(list.begin(), list.end(), [v](const auto& e) { return e.first == v; });
+                    if (it == list.end()) list.push_back({v, 1});
+                    else ++it->second;
+                }
+            }
+            for (int32_t r = 0; r < grid.rows; ++r)
+                for (int32_t c = 0; c < grid.cols; ++c) {
+                    const size_t k = size_t(grid.index(c, r));
+                    if (!inside[k]) {
+                        field.at(c, r) = nearestValue(raster, hexCentrePx(layout, c, r));
+                        continue;
+                    }
+                    const auto& list = seen[k];
+                    if (list.empty()) continue;  // every pixel without data
+                    auto best = list.front();
+                    for (const auto& e : list)
+                        if (e.second > best.second || (e.second == best.second && e.first < best.first)) best = e;
+                    field.at(c, r) = best.first;
+                }
+            break;
+        }
     }
 
     std::string what;
@@ -143,6 +180,7 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
         case ResampleOptions::Method::Mean: what = "mean of the pixels in each hexagon"; break;
         case ResampleOptions::Method::Nearest: what = "nearest pixel to each hexagon centre"; break;
         case ResampleOptions::Method::Bilinear: what = "bilinear interpolation at each hexagon centre"; break;
+        case ResampleOptions::Method::Mode: what = "most common class of the pixels in each hexagon"; break;
     }
     field.how = what + ": " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) + " px -> " +
                 std::to_string(grid.cols) + " x " + std::to_string(grid.rows) + " hexagons, pitch " +
@@ -208,7 +246,8 @@ ResampleOptions::Method parseResampleMethod(const std::string& name) {
     if (name == "mean") return ResampleOptions::Method::Mean;
     if (name == "nearest") return ResampleOptions::Method::Nearest;
     if (name == "bilinear") return ResampleOptions::Method::Bilinear;
-    throw InputError("unknown sampling method \"" + name + "\"; expected mean, nearest or bilinear");
+    if (name == "mode") return ResampleOptions::Method::Mode;
+    throw InputError("unknown sampling method \"" + name + "\"; expected auto, mean, mode, nearest or bilinear");
 }
 
 }  // namespace tsf

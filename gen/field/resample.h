@@ -23,6 +23,10 @@
 //     hexagon that contains no pixel centre (hexagons smaller than pixels)
 //     takes the pixel containing its centre. A hexagon whose pixels are all
 //     NaN is NaN.
+//   - Mode: the value most of the finite pixels whose centres lie in the
+//     hexagon have (ties: the smallest of them), for class codes (land
+//     cover): always a value of the raster, never an invented one. A
+//     hexagon with no pixel centre takes the pixel containing its centre.
 //   - Nearest: the pixel containing the hexagon's centre (clamped to the
 //     raster at the edges).
 //   - Bilinear: bilinear interpolation between the four pixel centres around
@@ -51,7 +55,7 @@ inline constexpr int32_t kMaxResampleCols = 1000;
 inline constexpr int64_t kMaxResampleCells = 4'000'000;
 
 struct ResampleOptions {
-    enum class Method { Mean, Nearest, Bilinear };
+    enum class Method { Mean, Nearest, Bilinear, Mode };
     int hex_cols = 0;  ///< hexagon columns; 0 = raster cols, capped at kMaxResampleCols
     Method method = Method::Mean;
 };

@@ -78,7 +78,11 @@ HexField loadField(const FieldLoadOptions& o) {
     }
     RasterPlacement pl;
     pl.hex_cols = o.bins;
-    pl.method = parseResampleMethod(o.sample);
+    pl.method = o.sample == "auto" ? (raster.categorical ? ResampleOptions::Method::Mode : ResampleOptions::Method::Mean)
+                                   : parseResampleMethod(o.sample);
+    if (raster.categorical && pl.method == ResampleOptions::Method::Mean)
+        input.facts.push_back({"note", "--sample mean averages class codes into values no class has; --sample mode "
+                                       "(the default for classes) keeps every hexagon a class of the map"});
     pl.pitch_mm = o.cell_mm;
     pl.fit_width_mm = o.fit_width_mm;
     pl.fit_depth_mm = o.fit_depth_mm;

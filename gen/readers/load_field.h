@@ -30,7 +30,9 @@ struct FieldLoadOptions {
     std::string aggregate = "count";  ///< count | sum | mean (points)
     double bin_size = 0.0;      ///< hex pitch in data units (points); 0 = from bins
     int bins = 0;               ///< target number of hex columns (points and rasters); 0 = default
-    std::string sample = "mean";  ///< raster -> hexes: mean | nearest | bilinear
+    /// raster -> hexes: auto (mode for class codes, Raster::categorical, else
+    /// mean) | mean | mode | nearest | bilinear
+    std::string sample = "auto";
     std::string delimiter;      ///< CSV delimiter: "," ";" "tab" "space" (or the character); "" = detect
     bool decimal_comma = false; ///< grid CSV: "1,5" is 1.5 (default: detected, gen/readers/decimal_mark.h)
     std::optional<double> nodata;  ///< rasters: this value means "no data" (e.g. -9999)

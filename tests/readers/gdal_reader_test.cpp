@@ -98,6 +98,54 @@ TEST(GdalReader, LoadFieldReportsWhatWasRead) {
     EXPECT_TRUE(f.one_to_one);
 }
 
+// A land-cover map: class codes with a colour table. Resampled, every
+// hexagon is a class of the map (the most common of its pixels), never the
+// mean of two codes; the same numbers without a colour table are measurements
+// and are averaged.
+TEST(GdalReader, AClassMapIsResampledByItsMostCommonClassNeverByAMean) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = s.rows = 60;
+    s.epsg = 32633;
+    s.pixel_w = s.pixel_h = 30;
+    // Wetland classes 90 and 95 in a fine checkerboard of 3 x 3 pixel blocks,
+    // a forest (41) in the north-west quarter.
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c)
+            s.values.push_back(r < 30 && c < 30 ? 41.0f : ((r / 3 + c / 3) % 2 ? 95.0f : 90.0f));
+    s.classes = true;
+    FieldLoadOptions in;
+    in.input = (dir / "landcover.tif").string();
+    in.bins = 12;  // 60 px -> 12 hexagons across: about 5 px a hexagon
+    ASSERT_TRUE(test::writeGeoTiff(in.input, s));
+    const HexField f = loadField(in);
+    EXPECT_FALSE(f.one_to_one);
+    EXPECT_NE(f.how.find("most common class"), std::string::npos) << f.how;
+    size_t cells = 0;
+    for (const double v : f.values) {
+        if (std::isnan(v)) continue;
+        ++cells;
+        EXPECT_TRUE(v == 41.0 || v == 90.0 || v == 95.0) << v << " is no class of the map";
+    }
+    EXPECT_GT(cells, 100u);
+    bool said = false;
+    for (const ReadFact& fact : f.input.facts) said = said || fact.value.find("colour table") != std::string::npos;
+    EXPECT_TRUE(said);
+    // Without the colour table the same numbers are measurements: the mean.
+    s.classes = false;
+    in.input = (dir / "measured.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(in.input, s));
+    const HexField m = loadField(in);
+    bool averaged = false;
+    for (const double v : m.values) averaged = averaged || (v > 90.0 && v < 95.0);
+    EXPECT_TRUE(averaged) << m.how;
+    // Asked for by name, mode works on any raster.
+    in.sample = "mode";
+    const HexField mode = loadField(in);
+    for (const double v : mode.values)
+        if (!std::isnan(v)) EXPECT_TRUE(v == 41.0 || v == 90.0 || v == 95.0) << v;
+}
+
 TEST(GdalReader, InfoSaysWhatWasRead) {
     const auto dir = test::scratchDir();
     test::GeoTiffSpec s = demSpec();

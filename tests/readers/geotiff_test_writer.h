@@ -19,6 +19,7 @@ struct GeoTiffSpec {
     double west = 0, north = 0; ///< top-left corner, CRS units
     double pixel_w = 1, pixel_h = 1;  ///< CRS units, positive
     std::optional<double> nodata;
+    bool classes = false;       ///< an 8-bit band with a colour table (a class map); values 0..255
 };
 
 /// Writes spec as a Float32 GeoTIFF; returns false when GDAL refuses.
@@ -26,7 +27,7 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
     GDALAllRegister();
     GDALDriverH driver = GDALGetDriverByName("GTiff");
     if (!driver) return false;
-    GDALDatasetH ds = GDALCreate(driver, path.c_str(), s.cols, s.rows, 1, GDT_Float32, nullptr);
+    GDALDatasetH ds = GDALCreate(driver, path.c_str(), s.cols, s.rows, 1, s.classes ? GDT_Byte : GDT_Float32, nullptr);
     if (!ds) return false;
     double gt[6] = {s.west, s.pixel_w, 0, s.north, 0, -s.pixel_h};
     GDALSetGeoTransform(ds, gt);
@@ -38,6 +39,15 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
     }
     GDALRasterBandH band = GDALGetRasterBand(ds, 1);
     if (s.nodata) GDALSetRasterNoDataValue(band, *s.nodata);
+    if (s.classes) {
+        GDALColorTableH table = GDALCreateColorTable(GPI_RGB);
+        for (int k = 0; k < 256; ++k) {
+            const GDALColorEntry e{short(k), short(255 - k), short((k * 7) % 256), 255};
+            GDALSetColorEntry(table, k, &e);
+        }
+        GDALSetRasterColorTable(band, table);
+        GDALDestroyColorTable(table);
+    }
     std::vector<float> v = s.values;
     const bool ok = GDALRasterIO(band, GF_Write, 0, 0, s.cols, s.rows, v.data(), s.cols, s.rows, GDT_Float32, 0, 0) ==
                     CE_None;

@@ -77,6 +77,12 @@ Raster readDataset(const std::string& gdal_name, const std::string& path) {
     r.facts.push_back({"format", std::string(driver ? GDALGetDriverLongName(GDALGetDatasetDriver(ds.h)) : "?") +
                                      " through GDAL " + GDALVersionInfo("RELEASE_NAME")});
     if (bands > 1) r.facts.push_back({"band", "1 of " + std::to_string(bands)});
+    // A colour table (a palette) means the values are class codes: land
+    // cover, soil types. Averaging two of them invents a class.
+    if (GDALGetRasterColorTable(band) || GDALGetRasterColorInterpretation(band) == GCI_PaletteIndex) {
+        r.categorical = true;
+        r.facts.push_back({"values", "classes (the band has a colour table)"});
+    }
 
     // Pixel size on the ground (CRS units) and whether x is degrees of longitude.
     double gt[6] = {0, 1, 0, 0, -1, 0};

@@ -15,7 +15,7 @@ namespace tsf {
 inline constexpr const char* kGdalModuleName = "tsf-gdal.so";
 
 /// Bumped whenever GdalCall, GdalModuleError or Raster change.
-inline constexpr int kGdalModuleAbi = 1;
+inline constexpr int kGdalModuleAbi = 2;  // 2: Raster::categorical
 
 inline constexpr int kGdalOk = 0;
 inline constexpr int kGdalInputError = 1;  ///< error holds an InputError's parts
