@@ -44,6 +44,10 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--bins", o.bins,
                     "Number of hexagon columns (points: default 30; rasters: default one per raster column, at most 1000)")
         ->check(CLI::Range(1, 100000))->group(in);
+    cmd->add_option("--band", o.band,
+                    "Raster band to read, 1-based: a band of a multi-band GeoTIFF, a time step or level of a "
+                    "NetCDF variable (tsf info lists them)")
+        ->capture_default_str()->group(in);
     cmd->add_option("--sample", o.sample,
                     "Raster -> hexagons: auto (mode for a class map with a colour table, else mean) | mean (of the "
                     "pixels in a hexagon) | mode (their most common value) | nearest | bilinear")

@@ -75,13 +75,13 @@ const Module& module() {
     return m;
 }
 
-Raster call(const std::string& path, const std::string_view* bytes) {
+Raster call(const std::string& path, const std::string_view* bytes, int band) {
     const Module& m = module();
     if (!m.read)
         throw std::runtime_error(path + ": this raster is read through GDAL, and tsf's GDAL module " + m.problem);
     Raster r;
     GdalModuleError e;
-    const GdalCall c{&path, bytes, &r, &e};
+    const GdalCall c{&path, bytes, &r, &e, band};
     const int status = m.read(&c);
     if (status == kGdalInputError) throw InputError(e.path, e.line, e.column, e.detail);
     if (status != kGdalOk) throw std::runtime_error(path + ": GDAL failed: " + e.detail);
@@ -90,8 +90,8 @@ Raster call(const std::string& path, const std::string_view* bytes) {
 
 }  // namespace
 
-Raster readGdalRaster(const std::string& path) { return call(path, nullptr); }
+Raster readGdalRaster(const std::string& path, int band) { return call(path, nullptr, band); }
 
-Raster parseGdalRaster(std::string_view bytes, const std::string& path) { return call(path, &bytes); }
+Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band) { return call(path, &bytes, band); }
 
 }  // namespace tsf

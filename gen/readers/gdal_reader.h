@@ -9,7 +9,7 @@
 // build put it. A missing or foreign module is a std::runtime_error naming
 // the places looked in (exit code 3 in the CLI: a missing tool).
 //
-// Reads band 1 as doubles. Layout as every Raster: row 0 north, column 0
+// Reads one band (band 1 unless asked) as doubles. Layout as every Raster: row 0 north, column 0
 // west (GDAL's own order for north-up rasters).
 //   - no data: the band's no-data value becomes NaN (so do NaN pixels);
 //   - pixel size and CRS (from the geotransform and the spatial reference):
@@ -39,11 +39,13 @@
 namespace tsf {
 
 /// Reads the raster file at `path` through GDAL.
-Raster readGdalRaster(const std::string& path);
+/// `band` is 1-based (a band, a time step or a level); a band the file does
+/// not have is an InputError saying how many it has.
+Raster readGdalRaster(const std::string& path, int band = 1);
 
 /// Same on bytes in memory (GDAL's /vsimem/); `path` names them in messages
 /// and tells GDAL the extension. Files that need a sidecar (.hdr, .prj)
 /// must be read with readGdalRaster.
-Raster parseGdalRaster(std::string_view bytes, const std::string& path);
+Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band = 1);
 
 }  // namespace tsf

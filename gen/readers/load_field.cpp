@@ -31,6 +31,9 @@ HexField loadField(const FieldLoadOptions& o) {
                            : (o.delimiter == "tab" || o.delimiter == "\t") ? '\t'
                            : (o.delimiter == "space" || o.delimiter == " ") ? ' '
                                                                             : o.delimiter[0];
+    if (o.band < 1) throw InputError("--band " + std::to_string(o.band) + ": bands are counted from 1");
+    if (!o.points.empty() && o.band != 1)
+        throw InputError("--band is for rasters with several bands; a table of points has none");
     if (!o.points.empty()) {
         PointColumns cols = parsePointColumns(o.points);
         cols.delimiter = delimiter;
@@ -52,6 +55,7 @@ HexField loadField(const FieldLoadOptions& o) {
     RasterReadOptions ro;
     ro.delimiter = delimiter;
     ro.decimal = o.decimal_comma ? DecimalMark::Comma : DecimalMark::Detect;
+    ro.band = o.band;
     Raster raster = readRaster(o.input, ro);
     int64_t nodata_cells = 0;
     if (o.nodata)

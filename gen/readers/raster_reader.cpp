@@ -102,7 +102,7 @@ Raster parseRaster(std::string_view bytes, const std::string& path, const Raster
         case RasterFormat::Png: return parsePng(bytes, path);
         case RasterFormat::Pgm: return parsePgm(bytes, path);
         case RasterFormat::EsriAscii: return parseEsriAscii(bytes, path);
-        case RasterFormat::Gdal: return withMagicInErrors(bytes, [&] { return parseGdalRaster(bytes, path); });
+        case RasterFormat::Gdal: return withMagicInErrors(bytes, [&] { return parseGdalRaster(bytes, path, opts.band); });
         default: return parseCsvGrid(bytes, path, opts.delimiter, opts.decimal);
     }
 }
@@ -113,7 +113,10 @@ Raster readRaster(const std::string& path, const RasterReadOptions& opts) {
     RasterReadOptions o = opts;
     if (o.format == RasterFormat::Auto) o.format = detectRasterFormat(head, path);
     // GDAL reads the file itself (and any sidecar: .prj, .hdr, .aux.xml).
-    if (o.format == RasterFormat::Gdal) return withMagicInErrors(head, [&] { return readGdalRaster(path); });
+    if (o.format == RasterFormat::Gdal) return withMagicInErrors(head, [&] { return readGdalRaster(path, o.band); });
+    if (o.band != 1)
+        throw InputError(path, 0, 0, "--band " + std::to_string(o.band) + ": this file has one band (--band is for "
+                                     "rasters GDAL reads with several: multi-band GeoTIFF, NetCDF time steps)");
     const std::string bytes = readFileBytes(path, kMaxInputFileBytes);
     return parseRaster(bytes, path, o);
 }

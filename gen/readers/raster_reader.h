@@ -32,6 +32,9 @@ struct RasterReadOptions {
     char delimiter = 0;
     /// Grid CSV only: Detect, or Comma for "1,5" (decimal_mark.h).
     DecimalMark decimal = DecimalMark::Detect;
+    /// Rasters GDAL reads: which band, 1-based. Other formats have one band
+    /// and refuse another number.
+    int band = 1;
 };
 
 /// Reads `path`. Throws InputError for a missing file or any format error.

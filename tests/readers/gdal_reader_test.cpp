@@ -146,6 +146,37 @@ TEST(GdalReader, AClassMapIsResampledByItsMostCommonClassNeverByAMean) {
         if (!std::isnan(v)) EXPECT_TRUE(v == 41.0 || v == 90.0 || v == 95.0) << v;
 }
 
+TEST(GdalReader, BandChoosesWhichBandIsReadAndABandTheFileLacksIsBadInput) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = 4;
+    s.rows = 3;
+    s.values = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+    s.bands = 3;  // band b holds the values + 100 (b - 1)
+    const std::string path = (dir / "three.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    EXPECT_EQ(readGdalRaster(path).at(0, 0), 1.0);
+    const Raster third = readGdalRaster(path, 3);
+    EXPECT_EQ(third.at(0, 0), 201.0);
+    EXPECT_EQ(third.at(3, 2), 212.0);
+    EXPECT_NE(third.fact("band").find("3 of 3"), std::string::npos) << third.fact("band");
+    FieldLoadOptions in;
+    in.input = path;
+    in.band = 2;
+    const HexField f = loadField(in);
+    EXPECT_EQ(f.input.min, 101.0);
+    EXPECT_EQ(f.input.max, 112.0);
+    in.band = 4;
+    const InputError e = test::catchInputError([&] { loadField(in); });
+    EXPECT_NE(std::string(e.what()).find("--band 4: it has 3 bands"), std::string::npos) << e.what();
+    // A file with one band of its own (a CSV grid) refuses another number.
+    test::writeText(dir / "g.csv", "1,2\n3,4\n");
+    in.input = (dir / "g.csv").string();
+    in.band = 2;
+    const InputError csv = test::catchInputError([&] { loadField(in); });
+    EXPECT_NE(std::string(csv.what()).find("this file has one band"), std::string::npos) << csv.what();
+}
+
 TEST(GdalReader, InfoSaysWhatWasRead) {
     const auto dir = test::scratchDir();
     test::GeoTiffSpec s = demSpec();

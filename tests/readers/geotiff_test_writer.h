@@ -20,6 +20,7 @@ struct GeoTiffSpec {
     double pixel_w = 1, pixel_h = 1;  ///< CRS units, positive
     std::optional<double> nodata;
     bool classes = false;       ///< an 8-bit band with a colour table (a class map); values 0..255
+    int bands = 1;              ///< band b (1-based) holds values + 100 * (b - 1)
 };
 
 /// Writes spec as a Float32 GeoTIFF; returns false when GDAL refuses.
@@ -27,7 +28,7 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
     GDALAllRegister();
     GDALDriverH driver = GDALGetDriverByName("GTiff");
     if (!driver) return false;
-    GDALDatasetH ds = GDALCreate(driver, path.c_str(), s.cols, s.rows, 1, s.classes ? GDT_Byte : GDT_Float32, nullptr);
+    GDALDatasetH ds = GDALCreate(driver, path.c_str(), s.cols, s.rows, s.bands, s.classes ? GDT_Byte : GDT_Float32, nullptr);
     if (!ds) return false;
     double gt[6] = {s.west, s.pixel_w, 0, s.north, 0, -s.pixel_h};
     GDALSetGeoTransform(ds, gt);
@@ -48,9 +49,15 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
         GDALSetRasterColorTable(band, table);
         GDALDestroyColorTable(table);
     }
-    std::vector<float> v = s.values;
-    const bool ok = GDALRasterIO(band, GF_Write, 0, 0, s.cols, s.rows, v.data(), s.cols, s.rows, GDT_Float32, 0, 0) ==
-                    CE_None;
+    bool ok = true;
+    for (int b = 1; b <= s.bands; ++b) {
+        std::vector<float> v = s.values;
+        for (float& x : v) x += float(100 * (b - 1));
+        GDALRasterBandH each = GDALGetRasterBand(ds, b);
+        if (s.nodata && b > 1) GDALSetRasterNoDataValue(each, *s.nodata);
+        ok = ok && GDALRasterIO(each, GF_Write, 0, 0, s.cols, s.rows, v.data(), s.cols, s.rows, GDT_Float32, 0, 0) ==
+                       CE_None;
+    }
     GDALClose(ds);
     return ok;
 }

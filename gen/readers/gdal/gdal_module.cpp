@@ -59,7 +59,7 @@ std::string crsName(OGRSpatialReferenceH srs) {
     return out;
 }
 
-Raster readDataset(const std::string& gdal_name, const std::string& path) {
+Raster readDataset(const std::string& gdal_name, const std::string& path, int band_number) {
     registerDrivers();
     QuietGdal quiet;
     Dataset ds;
@@ -68,7 +68,11 @@ Raster readDataset(const std::string& gdal_name, const std::string& path) {
     const int cols = GDALGetRasterXSize(ds.h), rows = GDALGetRasterYSize(ds.h), bands = GDALGetRasterCount(ds.h);
     if (bands < 1) throw InputError(path, 0, 0, "has no raster band");
     checkRasterSize(path, 0, cols, rows);
-    GDALRasterBandH band = GDALGetRasterBand(ds.h, 1);
+    if (band_number < 1 || band_number > bands)
+        throw InputError(path, 0, 0,
+                         "--band " + std::to_string(band_number) + ": it has " + std::to_string(bands) +
+                             (bands == 1 ? " band" : " bands") + " (give --band 1 to " + std::to_string(bands) + ")");
+    GDALRasterBandH band = GDALGetRasterBand(ds.h, band_number);
 
     Raster r;
     r.source = path;
@@ -76,7 +80,12 @@ Raster readDataset(const std::string& gdal_name, const std::string& path) {
     r.kind = std::string("gdal/") + (driver ? driver : "?");
     r.facts.push_back({"format", std::string(driver ? GDALGetDriverLongName(GDALGetDatasetDriver(ds.h)) : "?") +
                                      " through GDAL " + GDALVersionInfo("RELEASE_NAME")});
-    if (bands > 1) r.facts.push_back({"band", "1 of " + std::to_string(bands)});
+    if (bands > 1) {
+        std::string what = std::to_string(band_number) + " of " + std::to_string(bands);
+        if (const char* d = GDALGetDescription(band); d && *d) what += std::string(" (") + d + ")";
+        if (band_number == 1) what += "; --band N for another";
+        r.facts.push_back({"band", what});
+    }
     // A colour table (a palette) means the values are class codes: land
     // cover, soil types. Averaging two of them invents a class.
     if (GDALGetRasterColorTable(band) || GDALGetRasterColorInterpretation(band) == GCI_PaletteIndex) {
@@ -141,9 +150,9 @@ Raster readDataset(const std::string& gdal_name, const std::string& path) {
     return r;
 }
 
-Raster readGdalFile(const std::string& path) { return readDataset(path, path); }
+Raster readGdalFile(const std::string& path, int band) { return readDataset(path, path, band); }
 
-Raster parseGdalBytes(std::string_view bytes, const std::string& path) {
+Raster parseGdalBytes(std::string_view bytes, const std::string& path, int band) {
     registerDrivers();
     static std::atomic<unsigned> counter{0};
     std::string ext;
@@ -158,7 +167,7 @@ Raster parseGdalBytes(std::string_view bytes, const std::string& path) {
         std::string n;
         ~Unlink() { VSIUnlink(n.c_str()); }
     } unlink{name};
-    return readDataset(name, path);
+    return readDataset(name, path, band);
 }
 
 }  // namespace
@@ -170,7 +179,8 @@ extern "C" __attribute__((visibility("default"))) int tsf_gdal_module_abi() { re
 // parts, anything else as its message.
 extern "C" __attribute__((visibility("default"))) int tsf_gdal_read(const tsf::GdalCall* call) {
     try {
-        *call->raster = call->bytes ? tsf::parseGdalBytes(*call->bytes, *call->path) : tsf::readGdalFile(*call->path);
+        *call->raster = call->bytes ? tsf::parseGdalBytes(*call->bytes, *call->path, call->band)
+                                    : tsf::readGdalFile(*call->path, call->band);
         return tsf::kGdalOk;
     } catch (const tsf::InputError& e) {
         call->error->path = e.path();

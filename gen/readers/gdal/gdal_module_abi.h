@@ -15,7 +15,7 @@ namespace tsf {
 inline constexpr const char* kGdalModuleName = "tsf-gdal.so";
 
 /// Bumped whenever GdalCall, GdalModuleError or Raster change.
-inline constexpr int kGdalModuleAbi = 2;  // 2: Raster::categorical
+inline constexpr int kGdalModuleAbi = 3;  // 3: GdalCall::band; 2: Raster::categorical
 
 inline constexpr int kGdalOk = 0;
 inline constexpr int kGdalInputError = 1;  ///< error holds an InputError's parts
@@ -32,6 +32,7 @@ struct GdalCall {
     const std::string_view* bytes = nullptr;  ///< the file's bytes in memory; nullptr: read `path`
     Raster* raster = nullptr;                 ///< out
     GdalModuleError* error = nullptr;         ///< out, when the result is not kGdalOk
+    int band = 1;                             ///< which band, 1-based (bands, time steps, levels)
 };
 
 // The module's two entry points (extern "C", looked up with dlsym):
