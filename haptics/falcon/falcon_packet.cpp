@@ -68,7 +68,7 @@ bool decodeFalconReport(std::span<const uint8_t, kFalconPacketBytes> f, FalconRe
 }
 
 FalconPacket encodeFalconReport(const FalconReport& r) noexcept {
-    return frame(r.encoder, uint8_t((r.buttons & 0x0F) | ((r.homed_mask & 0x07) << 4)));
+    return frame(r.encoder, uint8_t((r.buttons & 0x0F) | ((r.homed_mask & 0x07) << 4) | (r.unknown_bits & 0x80)));
 }
 
 bool decodeFalconCommand(std::span<const uint8_t, kFalconPacketBytes> f, FalconCommand& out) noexcept {

@@ -107,6 +107,7 @@ TEST(FalconPacket, AnUndocumentedStatusBitIsKeptAndIgnoredNotAReasonToDropTheFra
     ASSERT_TRUE(decodeFalconReport(p, r));
     EXPECT_EQ(r.unknown_bits, 0x80);
     EXPECT_EQ(r.homed_mask, 0x3);
+    EXPECT_EQ(encodeFalconReport(r), p);  // the unknown bit survives a round trip
     EXPECT_EQ(r.buttons, 0x2);
     EXPECT_EQ(r.encoder[0], 2752);
 }
