@@ -1,5 +1,6 @@
 #include "gen/readers/csv_grid_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -79,7 +80,20 @@ Raster parseCsvGrid(std::string_view text, const std::string& path, char delimit
     if (delimiter == ',' && decimal == DecimalMark::Comma)
         throw InputError("a decimal comma needs another delimiter than the comma (--delimiter ; tab or space)");
     char delim = delimiter != 0 ? delimiter : detectCsvDelimiter(text);
-    if (delim == ',' && decimal == DecimalMark::Comma) delim = ' ';  // "1,5" on every line: one column
+    if (delim == ',' && decimal == DecimalMark::Comma) {
+        // "1,5" on every line is one column of decimal commas; "1,2,3" is a
+        // comma-separated file that --decimal-comma would misread.
+        const size_t start = text.find_first_not_of(" \t\r\n");
+        const std::string_view first = start == std::string_view::npos ? std::string_view() : text.substr(start);
+        const std::string_view line = first.substr(0, first.find_first_of("\r\n"));
+        if (std::count(line.begin(), line.end(), ',') > 1)
+            throw InputError(path, 0, 0,
+                             "--decimal-comma: the values are separated by commas (\"" +
+                                 std::string(line.substr(0, 40)) +
+                                 "\"); a decimal comma needs another delimiter: give --delimiter ; tab or space, or "
+                                 "leave out --decimal-comma");
+        delim = ' ';  // "1,5" on every line: one column
+    }
     DecimalMark mark = delim == ',' ? DecimalMark::Point : decimal;
     CsvTokenizer tokenizer(text, delim, path);
     std::vector<CsvField> fields;

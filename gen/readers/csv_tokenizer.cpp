@@ -1,5 +1,8 @@
 #include "gen/readers/csv_tokenizer.h"
 
+#include <cctype>
+#include <string>
+
 #include "gen/util/error.h"
 #include "gen/readers/number_field.h"
 
@@ -48,6 +51,38 @@ bool allTokensNumeric(std::string_view line) {
     return any;
 }
 
+// True if every blank-separated token of `line` is a number written with a
+// decimal comma or without a mark ("1,5", "-2", "3,25e2"), at least one with
+// the comma: a whitespace-separated grid from a decimal-comma locale, not a
+// comma-separated one ("1,5 2,5 3,5").
+bool allTokensDecimalComma(std::string_view line) {
+    size_t k = 0;
+    bool any_comma = false, any = false;
+    while (k < line.size()) {
+        while (k < line.size() && (line[k] == ' ' || line[k] == '\t')) ++k;
+        const size_t start = k;
+        while (k < line.size() && line[k] != ' ' && line[k] != '\t') ++k;
+        if (k == start) break;
+        std::string token(line.substr(start, k - start));
+        const size_t comma = token.find(',');
+        if (comma != std::string::npos) {
+            // One comma, between two digits.
+            if (token.find(',', comma + 1) != std::string::npos || comma == 0 || comma + 1 >= token.size() ||
+                !std::isdigit(static_cast<unsigned char>(token[comma - 1])) ||
+                !std::isdigit(static_cast<unsigned char>(token[comma + 1])))
+                return false;
+            token[comma] = '.';
+            any_comma = true;
+        } else if (token.find('.') != std::string::npos) {
+            return false;  // a decimal point beside decimal commas: not this kind of file
+        }
+        double v = 0.0;
+        if (parseNumberField(token, v) != NumberField::Number) return false;
+        any = true;
+    }
+    return any && any_comma;
+}
+
 }  // namespace
 
 char detectCsvDelimiter(std::string_view text) {
@@ -75,6 +110,7 @@ char detectCsvDelimiter(std::string_view text) {
         return '\t';
     }
     if (has_semicolon) return ';';
+    if (has_comma && space_inside_field && allTokensDecimalComma(line)) return ' ';  // "1,5 2,5 3,5"
     if (has_comma) return ',';
     return ' ';
 }

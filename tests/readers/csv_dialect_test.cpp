@@ -57,6 +57,27 @@ TEST(CsvDialect, DecimalCommaGivenAndItsMistakes) {
     EXPECT_EQ(plain.fact("decimal mark"), "");
 }
 
+TEST(CsvDialect, DecimalCommasBetweenBlanksAreAWhitespaceGrid) {
+    // "1,5 2,5 3,5": blanks separate the values, commas are decimal marks.
+    const Raster r = parseCsvGrid("1,5 2,5 3,5\n4 5,25 -6,5\n", "ws.csv");
+    ASSERT_EQ(r.cols, 3);
+    ASSERT_EQ(r.rows, 2);
+    EXPECT_EQ(r.at(0, 0), 1.5);
+    EXPECT_EQ(r.at(1, 1), 5.25);
+    EXPECT_EQ(r.at(2, 1), -6.5);
+    EXPECT_EQ(r.fact("delimiter"), "whitespace (detected)");
+    EXPECT_EQ(r.fact("decimal mark"), "comma (detected)");
+    // A comma followed by a blank is a delimiter, as it always was.
+    const Raster c = parseCsvGrid("1, 2, 3\n4, 5, 6\n", "c.csv");
+    EXPECT_EQ(c.cols, 3);
+    EXPECT_EQ(c.fact("delimiter"), "comma (detected)");
+}
+
+TEST(CsvDialect, DecimalCommaOnACommaSeparatedFileIsRefusedNotAHeader) {
+    EXPECT_INPUT_ERROR(parseCsvGrid("1,2,3\n4,5,6\n", "c.csv", 0, DecimalMark::Comma),
+                       "--decimal-comma: the values are separated by commas");
+}
+
 TEST(CsvDialect, PandasIndexColumnIsDropped) {
     // DataFrame.to_csv(): an empty corner cell, column names 0..n-1, row labels first.
     const Raster r = parseCsvGrid(",0,1,2\n0,1.5,2,3\n1,4,5,6\n", "pd.csv");
