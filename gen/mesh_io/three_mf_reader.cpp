@@ -209,11 +209,96 @@ private:
     MeshSink sink_;
 };
 
+uint32_t le32(std::string_view b, size_t at) {
+    return uint32_t(uint8_t(b[at])) | uint32_t(uint8_t(b[at + 1])) << 8 | uint32_t(uint8_t(b[at + 2])) << 16 |
+           uint32_t(uint8_t(b[at + 3])) << 24;
+}
+uint16_t le16(std::string_view b, size_t at) { return uint16_t(uint8_t(b[at]) | uint8_t(b[at + 1]) << 8); }
+uint64_t le64(std::string_view b, size_t at) { return uint64_t(le32(b, at)) | uint64_t(le32(b, at + 4)) << 32; }
+
+// Deflate expands at most about 1032 to 1; an entry claiming more than that
+// of what it occupies in the file is a lie that would make a reader
+// allocate the claim (4 GB for a 2.5 KB file).
+constexpr uint64_t kMaxDeflateRatio = 1032;
+constexpr uint64_t kClaimSlackBytes = 64 * 1024;
+
+// Checks every size the ZIP central directory claims against the bytes the
+// entry occupies, before lib3mf reads anything. A package without a
+// directory is left to lib3mf (it reports that itself).
+void checkZipClaims(std::string_view b, const std::string& name) {
+    constexpr uint32_t kEndSignature = 0x06054b50, kEntrySignature = 0x02014b50;
+    constexpr size_t kEndBytes = 22, kEntryBytes = 46;
+    if (b.size() < kEndBytes) return;
+    size_t end = std::string_view::npos;
+    const size_t lowest = b.size() > kEndBytes + 65535 ? b.size() - kEndBytes - 65535 : 0;
+    for (size_t at = b.size() - kEndBytes + 1; at-- > lowest;)
+        if (le32(b, at) == kEndSignature) {
+            end = at;
+            break;
+        }
+    if (end == std::string_view::npos) return;
+    const auto damaged = [&](const std::string& what) {
+        throw InputError(name, 0, 0, "not a readable 3MF package: its ZIP directory " + what);
+    };
+    uint64_t entries = le16(b, end + 10), dir_size = le32(b, end + 12), dir_at = le32(b, end + 16);
+    size_t dir_end = end;
+    if (entries == 0xFFFF || dir_size == 0xFFFFFFFF || dir_at == 0xFFFFFFFF) {
+        // ZIP64 (lib3mf writes it): the locator just before the end record
+        // points at the ZIP64 end record, which holds the real figures.
+        constexpr uint32_t kLocatorSignature = 0x07064b50, kEnd64Signature = 0x06064b50;
+        if (end < 20 || le32(b, end - 20) != kLocatorSignature) damaged("is damaged (no ZIP64 locator)");
+        const uint64_t end64 = le64(b, end - 20 + 8);
+        if (end < 20 + 56 || end64 > end - 20 - 56 || le32(b, size_t(end64)) != kEnd64Signature)
+            damaged("is damaged (ZIP64 record)");
+        entries = le64(b, size_t(end64) + 32);
+        dir_size = le64(b, size_t(end64) + 40);
+        dir_at = le64(b, size_t(end64) + 48);
+        dir_end = size_t(end64);
+    }
+    if (dir_at > dir_end || dir_size > dir_end - dir_at) damaged("lies outside the file");
+    size_t at = size_t(dir_at);
+    const size_t end_of_dir = dir_end;
+    for (uint64_t k = 0; k < entries; ++k) {
+        if (at + kEntryBytes > end_of_dir || le32(b, at) != kEntrySignature) damaged("is damaged");
+        const uint16_t method = le16(b, at + 10);
+        uint64_t packed = le32(b, at + 20), unpacked = le32(b, at + 24);
+        const size_t name_len = le16(b, at + 28), extra_len = le16(b, at + 30), comment_len = le16(b, at + 32);
+        if (at + kEntryBytes + name_len + extra_len > end_of_dir) damaged("is damaged");
+        if (unpacked == 0xFFFFFFFF || packed == 0xFFFFFFFF) {
+            // The ZIP64 extra field (id 1) holds the sizes that are 0xFFFFFFFF, unpacked first.
+            size_t x = at + kEntryBytes + name_len;
+            const size_t x_end = x + extra_len;
+            bool found = false;
+            while (x + 4 <= x_end && !found) {
+                const uint16_t id = le16(b, x), len = le16(b, x + 2);
+                if (x + 4 + len > x_end) break;
+                if (id == 1) {
+                    size_t f = x + 4;
+                    if (unpacked == 0xFFFFFFFF && f + 8 <= x + 4 + len) unpacked = le64(b, f), f += 8;
+                    if (packed == 0xFFFFFFFF && f + 8 <= x + 4 + len) packed = le64(b, f);
+                    found = true;
+                }
+                x += 4 + len;
+            }
+            if (!found) damaged("is damaged (ZIP64 sizes missing)");
+        }
+        const std::string entry(b.substr(at + kEntryBytes, std::min<size_t>(name_len, 200)));
+        if (packed > b.size()) damaged("says \"" + entry + "\" takes " + std::to_string(packed) +
+                                       " bytes of a " + std::to_string(b.size()) + "-byte file");
+        const uint64_t most = method == 0 ? packed : packed * kMaxDeflateRatio + kClaimSlackBytes;
+        if (unpacked > most)
+            damaged("claims \"" + entry + "\" unpacks to " + std::to_string(unpacked) + " bytes from " +
+                    std::to_string(packed) + " (more than compression can give)");
+        at += kEntryBytes + name_len + extra_len + comment_len;
+    }
+}
+
 // Reads the package and walks its build items: meshes to sink, notes to assembler.
 // model_config (may be null): receives the package's Metadata/Slic3r_PE_model.config ("" if none).
 void walkPackage(std::string_view bytes, const std::string& name, MeshAssembler& assembler, const MeshSink& sink,
                  std::string* model_config = nullptr) {
     if (bytes.empty()) throw InputError(name, 0, 0, "empty file: a 3MF file is a ZIP package");
+    checkZipClaims(bytes, name);
 
     Lib3mfHandle model;
     checkLib3mf(NMR::lib3mf_createmodel(model.out()), nullptr, "lib3mf_createmodel");

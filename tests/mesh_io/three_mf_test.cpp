@@ -89,6 +89,46 @@ TEST(ThreeMfWriter, FileOpensWithLib3mfInMillimetresWithMetadata) {
     NMR::lib3mf_release(items);
 }
 
+// A package whose ZIP directory claims an entry unpacks to gigabytes from a
+// few kilobytes is refused before anything reads it (lib3mf would allocate
+// the claim), naming the entry; the honest package reads.
+TEST(ThreeMfReader, ADirectoryClaimingMoreThanCompressionCanGiveIsRefusedBeforeReading) {
+    const auto dir = scratchDir();
+    const std::string path = (dir / "honest.3mf").string();
+    writeMesh(test::cube(10.5, {0.5, -2.25, 1.125}), path);
+    std::string bytes = test::readText(path);
+    ASSERT_NO_THROW(parse3mfParts(bytes, "honest.3mf"));
+    // Every central directory entry claims 0xF0000000 bytes unpacked: in
+    // its ZIP64 extra field when it has one (lib3mf writes them), else in
+    // the entry itself.
+    size_t patched = 0;
+    auto put32 = [&bytes](size_t at, uint32_t v) {
+        for (int k = 0; k < 4; ++k) bytes[at + size_t(k)] = char((v >> (8 * k)) & 0xFF);
+    };
+    auto le16 = [&bytes](size_t at) { return size_t(uint8_t(bytes[at])) | size_t(uint8_t(bytes[at + 1])) << 8; };
+    for (size_t at = 0; at + 46 <= bytes.size(); ++at)
+        if (bytes.compare(at, 4, "PK\x01\x02") == 0) {
+            const bool zip64 = uint8_t(bytes[at + 24]) == 0xFF && uint8_t(bytes[at + 27]) == 0xFF;
+            if (zip64) {
+                const size_t extra = at + 46 + le16(at + 28);
+                ASSERT_EQ(le16(extra), 1u);  // the ZIP64 field first
+                put32(extra + 4, 0xF0000000u);  // unpacked, low half
+                put32(extra + 8, 0);            // high half
+            } else {
+                put32(at + 24, 0xF0000000u);
+            }
+            ++patched;
+        }
+    ASSERT_GT(patched, 0u);
+    try {
+        (void)parse3mfParts(bytes, "liar.3mf");
+        FAIL() << "a 4 GB claim was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("unpacks to 4026531840 bytes"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("liar.3mf"), std::string::npos) << e.what();
+    }
+}
+
 TEST(ThreeMfRoundTrip, ShortDecimalPositionsComeBackExactly) {
     // Values with at most 6 decimals that float32 holds exactly survive
     // lib3mf's 6-decimal text, and the indexed topology is kept as is.
