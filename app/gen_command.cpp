@@ -67,7 +67,8 @@ ScadOptions scadOptions(const GenCommandOptions& o) {
     ScadOptions so;
     parseScadStrategy(o.scad_strategy, so.strategy);
     so.inline_library = !o.scad_library_beside;
-    so.source = o.gen.input;
+    // The file name only: a shared .scad must not carry the folders it was made in.
+    so.source = std::filesystem::path(o.gen.input).filename().string();
     so.command = o.command_line;
     return so;
 }

@@ -127,6 +127,13 @@ TEST(PartsCli, AWrittenModelNamesTheInputFileNotItsFolders) {
     ASSERT_EQ(unzip.exit_code, 0) << unzip.output;
     EXPECT_NE(unzip.output.find("volcano.csv"), std::string::npos);
     EXPECT_EQ(unzip.output.find(folders), std::string::npos) << unzip.output.substr(0, 2000);
+    // And the OpenSCAD file a person edits and shares.
+    const auto scad = test::runTsf("gen " + input + " --scad " + (dir / "v.scad").string(), dir);
+    ASSERT_EQ(scad.exit_code, test::kExitOk) << scad.err;
+    const std::string text = test::readText(dir / "v.scad");
+    // Its Source line names the file; the Command line keeps the command as
+    // typed, so the model can be made again.
+    EXPECT_NE(text.find("// Source:    volcano.csv\n"), std::string::npos) << text.substr(0, 400);
 }
 
 }  // namespace
