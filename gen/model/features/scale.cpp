@@ -10,6 +10,7 @@
 #include "gen/util/error.h"
 #include "gen/field/hex_grid.h"
 #include "gen/model/scene.h"
+#include "gen/model/features/foot_contacts.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/util/number_format.h"
 
@@ -23,27 +24,6 @@ double roundedMultiple(int64_t k, double step) {
     const double scale = std::pow(10.0, decimals);
     const double r = std::round(v * scale) / scale;
     return std::isfinite(r) ? r : v;
-}
-
-bool drawnByFace(const Scene& s, size_t k) { return !s.drawn_by_face.empty() && s.drawn_by_face[k]; }
-
-// The foot stands against a cell's walls from 0 to the floor: the cell must
-// be kept, rise to the floor at every corner, and be drawn as a hexagon.
-bool touchable(const Scene& s, int32_t k) {
-    if (k < 0 || drawnByFace(s, size_t(k))) return false;
-    for (int e = 0; e < kHexCorners; ++e)
-        if (cornerTop(s, size_t(k), e) < s.floor_units) return false;
-    return true;
-}
-
-// The kept index of the cell whose centre is at lattice (i, j), or -1.
-int32_t keptAtCentre(const Scene& s, int64_t i, int64_t j) {
-    if ((j - 2) % 3 != 0) return -1;
-    const int64_t row = int64_t(s.grid.rows) - 1 - (j - 2) / 3;
-    if (row < 0 || row >= s.grid.rows) return -1;
-    const int64_t twice = i - 1 - (row % 2);
-    if (twice < 0 || twice % 2 != 0) return -1;
-    return s.keptAt(int32_t(twice / 2), int32_t(row));
 }
 
 }  // namespace
@@ -156,7 +136,7 @@ void placeScale(Scene& s) {
     for (size_t k = 0; k < s.keptCount(); ++k) {
         const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
         if (c.i + 1 != i_east) continue;
-        const bool ok = touchable(s, int32_t(k));
+        const bool ok = footCanTouch(s, int32_t(k));
         cand.push_back({int32_t(k), c.j, ok});
     }
     std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
@@ -185,7 +165,7 @@ void placeScale(Scene& s) {
             if (!contacts.empty()) {
                 const int64_t previous_j = hexCentre(s.grid, s.col[size_t(contacts.back())], s.row[size_t(contacts.back())]).j;
                 const int32_t filler = keptAtCentre(s, i_east - 2, previous_j + 3);
-                clear = clear && c.j - previous_j == 6 && touchable(s, filler);
+                clear = clear && c.j - previous_j == 6 && footCanTouch(s, filler);
                 fillers.push_back(filler);
             }
             contacts.push_back(c.kept);
