@@ -231,7 +231,7 @@ void runGen(GenCommandOptions o) {
     if (o.printer.nozzle_mm > 0) rq.verify_options.nozzle_mm = o.printer.nozzle_mm;
     if (o.printer.layer_mm > 0) rq.verify_options.layer_mm = o.printer.layer_mm;
     rq.on_mesh = [&](const Mesh& mesh) {
-        checkFitsBed(mesh, scene.pitch_mm, o.printer);
+        checkFitsBed(mesh, scene.pitch_mm, fixedWidthMm(scene), o.printer);
         if (rq.verify && !rq.verify_full && mesh.triangleCount() > kQuickVerifyTriangles)
             std::fprintf(stderr, "tsf: %zu triangles: verifying topology and heights only (--verify-full for all checks)\n",
                          mesh.triangleCount());

@@ -140,11 +140,18 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                   "floor), so they are not felt as data (default on; --no-texture-structural: level tops)")
         ->group(model);
     auto* marks = "Orientation marks (docs/model.md)";
+    cmd->add_option_function<std::string>(
+           "--marks-on",
+           [&p](const std::string& v) { p.marks.place = v == "data" ? MarkPlace::Data : MarkPlace::Tab; },
+           "Where the notch and the triangle stand: tab (default: on a flat tab west of the pillars, full size "
+           "whatever the cells; a mirrored model or its halves keep them in the data) or data (cut into the corner "
+           "pillars and raised on the largest flat region, where they fit)")
+        ->check(CLI::IsMember({"tab", "data"}))->default_str("tab")->group(marks);
     cmd->add_flag_callback("--no-notch", [&p] { p.marks.notch = false; },
                            "Leave out the V notch at the origin (south-west) corner")->group(marks);
     cmd->add_flag_callback("--no-triangle", [&p] { p.marks.triangle = false; },
                            "Leave out the raised right triangle (x leg east, the longer; y leg north)")->group(marks);
-    cmd->add_option("--notch-depth", p.marks.notch_depth_mm, "How far the notch reaches into the corner, mm")
+    cmd->add_option("--notch-depth", p.marks.notch_depth_mm, "How far the notch reaches into the corner, mm (on the tab: along its diagonal, always in full)")
         ->check(CLI::Range(0.5, 100.0))->capture_default_str()->group(marks);
     auto* legend = "Braille legend (docs/printing.md)";
     cmd->add_option("--title", p.legend.title,
@@ -165,7 +172,7 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "Values between the scale's treads (implies --scale; default: the smallest 1, 2 or 5 x 10^k whose "
            "treads are at least 1 mm apart, at most 10 steps)")
         ->check(CLI::PositiveNumber)->group(scale);
-    cmd->add_option("--triangle-leg", p.marks.triangle_leg_mm, "Preferred east leg of the triangle, mm (north leg 0.6 of it)")
+    cmd->add_option("--triangle-leg", p.marks.triangle_leg_mm, "Preferred east leg of the triangle in the data (--marks-on data), mm (north leg 0.6 of it); on the tab it is 14 mm")
         ->check(CLI::Range(5.0, 200.0))->capture_default_str()->group(marks);
 }
 

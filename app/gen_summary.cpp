@@ -2,6 +2,7 @@
 
 #include "gen/model/features/braille.h"
 #include "gen/model/features/halves.h"
+#include "gen/model/features/orientation_tab.h"
 #include "gen/util/number_format.h"
 
 #include <cmath>
@@ -83,6 +84,26 @@ nlohmann::json sceneFactsJson(const Scene& s) {
                                             planarY(s.marks.triangle->corner, s.pitch_mm)}}};
     else
         marks["triangle"] = nullptr;
+    if (s.marks.tab) {
+        const OrientationTab& t = *s.marks.tab;
+        const double w = t.x_east_mm - t.x_west_mm, d = t.y_north_mm - t.y_south_mm;
+        nlohmann::json tab = {{"box_mm", {{"west", t.x_west_mm}, {"east", t.x_east_mm}, {"south", t.y_south_mm}, {"north", t.y_north_mm}}},
+                              {"size_mm", {w, d, s.zMm(t.top_units)}},
+                              {"area_mm2", tabAreaMm2(t)},
+                              {"cells_touched", t.touched.size()}};
+        tab["notch"] = t.has_notch ? nlohmann::json{{"depth_mm", t.notch_depth_mm}, {"width_mm", t.notch_width_mm},
+                                                    {"opening_deg", t.notch_opening_deg},
+                                                    {"corner_mm", {t.x_west_mm, t.y_south_mm}}}
+                                   : nlohmann::json(nullptr);
+        tab["triangle"] = t.has_triangle ? nlohmann::json{{"leg_x_mm", t.triangle[1].x_mm - t.triangle[0].x_mm},
+                                                          {"leg_y_mm", t.triangle[2].y_mm - t.triangle[0].y_mm},
+                                                          {"height_mm", s.zMm(t.triangle_raise_units)},
+                                                          {"corner_mm", {t.triangle[0].x_mm, t.triangle[0].y_mm}}}
+                                         : nlohmann::json(nullptr);
+        marks["tab"] = tab;
+    } else {
+        marks["tab"] = nullptr;
+    }
     j["marks"] = marks;
     if (s.legend) {
         const SceneLegend& l = *s.legend;
@@ -146,6 +167,22 @@ std::string formatSceneFacts(const Scene& s) {
         o << "  triangle  raised " << formatFixed(s.zMm(t.raise_units), 2) << " mm, legs " << formatFixed(t.leg_x_mm, 1)
           << " mm east (x) and " << formatFixed(t.leg_y_mm, 1) << " mm north (y), right angle at ("
           << formatFixed(planarX(t.corner, s.pitch_mm), 1) << ", " << formatFixed(planarY(t.corner, s.pitch_mm), 1) << ") mm\n";
+    }
+    if (s.marks.tab) {
+        const OrientationTab& t = *s.marks.tab;
+        o << "  tab       " << formatFixed(t.x_east_mm - t.x_west_mm, 1) << " x " << formatFixed(t.y_north_mm - t.y_south_mm, 1)
+          << " x " << formatFixed(s.zMm(t.top_units), 2) << " mm (" << formatFixed(tabAreaMm2(t), 0)
+          << " mm^2) west of the pillars, at the floor, from (" << formatFixed(t.x_west_mm, 1) << ", "
+          << formatFixed(t.y_south_mm, 1) << ") mm: it carries the marks and covers no data cell\n";
+        if (t.has_notch)
+            o << "  notch     V " << formatFixed(t.notch_depth_mm, 1) << " mm deep, " << formatFixed(t.notch_width_mm, 1)
+              << " mm wide, " << formatFixed(t.notch_opening_deg, 0) << " degrees, at the model's south-west corner\n";
+        if (t.has_triangle)
+            o << "  triangle  raised " << formatFixed(s.zMm(t.triangle_raise_units), 2) << " mm on the tab, legs "
+              << formatFixed(t.triangle[1].x_mm - t.triangle[0].x_mm, 1) << " mm east (x) and "
+              << formatFixed(t.triangle[2].y_mm - t.triangle[0].y_mm, 1) << " mm north (y), right angle at ("
+              << formatFixed(t.triangle[0].x_mm, 1) << ", " << formatFixed(t.triangle[0].y_mm, 1)
+              << ") mm: turn the model so the notch is at your near left, and the longer leg runs to your right\n";
     }
     if (s.params.tilt != TiltSource::None)
         o << "  tilt      " << toString(s.params.tilt) << " x " << formatSignificant(s.params.steepness, 3) << ": "

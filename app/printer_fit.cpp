@@ -7,6 +7,7 @@
 #include "app/bed_size.h"
 #include "gen/util/error.h"
 #include "gen/field/resample.h"
+#include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"
 #include "gen/util/number_format.h"
 
@@ -28,14 +29,21 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
             throw InputError("--depth " + formatSignificant(p.fit_depth_mm, 4) + " mm does not fit the " + formatSignificant(bed.depth_mm, 4) +
                              " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side: give --depth " + formatSignificant(d, 4) +
                              " or less, or leave it out");
-        // The tactile scale stands east of the pillars (gen/model/features/scale.h): the pillars get the rest of the width.
+        // The tactile scale stands east of the pillars (gen/model/features/scale.h),
+        // the orientation tab west of them (gen/model/features/orientation_tab.h):
+        // the pillars get the rest of the width.
         const double scale_mm = p.scale.wanted ? kScaleGapMm + kScaleStepWidthMm : 0.0;
+        const double tab_mm = wantsTab(p) ? tabWidthMm(p.marks) : 0.0;
+        const double beside_mm = scale_mm + tab_mm;
         if (!given.width) {
-            const bool room = w > 2 * scale_mm;
-            p.fit_width_mm = gen.fit_width_mm = room ? w - scale_mm : w;
-            if (scale_mm > 0 && room)
-                notes.push_back("the pillars get " + formatSignificant(w - scale_mm, 4) + " mm of the width, the tactile scale " +
-                                formatSignificant(scale_mm, 4) + " mm");
+            // The pillars keep at least a quarter of the width, and 20 mm.
+            const bool room = w - beside_mm >= std::max(20.0, 0.25 * w);
+            p.fit_width_mm = gen.fit_width_mm = room ? w - beside_mm : w;
+            if (beside_mm > 0 && room)
+                notes.push_back("the pillars get " + formatSignificant(w - beside_mm, 4) + " mm of the width, " +
+                                (scale_mm > 0 ? "the tactile scale " + formatSignificant(scale_mm, 4) + " mm" : std::string()) +
+                                (scale_mm > 0 && tab_mm > 0 ? ", " : "") +
+                                (tab_mm > 0 ? "the orientation tab " + formatSignificant(tab_mm, 4) + " mm" : std::string()));
         }
         if (!given.depth) p.fit_depth_mm = gen.fit_depth_mm = d;
         if (!given.width || !given.depth)
@@ -78,15 +86,24 @@ std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer) {
            " mm): pillars print as blobs of perimeters (a larger --cell, or fewer --bins)";
 }
 
-void checkFitsBed(const Mesh& mesh, double pitch_mm, const PrinterSpec& printer) {
+double fixedWidthMm(const Scene& s) {
+    double w = 0;
+    if (s.marks.tab) w += s.marks.tab->x_east_mm - s.marks.tab->x_west_mm;
+    if (s.scale) w += s.scale->x1_mm - s.scale->x0_mm;
+    return w;
+}
+
+void checkFitsBed(const Mesh& mesh, double pitch_mm, double fixed_width_mm, const PrinterSpec& printer) {
     if (printer.bed.empty() || mesh.positions.empty()) return;
     const BedSize bed = parseBedSize(printer.bed, "--bed", /*need_height=*/false);
     const double w = bed.width_mm - 2 * kBedMarginMm, d = bed.depth_mm - 2 * kBedMarginMm;
     const Bounds b = meshBounds(mesh);
     const double mw = b.max.x - b.min.x, md = b.max.y - b.min.y;
     if (mw <= w && md <= d) return;
-    // The footprint scales with the cell: the largest cell that fits, rounded down to 0.01 mm.
-    const double cell = std::floor(pitch_mm * std::min(w / mw, d / md) * 100.0) / 100.0;
+    // The pillars scale with the cell, what stands beside them does not: the
+    // largest cell that fits, rounded down to 0.01 mm.
+    const double fixed = std::min(fixed_width_mm, 0.9 * std::min(mw, w));
+    const double cell = std::floor(pitch_mm * std::min((w - fixed) / (mw - fixed), d / md) * 100.0) / 100.0;
     throw InputError("the model is " + formatSignificant(mw, 4) + " x " + formatSignificant(md, 4) + " mm, larger than the " + formatSignificant(bed.width_mm, 4) + " x " +
                      formatSignificant(bed.depth_mm, 4) + " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side (" + formatSignificant(w, 4) + " x " +
                      formatSignificant(d, 4) + " mm); give --cell " + formatSignificant(cell, 4) + " or less, or leave --cell out to fit the bed " +

@@ -22,6 +22,7 @@
 
 #include "app/gen_options.h"
 #include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 
 namespace tsf::cli {
 
@@ -50,8 +51,12 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
 /// nozzle widths; "" when they are not or no nozzle was given.
 std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer);
 
+/// Width (mm) of what stands beside the pillars and does not scale with the
+/// cell: the orientation tab and the tactile scale.
+double fixedWidthMm(const Scene& scene);
+
 /// After meshing: throws InputError when the mesh's footprint is larger
 /// than the bed less its margins, naming the largest --cell that fits.
-void checkFitsBed(const Mesh& mesh, double pitch_mm, const PrinterSpec& printer);
+void checkFitsBed(const Mesh& mesh, double pitch_mm, double fixed_width_mm, const PrinterSpec& printer);
 
 }  // namespace tsf::cli

@@ -16,6 +16,7 @@
 //   tsf_tilt.scad        drawing of tilted tops and dimpled structural cells that tsf resolves
 //   tsf_legend.scad      tsf_with_legend(): the braille legend plate that tsf meshes
 //   tsf_scale.scad       tsf_with_scale(): the tactile scale that tsf places
+//   tsf_tab.scad         tsf_with_tab(): the orientation tab (notch and triangle) that tsf places
 //   tsf_halves.scad      tsf_half(): a mirrored model's support-free halves with pin holes
 //
 // Names starting with _tsf are private. The library defines no variables, so
@@ -28,4 +29,5 @@ include <tsf_marks.scad>
 include <tsf_tilt.scad>
 include <tsf_legend.scad>
 include <tsf_scale.scad>
+include <tsf_tab.scad>
 include <tsf_halves.scad>

@@ -11,6 +11,7 @@
 #include "gen/model/features/halves.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/features/marks.h"
+#include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"
 
 namespace tsf {
@@ -236,6 +237,9 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
                     scene.scale ? scaleTopAt(*scene.scale, centre.x, centre.y) : std::nullopt;
                 if (scale_top && hit && std::fabs(hit->point_mm.z - scene.zMm(*scale_top)) <= scene.z_snap_mm / 2)
                     continue;
+                // On the orientation tab (gen/model/features/orientation_tab.h) it meets the tab's top there.
+                const std::optional<int64_t> tab_top = tabTopAt(scene, centre.x, centre.y);
+                if (tab_top && hit && std::fabs(hit->point_mm.z - scene.zMm(*tab_top)) <= scene.z_snap_mm / 2) continue;
                 if (!hit) continue;
                 ++f.outside_cells_hit;
                 if (out.worst.size() < options.max_offenders)

@@ -65,6 +65,7 @@
 #include "gen/model/features/halves.h"
 
 #include "gen/mesh/legend_join.h"
+#include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"
 #include "gen/model/scene_check.h"
 #include "gen/model/features/top_shapes.h"
@@ -110,12 +111,16 @@ public:
                     auto& at = faces_at_[id];
                     if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
                 }
-        if (s_.scale) {
-            scale_edges_.assign(s_.keptCount(), 0);
-            for (const auto& [k, e] : scaleTouchedEdges(s_)) {
-                scale_edges_[size_t(k)] |= uint8_t(1u << e);
+        // The feet that stand against pillar walls from 0 to the floor: the
+        // tactile scale's (east) and the orientation tab (west).
+        std::vector<std::pair<int32_t, int>> feet = scaleTouchedEdges(s_);
+        if (s_.marks.tab) feet.insert(feet.end(), s_.marks.tab->touched.begin(), s_.marks.tab->touched.end());
+        if (!feet.empty()) {
+            foot_edges_.assign(s_.keptCount(), 0);
+            for (const auto& [k, e] : feet) {
+                foot_edges_[size_t(k)] |= uint8_t(1u << e);
                 for (const int corner : {e, (e + 1) % kHexCorners})
-                    scale_corners_.insert(hexCornerId(g_, s_.col[size_t(k)], s_.row[size_t(k)], corner));
+                    foot_corners_.insert(hexCornerId(g_, s_.col[size_t(k)], s_.row[size_t(k)], corner));
             }
         }
     }
@@ -129,7 +134,14 @@ public:
         for (const PlanarFace& f : s_.faces.faces) addFace(f);
         addMergedTops();
         if (flat_) addFlatBottom();
-        if (s_.scale) addScale();
+        if (s_.scale) {
+            const ScaleBody scale = meshScaleBody(s_, /*joined=*/true);
+            addJoinedBody(scale.mesh, scale.lattice_id);
+        }
+        if (s_.marks.tab) {
+            const TabBody tab = meshTabBody(s_, /*joined=*/true);
+            addJoinedBody(tab.mesh, tab.lattice_id);
+        }
         return std::move(mesh_);
     }
 
@@ -242,8 +254,8 @@ private:
                 if (!flat_ || rim) out[n++] = shaped ? cornerBottomAt(s_, size_t(c), id) : s_.bottom[size_t(c)];
             }
             if (flat_ && bottom_point_[size_t(id)]) out[n++] = 0;
-            // The scale's foot meets the wall of a contact cell at the floor.
-            if (!scale_corners_.empty() && scale_corners_.count(id)) out[n++] = s_.scale->foot_top_units;
+            // A foot (the scale's, the tab) meets the wall of a contact cell at the floor.
+            if (!foot_corners_.empty() && foot_corners_.count(id)) out[n++] = s_.floor_units;
         } else {
             rim = rim_.count(id) > 0;
         }
@@ -393,7 +405,7 @@ private:
             const int e1 = (e + 1) % kHexCorners;
             const bool has = other >= 0;
             const Span none{0, 0};
-            if (other < 0 && scaleAcross(k, e)) {
+            if (other < 0 && footAcross(k, e)) {
                 addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), true, footSpan(), footSpan());
                 continue;
             }
@@ -429,7 +441,7 @@ private:
             const bool has = other >= 0;
             const int64_t v = id[e], w = id[(e + 1) % kHexCorners];
             const Span none{0, 0};
-            if (!has && scaleAcross(k, e)) {
+            if (!has && footAcross(k, e)) {
                 addWalls(v, w, {bottom, top}, {bottom, top}, true, footSpan(), footSpan());
                 continue;
             }
@@ -619,25 +631,25 @@ private:
         }
     }
 
-    // The tactile scale's foot lies across edge e of kept cell k (gen/model/features/scale.h:
-    // scaleTouchedEdges), as a neighbour from 0 to the floor would.
-    bool scaleAcross(size_t k, int e) const { return !scale_edges_.empty() && (scale_edges_[k] >> e & 1u); }
-    Span footSpan() const { return {0, s_.scale->foot_top_units}; }
+    // A foot lies across edge e of kept cell k (the scale's, gen/model/features/scale.h:
+    // scaleTouchedEdges; the tab's, OrientationTab::touched), as a neighbour from 0 to the floor would.
+    bool footAcross(size_t k, int e) const { return !foot_edges_.empty() && (foot_edges_[k] >> e & 1u); }
+    Span footSpan() const { return {0, s_.floor_units}; }
 
-    // The scale's own body; where it stands on a lattice corner of a contact
-    // it uses the pillars' vertex there, so the two share the contact's edges.
-    void addScale() {
-        const ScaleBody body = meshScaleBody(s_, /*joined=*/true);
-        std::vector<uint32_t> index(body.mesh.positions.size());
+    // A foot's own body (the scale, the tab); where it stands on a lattice
+    // corner of a contact it uses the pillars' vertex there, so the two share
+    // the contact's edges.
+    void addJoinedBody(const Mesh& body, const std::vector<int64_t>& lattice_id) {
+        std::vector<uint32_t> index(body.positions.size());
         for (size_t v = 0; v < index.size(); ++v) {
-            if (body.lattice_id[v] >= 0) {
-                index[v] = vertexIndex(body.lattice_id[v], snapUnits(body.mesh.positions[v].z, s_.z_snap_mm));
+            if (lattice_id[v] >= 0) {
+                index[v] = vertexIndex(lattice_id[v], snapUnits(body.positions[v].z, s_.z_snap_mm));
             } else {
                 index[v] = uint32_t(mesh_.positions.size());
-                mesh_.positions.push_back(body.mesh.positions[v]);
+                mesh_.positions.push_back(body.positions[v]);
             }
         }
-        for (const auto& t : body.mesh.triangles) tri(index[t[0]], index[t[1]], index[t[2]]);
+        for (const auto& t : body.triangles) tri(index[t[0]], index[t[1]], index[t[2]]);
     }
 
     // Pin hole h of a half: the ring on the bottom (returned, counter-clockwise
@@ -683,8 +695,8 @@ private:
     std::vector<uint8_t> dropped_top_;      // lattice id -> 1: inside a merged top, no vertex
     std::vector<uint8_t> bottom_point_;     // flat, lattice id -> 1: an interior vertex of the bottom
     std::vector<int64_t> bottom_points_;    // flat: those ids
-    std::vector<uint8_t> scale_edges_;                            // per kept cell: bit e = the scale's foot covers edge e
-    std::unordered_set<int64_t> scale_corners_;                   // the lattice corners of those edges
+    std::vector<uint8_t> foot_edges_;                             // per kept cell: bit e = a foot covers edge e
+    std::unordered_set<int64_t> foot_corners_;                    // the lattice corners of those edges
     Mesh mesh_;
 };
 

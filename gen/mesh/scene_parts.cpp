@@ -4,6 +4,7 @@
 
 #include "gen/mesh/direct_mesher.h"
 #include "gen/mesh/legend_join.h"
+#include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"
 
 namespace tsf {
@@ -51,13 +52,16 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
             level.faces.faces[k].raise_units = 0;
         }
     level.scale.reset();  // the scale is a part of its own, touching the pillars' east walls
+    level.marks.tab.reset();  // the tab too, touching their west walls
     Mesh pillars = meshSceneBeforeLegend(level);
     if (scene.legend) pillars = unionWithLegend(pillars, scene, /*dots=*/false);
     parts.push_back({"pillars", std::move(pillars)});
 
-    // Every raised face (today: the orientation triangle) in one part.
+    // Every raised face (the orientation triangle in the data) or the
+    // orientation tab in one part.
     std::vector<MeshPart> prisms;
     for (const PlanarFace* f : raised) prisms.push_back({"", raisedFacePrism(scene, *f)});
+    if (scene.marks.tab) prisms.push_back({"", meshTabBody(scene, /*joined=*/false).mesh});
     if (!prisms.empty()) parts.push_back({"marks", joinParts(prisms)});
     if (scene.legend) parts.push_back({"legend", legendDotsMesh(scene)});
     if (scene.scale) parts.push_back({"scale", meshScaleBody(scene, /*joined=*/false).mesh});

@@ -22,6 +22,7 @@
 #include "gen/model/features/halves.h"
 #include "gen/model/features/legend_scene.h"
 #include "gen/model/features/marks.h"
+#include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"
 #include "gen/model/features/tilt.h"
 #include "gen/model/features/top_shapes.h"
@@ -402,7 +403,9 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             }
         resolveTopShapes(s, tiltSlopes(field, s, params.tilt), params.steepness, structural);
     }
-    // The scale last: it stands against cells whose tops (tilted or not) rise to the floor.
+    // The tab and the scale last: they stand against cells whose tops (tilted
+    // or not) rise to the floor, clear of the legend's plate.
+    placeTab(s);
     placeScale(s);
     if (params.stored_as_float32) {
         const double snap = float32SafeSnapMm(s);

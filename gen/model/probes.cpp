@@ -1,7 +1,9 @@
 #include "gen/model/probes.h"
-#include "gen/util/number_format.h"
 
+#include <cmath>
 #include <sstream>
+
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
@@ -47,7 +49,37 @@ PlanarPoint lerp(const PlanarPoint& a, const PlanarPoint& b, double t) {
     return {a.i + t * (b.i - a.i), a.j + t * (b.j - a.j)};
 }
 
+// The orientation tab (gen/model/features/orientation_tab.h): its top at the
+// floor near its north-west corner, the triangle as above, and along the
+// notch's diagonal a point 0.3 mm short of the apex (empty: the V reaches its
+// full depth) and one 0.3 mm beyond it (the tab's top: no deeper).
+void tabProbes(const Scene& s, std::vector<SurfaceProbe>& out) {
+    const OrientationTab& t = *s.marks.tab;
+    const double floor_mm = s.zMm(t.top_units);
+    out.push_back({"marks", "the orientation tab's top", t.x_west_mm + 1.0, t.y_north_mm - 1.0, false, floor_mm});
+    if (t.has_triangle) {
+        const double z = s.zMm(t.top_units + t.triangle_raise_units);
+        const double cx = (t.triangle[0].x_mm + t.triangle[1].x_mm + t.triangle[2].x_mm) / 3;
+        const double cy = (t.triangle[0].y_mm + t.triangle[1].y_mm + t.triangle[2].y_mm) / 3;
+        const char* names[] = {"the orientation triangle's right-angle corner", "the orientation triangle's east corner",
+                               "the orientation triangle's north corner"};
+        out.push_back({"marks", "the orientation triangle's middle", cx, cy, false, z});
+        for (int n = 0; n < 3; ++n)
+            out.push_back({"marks", names[n], t.triangle[n].x_mm + 0.2 * (cx - t.triangle[n].x_mm),
+                           t.triangle[n].y_mm + 0.2 * (cy - t.triangle[n].y_mm), false, z});
+    }
+    if (t.has_notch) {
+        const double along = 1.0 / std::sqrt(2.0);
+        for (const double d : {t.notch_depth_mm - 0.3, t.notch_depth_mm + 0.3}) {
+            const bool inside = d < t.notch_depth_mm;
+            out.push_back({"marks", inside ? "inside the orientation notch, 0.3 mm short of its apex" : "the tab just beyond the notch's apex",
+                           t.x_west_mm + d * along, t.y_south_mm + d * along, inside, inside ? 0.0 : floor_mm});
+        }
+    }
+}
+
 void markProbes(const Scene& s, std::vector<SurfaceProbe>& out) {
+    if (s.marks.tab) tabProbes(s, out);
     if (const auto& t = s.marks.triangle; t && t->anchor >= 0 && size_t(t->anchor) < s.keptCount()) {
         const double z = s.zMm(s.top[size_t(t->anchor)] + t->raise_units);
         const PlanarPoint centroid{(t->corner.i + t->east.i + t->north.i) / 3, (t->corner.j + t->east.j + t->north.j) / 3};

@@ -15,7 +15,9 @@
 //   scale   the foot's floor strip and the middle of every tread;
 //   marks   the orientation triangle's centroid and a point near each corner
 //           (its region's top + its raise), and inside the notch's V near its
-//           apex (empty: the notch cuts the whole height).
+//           apex (empty: the notch cuts the whole height); on the orientation
+//           tab also its top, and either side of the notch's apex along its
+//           diagonal, so its full depth is proven.
 // Cells are read back on their own (verify/readback.h); probes cover what
 // stands beside or on them.
 #pragma once

@@ -6,6 +6,8 @@
 
 #include "gen/util/error.h"
 #include "gen/field/hex_grid.h"
+#include "gen/model/features/foot_contacts.h"
+#include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/top_shapes.h"
 
 namespace tsf {
@@ -129,6 +131,12 @@ void checkScene(const Scene& s) {
     }
     checkTopShapes(s);
     if (s.scale) checkScale(s);
+    if (s.marks.tab) {
+        if (s.params.bottom != Bottom::Flat) fail("orientation tab: it stands on a flat model only");
+        checkTab(s, *s.marks.tab);
+        for (const auto& [k, e] : s.marks.tab->touched)
+            if (!footCanTouch(s, k)) fail("orientation tab: it stands against a cell that does not rise to the floor at every corner");
+    }
 }
 
 }  // namespace tsf

@@ -2,7 +2,7 @@
 // so that `tsf verify --scene` can check the model's heights without the
 // original field and options.
 //
-// Format ("format": "tsf-scene", "version": 5), one object:
+// Format ("format": "tsf-scene", "version": 6), one object:
 //   grid {cols, rows}, pitch_mm, z_snap_mm,
 //   params {pitch_mm, fit_width_mm, fit_depth_mm, max_height_mm, base_mm,
 //           transfer, baseline_mode, baseline_value, value_max (null = unset),
@@ -13,7 +13,13 @@
 //   marks {notch: null | {apex, mouth_a, mouth_b: [i, j] lattice coordinates,
 //                         depth_mm, width_mm, opening_deg},
 //          triangle: null | {corner, east, north: [i, j], leg_x_mm, leg_y_mm,
-//                            raise_units, anchor (kept index)}},
+//                            raise_units, anchor (kept index)},
+//          tab: null | {outline [[x, y, lattice id (-1: the tab's own)], ...] mm,
+//                       counter-clockwise, joined [0|1 per edge], touched
+//                       [[kept index, edge 0..5]], top_units, box_mm [west, east,
+//                       south, north], notch null | {depth_mm, width_mm, opening_deg},
+//                       triangle null | {corners_mm [[x, y] x 3], raise_units}}
+//                  (version 6: the orientation tab, gen/model/features/orientation_tab.h)},
 //   faces: null | {extra [[i, j], ...] (planar points after the lattice's ids),
 //                  faces [{anchor, raise_units, cells [kept index], rings [[id, ...]],
 //                          across [[[kind, index], ...] per ring] (kind 0 outside
@@ -73,7 +79,7 @@ inline constexpr const char* kSceneJsonFormat = "tsf-scene";
 /// as asked for, the marks' faces and the tilted tops' fans; 4: scale;
 /// 3: shapes; 2: marks, nodata_pit_units, one_to_one. 1 to 4 are still read,
 /// except a version 4 sidecar with a legend (it recorded only the request).
-inline constexpr int kSceneJsonVersion = 5;
+inline constexpr int kSceneJsonVersion = 6;
 /// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
 /// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
 inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;

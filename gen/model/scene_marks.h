@@ -12,13 +12,23 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "gen/field/hex_grid.h"
 
 namespace tsf {
 
+/// Where the orientation marks stand.
+enum class MarkPlace : uint8_t {
+    Tab,   ///< on the orientation tab west of the pillars (default; gen/model/features/orientation_tab.h)
+    Data,  ///< in the data: the notch cut into the corner pillars, the triangle on the largest flat region
+};
+
 struct MarkParams {
+    /// Tab: both marks on the tab, at full size whatever the cells; a model
+    /// without a floor to stand the tab on (mirrored, halves) keeps them in the data.
+    MarkPlace place = MarkPlace::Tab;
     bool notch = true;              ///< cut the orientation notch
     double notch_depth_mm = 6.0;    ///< how far the V reaches into the model from its corner (mm)
     double notch_min_depth_mm = 1.5;  ///< below this the notch is left out (cannot be found by touch)
@@ -27,6 +37,9 @@ struct MarkParams {
     double triangle_min_leg_mm = 12.7;  ///< smallest east leg that is used (APH: 1/2 in)
     double triangle_height_mm = 1.0;    ///< how far it stands above its region (>= 0.8 mm, US signage)
 };
+
+/// y leg / x leg of the orientation triangle: clearly different by touch.
+inline constexpr double kTriangleLegRatio = 0.6;
 
 /// MarkParams with both marks off: the plain pillars (tests of the pillar
 /// rules, tools that add marks of their own).
@@ -60,9 +73,43 @@ struct OrientationTriangle {
     int32_t anchor = -1;      ///< kept index of a cell of the region it stands on
 };
 
+/// A corner of the orientation tab's outline: its position (mm, on the
+/// kXYSnapMm grid) and, where it is a hex corner of a pillar the tab stands
+/// against, that corner's lattice vertex id (hex_grid.h; -1: the tab's own).
+struct TabPoint {
+    double x_mm = 0, y_mm = 0;
+    int64_t lattice = -1;
+};
+
+/// The orientation tab (gen/model/features/orientation_tab.h): a flat plate
+/// from z = 0 to the floor against the pillars' westernmost walls, its
+/// south-west corner cut by the notch, the triangle standing on its top.
+struct OrientationTab {
+    /// The plate's outline, counter-clockwise from +z: starts at the notch's
+    /// mouth on the south edge; the notch's apex is the last point.
+    std::vector<TabPoint> outline;
+    /// joined[n]: the edge outline[n] -> outline[n + 1] is a pillar's wall
+    /// (the plate stands against it from 0 to its top and has no wall there).
+    std::vector<uint8_t> joined;
+    /// The hexagon edges (kept cell, edge 0..5 of hex_grid.h) the plate
+    /// covers from 0 to its top: the joined edges, as the pillars see them.
+    std::vector<std::pair<int32_t, int>> touched;
+    int64_t top_units = 0;  ///< the plate's top: the floor
+    double x_west_mm = 0, x_east_mm = 0, y_south_mm = 0, y_north_mm = 0;  ///< its bounding box
+    /// The notch: apex at notch_depth_mm from the south-west corner along the diagonal.
+    double notch_depth_mm = 0, notch_width_mm = 0, notch_opening_deg = 0;
+    /// The triangle: right angle, east end, north end (mm, snapped), standing
+    /// triangle_raise_units above the plate's top.
+    std::array<TabPoint, 3> triangle;
+    int64_t triangle_raise_units = 0;
+    bool has_notch = false, has_triangle = false;
+};
+
 struct Marks {
     std::optional<Notch> notch;
     std::optional<OrientationTriangle> triangle;
+    /// MarkPlace::Tab: the tab that carries both marks (notch and triangle above are then none).
+    std::optional<OrientationTab> tab;
 };
 
 /// What lies across one edge of a face.

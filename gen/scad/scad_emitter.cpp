@@ -3,6 +3,7 @@
 #include "gen/scad/scad_halves.h"
 #include "gen/scad/scad_legend.h"
 #include "gen/scad/scad_scale.h"
+#include "gen/scad/scad_tab.h"
 
 #include <algorithm>
 #include <array>
@@ -62,13 +63,15 @@ Parameters parametersOf(const Scene& s) {
 }
 
 // Library parts a strategy needs, in the order they are pasted.
-std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend, bool scale, bool halves) {
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend, bool scale, bool halves,
+                                      bool tab) {
     std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
     if (strategy == ScadOptions::Strategy::Csg && !shaped) parts.push_back("tsf_csg.scad");
     if (marks) parts.push_back("tsf_marks.scad");
     if (shaped) parts.push_back("tsf_tilt.scad");
     if (legend) parts.push_back("tsf_legend.scad");
     if (scale) parts.push_back("tsf_scale.scad");
+    if (tab) parts.push_back("tsf_tab.scad");
     if (halves) parts.push_back("tsf_halves.scad");
     return parts;
 }
@@ -350,10 +353,10 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
         // The CSG strategy's prisms have level tops: a shaped model is one polyhedron.
         if (opts.strategy == ScadOptions::Strategy::Csg)
             o += "// Tilted tops are drawn as one polyhedron (the CSG strategy's prisms have level tops).\n";
-        o += scaleCallPrefix(s) + legendCallPrefix(s) + "tsf_terrain_polyhedron(model);\n";
+        o += tabCallPrefix(s) + scaleCallPrefix(s) + legendCallPrefix(s) + "tsf_terrain_polyhedron(model);\n";
         return;
     }
-    o += halvesCallPrefix(s) + scaleCallPrefix(s) + legendCallPrefix(s);
+    o += halvesCallPrefix(s) + tabCallPrefix(s) + scaleCallPrefix(s) + legendCallPrefix(s);
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
@@ -361,7 +364,7 @@ void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts) 
     const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
     const std::vector<std::string> parts =
         libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), s.legend.has_value(), s.scale.has_value(),
-                     s.halves.has_value());
+                     s.halves.has_value(), s.marks.tab.has_value());
     std::string list;
     for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
     o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
@@ -406,6 +409,7 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     emitTops(o, scene);
     emitLegendData(o, scene);
     emitScaleData(o, scene);
+    emitTabData(o, scene);
     emitHalvesData(o, scene);
     emitCall(o, scene, opts);
     if (opts.inline_library) emitInlineLibrary(o, scene, opts);

@@ -92,10 +92,14 @@ TEST(FaithfulCli, DefaultModelCarriesBothMarksInStlAnd3mf) {
         const auto r = runTsf("gen " + (dir / "field.csv").string() + " -o " + model + " --json");
         ASSERT_EQ(r.exit_code, 0) << r.output;
         const nlohmann::json j = summary(r.output);
-        EXPECT_FALSE(j["scene"]["marks"]["notch"].is_null()) << ext;
-        EXPECT_FALSE(j["scene"]["marks"]["triangle"].is_null()) << ext;
-        EXPECT_GT(j["scene"]["marks"]["triangle"]["leg_x_mm"].get<double>(),
-                  j["scene"]["marks"]["triangle"]["leg_y_mm"].get<double>());
+        // On the orientation tab by default, at full size.
+        const nlohmann::json& tab = j["scene"]["marks"]["tab"];
+        ASSERT_TRUE(tab.is_object()) << ext << j["scene"]["marks"].dump();
+        ASSERT_FALSE(tab["notch"].is_null()) << ext;
+        ASSERT_FALSE(tab["triangle"].is_null()) << ext;
+        EXPECT_NEAR(tab["notch"]["depth_mm"].get<double>(), 6.0, 1e-3) << ext;
+        EXPECT_GE(tab["triangle"]["leg_x_mm"].get<double>(), 12.7) << ext;
+        EXPECT_GT(tab["triangle"]["leg_x_mm"].get<double>(), tab["triangle"]["leg_y_mm"].get<double>());
         const auto v = runTsf("verify " + model + " --scene " + model + ".scene.json");
         EXPECT_EQ(v.exit_code, 0) << v.output;
     }

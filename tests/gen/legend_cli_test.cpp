@@ -104,7 +104,7 @@ TEST(LegendCli, AModelTooSmallForTheLegendsJoinIsBadInputThatSaysWhy) {
     const auto dir = test::scratchDir();
     test::writeText(dir / "one.csv", "x,y\n0,0\n");
     const std::string out = (dir / "o.stl").string();
-    const auto r = test::runTsf("gen " + (dir / "one.csv").string() + " --points x=x,y=y --units mm --bed 100x100 -o " + out, dir);
+    const auto r = test::runTsf("gen " + (dir / "one.csv").string() + " --points x=x,y=y --units mm --bed 100x100 --marks-on data -o " + out, dir);
     EXPECT_EQ(r.exit_code, test::kExitBadInput) << r.out << r.err;
     EXPECT_NE(r.err.find("--title/--units"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("1 cell,"), std::string::npos) << r.err;

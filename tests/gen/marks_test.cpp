@@ -21,8 +21,11 @@ using test::fieldFromFunction;
 using test::fieldFromRows;
 using test::kNaN;
 
+// The marks placed in the data (--marks-on data), which these tests are
+// about; the orientation tab has its own (orientation_tab_cli_test.cpp).
 SceneParams params(double pitch, Bottom bottom = Bottom::Flat) {
     SceneParams p;
+    p.marks.place = MarkPlace::Data;
     p.pitch_mm = pitch;
     p.max_height_mm = 10.0;
     p.base_mm = 2.0;

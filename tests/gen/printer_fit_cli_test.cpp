@@ -29,8 +29,10 @@ TEST(PrinterFitCli, BedWithoutWidthFitsTheModelInsideTheMargins) {
     // It fills the bed in one direction: the default 150 mm box would not fit.
     EXPECT_GT(std::max(b.max.x - b.min.x - 105.0, b.max.y - b.min.y - 85.0), 0.0);
     const auto j = nlohmann::json::parse(r.out);
-    ASSERT_EQ(j["printer"].size(), 1u) << j["printer"].dump();
-    EXPECT_NE(j["printer"][0].get<std::string>().find("110 x 90 mm"), std::string::npos);
+    // The orientation tab west of the pillars does not grow with the cell: the pillars get the rest.
+    ASSERT_EQ(j["printer"].size(), 2u) << j["printer"].dump();
+    EXPECT_NE(j["printer"][0].get<std::string>().find("the orientation tab 23 mm"), std::string::npos) << j["printer"].dump();
+    EXPECT_NE(j["printer"][1].get<std::string>().find("87 x 90 mm: the 120 x 100 mm bed"), std::string::npos) << j["printer"].dump();
 }
 
 TEST(PrinterFitCli, LayerSnapsEveryHeightToWholeLayersUnlessSnapIsGiven) {
@@ -62,11 +64,14 @@ TEST(PrinterFitCli, AModelLargerThanTheBedIsRefusedWithACellThatFits) {
     const auto big = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --cell 4 -o " + model, dir);
     EXPECT_EQ(big.exit_code, test::kExitBadInput) << big.out << big.err;
     EXPECT_NE(big.err.find("larger than the 120 x 100 mm bed"), std::string::npos) << big.err;
-    EXPECT_NE(big.err.find("give --cell 2.45 or less"), std::string::npos) << big.err;
+    // The pillars scale with the cell, the 23 mm tab beside them does not:
+    // 40 columns of 4 mm are 162 of the 185 mm, 110 - 23 = 87 mm are left.
+    EXPECT_NE(big.err.find("give --cell 2.14 or less"), std::string::npos) << big.err;
     EXPECT_FALSE(std::filesystem::exists(model));
-    // The suggestion works.
-    const auto fits = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --cell 2.45 --no-verify -o " + model, dir);
+    // The suggestion works, and fills the bed's width.
+    const auto fits = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --cell 2.14 --no-verify -o " + model, dir);
     EXPECT_EQ(fits.exit_code, test::kExitOk) << fits.out << fits.err;
+    EXPECT_GT(meshBounds(readMesh(model)).max.x - meshBounds(readMesh(model)).min.x, 108.0);
 
     const auto wide = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --width 150 -o " + model, dir);
     EXPECT_EQ(wide.exit_code, test::kExitBadInput) << wide.err;

@@ -61,7 +61,8 @@ TEST(ScaleCli, FittedToTheBedWithTheScale) {
     const auto dir = test::scratchDir();
     test::writeText(dir / "f.csv", kField);
     const std::string model = (dir / "m.stl").string();
-    // A 70 mm bed less 5 mm each side: 60 mm, of which the scale takes 4 + 12.7.
+    // A 70 mm bed less 5 mm each side: 60 mm, of which the scale takes 4 + 12.7
+    // and the orientation tab 23.
     const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --bed 70x200 --scale -o " + model, dir);
     ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
     const Bounds b = meshBounds(readMesh(model));

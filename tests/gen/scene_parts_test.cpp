@@ -9,6 +9,7 @@
 #include "tests/support/mesh_invariants.h"
 #include "verify/verify_parts.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/features/orientation_tab.h"
 
 namespace tsf {
 namespace {
@@ -19,11 +20,12 @@ HexField partsField() {
     return test::fieldFromFunction(16, 12, [](int c, int r) { return r >= 4 ? 5.0 : double((c + r) % 4); });
 }
 
-Scene partsScene(bool legend) {
+Scene partsScene(bool legend, MarkPlace place = MarkPlace::Data) {
     const HexField f = partsField();
     SceneParams p = test::smallParams();
     p.pitch_mm = 4.0;
     p.marks = MarkParams{};
+    p.marks.place = place;
     if (legend) {
         p.legend.title = "Test";
         p.legend.units = "m";
@@ -74,6 +76,29 @@ TEST(SceneParts, PillarsMarksAndLegendAreClosedBodiesThatAddUpToTheModel) {
     ASSERT_NE(r.assembly.find("parts_overlap"), nullptr);
     EXPECT_EQ(r.assembly.find("parts_overlap")->status, CheckStatus::Pass);
     EXPECT_EQ(r.assembly.find("values_read_back")->status, CheckStatus::Pass);
+}
+
+// The orientation tab (the default) is the marks part: a closed body touching
+// the pillars' west walls, the parts adding up to the joined model.
+TEST(SceneParts, TheOrientationTabIsTheMarksPart) {
+    const Scene s = partsScene(/*legend=*/false, MarkPlace::Tab);
+    ASSERT_TRUE(s.marks.tab.has_value());
+    const std::vector<MeshPart> parts = meshSceneParts(s);
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_EQ(parts[1].name, "marks");
+    const test::Invariants inv = test::checkInvariants(parts[1].mesh);
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+    const OrientationTab& t = *s.marks.tab;
+    // The plate (its outline's area times the floor) and the triangle on it (mm^3).
+    const double triangle = (t.triangle[1].x_mm - t.triangle[0].x_mm) * (t.triangle[2].y_mm - t.triangle[0].y_mm) / 2 *
+                            s.zMm(t.triangle_raise_units);
+    EXPECT_NEAR(inv.volume, tabAreaMm2(t) * s.zMm(t.top_units) + triangle, 1e-6 * inv.volume);
+    EXPECT_NEAR(test::checkInvariants(parts[0].mesh).volume + inv.volume, test::checkInvariants(meshScene(s)).volume, 1e-6 * inv.volume);
+    VerifyOptions vo;
+    vo.printability = false;
+    const PartsVerifyReport r = verifyParts(parts, &s, vo);
+    EXPECT_TRUE(r.passed()) << formatPartsReport(r);
 }
 
 TEST(SceneParts, WithoutALegendThereIsNoLegendPartAndMirroredModelsSplitToo) {

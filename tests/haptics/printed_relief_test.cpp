@@ -220,6 +220,7 @@ TEST(PrintedRelief, TheMarksTheLegendAndTheScaleAreFeltAsPrinted) {
     p.legend.title = "Hi";
     p.scale.wanted = true;
     p.marks = MarkParams{};
+    p.marks.place = MarkPlace::Data;  // the marks on the pillars, where the relief is felt
     const Scene s = buildScene(fieldFromFunction(16, 26, [](int c, int r) { return c < 8 && r > 15 ? 10.0 : 2.0 + c % 3; }), p);
     ASSERT_TRUE(s.marks.triangle);
     ASSERT_TRUE(s.legend);

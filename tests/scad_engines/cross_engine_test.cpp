@@ -267,6 +267,45 @@ INSTANTIATE_TEST_SUITE_P(EnginesStrategies, CrossEngineScale,
                          ::testing::Combine(::testing::Values("openscad", "wasm"), ::testing::Values("polyhedron", "csg")),
                          [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
 
+// The orientation tab west of the pillars (notch and triangle on it), written
+// as data and joined to the pillars by each engine: the same solid as the
+// direct mesher's exact join. With the polyhedron strategy the tops are
+// tilted (the tab meets tilted walls); with the CSG strategy they are level prisms.
+class CrossEngineTab : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(CrossEngineTab, RendersTheSameSolidAsTheDirectMesher) {
+    const auto& [engine_name, strategy_name] = GetParam();
+    TSF_NEED_ENGINE(engineNamed(engine_name));
+    SceneParams p = test::terrainParams(Bottom::Flat);
+    p.marks = MarkParams{};  // on the tab, the default
+    p.cull = Cull::None;     // a full west column: the tab stands against a run of pillars
+    const HexField terrain = test::smallTerrain();
+    HexField field = terrain;
+    field.grid.rows = 2 * terrain.grid.rows;
+    field.values.assign(size_t(field.grid.cellCount()), 0.0);
+    for (int32_t r = 0; r < field.grid.rows; ++r)
+        for (int32_t c = 0; c < field.grid.cols; ++c) field.at(c, r) = terrain.at(c, r % terrain.grid.rows);
+    if (strategy_name == "polyhedron") {
+        field = test::asBinnedPoints(field);
+        p.tilt = TiltSource::Gradient;
+        p.steepness = 3.0;
+    }
+    const Scene scene = buildScene(field, p);
+    ASSERT_TRUE(scene.marks.tab.has_value());
+    EXPECT_FALSE(scene.marks.notch.has_value());
+    EXPECT_GE(scene.marks.tab->touched.size(), 4u);  // two contacts and the notch filled between them
+    ScadOptions opts;
+    ASSERT_TRUE(parseScadStrategy(strategy_name, opts.strategy));
+    opts.inline_library = strategy_name == "polyhedron";
+    const fs::path dir = test::scratchDir("tab_" + engine_name + "_" + strategy_name);
+    writeScad(scene, opts, (dir / "model.scad").string());
+    expectSameSolid(*engineNamed(engine_name).engine, scene, dir / "model.scad", dir / "model.stl");
+}
+
+INSTANTIATE_TEST_SUITE_P(EnginesStrategies, CrossEngineTab,
+                         ::testing::Combine(::testing::Values("openscad", "wasm"), ::testing::Values("polyhedron", "csg")),
+                         [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+
 // The customizer's parameter sets and -D overrides recompute the model in
 // OpenSCAD; on both versions the result equals the Scene built with the same
 // parameters by tsf.

@@ -41,7 +41,7 @@ const MadeModel& madeModel() {
         r.sidecar = r.model + ".scene.json";
         const auto g = test::runTsf("gen " + test::sourcePath("examples/airports-europe.csv") +
                                         " --points x=lon,y=lat --bins 20 --title Airports --units airports --scale"
-                                        " --tilt points -o " + r.model,
+                                        " --tilt points --marks-on data -o " + r.model,
                                     r.dir);
         EXPECT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
         r.scene = json::parse(test::readText(r.sidecar));

@@ -169,6 +169,7 @@ Scene tiltedMarkedScene(Bottom bottom) {
     SceneParams p = vtest::smallFieldParams(bottom, 0.01);
     p.pitch_mm = 9.0;
     p.marks = MarkParams{};
+    p.marks.place = MarkPlace::Data;
     p.tilt = TiltSource::Gradient;
     const HexField f = test::fieldFromFunction(14, 12, [](int c, int r) { return c < 7 && r > 5 ? 6.0 : 1.0 + 0.4 * c + 0.1 * r; });
     return buildScene(f, p);
@@ -204,6 +205,40 @@ TEST(SceneJson, TheMarksFacesAndTheTiltedTopsAreRecordedAsBuiltAndReadAsRecorded
                 EXPECT_TRUE(found);
                 break;
             }
+    }
+}
+
+// The orientation tab (version 6) is recorded as placed and read as recorded:
+// the Scene read back meshes to the same solid; a tab that names a cell it
+// does not touch, or a corner away from its lattice point, is an InputError.
+TEST(SceneJson, TheOrientationTabIsRecordedAsPlacedAndCheckedWhenRead) {
+    SceneParams p;
+    p.pitch_mm = 5.0;
+    p.cull = Cull::None;
+    const Scene s = buildScene(test::fieldFromFunction(8, 10, [](int c, int r) { return 1.0 + (c * 3 + r) % 5; }), p);
+    ASSERT_TRUE(s.marks.tab.has_value());
+    const nlohmann::json j = sceneToJson(s);
+    EXPECT_EQ(j["version"], 6);
+    ASSERT_TRUE(j["marks"]["tab"].is_object());
+    const Scene back = sceneFromJson(j);
+    EXPECT_EQ(sceneToJson(back), j);
+    const Mesh a = meshScene(s), b = meshScene(back);
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.positions, b.positions);
+    auto j2 = j;
+    j2["marks"]["tab"]["touched"][0] = {0, 0};  // the east wall of a cell with a neighbour there
+    EXPECT_THROW(sceneFromJson(j2), InputError);
+    j2 = j;
+    for (auto& q : j2["marks"]["tab"]["outline"])
+        if (q[2].get<int64_t>() >= 0) {
+            q[0] = q[0].get<double>() + 0.5;
+            break;
+        }
+    try {
+        sceneFromJson(j2);
+        ADD_FAILURE() << "a tab corner moved off its lattice point was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("marks.tab"), std::string::npos) << e.what();
     }
 }
 

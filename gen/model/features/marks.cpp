@@ -15,14 +15,13 @@
 #include <sstream>
 #include <unordered_map>
 
-// A handful of crossing constraints: the cascading-intersection warning does not apply.
-#define CGAL_NO_CDT_2_WARNING
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include "gen/geometry/cdt_parity.h"
+#include "gen/model/features/orientation_tab.h"
 #include "gen/util/error.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
@@ -705,7 +704,9 @@ int64_t markRaiseAtCentre(const Scene& s, size_t kept) {
 void placeMarks(Scene& s) {
     s.marks = {};
     buildMarkFaces(s);
-    if (s.keptCount() == 0) return;
+    // On a tab the marks are placed after the top shapes (placeTab,
+    // gen/model/features/orientation_tab.h), not in the data.
+    if (s.keptCount() == 0 || wantsTab(s.params)) return;
     if (s.params.marks.notch) {
         placeNotch(s);
         buildMarkFaces(s);

@@ -54,8 +54,6 @@ inline constexpr double kMarkClearanceMm = 0.8;
 inline constexpr double kReadPointClearanceMm = 0.2;
 /// Shortest distance (mm) from the triangle to the edge of its flat region.
 inline constexpr double kTriangleMarginMm = 1.0;
-/// y leg / x leg of the orientation triangle: clearly different by touch.
-inline constexpr double kTriangleLegRatio = 0.6;
 
 /// Places the marks params.marks asks for on a Scene whose cells, spans and
 /// kinds are set, and builds the faces they need (scene.marks, scene.faces,

@@ -1,0 +1,309 @@
+#include "gen/model/features/orientation_tab.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+#include "gen/field/hex_grid.h"
+#include "gen/geometry/polygon_triangulation.h"
+#include "gen/model/features/foot_contacts.h"
+#include "gen/util/error.h"
+#include "gen/util/number_format.h"
+
+namespace tsf {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Hex corners (hex_grid.h): 2 top, 3 upper-left, 4 lower-left, 5 bottom;
+// edges: 2 north-west (2 -> 3), 3 west (3 -> 4), 4 south-west (4 -> 5).
+constexpr int kTop = 2, kUpperLeft = 3, kLowerLeft = 4, kBottom = 5;
+constexpr int kNorthWestEdge = 2, kWestEdge = 3, kSouthWestEdge = 4;
+
+struct Candidate {
+    int32_t kept;
+    int64_t j;  // the centre's lattice j; its west edge spans j - 1 .. j + 1
+    bool ok;
+};
+
+// Sizes of the tab (mm) for the marks asked for.
+struct TabSize {
+    double width = 0, depth = 0;  // x, y
+    double inset = 0;             // the triangle's right angle from the south-west corner, both ways
+};
+
+TabSize tabSize(const MarkParams& m) {
+    TabSize t;
+    const double apex = m.notch ? m.notch_depth_mm / std::sqrt(2.0) : 0.0;  // the apex's x and y from the corner
+    t.inset = m.notch ? apex + kTabNotchClearanceMm : kTabMarginMm;
+    if (m.triangle) {
+        t.width = t.inset + kTabTriangleLegMm + kTabMarginMm;
+        t.depth = t.inset + kTabTriangleLegMm * kTriangleLegRatio + kTabMarginMm;
+    } else {
+        t.width = t.depth = 2 * apex + kTabMarginMm;
+    }
+    // Whole hundredths of a millimetre: the width the summary and the bed fit state.
+    t.width = std::ceil(t.width * 100 - 1e-9) / 100;
+    t.depth = std::ceil(t.depth * 100 - 1e-9) / 100;
+    return t;
+}
+
+TabPoint corner(const Scene& s, int32_t k, int c) {
+    const size_t kk = size_t(k);
+    const Vec3 p = s.point(hexCorner(s.grid, s.col[kk], s.row[kk], c), 0);
+    return {p.x, p.y, hexCornerId(s.grid, s.col[kk], s.row[kk], c)};
+}
+
+// Builds the tab against `contacts` (a run of cells on the west line, one
+// row of the outline's notches apart, south to north, with the `fillers` in
+// those notches), from y_south to y_north mm. Beyond the run its east edge is
+// set back kTabSetbackMm, so it leaves no slot narrower than that beside a pillar.
+OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y_north, const std::vector<int32_t>& contacts,
+                        const std::vector<int32_t>& fillers, const TabSize& size) {
+    const MarkParams& m = s.params.marks;
+    OrientationTab t;
+    t.top_units = s.floor_units;
+    t.x_east_mm = s.point(LatticePoint{i_west, 0}, 0).x;
+    t.x_west_mm = snapXy(t.x_east_mm - size.width);
+    t.y_south_mm = y_south;
+    t.y_north_mm = y_north;
+    const double x_back = snapXy(t.x_east_mm - kTabSetbackMm);
+    auto add = [&](TabPoint p, bool joined_after) {
+        if (!t.outline.empty() && t.outline.back().x_mm == p.x_mm && t.outline.back().y_mm == p.y_mm) {
+            t.joined.back() = joined_after ? 1 : 0;
+            return;
+        }
+        t.outline.push_back(p);
+        t.joined.push_back(joined_after ? 1 : 0);
+    };
+    const double apex = m.notch_depth_mm / std::sqrt(2.0);
+    // The V's sides leave the apex at 45 +- opening/2 degrees from the edges
+    // and meet them `mouth` from the corner.
+    const double mouth = apex * (1.0 - std::tan((45.0 - kTabNotchOpeningDeg / 2) * kPi / 180.0));
+    add({m.notch ? snapXy(t.x_west_mm + mouth) : t.x_west_mm, t.y_south_mm, -1}, false);
+    const TabPoint first = corner(s, contacts.front(), kLowerLeft), last = corner(s, contacts.back(), kUpperLeft);
+    add({x_back, t.y_south_mm, -1}, false);
+    add({x_back, first.y_mm, -1}, false);
+    for (size_t n = 0; n < contacts.size(); ++n) {
+        const int32_t c = contacts[n];
+        add(corner(s, c, kLowerLeft), true);  // the west wall, south to north
+        if (n + 1 < contacts.size()) {
+            // The outline's notch up to the next contact: c's north-west
+            // wall, the filler's west wall, the next one's south-west wall.
+            add(corner(s, c, kUpperLeft), true);
+            add(corner(s, c, kTop), true);
+            add(corner(s, contacts[n + 1], kBottom), true);
+        } else {
+            add(corner(s, c, kUpperLeft), false);
+        }
+    }
+    add({x_back, last.y_mm, -1}, false);
+    add({x_back, t.y_north_mm, -1}, false);
+    add({t.x_west_mm, t.y_north_mm, -1}, false);
+    if (m.notch) {
+        add({t.x_west_mm, snapXy(t.y_south_mm + mouth), -1}, false);
+        add({snapXy(t.x_west_mm + apex), snapXy(t.y_south_mm + apex), -1}, false);
+        t.has_notch = true;
+        t.notch_depth_mm = std::hypot(t.outline.back().x_mm - t.x_west_mm, t.outline.back().y_mm - t.y_south_mm);
+        t.notch_width_mm = std::hypot(t.outline.front().x_mm - t.x_west_mm, t.outline[t.outline.size() - 2].y_mm - t.y_south_mm);
+        t.notch_opening_deg = kTabNotchOpeningDeg;
+    }
+    for (size_t n = 0; n < contacts.size(); ++n) {
+        t.touched.push_back({contacts[n], kWestEdge});
+        if (n + 1 < contacts.size()) {
+            t.touched.push_back({contacts[n], kNorthWestEdge});
+            t.touched.push_back({fillers[n], kWestEdge});
+            t.touched.push_back({contacts[n + 1], kSouthWestEdge});
+        }
+    }
+    if (m.triangle) {
+        const double x = snapXy(t.x_west_mm + size.inset), y = snapXy(t.y_south_mm + size.inset);
+        t.triangle = {TabPoint{x, y, -1}, TabPoint{snapXy(x + kTabTriangleLegMm), y, -1},
+                      TabPoint{x, snapXy(y + kTabTriangleLegMm * kTriangleLegRatio), -1}};
+        t.triangle_raise_units = std::max<int64_t>(1, snapUnits(m.triangle_height_mm, s.z_snap_mm));
+        t.has_triangle = true;
+    }
+    return t;
+}
+
+// Inside the triangle (edges included), mm.
+bool inTriangle(const std::array<TabPoint, 3>& t, double x, double y) {
+    auto side = [&](const TabPoint& a, const TabPoint& b) {
+        return (b.x_mm - a.x_mm) * (y - a.y_mm) - (b.y_mm - a.y_mm) * (x - a.x_mm);
+    };
+    return side(t[0], t[1]) >= 0 && side(t[1], t[2]) >= 0 && side(t[2], t[0]) >= 0;
+}
+
+}  // namespace
+
+double tabWidthMm(const MarkParams& m) { return tabSize(m).width; }
+
+bool wantsTab(const SceneParams& p) {
+    return p.marks.place == MarkPlace::Tab && p.bottom == Bottom::Flat && !p.halves && (p.marks.notch || p.marks.triangle);
+}
+
+void placeTab(Scene& s) {
+    s.marks.tab.reset();
+    if (!wantsTab(s.params) || s.keptCount() == 0) return;
+    const TabSize size = tabSize(s.params.marks);
+
+    // The tab's east face: the westernmost hexagon edge of the kept cells.
+    int64_t i_west = INT64_MAX, j_min = INT64_MAX;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
+        i_west = std::min(i_west, c.i - 1);
+        j_min = std::min(j_min, c.j - 2);
+    }
+    std::vector<Candidate> cand;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
+        if (c.i - 1 == i_west) cand.push_back({int32_t(k), c.j, footCanTouch(s, int32_t(k))});
+    }
+    std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
+    // The tab reaches as far south as the lowest pillar, so its notch is the
+    // model's south-west corner, and at least size.depth north of that.
+    const double y_south = s.point(LatticePoint{i_west, j_min}, 0).y;
+    const double y_reach = snapXy(y_south + size.depth);
+    auto yOf = [&](int64_t j) { return s.point(LatticePoint{i_west, j}, 0).y; };
+    // Runs of touchable candidates one row of notches apart (6 lattice j)
+    // with a touchable filler in each notch; of each, the contacts up to the
+    // first whose wall reaches y_reach. The run with the most contacts is
+    // taken (the firmest join), the southernmost of equals.
+    std::vector<int32_t> best, best_fillers;
+    std::string blocked = "cells without data, tilted corners below the floor or culled rows";
+    for (size_t start = 0; start < cand.size(); ++start) {
+        if (!cand[start].ok || (start > 0 && cand[start - 1].ok && cand[start].j - cand[start - 1].j == 6 &&
+                                footCanTouch(s, keptAtCentre(s, i_west + 2, cand[start - 1].j + 3))))
+            continue;  // not the start of a run
+        std::vector<int32_t> contacts{cand[start].kept}, fillers;
+        for (size_t n = start + 1; n < cand.size() && yOf(cand[n - 1].j + 1) < y_reach; ++n) {
+            const int32_t filler = keptAtCentre(s, i_west + 2, cand[n - 1].j + 3);
+            if (!cand[n].ok || cand[n].j - cand[n - 1].j != 6 || !footCanTouch(s, filler)) break;
+            fillers.push_back(filler);
+            contacts.push_back(cand[n].kept);
+        }
+        const double y_north = std::max(y_reach, yOf(cand[start + contacts.size() - 1].j + 1));
+        if (s.legend && y_north + kTabLegendClearanceMm > s.legend->plate_south_mm) {
+            blocked = "the braille legend's plate";
+            continue;
+        }
+        if (contacts.size() > best.size()) {
+            best = std::move(contacts);
+            best_fillers = std::move(fillers);
+        }
+    }
+    if (!best.empty()) {
+        const int64_t last_j = hexCentre(s.grid, s.col[size_t(best.back())], s.row[size_t(best.back())]).j;
+        s.marks.tab = buildTab(s, i_west, y_south, std::max(y_reach, yOf(last_j + 1)), best, best_fillers, size);
+        return;
+    }
+    s.notes.push_back("orientation marks left out: the tab that carries them (" + formatSignificant(size.width, 3) + " x " +
+                      formatSignificant(size.depth, 3) + " mm) finds no pillar on the model's west side to stand "
+                      "against, clear of " + blocked + "; --marks-on data puts them in the data where they fit");
+}
+
+std::optional<int64_t> tabTopAt(const Scene& s, double x, double y) {
+    if (!s.marks.tab) return std::nullopt;
+    const OrientationTab& t = *s.marks.tab;
+    // Even-odd test against the outline (points on it count as inside).
+    bool inside = false;
+    const size_t n = t.outline.size();
+    for (size_t a = 0, b = n - 1; a < n; b = a++) {
+        const TabPoint &p = t.outline[a], &q = t.outline[b];
+        if ((p.y_mm > y) != (q.y_mm > y) && x < (q.x_mm - p.x_mm) * (y - p.y_mm) / (q.y_mm - p.y_mm) + p.x_mm) inside = !inside;
+    }
+    if (!inside) return std::nullopt;
+    if (t.has_triangle && inTriangle(t.triangle, x, y)) return t.top_units + t.triangle_raise_units;
+    return t.top_units;
+}
+
+double tabAreaMm2(const OrientationTab& t) {
+    double twice = 0;
+    for (size_t a = 0, n = t.outline.size(); a < n; ++a) {
+        const TabPoint &p = t.outline[a], &q = t.outline[(a + 1) % n];
+        twice += p.x_mm * q.y_mm - q.x_mm * p.y_mm;
+    }
+    return twice / 2;
+}
+
+TabBody meshTabBody(const Scene& s, bool joined) {
+    TabBody body;
+    if (!s.marks.tab) return body;
+    const OrientationTab& t = *s.marks.tab;
+    Mesh& m = body.mesh;
+    const uint32_t n = uint32_t(t.outline.size());
+    for (const int64_t z : {int64_t(0), t.top_units})
+        for (const TabPoint& p : t.outline) {
+            m.positions.push_back({p.x_mm, p.y_mm, s.zMm(z)});
+            body.lattice_id.push_back(p.lattice);
+        }
+    auto lo = [](uint32_t v) { return v; };
+    auto hi = [n](uint32_t v) { return v + n; };
+    std::vector<uint32_t> ring(n);
+    for (uint32_t v = 0; v < n; ++v) ring[v] = v;
+    // The bottom, facing down.
+    for (const auto& tri : triangulateRings(m.positions, {ring})) m.triangles.push_back({tri[0], tri[2], tri[1]});
+    // The top around the triangle, facing up.
+    std::vector<std::vector<uint32_t>> top_rings{std::vector<uint32_t>(n)};
+    for (uint32_t v = 0; v < n; ++v) top_rings[0][v] = hi(v);
+    uint32_t tri_lo = 0;
+    if (t.has_triangle) {
+        tri_lo = uint32_t(m.positions.size());
+        for (const int64_t z : {t.top_units, t.top_units + t.triangle_raise_units})
+            for (const TabPoint& p : t.triangle) {
+                m.positions.push_back({p.x_mm, p.y_mm, s.zMm(z)});
+                body.lattice_id.push_back(-1);
+            }
+        top_rings.push_back({tri_lo, tri_lo + 2, tri_lo + 1});  // a hole: clockwise
+    }
+    for (const auto& tri : triangulateRings(m.positions, top_rings)) m.triangles.push_back(tri);
+    // The walls: the outline runs with the tab on its left, so the outward
+    // normal of edge v -> w is (w - v) x up.
+    for (uint32_t v = 0; v < n; ++v) {
+        if (joined && t.joined[v]) continue;
+        const uint32_t w = (v + 1) % n;
+        m.triangles.push_back({lo(v), lo(w), hi(w)});
+        m.triangles.push_back({lo(v), hi(w), hi(v)});
+    }
+    if (t.has_triangle) {
+        const uint32_t up = tri_lo + 3;
+        m.triangles.push_back({up, up + 1, up + 2});
+        for (uint32_t v = 0; v < 3; ++v) {
+            const uint32_t w = (v + 1) % 3;
+            m.triangles.push_back({tri_lo + v, tri_lo + w, up + w});
+            m.triangles.push_back({tri_lo + v, up + w, up + v});
+        }
+    }
+    return body;
+}
+
+void checkTab(const Scene& s, const OrientationTab& t) {
+    auto bad = [](const std::string& why) { throw InputError("the orientation tab " + why); };
+    if (t.outline.size() < 4 || t.joined.size() != t.outline.size()) bad("has no outline, or joined flags that do not match it");
+    if (t.top_units != s.floor_units) bad("does not stand at the floor");
+    if (t.has_triangle && t.triangle_raise_units <= 0) bad("has a triangle that does not stand above it");
+    const int64_t ids = latticeVertexIdCount(s.grid);
+    std::set<int64_t> corners;
+    for (const auto& [k, e] : t.touched) {
+        if (k < 0 || size_t(k) >= s.keptCount() || e < 0 || e >= kHexCorners) bad("touches a cell that is not kept");
+        if (s.keptNeighbour(size_t(k), e) >= 0) bad("covers a wall between two pillars");
+        for (const int c : {e, (e + 1) % kHexCorners})
+            corners.insert(hexCornerId(s.grid, s.col[size_t(k)], s.row[size_t(k)], c));
+    }
+    for (size_t n = 0; n < t.outline.size(); ++n) {
+        const TabPoint& p = t.outline[n];
+        if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm)) bad("has a corner that is not a number");
+        if (p.lattice >= ids || p.lattice < -1) bad("names a lattice corner beyond the grid");
+        if (p.lattice >= 0) {
+            const Vec3 q = s.point(latticeVertexPoint(s.grid, p.lattice), 0);
+            if (q.x != p.x_mm || q.y != p.y_mm) bad("has a corner away from the lattice corner it names");
+        }
+        const TabPoint& q = t.outline[(n + 1) % t.outline.size()];
+        if (t.joined[n] && (p.lattice < 0 || q.lattice < 0 || !corners.count(p.lattice) || !corners.count(q.lattice)))
+            bad("joins a wall that is not one it touches");
+    }
+}
+
+}  // namespace tsf

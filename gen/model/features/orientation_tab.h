@@ -1,0 +1,91 @@
+// The orientation tab: a place for the orientation marks that is not data.
+//
+// Dense rasters leave no flat region for the handedness triangle and no
+// corner pillar wide enough for a deep notch (thesis 3.5 places both in the
+// data; 7.1.4 admits they do not always fit). The tab is a flat plate west
+// of the pillars, from z = 0 to the floor, that carries both marks at full
+// size whatever the cells:
+//   - the NOTCH: a V cut into the tab's south-west corner, which is the
+//     model's south-west corner (the tab reaches as far south as the lowest
+//     pillar, and nothing lies west of it); its apex lies notch_depth_mm
+//     (6 mm by default) from that corner along the diagonal, its sides open
+//     kTabNotchOpeningDeg;
+//   - the TRIANGLE: a right triangle raised triangle_height_mm on the tab's
+//     top, right angle south-west, east leg kTabTriangleLegMm (the longer),
+//     north leg kTriangleLegRatio of it.
+// The tab never covers, lowers or reshapes a data cell: it stands against
+// the westernmost hexagon walls of pillars that rise to the floor at every
+// corner (their "contacts"), from 0 to the floor, exactly as the tactile
+// scale's foot stands against the east walls (gen/model/features/scale.h),
+// and fills the notch of the hexagon outline between two contacts one row
+// apart. Every vertex where it meets the pillars is a lattice corner at
+// height 0 or the floor, so the joined model needs no boolean operation.
+//
+// Placed by placeTab (buildScene, after the top shapes and the legend) on
+// flat models with MarkParams::place == Tab; a mirrored model (no floor) and
+// the halves keep the marks in the data. When the west side has no run of
+// contacts clear of pits, tilted corners below the floor and the legend's
+// plate, the marks are left out with a note that says why.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
+
+namespace tsf {
+
+/// Opening of the notch's V, degrees: narrower than the thesis' 90 degrees,
+/// which at a square corner would cut a step, not a V a fingertip follows.
+inline constexpr double kTabNotchOpeningDeg = 60.0;
+/// East leg of the triangle on the tab, mm: above APH's 1/2 in (12.7 mm)
+/// smallest recognisable shape side, with room for rounding and measuring.
+inline constexpr double kTabTriangleLegMm = 14.0;
+/// Clear space between the triangle and the tab's east and north edges, mm
+/// (the pillars rise right behind the east edge).
+inline constexpr double kTabMarginMm = 3.0;
+/// How far the tab's east edge stands back west of the pillars beyond the
+/// cells it stands against, mm: more than two nozzle widths, so no slot
+/// beside a pillar is too narrow to print.
+inline constexpr double kTabSetbackMm = 1.0;
+/// Clear space between the notch's apex and the triangle, mm.
+inline constexpr double kTabNotchClearanceMm = 1.75;
+/// Clear space kept from the braille legend's plate, mm.
+inline constexpr double kTabLegendClearanceMm = 2.0;
+
+/// The tab's width (x, mm) for these marks: what it adds to the model's
+/// width west of the pillars, whatever the cell.
+double tabWidthMm(const MarkParams& marks);
+
+/// Places the orientation tab when the Scene asks for it (see above); adds a
+/// note for marks that cannot be placed.
+void placeTab(Scene& scene);
+
+/// Whether the Scene's marks belong on a tab: MarkPlace::Tab, a flat model,
+/// not cut into halves, and at least one mark asked for.
+bool wantsTab(const SceneParams& params);
+
+/// z (units) of the tab's top at (x, y) mm (the floor, or the triangle's
+/// top), none outside its outline.
+std::optional<int64_t> tabTopAt(const Scene& scene, double x_mm, double y_mm);
+
+/// The area of the tab's outline, mm^2 (the footprint it adds to the model).
+double tabAreaMm2(const OrientationTab& tab);
+
+/// The tab as a closed solid. `joined`: without its walls against the
+/// pillars (the part of a joined mesh). lattice_id[v] is the lattice vertex
+/// id a vertex stands on (a contact's corner), -1 for the tab's own.
+struct TabBody {
+    Mesh mesh;
+    std::vector<int64_t> lattice_id;
+};
+TabBody meshTabBody(const Scene& scene, bool joined);
+
+/// Checks a tab read from a file against the Scene: outline, joined edges,
+/// touched cells and their lattice corners agree. Throws InputError saying what does not.
+void checkTab(const Scene& scene, const OrientationTab& tab);
+
+}  // namespace tsf
