@@ -125,6 +125,7 @@ TEST_P(CrossEngineMarks, RendersTheSameSolidAsTheDirectMesher) {
     field.one_to_one = true;
     SceneParams p = test::terrainParams(bottom);
     p.marks = MarkParams{};
+    p.marks.place = MarkPlace::Data;  // the marks in the data (the tab: CrossEngineTab)
     p.pitch_mm = 6.0;
     const Scene scene = buildScene(field, p);
     ASSERT_TRUE(scene.marks.notch.has_value());
@@ -165,6 +166,7 @@ TEST_P(CrossEngineTilt, RendersTheSameSolidAsTheDirectMesher) {
     field = test::asBinnedPoints(field);  // cells at the floor are empty bins: structural
     SceneParams p = test::terrainParams(bottom);
     p.marks = MarkParams{};
+    p.marks.place = MarkPlace::Data;  // the marks in the data (the tab: CrossEngineTab)
     p.pitch_mm = 6.0;
     p.tilt = TiltSource::Gradient;
     p.steepness = 3.0;
