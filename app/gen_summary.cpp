@@ -88,7 +88,8 @@ nlohmann::json sceneFactsJson(const Scene& s) {
         const OrientationTab& t = *s.marks.tab;
         const double w = t.x_east_mm - t.x_west_mm, d = t.y_north_mm - t.y_south_mm;
         nlohmann::json tab = {{"box_mm", {{"west", t.x_west_mm}, {"east", t.x_east_mm}, {"south", t.y_south_mm}, {"north", t.y_north_mm}}},
-                              {"size_mm", {w, d, s.zMm(t.top_units)}},
+                              {"size_mm", {w, d, s.zMm(t.top_units - t.bottom_units)}},
+                              {"z_mm", {s.zMm(t.bottom_units), s.zMm(t.top_units)}},
                               {"area_mm2", tabAreaMm2(t)},
                               {"cells_touched", t.touched.size()}};
         tab["notch"] = t.has_notch ? nlohmann::json{{"depth_mm", t.notch_depth_mm}, {"width_mm", t.notch_width_mm},
@@ -98,6 +99,7 @@ nlohmann::json sceneFactsJson(const Scene& s) {
         tab["triangle"] = t.has_triangle ? nlohmann::json{{"leg_x_mm", t.triangle[1].x_mm - t.triangle[0].x_mm},
                                                           {"leg_y_mm", t.triangle[2].y_mm - t.triangle[0].y_mm},
                                                           {"height_mm", s.zMm(t.triangle_raise_units)},
+                                                          {"underside", t.under_triangle},
                                                           {"corner_mm", {t.triangle[0].x_mm, t.triangle[0].y_mm}}}
                                          : nlohmann::json(nullptr);
         marks["tab"] = tab;
@@ -171,9 +173,12 @@ std::string formatSceneFacts(const Scene& s) {
     if (s.marks.tab) {
         const OrientationTab& t = *s.marks.tab;
         o << "  tab       " << formatFixed(t.x_east_mm - t.x_west_mm, 1) << " x " << formatFixed(t.y_north_mm - t.y_south_mm, 1)
-          << " x " << formatFixed(s.zMm(t.top_units), 2) << " mm (" << formatFixed(tabAreaMm2(t), 0)
-          << " mm^2) west of the pillars, at the floor, from (" << formatFixed(t.x_west_mm, 1) << ", "
-          << formatFixed(t.y_south_mm, 1) << ") mm: it carries the marks and covers no data cell\n";
+          << " x " << formatFixed(s.zMm(t.top_units - t.bottom_units), 2) << " mm (" << formatFixed(tabAreaMm2(t), 0)
+          << " mm^2) west of the pillars, "
+          << (t.bottom_units == 0 ? std::string("from the bed to the floor")
+                                  : "from z = " + formatFixed(s.zMm(t.bottom_units), 2) + " to " + formatFixed(s.zMm(t.top_units), 2) + " mm")
+          << ", corner (" << formatFixed(t.x_west_mm, 1) << ", " << formatFixed(t.y_south_mm, 1)
+          << ") mm: it carries the marks and covers no data cell\n";
         if (t.has_notch)
             o << "  notch     V " << formatFixed(t.notch_depth_mm, 1) << " mm deep, " << formatFixed(t.notch_width_mm, 1)
               << " mm wide, " << formatFixed(t.notch_opening_deg, 0) << " degrees, at the model's south-west corner\n";
@@ -182,7 +187,11 @@ std::string formatSceneFacts(const Scene& s) {
               << formatFixed(t.triangle[1].x_mm - t.triangle[0].x_mm, 1) << " mm east (x) and "
               << formatFixed(t.triangle[2].y_mm - t.triangle[0].y_mm, 1) << " mm north (y), right angle at ("
               << formatFixed(t.triangle[0].x_mm, 1) << ", " << formatFixed(t.triangle[0].y_mm, 1)
-              << ") mm: turn the model so the notch is at your near left, and the longer leg runs to your right\n";
+              << ") mm: turn the model so the notch is at your near left, and the longer leg runs to your right"
+              << (t.under_triangle ? "; the same triangle on the tab's underside has its longer leg to your left when the "
+                                     "model is turned over, as the data is mirrored there"
+                                   : "")
+              << "\n";
     }
     if (s.params.tilt != TiltSource::None)
         o << "  tilt      " << toString(s.params.tilt) << " x " << formatSignificant(s.params.steepness, 3) << ": "

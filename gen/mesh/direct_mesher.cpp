@@ -73,7 +73,7 @@
 namespace tsf {
 namespace {
 
-constexpr int kMaxHeightsPerVertex = 8;  // 3 incident cells x (top, bottom), or faces at a mark vertex
+constexpr int kMaxHeightsPerVertex = 12;  // 3 incident cells x (top, bottom), a bottom point, a foot's two, or faces at a mark vertex
 // Merged tops and the flat bottom keep the lattice vertices of rows and
 // columns that are multiples of this (staggered by half): their triangles are
 // at most a few cells long, for about 2 / kSparseStride^2 triangles a cell.
@@ -254,8 +254,12 @@ private:
                 if (!flat_ || rim) out[n++] = shaped ? cornerBottomAt(s_, size_t(c), id) : s_.bottom[size_t(c)];
             }
             if (flat_ && bottom_point_[size_t(id)]) out[n++] = 0;
-            // A foot (the scale's, the tab) meets the wall of a contact cell at the floor.
-            if (!foot_corners_.empty() && foot_corners_.count(id)) out[n++] = s_.floor_units;
+            // A foot (the scale's, the tab) meets the wall of a contact cell at its
+            // bottom and top (flat: 0, which the rim has, and the floor).
+            if (!foot_corners_.empty() && foot_corners_.count(id)) {
+                out[n++] = footSpan().bottom;
+                out[n++] = footSpan().top;
+            }
         } else {
             rim = rim_.count(id) > 0;
         }
@@ -634,7 +638,11 @@ private:
     // A foot lies across edge e of kept cell k (the scale's, gen/model/features/scale.h:
     // scaleTouchedEdges; the tab's, OrientationTab::touched), as a neighbour from 0 to the floor would.
     bool footAcross(size_t k, int e) const { return !foot_edges_.empty() && (foot_edges_[k] >> e & 1u); }
-    Span footSpan() const { return {0, s_.floor_units}; }
+    // Flat, every foot spans 0 to the floor; a mirrored model's only foot is
+    // the tab, over the band its pillars share (gen/model/features/orientation_tab.h).
+    Span footSpan() const {
+        return s_.marks.tab ? Span{s_.marks.tab->bottom_units, s_.marks.tab->top_units} : Span{0, s_.floor_units};
+    }
 
     // A foot's own body (the scale, the tab); where it stands on a lattice
     // corner of a contact it uses the pillars' vertex there, so the two share

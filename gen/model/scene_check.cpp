@@ -132,10 +132,13 @@ void checkScene(const Scene& s) {
     checkTopShapes(s);
     if (s.scale) checkScale(s);
     if (s.marks.tab) {
-        if (s.params.bottom != Bottom::Flat) fail("orientation tab: it stands on a flat model only");
         checkTab(s, *s.marks.tab);
+        // Each wall it covers holds its whole band, so the pillar's wall goes on above and below it.
         for (const auto& [k, e] : s.marks.tab->touched)
-            if (!footCanTouch(s, k)) fail("orientation tab: it stands against a cell that does not rise to the floor at every corner");
+            for (const int c : {e, (e + 1) % kHexCorners})
+                if (!footCanTouch(s, k) || cornerBottom(s, size_t(k), c) > s.marks.tab->bottom_units ||
+                    cornerTop(s, size_t(k), c) < s.marks.tab->top_units)
+                    fail("orientation tab: it stands against " + cellName(s, size_t(k)) + ", whose wall does not hold its z band");
     }
 }
 

@@ -234,12 +234,14 @@ json marksJson(const Marks& m) {
         j["tab"] = {{"outline", outline},
                     {"joined", t.joined},
                     {"touched", touched},
+                    {"bottom_units", t.bottom_units},
                     {"top_units", t.top_units},
                     {"box_mm", {t.x_west_mm, t.x_east_mm, t.y_south_mm, t.y_north_mm}},
                     {"notch", t.has_notch ? json{{"depth_mm", t.notch_depth_mm}, {"width_mm", t.notch_width_mm},
                                                  {"opening_deg", t.notch_opening_deg}}
                                           : json(nullptr)},
-                    {"triangle", t.has_triangle ? json{{"corners_mm", tri}, {"raise_units", t.triangle_raise_units}}
+                    {"triangle", t.has_triangle ? json{{"corners_mm", tri}, {"raise_units", t.triangle_raise_units},
+                                                       {"underside", t.under_triangle}}
                                                 : json(nullptr)}};
     } else {
         j["tab"] = nullptr;
@@ -281,6 +283,7 @@ OrientationTab tabFrom(const json& t, const std::string& path) {
             fail(join(path, "touched"), "a kept index or an edge (0..5) is out of range");
         tab.touched.push_back({int32_t(k), int(edge)});
     }
+    tab.bottom_units = getInt(t, path, "bottom_units");
     tab.top_units = getInt(t, path, "top_units");
     const json& box = member(t, path, "box_mm");
     if (!box.is_array() || box.size() != 4) fail(join(path, "box_mm"), "expected [west, east, south, north]");
@@ -303,6 +306,10 @@ OrientationTab tabFrom(const json& t, const std::string& path) {
         if (!corners.is_array() || corners.size() != 3) fail(join(tp, "corners_mm"), "expected three [x, y] corners");
         for (size_t n = 0; n < 3; ++n) tab.triangle[n] = xy(corners[n], join(tp, "corners_mm") + "[" + std::to_string(n) + "]", 2);
         tab.triangle_raise_units = getInt(tri, tp, "raise_units");
+        if (tab.triangle_raise_units < 1) fail(join(tp, "raise_units"), "must be at least 1");
+        const json& under = member(tri, tp, "underside");
+        if (!under.is_boolean()) fail(join(tp, "underside"), "expected true or false");
+        tab.under_triangle = under.get<bool>();
         tab.has_triangle = true;
     }
     return tab;

@@ -16,9 +16,10 @@
 //                            raise_units, anchor (kept index)},
 //          tab: null | {outline [[x, y, lattice id (-1: the tab's own)], ...] mm,
 //                       counter-clockwise, joined [0|1 per edge], touched
-//                       [[kept index, edge 0..5]], top_units, box_mm [west, east,
-//                       south, north], notch null | {depth_mm, width_mm, opening_deg},
-//                       triangle null | {corners_mm [[x, y] x 3], raise_units}}
+//                       [[kept index, edge 0..5]], bottom_units, top_units, box_mm
+//                       [west, east, south, north], notch null | {depth_mm, width_mm,
+//                       opening_deg}, triangle null | {corners_mm [[x, y] x 3],
+//                       raise_units, underside (mirrored: also below the tab)}}
 //                  (version 6: the orientation tab, gen/model/features/orientation_tab.h)},
 //   faces: null | {extra [[i, j], ...] (planar points after the lattice's ids),
 //                  faces [{anchor, raise_units, cells [kept index], rings [[id, ...]],

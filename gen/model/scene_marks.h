@@ -27,7 +27,7 @@ enum class MarkPlace : uint8_t {
 
 struct MarkParams {
     /// Tab: both marks on the tab, at full size whatever the cells; a model
-    /// without a floor to stand the tab on (mirrored, halves) keeps them in the data.
+    /// cut into halves keeps them in the data.
     MarkPlace place = MarkPlace::Tab;
     bool notch = true;              ///< cut the orientation notch
     double notch_depth_mm = 6.0;    ///< how far the V reaches into the model from its corner (mm)
@@ -94,14 +94,19 @@ struct OrientationTab {
     /// The hexagon edges (kept cell, edge 0..5 of hex_grid.h) the plate
     /// covers from 0 to its top: the joined edges, as the pillars see them.
     std::vector<std::pair<int32_t, int>> touched;
-    int64_t top_units = 0;  ///< the plate's top: the floor
+    /// The plate's z span: flat, 0 to the floor; mirrored, the span every
+    /// pillar it stands against holds (the thickest band they share).
+    int64_t bottom_units = 0, top_units = 0;
     double x_west_mm = 0, x_east_mm = 0, y_south_mm = 0, y_north_mm = 0;  ///< its bounding box
     /// The notch: apex at notch_depth_mm from the south-west corner along the diagonal.
     double notch_depth_mm = 0, notch_width_mm = 0, notch_opening_deg = 0;
     /// The triangle: right angle, east end, north end (mm, snapped), standing
-    /// triangle_raise_units above the plate's top.
+    /// triangle_raise_units above the plate's top and, on a mirrored model
+    /// (under_triangle), as far below its bottom: the underside shows it
+    /// mirrored exactly as it shows the data.
     std::array<TabPoint, 3> triangle;
     int64_t triangle_raise_units = 0;
+    bool under_triangle = false;
     bool has_notch = false, has_triangle = false;
 };
 

@@ -24,13 +24,16 @@ void emitTabData(std::string& o, const Scene& s) {
              formatShortest(s.zMm(t.top_units + t.triangle_raise_units));
     else
         o += "], 0";
+    o += ", " + formatShortest(s.zMm(t.bottom_units)) + ", " +
+         (t.has_triangle && t.under_triangle ? formatShortest(s.zMm(t.bottom_units - t.triangle_raise_units))
+                                             : formatShortest(s.zMm(t.bottom_units)));
     o += "];\n";
     // The tab stands against the pillars' walls where tsf put them: another
-    // cell, base or snap would move the walls away from it, and a mirrored
-    // model has no floor for it.
+    // cell, base, snap or mirror would move the walls away from it.
     o += "assert(!show_orientation_tab || [cell, base, snap, mirror] == [" + formatShortest(s.pitch_mm) + ", " +
-         formatShortest(s.params.base_mm) + ", " + formatShortest(s.z_snap_mm) +
-         ", false],\n       \"the orientation tab was placed by tsf for the flat model, cell, base and snap it wrote: set "
+         formatShortest(s.params.base_mm) + ", " + formatShortest(s.z_snap_mm) + ", " +
+         (s.params.bottom == Bottom::Mirrored ? "true" : "false") +
+         "],\n       \"the orientation tab was placed by tsf for the cell, base, snap and mirror it wrote: set "
          "show_orientation_tab = false, or run tsf gen again to change them\");\n\n";
 }
 

@@ -24,7 +24,8 @@ namespace {
 constexpr double kSampleMm = 0.1;
 
 // The top surface (largest z of any upward triangle) over a window of the
-// xy plane, NaN where nothing is.
+// xy plane, NaN where nothing is; from below: the underside (smallest z of
+// any downward triangle), stored negated, so what stands out is larger.
 struct TopRaster {
     double x0 = 0, y0 = 0;
     int cols = 0, rows = 0;
@@ -36,7 +37,7 @@ struct TopRaster {
     }
 };
 
-TopRaster rasteriseTop(const Mesh& m, double x0, double y0, double w, double d) {
+TopRaster rasteriseTop(const Mesh& m, double x0, double y0, double w, double d, bool from_below) {
     TopRaster t;
     t.x0 = x0;
     t.y0 = y0;
@@ -45,8 +46,9 @@ TopRaster rasteriseTop(const Mesh& m, double x0, double y0, double w, double d) 
     t.z.assign(size_t(t.cols) * size_t(t.rows), std::nan(""));
     for (const auto& tri : m.triangles) {
         const Vec3 &a = m.positions[tri[0]], &b = m.positions[tri[1]], &c = m.positions[tri[2]];
-        const double area2 = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-        if (area2 <= 1e-12) continue;  // facing down or vertical
+        const double signed2 = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+        const double area2 = from_below ? -signed2 : signed2;
+        if (area2 <= 1e-12) continue;  // facing the other way, or vertical
         const int c0 = std::max(0, int(std::ceil((std::min({a.x, b.x, c.x}) - x0) / kSampleMm)));
         const int c1 = std::min(t.cols - 1, int(std::floor((std::max({a.x, b.x, c.x}) - x0) / kSampleMm)));
         const int r0 = std::max(0, int(std::ceil((std::min({a.y, b.y, c.y}) - y0) / kSampleMm)));
@@ -54,11 +56,12 @@ TopRaster rasteriseTop(const Mesh& m, double x0, double y0, double w, double d) 
         for (int r = r0; r <= r1; ++r)
             for (int col = c0; col <= c1; ++col) {
                 const double x = x0 + col * kSampleMm, y = y0 + r * kSampleMm;
-                const double wa = (b.x - x) * (c.y - y) - (c.x - x) * (b.y - y);
-                const double wb = (c.x - x) * (a.y - y) - (a.x - x) * (c.y - y);
+                const double sign = from_below ? -1.0 : 1.0;
+                const double wa = sign * ((b.x - x) * (c.y - y) - (c.x - x) * (b.y - y));
+                const double wb = sign * ((c.x - x) * (a.y - y) - (a.x - x) * (c.y - y));
                 const double wc = area2 - wa - wb;
                 if (wa < -1e-9 || wb < -1e-9 || wc < -1e-9) continue;
-                const double z = (wa * a.z + wb * b.z + wc * c.z) / area2;
+                const double z = sign * (wa * a.z + wb * b.z + wc * c.z) / area2;
                 double& cell = t.z[size_t(r) * size_t(t.cols) + size_t(col)];
                 if (std::isnan(cell) || z > cell) cell = z;
             }
@@ -73,14 +76,15 @@ struct Found {
     bool right_angle_south_west = false;
 };
 
-// Finds the marks near the south-west corner of the model's bounding box.
-Found findMarks(const Mesh& m) {
+// Finds the marks near the south-west corner of the model's bounding box,
+// on its top or (from_below) its underside.
+Found findMarks(const Mesh& m, bool from_below = false) {
     double xmin = std::numeric_limits<double>::max(), ymin = xmin;
     for (const Vec3& p : m.positions) {
         xmin = std::min(xmin, p.x);
         ymin = std::min(ymin, p.y);
     }
-    const TopRaster top = rasteriseTop(m, xmin, ymin, 40, 40);
+    const TopRaster top = rasteriseTop(m, xmin, ymin, 40, 40, from_below);
     Found f;
     // The notch: along the diagonal from the corner, how far until material.
     for (double t = 0; t < 20; t += kSampleMm / 2) {
@@ -144,13 +148,7 @@ Found findMarks(const Mesh& m) {
     return f;
 }
 
-void expectOrientable(const std::string& name, const std::string& args) {
-    const auto dir = test::scratchDir("tab_" + name);
-    const std::string model = (dir / "m.stl").string();
-    const auto r = test::runTsf("gen " + args + " -o " + model, dir);
-    ASSERT_EQ(r.exit_code, test::kExitOk) << name << "\n" << r.out << r.err;
-    const Mesh m = readMesh(model);
-    const Found f = findMarks(m);
+void expectMarks(const std::string& name, const Found& f) {
     EXPECT_GE(f.notch_depth_mm, 6.0 - 2 * kSampleMm) << name;
     EXPECT_LE(f.notch_depth_mm, 6.0 + 3 * kSampleMm) << name;  // a V, not the whole corner gone
     EXPECT_GE(f.leg_x_mm, 12.7) << name;
@@ -158,6 +156,18 @@ void expectOrientable(const std::string& name, const std::string& args) {
     EXPECT_GT(f.leg_x_mm, 1.4 * f.leg_y_mm) << name << ": the east leg is the longer";
     EXPECT_NEAR(f.fill, 0.5, 0.06) << name << ": a triangle";
     EXPECT_TRUE(f.right_angle_south_west) << name;
+}
+
+void expectOrientable(const std::string& name, const std::string& args) {
+    const auto dir = test::scratchDir("tab_" + name);
+    const std::string model = (dir / "m.stl").string();
+    const auto r = test::runTsf("gen " + args + " -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << name << "\n" << r.out << r.err;
+    const Mesh m = readMesh(model);
+    expectMarks(name, findMarks(m));
+    // A mirrored model shows them on its underside too, at the same place:
+    // turned over, the long leg runs the other way, as the data does.
+    if (args.find("--mirror") != std::string::npos) expectMarks(name + " (underside)", findMarks(m, /*from_below=*/true));
     const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json", dir);
     EXPECT_EQ(v.exit_code, test::kExitOk) << name << "\n" << v.out << v.err;
 }
@@ -196,6 +206,12 @@ TEST(OrientationTab, ConstantTiltedAndConcaveModelsCarryFullMarks) {
     expectOrientable("concave", test::sourcePath("examples/airports-europe.csv") + " --points x=lon,y=lat --cull concave");
     expectOrientable("legend_scale", test::sourcePath("examples/airports-europe.csv") +
                                          " --points x=lon,y=lat --bins 40 --title Airports --units airports --scale");
+}
+
+TEST(OrientationTab, MirroredModelsCarryThemOnBothFaces) {
+    expectOrientable("mirrored_airports", test::sourcePath("examples/airports-europe.csv") + " --points x=lon,y=lat --bins 40 --mirror");
+    expectOrientable("mirrored_volcano", test::sourcePath("examples/volcano.csv") + " --mirror --tilt gradient");
+    expectOrientable("mirrored_dense", denseGrid("dense_m.csv", 80, 80, false) + " --mirror");
 }
 
 // Leaving a mark out leaves it out; --marks-on data keeps the old placement.

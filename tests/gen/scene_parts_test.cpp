@@ -110,9 +110,10 @@ TEST(SceneParts, WithoutALegendThereIsNoLegendPartAndMirroredModelsSplitToo) {
     const HexField f = partsField();
     SceneParams p = test::smallParams(Bottom::Mirrored);
     p.pitch_mm = 4.0;
-    p.marks = MarkParams{};
+    p.marks = MarkParams{};  // on the tab, the triangle on both its faces
     const Scene m = buildScene(f, p);
-    ASSERT_TRUE(m.marks.triangle.has_value());
+    ASSERT_TRUE(m.marks.tab.has_value());
+    EXPECT_TRUE(m.marks.tab->under_triangle);
     const std::vector<MeshPart> mparts = meshSceneParts(m);
     ASSERT_EQ(mparts.size(), 2u);
     VerifyOptions vo;

@@ -9,6 +9,7 @@
 #include "gen/field/hex_grid.h"
 #include "gen/geometry/polygon_triangulation.h"
 #include "gen/model/features/foot_contacts.h"
+#include "gen/model/features/top_shapes.h"
 #include "gen/util/error.h"
 #include "gen/util/number_format.h"
 
@@ -26,6 +27,17 @@ struct Candidate {
     int32_t kept;
     int64_t j;  // the centre's lattice j; its west edge spans j - 1 .. j + 1
     bool ok;
+};
+
+// The z band (units) a kept cell holds at every corner.
+struct Band {
+    int64_t bottom = INT64_MIN, top = INT64_MAX;
+    void narrow(const Scene& s, int32_t k) {
+        for (int e = 0; e < kHexCorners; ++e) {
+            bottom = std::max(bottom, cornerBottom(s, size_t(k), e));
+            top = std::min(top, cornerTop(s, size_t(k), e));
+        }
+    }
 };
 
 // Sizes of the tab (mm) for the marks asked for.
@@ -61,10 +73,11 @@ TabPoint corner(const Scene& s, int32_t k, int c) {
 // those notches), from y_south to y_north mm. Beyond the run its east edge is
 // set back kTabSetbackMm, so it leaves no slot narrower than that beside a pillar.
 OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y_north, const std::vector<int32_t>& contacts,
-                        const std::vector<int32_t>& fillers, const TabSize& size) {
+                        const std::vector<int32_t>& fillers, const TabSize& size, Band band) {
     const MarkParams& m = s.params.marks;
     OrientationTab t;
-    t.top_units = s.floor_units;
+    t.bottom_units = band.bottom;
+    t.top_units = band.top;
     t.x_east_mm = s.point(LatticePoint{i_west, 0}, 0).x;
     t.x_west_mm = snapXy(t.x_east_mm - size.width);
     t.y_south_mm = y_south;
@@ -86,10 +99,13 @@ OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y
     const TabPoint first = corner(s, contacts.front(), kLowerLeft), last = corner(s, contacts.back(), kUpperLeft);
     add({x_back, t.y_south_mm, -1}, false);
     add({x_back, first.y_mm, -1}, false);
+    // The tab fills the outline's notches between contacts (else a hole
+    // would reach down to the bed); a mirrored model's tab has one contact.
+    const bool fill = true;
     for (size_t n = 0; n < contacts.size(); ++n) {
         const int32_t c = contacts[n];
         add(corner(s, c, kLowerLeft), true);  // the west wall, south to north
-        if (n + 1 < contacts.size()) {
+        if (n + 1 < contacts.size() && fill) {
             // The outline's notch up to the next contact: c's north-west
             // wall, the filler's west wall, the next one's south-west wall.
             add(corner(s, c, kUpperLeft), true);
@@ -112,7 +128,7 @@ OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y
     }
     for (size_t n = 0; n < contacts.size(); ++n) {
         t.touched.push_back({contacts[n], kWestEdge});
-        if (n + 1 < contacts.size()) {
+        if (n + 1 < contacts.size() && fill) {
             t.touched.push_back({contacts[n], kNorthWestEdge});
             t.touched.push_back({fillers[n], kWestEdge});
             t.touched.push_back({contacts[n + 1], kSouthWestEdge});
@@ -124,6 +140,7 @@ OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y
                       TabPoint{x, snapXy(y + kTabTriangleLegMm * kTriangleLegRatio), -1}};
         t.triangle_raise_units = std::max<int64_t>(1, snapUnits(m.triangle_height_mm, s.z_snap_mm));
         t.has_triangle = true;
+        t.under_triangle = s.params.bottom == Bottom::Mirrored;
     }
     return t;
 }
@@ -141,7 +158,7 @@ bool inTriangle(const std::array<TabPoint, 3>& t, double x, double y) {
 double tabWidthMm(const MarkParams& m) { return tabSize(m).width; }
 
 bool wantsTab(const SceneParams& p) {
-    return p.marks.place == MarkPlace::Tab && p.bottom == Bottom::Flat && !p.halves && (p.marks.notch || p.marks.triangle);
+    return p.marks.place == MarkPlace::Tab && !p.halves && (p.marks.notch || p.marks.triangle);
 }
 
 void placeTab(Scene& s) {
@@ -170,19 +187,41 @@ void placeTab(Scene& s) {
     // Runs of touchable candidates one row of notches apart (6 lattice j)
     // with a touchable filler in each notch; of each, the contacts up to the
     // first whose wall reaches y_reach. The run with the most contacts is
-    // taken (the firmest join), the southernmost of equals.
+    // taken (the firmest join), the southernmost of equals. Flat, the tab
+    // spans 0 to the floor; mirrored, the band all of them hold, at least
+    // `thick` units thick.
+    const bool mirrored = s.params.bottom == Bottom::Mirrored;
+    const int64_t thick = std::min(s.mirror_thickness_units, std::max<int64_t>(1, snapUnits(kTabMinThicknessMm, s.z_snap_mm)));
+    auto fits = [&](Band b) { return !mirrored || b.top - b.bottom >= thick; };
     std::vector<int32_t> best, best_fillers;
+    Band best_band;
     std::string blocked = "cells without data, tilted corners below the floor or culled rows";
     for (size_t start = 0; start < cand.size(); ++start) {
         if (!cand[start].ok || (start > 0 && cand[start - 1].ok && cand[start].j - cand[start - 1].j == 6 &&
                                 footCanTouch(s, keptAtCentre(s, i_west + 2, cand[start - 1].j + 3))))
             continue;  // not the start of a run
         std::vector<int32_t> contacts{cand[start].kept}, fillers;
-        for (size_t n = start + 1; n < cand.size() && yOf(cand[n - 1].j + 1) < y_reach; ++n) {
+        Band band;
+        band.narrow(s, cand[start].kept);
+        // Mirrored, one contact: the notch between two would be a slot open
+        // above and below the tab, so the tab would close a ring around it
+        // (a handle: the solid's genus 1), and a ceiling over that slot is
+        // what the Manifold engine (OpenSCAD 2025) unions into a
+        // non-manifold vertex.
+        for (size_t n = start + 1; !mirrored && n < cand.size() && yOf(cand[n - 1].j + 1) < y_reach; ++n) {
             const int32_t filler = keptAtCentre(s, i_west + 2, cand[n - 1].j + 3);
             if (!cand[n].ok || cand[n].j - cand[n - 1].j != 6 || !footCanTouch(s, filler)) break;
+            Band wider = band;
+            wider.narrow(s, filler);
+            wider.narrow(s, cand[n].kept);
+            if (!fits(wider)) break;
+            band = wider;
             fillers.push_back(filler);
             contacts.push_back(cand[n].kept);
+        }
+        if (!fits(band)) {
+            blocked = "pillars thinner than " + formatSignificant(kTabMinThicknessMm) + " mm";
+            continue;
         }
         const double y_north = std::max(y_reach, yOf(cand[start + contacts.size() - 1].j + 1));
         if (s.legend && y_north + kTabLegendClearanceMm > s.legend->plate_south_mm) {
@@ -192,11 +231,23 @@ void placeTab(Scene& s) {
         if (contacts.size() > best.size()) {
             best = std::move(contacts);
             best_fillers = std::move(fillers);
+            best_band = band;
         }
     }
     if (!best.empty()) {
+        if (!mirrored) {
+            best_band = {0, s.floor_units};
+        } else {
+            // As thick as a flat model's base (at least `thick`), in the
+            // middle of the band: a plate, not a block as tall as the pillars.
+            const int64_t want = std::max(thick, snapUnits(s.params.base_mm, s.z_snap_mm));
+            if (best_band.top - best_band.bottom > want) {
+                best_band.bottom += (best_band.top - best_band.bottom - want) / 2;
+                best_band.top = best_band.bottom + want;
+            }
+        }
         const int64_t last_j = hexCentre(s.grid, s.col[size_t(best.back())], s.row[size_t(best.back())]).j;
-        s.marks.tab = buildTab(s, i_west, y_south, std::max(y_reach, yOf(last_j + 1)), best, best_fillers, size);
+        s.marks.tab = buildTab(s, i_west, y_south, std::max(y_reach, yOf(last_j + 1)), best, best_fillers, size, best_band);
         return;
     }
     s.notes.push_back("orientation marks left out: the tab that carries them (" + formatSignificant(size.width, 3) + " x " +
@@ -234,29 +285,44 @@ TabBody meshTabBody(const Scene& s, bool joined) {
     const OrientationTab& t = *s.marks.tab;
     Mesh& m = body.mesh;
     const uint32_t n = uint32_t(t.outline.size());
-    for (const int64_t z : {int64_t(0), t.top_units})
+    for (const int64_t z : {t.bottom_units, t.top_units})
         for (const TabPoint& p : t.outline) {
             m.positions.push_back({p.x_mm, p.y_mm, s.zMm(z)});
             body.lattice_id.push_back(p.lattice);
         }
-    auto lo = [](uint32_t v) { return v; };
-    auto hi = [n](uint32_t v) { return v + n; };
-    std::vector<uint32_t> ring(n);
-    for (uint32_t v = 0; v < n; ++v) ring[v] = v;
-    // The bottom, facing down.
-    for (const auto& tri : triangulateRings(m.positions, {ring})) m.triangles.push_back({tri[0], tri[2], tri[1]});
-    // The top around the triangle, facing up.
-    std::vector<std::vector<uint32_t>> top_rings{std::vector<uint32_t>(n)};
-    for (uint32_t v = 0; v < n; ++v) top_rings[0][v] = hi(v);
-    uint32_t tri_lo = 0;
-    if (t.has_triangle) {
-        tri_lo = uint32_t(m.positions.size());
-        for (const int64_t z : {t.top_units, t.top_units + t.triangle_raise_units})
+    std::vector<uint32_t> lo(n), hi(n);
+    for (uint32_t v = 0; v < n; ++v) lo[v] = v, hi[v] = v + n;
+    // A triangle prism from z0 to z1 on the plate's face at `base` (z0 or
+    // z1); returns the ring of its corners at `base` (counter-clockwise).
+    auto prism = [&](int64_t z0, int64_t z1, bool up) {
+        const uint32_t first = uint32_t(m.positions.size());
+        for (const int64_t z : {z0, z1})
             for (const TabPoint& p : t.triangle) {
                 m.positions.push_back({p.x_mm, p.y_mm, s.zMm(z)});
                 body.lattice_id.push_back(-1);
             }
-        top_rings.push_back({tri_lo, tri_lo + 2, tri_lo + 1});  // a hole: clockwise
+        const uint32_t a = first, b = first + 3;  // the rings at z0 and z1
+        if (up) m.triangles.push_back({b, b + 1, b + 2});  // its top, facing up
+        else m.triangles.push_back({a, a + 2, a + 1});     // its bottom, facing down
+        for (uint32_t v = 0; v < 3; ++v) {
+            const uint32_t w = (v + 1) % 3;
+            m.triangles.push_back({a + v, a + w, b + w});
+            m.triangles.push_back({a + v, b + w, b + v});
+        }
+        return up ? std::vector<uint32_t>{a, a + 1, a + 2} : std::vector<uint32_t>{b, b + 1, b + 2};
+    };
+    // The bottom, facing down, around the underside's triangle (mirrored).
+    std::vector<std::vector<uint32_t>> bottom_rings{lo};
+    if (t.has_triangle && t.under_triangle) {
+        const std::vector<uint32_t> r = prism(t.bottom_units - t.triangle_raise_units, t.bottom_units, /*up=*/false);
+        bottom_rings.push_back({r[0], r[2], r[1]});  // a hole: clockwise
+    }
+    for (const auto& tri : triangulateRings(m.positions, bottom_rings)) m.triangles.push_back({tri[0], tri[2], tri[1]});
+    // The top, facing up, around the triangle.
+    std::vector<std::vector<uint32_t>> top_rings{hi};
+    if (t.has_triangle) {
+        const std::vector<uint32_t> r = prism(t.top_units, t.top_units + t.triangle_raise_units, /*up=*/true);
+        top_rings.push_back({r[0], r[2], r[1]});
     }
     for (const auto& tri : triangulateRings(m.positions, top_rings)) m.triangles.push_back(tri);
     // The walls: the outline runs with the tab on its left, so the outward
@@ -264,17 +330,8 @@ TabBody meshTabBody(const Scene& s, bool joined) {
     for (uint32_t v = 0; v < n; ++v) {
         if (joined && t.joined[v]) continue;
         const uint32_t w = (v + 1) % n;
-        m.triangles.push_back({lo(v), lo(w), hi(w)});
-        m.triangles.push_back({lo(v), hi(w), hi(v)});
-    }
-    if (t.has_triangle) {
-        const uint32_t up = tri_lo + 3;
-        m.triangles.push_back({up, up + 1, up + 2});
-        for (uint32_t v = 0; v < 3; ++v) {
-            const uint32_t w = (v + 1) % 3;
-            m.triangles.push_back({tri_lo + v, tri_lo + w, up + w});
-            m.triangles.push_back({tri_lo + v, up + w, up + v});
-        }
+        m.triangles.push_back({lo[v], lo[w], hi[w]});
+        m.triangles.push_back({lo[v], hi[w], hi[v]});
     }
     return body;
 }
@@ -282,7 +339,9 @@ TabBody meshTabBody(const Scene& s, bool joined) {
 void checkTab(const Scene& s, const OrientationTab& t) {
     auto bad = [](const std::string& why) { throw InputError("the orientation tab " + why); };
     if (t.outline.size() < 4 || t.joined.size() != t.outline.size()) bad("has no outline, or joined flags that do not match it");
-    if (t.top_units != s.floor_units) bad("does not stand at the floor");
+    if (s.params.bottom == Bottom::Flat ? t.bottom_units != 0 || t.top_units != s.floor_units : t.bottom_units >= t.top_units)
+        bad(s.params.bottom == Bottom::Flat ? "does not stand from the bed to the floor" : "has no thickness");
+    if (t.under_triangle && s.params.bottom != Bottom::Mirrored) bad("has a triangle on the underside of a flat model");
     if (t.has_triangle && t.triangle_raise_units <= 0) bad("has a triangle that does not stand above it");
     const int64_t ids = latticeVertexIdCount(s.grid);
     std::set<int64_t> corners;

@@ -21,11 +21,21 @@
 // apart. Every vertex where it meets the pillars is a lattice corner at
 // height 0 or the floor, so the joined model needs no boolean operation.
 //
-// Placed by placeTab (buildScene, after the top shapes and the legend) on
-// flat models with MarkParams::place == Tab; a mirrored model (no floor) and
-// the halves keep the marks in the data. When the west side has no run of
-// contacts clear of pits, tilted corners below the floor and the legend's
-// plate, the marks are left out with a note that says why.
+// On a mirrored model (every pillar the same thickness, the underside the
+// negated data) the tab lies in the z band that every pillar it stands
+// against holds, as thick as the base (at least kTabMinThicknessMm, at most
+// the band) in the band's middle, and carries the triangle on both
+// faces at the same place: a reader who turns the model over finds the
+// underside's triangle with its long leg running the other way, mirrored
+// exactly as the data is, which tells the two sides apart. There the tab
+// stands against one pillar: the outline's notch between two would be a slot
+// open above and below it, which the tab would ring (a handle).
+//
+// Placed by placeTab (buildScene, after the top shapes and the legend) with
+// MarkParams::place == Tab; a model cut into halves keeps the marks in the
+// data. When the west side has no run of contacts clear of pits, tilted
+// corners below the floor and the legend's plate, the marks are left out
+// with a note that says why.
 #pragma once
 
 #include <cstdint>
@@ -53,6 +63,9 @@ inline constexpr double kTabMarginMm = 3.0;
 inline constexpr double kTabSetbackMm = 1.0;
 /// Clear space between the notch's apex and the triangle, mm.
 inline constexpr double kTabNotchClearanceMm = 1.75;
+/// Thinnest tab on a mirrored model, mm (eight 0.2 mm layers); a mirrored
+/// model's pillars thinner than this give the tab their thickness.
+inline constexpr double kTabMinThicknessMm = 1.6;
 /// Clear space kept from the braille legend's plate, mm.
 inline constexpr double kTabLegendClearanceMm = 2.0;
 
@@ -64,8 +77,8 @@ double tabWidthMm(const MarkParams& marks);
 /// note for marks that cannot be placed.
 void placeTab(Scene& scene);
 
-/// Whether the Scene's marks belong on a tab: MarkPlace::Tab, a flat model,
-/// not cut into halves, and at least one mark asked for.
+/// Whether the Scene's marks belong on a tab: MarkPlace::Tab, a model not
+/// cut into halves, and at least one mark asked for.
 bool wantsTab(const SceneParams& params);
 
 /// z (units) of the tab's top at (x, y) mm (the floor, or the triangle's
