@@ -16,7 +16,9 @@ Coverage touchedCells(const Scene& scene, const ReliefInfo& relief, const FieldM
         if (!(r.flags & kFlagContact)) continue;
         const GridPoint g = deviceToGrid(mapping, r.position_m);
         int32_t col = 0, row = 0;
-        if (!hexCellAt(scene.grid, (g.gi + 0.5) / per_pitch, (g.gj + 0.5) / per_pitch, col, row)) continue;
+        if (!hexCellAt(scene.grid, (g.gi - relief.origin_i + 0.5) / per_pitch, (g.gj - relief.origin_j + 0.5) / per_pitch,
+                       col, row))
+            continue;
         const int32_t k = scene.keptAt(col, row);
         if (k >= 0 && !touched[size_t(k)]) {
             touched[size_t(k)] = 1;

@@ -26,21 +26,21 @@ namespace {
 // (j + 0.5) side)); NaN where no surface is. Walls (no upward normal) are
 // skipped: a vertical line meets them only along an edge that the tops
 // beside them share.
-std::vector<double> topsOver(const Mesh& mesh, double side_mm, int32_t cols, int32_t rows) {
+std::vector<double> topsOver(const Mesh& mesh, double side_mm, int32_t cols, int32_t rows, double x0_mm, double y0_mm) {
     std::vector<double> z(size_t(cols) * size_t(rows), std::nan(""));
     for (const auto& t : mesh.triangles) {
         const tsf::Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
         const double area2 = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);  // > 0: facing up
         if (!(area2 > 0)) continue;
-        const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
-        const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+        const double lo_x = std::min({a.x, b.x, c.x}) - x0_mm, hi_x = std::max({a.x, b.x, c.x}) - x0_mm;
+        const double lo_y = std::min({a.y, b.y, c.y}) - y0_mm, hi_y = std::max({a.y, b.y, c.y}) - y0_mm;
         const auto i0 = std::max<int32_t>(0, int32_t(std::ceil(lo_x / side_mm - 0.5)));
         const auto i1 = std::min<int32_t>(cols - 1, int32_t(std::floor(hi_x / side_mm - 0.5)));
         const auto j0 = std::max<int32_t>(0, int32_t(std::ceil(lo_y / side_mm - 0.5)));
         const auto j1 = std::min<int32_t>(rows - 1, int32_t(std::floor(hi_y / side_mm - 0.5)));
         for (int32_t j = j0; j <= j1; ++j)
             for (int32_t i = i0; i <= i1; ++i) {
-                const double x = (i + 0.5) * side_mm, y = (j + 0.5) * side_mm;
+                const double x = x0_mm + (i + 0.5) * side_mm, y = y0_mm + (j + 0.5) * side_mm;
                 // Barycentric weights; a point on an edge belongs to both
                 // triangles that share it (the same z on a continuous top).
                 const double wa = (b.x - x) * (c.y - y) - (b.y - y) * (c.x - x);
@@ -66,10 +66,16 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
     const double width_p = std::max(gridWidth(scene.grid, 1.0), std::isfinite(b.max.x) ? b.max.x / scene.pitch_mm : 0.0);
     const double depth_p = std::max(gridDepth(scene.grid, 1.0), std::isfinite(b.max.y) ? b.max.y / scene.pitch_mm : 0.0);
     int per_pitch = kReliefSamplesPerPitch;
-    while (per_pitch > 1 && std::max(width_p, depth_p) * per_pitch > kMaxReliefSamples) --per_pitch;
+    const double west_p = std::isfinite(b.min.x) ? std::max(0.0, -b.min.x / scene.pitch_mm) : 0.0;
+    const double south_p = std::isfinite(b.min.y) ? std::max(0.0, -b.min.y / scene.pitch_mm) : 0.0;
+    while (per_pitch > 1 && std::max(width_p + west_p, depth_p + south_p) * per_pitch > kMaxReliefSamples) --per_pitch;
     const double side_p = 1.0 / per_pitch;
-    const auto cols = int32_t(std::max(1.0, std::ceil(width_p * per_pitch - 1e-9)));
-    const auto rows = int32_t(std::max(1.0, std::ceil(depth_p * per_pitch - 1e-9)));
+    // Whole samples west and south of the grid's box for what stands there
+    // (the orientation tab), so every cell centre stays on a sample centre.
+    const auto origin_i = int32_t(std::ceil(west_p * per_pitch - 1e-9));
+    const auto origin_j = int32_t(std::ceil(south_p * per_pitch - 1e-9));
+    const auto cols = int32_t(std::max(1.0, std::ceil(width_p * per_pitch - 1e-9))) + origin_i;
+    const auto rows = int32_t(std::max(1.0, std::ceil(depth_p * per_pitch - 1e-9))) + origin_j;
 
     HeightGrid g;
     g.cols = cols;
@@ -78,7 +84,8 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
     const double max_mm = scene.mapping.max_height_mm;
     if (max_mm > 0) {
         const int64_t zero = scene.params.bottom == Bottom::Mirrored ? scene.mirror_thickness_units : scene.floor_units;
-        const std::vector<double> tops = topsOver(mesh, side_p * scene.pitch_mm, cols, rows);
+        const double side_mm = side_p * scene.pitch_mm;
+        const std::vector<double> tops = topsOver(mesh, side_mm, cols, rows, -origin_i * side_mm, -origin_j * side_mm);
         for (size_t n = 0; n < tops.size(); ++n)
             if (!std::isnan(tops[n]))  // beside the model: the floor
                 g.heights[n] = float(std::clamp((tops[n] - scene.zMm(zero)) / max_mm, -1.0, 2.0));
@@ -87,14 +94,18 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
         info->samples_per_pitch = per_pitch;
         info->sample_mm = scene.pitch_mm * side_p;
         info->exact_at_centres = per_pitch >= kReliefSamplesPerPitch;
+        info->origin_i = origin_i;
+        info->origin_j = origin_j;
     }
     return g;
 }
 
-GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, int samples_per_pitch) {
+GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, const ReliefInfo& info) {
     const LatticePoint c = hexCentre(scene.grid, col, row);
-    // Sample i covers [i, i + 1) / samples_per_pitch pitches; its centre is grid coordinate i.
-    return {latticeX(c, 1.0) * samples_per_pitch - 0.5, latticeY(c, 1.0) * samples_per_pitch - 0.5};
+    // Sample i covers [i - origin_i, i - origin_i + 1) / samples_per_pitch
+    // pitches of the model frame; its centre is grid coordinate i.
+    return {latticeX(c, 1.0) * info.samples_per_pitch - 0.5 + info.origin_i,
+            latticeY(c, 1.0) * info.samples_per_pitch - 0.5 + info.origin_j};
 }
 
 std::vector<SweepLine> reliefRowLines(const Scene& scene, const ReliefInfo& info, const FieldMapping& mapping) {
@@ -109,8 +120,8 @@ std::vector<SweepLine> reliefRowLines(const Scene& scene, const ReliefInfo& info
                 last = c;
             }
         if (first < 0) continue;
-        const GridPoint a = reliefCellCentre(scene, first, r, info.samples_per_pitch);
-        const GridPoint b = reliefCellCentre(scene, last, r, info.samples_per_pitch);
+        const GridPoint a = reliefCellCentre(scene, first, r, info);
+        const GridPoint b = reliefCellCentre(scene, last, r, info);
         lines.push_back({gridToDevice(mapping, a.gi, a.gj, 0.0).z, gridToDevice(mapping, a.gi - reach, a.gj, 0.0).x,
                          gridToDevice(mapping, b.gi + reach, b.gj, 0.0).x});
     }

@@ -6,14 +6,15 @@
 // Sampling: square samples of side pitch / samples_per_pitch over the
 // model's bounding box (Scene frame: x east, y north, origin at the
 // south-west corner of the grid; HeightGrid rows run south to north, so row
-// j is y = (j + 0.5) * side; the box reaches north over the legend's plate
-// and east over the tactile scale). Each sample is the height of the highest
+// j is y = (j - origin_j + 0.5) * side; the box reaches north over the
+// legend's plate, east over the tactile scale and west, by whole samples
+// (ReliefInfo::origin_i), over the orientation tab). Each sample is the height of the highest
 // top of the model's mesh (meshScene, gen/mesh/direct_mesher.h) above the
 // sample's centre, less the floor (flat) or the mirrored slab's top of a
 // zero, divided by the height of the largest value (max_height_mm); beside
 // the model it is 0, the floor. So everything printed is felt as printed,
 // from the one mesh: pillars and no-data pits, tilted tops and dimples, the
-// notch, the orientation triangle, the legend's dots, the scale's steps.
+// notch, the orientation tab and its triangle, the legend's dots, the scale's steps.
 // Nothing about the model is decided a second time here.
 //
 // With kReliefSamplesPerPitch samples per pitch, every tap the bicubic or
@@ -45,6 +46,10 @@ struct ReliefInfo {
     int samples_per_pitch = kReliefSamplesPerPitch;
     double sample_mm = 0.0;        ///< side of one sample in the printed model, mm
     bool exact_at_centres = true;  ///< samples_per_pitch >= kReliefSamplesPerPitch
+    /// The sample where the model frame's x = 0 (y = 0) begins: the samples
+    /// west (south) of it hold what stands beyond the grid's box (the
+    /// orientation tab), so sample i's centre is x = (i - origin_i + 0.5) * sample_mm.
+    int32_t origin_i = 0, origin_j = 0;
 };
 
 /// The printed relief of `scene` (see the file comment). Heights are in
@@ -54,7 +59,7 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info = nullptr);
 
 /// Where the centre of hex cell (col, row) lies in the relief grid's
 /// continuous coordinates (height_grid.h) for the given samples per pitch.
-GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, int samples_per_pitch);
+GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, const ReliefInfo& info);
 
 /// One sweep line per row of kept cells, along the row's centre line from
 /// just inside its west-most to just inside its east-most cell (device

@@ -57,7 +57,7 @@ std::vector<double> feltAtCentres(const Scene& scene, Interpolation interpolatio
     const ForceModel model = makeForceModel(space, mapping, params, limits, 1000.0);
     std::vector<double> felt;
     for (size_t k = 0; k < scene.keptCount(); ++k) {
-        const GridPoint c = reliefCellCentre(scene, scene.col[k], scene.row[k], info.samples_per_pitch);
+        const GridPoint c = reliefCellCentre(scene, scene.col[k], scene.row[k], info);
         const haptics::Vec3 p = gridToDevice(mapping, c.gi, c.gj, 0.0);
         felt.push_back((surfaceAt(model, p, 0.0).height_y_m - mapping.floor_y_m) / mapping.relief_m);
     }
@@ -192,7 +192,7 @@ TEST(PrintedRelief, TiltedTopsAndDimplesAreFeltAsPrinted) {
     ASSERT_GE(k, 0);
     const double slope = s.shapes.slope_x[size_t(k)];
     ASSERT_GT(slope, 0.1);
-    const GridPoint c = reliefCellCentre(s, 4, 3, info.samples_per_pitch);
+    const GridPoint c = reliefCellCentre(s, 4, 3, info);
     const int32_t i = int32_t(std::lround(c.gi)), j = int32_t(std::lround(c.gj));
     const double rise = (g.at(i + 2, j) - g.at(i - 2, j)) * s.mapping.max_height_mm;  // mm over 4 samples
     EXPECT_NEAR(rise, slope * 4 * info.sample_mm, 1e-3);
@@ -207,10 +207,38 @@ TEST(PrintedRelief, TiltedTopsAndDimplesAreFeltAsPrinted) {
     const int32_t m = d.keptAt(4, 1);
     ASSERT_GE(m, 0);
     ASSERT_TRUE(isStructural(d.shapes, size_t(m)));
-    const GridPoint e = reliefCellCentre(d, 4, 1, info.samples_per_pitch);
+    const GridPoint e = reliefCellCentre(d, 4, 1, info);
     const int32_t ei = int32_t(std::lround(e.gi)), ej = int32_t(std::lround(e.gj));
     EXPECT_LT(h.at(ei, ej), h.at(ei + 2, ej));
     EXPECT_LT(h.at(ei, ej), 0.0);  // below the floor at the centre
+}
+
+// The orientation tab west of the grid's box is felt too: the relief grows
+// west by whole samples, every cell keeps its sample, and the triangle on
+// the tab stands its raise above the floor.
+TEST(PrintedRelief, TheOrientationTabIsFeltWestOfThePillars) {
+    SceneParams p = tsf::test::smallParams(Bottom::Flat, Cull::None);
+    p.pitch_mm = 4.0;
+    p.marks = MarkParams{};
+    const Scene s = buildScene(fieldFromFunction(10, 8, [](int c, int r) { return 2.0 + (c + r) % 3; }), p);
+    ASSERT_TRUE(s.marks.tab.has_value());
+    ReliefInfo info;
+    const HeightGrid h = printedRelief(s, &info);
+    EXPECT_GT(info.origin_i, 0);
+    EXPECT_NEAR(info.origin_i * info.sample_mm, -s.marks.tab->x_west_mm, info.sample_mm);
+    // Every cell is still felt at its centre.
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const GridPoint c = reliefCellCentre(s, s.col[k], s.row[k], info);
+        EXPECT_FLOAT_EQ(h.at(int32_t(std::lround(c.gi)), int32_t(std::lround(c.gj))),
+                        float(s.zMm(s.top[k] - s.floor_units) / s.mapping.max_height_mm));
+    }
+    const OrientationTab& t = *s.marks.tab;
+    const double cx = (t.triangle[0].x_mm + t.triangle[1].x_mm + t.triangle[2].x_mm) / 3;
+    const double cy = (t.triangle[0].y_mm + t.triangle[1].y_mm + t.triangle[2].y_mm) / 3;
+    const auto i = int32_t(std::floor(cx / info.sample_mm)) + info.origin_i, j = int32_t(std::floor(cy / info.sample_mm)) + info.origin_j;
+    EXPECT_NEAR(h.at(i, j), s.zMm(t.triangle_raise_units) / s.mapping.max_height_mm, 1e-6);
+    // Beside the triangle, on the tab: the floor.
+    EXPECT_NEAR(h.at(info.origin_i - 2, j), 0.0, 1e-6);
 }
 
 TEST(PrintedRelief, TheMarksTheLegendAndTheScaleAreFeltAsPrinted) {

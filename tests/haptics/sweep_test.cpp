@@ -59,8 +59,10 @@ TEST(Sweep, CoversTheAirportsWithTheirHoles) {
     const std::string airports = tsf::test::sourcePath("examples/airports-europe.csv") + " --points x=lon,y=lat --bins 40";
     expectCovered(feelJson(airports + " --no-texture-structural"), 0.95);
     // With the default structural dimples (cones 1 mm under the floor) the
-    // sweep's lines lose contact over some of them: 93.3 % measured.
-    expectCovered(feelJson(airports), 0.92);
+    // sweep's lines lose contact over some of them: 89.6 % measured since the
+    // relief holds the orientation tab too (23 of its 173 mm, so each hexagon
+    // has 13 % less room in the same workspace; 93.3 % before).
+    expectCovered(feelJson(airports), 0.88);
 }
 
 namespace {
