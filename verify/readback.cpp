@@ -16,6 +16,12 @@
 
 namespace tsf {
 namespace {
+// Half the xy grid (kXYSnapMm): far enough to step off an edge onto the
+// level beside it, too little to reach another cell.
+constexpr double kEdgeNudgeMm = 0.0005;
+}  // namespace
+
+namespace {
 
 using detail::fmtMm;
 using detail::fmtNum;
@@ -232,14 +238,20 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
                 if (under_plate && hit &&
                     std::fabs(hit->point_mm.z - scene.zMm(scene.legend->plate_top_units)) <= scene.z_snap_mm / 2)
                     continue;
-                // On the tactile scale's footprint (gen/model/features/scale.h) it meets the scale's top there.
-                const std::optional<int64_t> scale_top =
-                    scene.scale ? scaleTopAt(*scene.scale, centre.x, centre.y) : std::nullopt;
-                if (scale_top && hit && std::fabs(hit->point_mm.z - scene.zMm(*scale_top)) <= scene.z_snap_mm / 2)
-                    continue;
-                // On the orientation tab (gen/model/features/orientation_tab.h) it meets the tab's top there.
-                const std::optional<int64_t> tab_top = tabTopAt(scene, centre.x, centre.y);
-                if (tab_top && hit && std::fabs(hit->point_mm.z - scene.zMm(*tab_top)) <= scene.z_snap_mm / 2) continue;
+                // On the tactile scale's footprint (gen/model/features/scale.h) or
+                // the orientation tab (gen/model/features/orientation_tab.h) it
+                // meets their top there; on an edge between two of their levels
+                // (a riser, the triangle's side) either one's.
+                bool on_attachment = false;
+                for (const double dx : {0.0, -kEdgeNudgeMm, kEdgeNudgeMm})
+                    for (const double dy : {0.0, -kEdgeNudgeMm, kEdgeNudgeMm}) {
+                        const double x = centre.x + dx, y = centre.y + dy;
+                        for (const std::optional<int64_t> top :
+                             {scene.scale ? scaleTopAt(*scene.scale, x, y) : std::nullopt, tabTopAt(scene, x, y)})
+                            on_attachment = on_attachment || (top && hit && std::fabs(hit->point_mm.z - scene.zMm(*top)) <=
+                                                                                 scene.z_snap_mm / 2);
+                    }
+                if (on_attachment) continue;
                 if (!hit) continue;
                 ++f.outside_cells_hit;
                 if (out.worst.size() < options.max_offenders)

@@ -70,6 +70,19 @@ TEST(ScaleCli, FittedToTheBedWithTheScale) {
     EXPECT_GT(b.max.x - b.min.x, 50.0);
 }
 
+// A field whose only data is one column: culled cells east of it have their
+// centres on the boundary between two steps of the scale, where the ray meets
+// the riser's edge. That is the scale, not material outside the kept cells.
+TEST(ScaleCli, OneColumnOfDataTakesAScale) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "col.csv", "0,,\n1,,\n2,,\n3,,\n4,,\n");
+    const std::string model = (dir / "m.stl").string();
+    const auto r = test::runTsf("gen " + (dir / "col.csv").string() + " --scale -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json", dir);
+    EXPECT_EQ(v.exit_code, test::kExitOk) << v.out << v.err;
+}
+
 TEST(ScaleCli, RefusedWithExitTwoSayingWhatToChange) {
     const auto dir = test::scratchDir();
     test::writeText(dir / "f.csv", kField);
