@@ -144,7 +144,7 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "--marks-on",
            [&p](const std::string& v) { p.marks.place = v == "data" ? MarkPlace::Data : MarkPlace::Tab; },
            "Where the notch and the triangle stand: tab (default: on a flat tab west of the pillars, full size "
-           "whatever the cells, mirrored models with the triangle on both faces; halves keep them in the data) or "
+           "whatever the cells; mirrored, the triangle on both faces; cut into halves, each half its side of the tab) or "
            "data (cut into the corner pillars and raised on the largest flat region, where they fit)")
         ->check(CLI::IsMember({"tab", "data"}))->default_str("tab")->group(marks);
     cmd->add_flag_callback("--no-notch", [&p] { p.marks.notch = false; },

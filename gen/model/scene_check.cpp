@@ -6,7 +6,6 @@
 
 #include "gen/util/error.h"
 #include "gen/field/hex_grid.h"
-#include "gen/model/features/foot_contacts.h"
 #include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/top_shapes.h"
 
@@ -136,7 +135,8 @@ void checkScene(const Scene& s) {
         // Each wall it covers holds its whole band, so the pillar's wall goes on above and below it.
         for (const auto& [k, e] : s.marks.tab->touched)
             for (const int c : {e, (e + 1) % kHexCorners})
-                if (!footCanTouch(s, k) || cornerBottom(s, size_t(k), c) > s.marks.tab->bottom_units ||
+                if ((!s.drawn_by_face.empty() && s.drawn_by_face[size_t(k)]) ||
+                    cornerBottom(s, size_t(k), c) > s.marks.tab->bottom_units ||
                     cornerTop(s, size_t(k), c) < s.marks.tab->top_units)
                     fail("orientation tab: it stands against " + cellName(s, size_t(k)) + ", whose wall does not hold its z band");
     }

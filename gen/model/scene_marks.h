@@ -26,8 +26,8 @@ enum class MarkPlace : uint8_t {
 };
 
 struct MarkParams {
-    /// Tab: both marks on the tab, at full size whatever the cells; a model
-    /// cut into halves keeps them in the data.
+    /// Tab: both marks on the tab, at full size whatever the cells (mirrored:
+    /// the triangle on both faces; halves: each half its side of the tab).
     MarkPlace place = MarkPlace::Tab;
     bool notch = true;              ///< cut the orientation notch
     double notch_depth_mm = 6.0;    ///< how far the V reaches into the model from its corner (mm)

@@ -1,5 +1,6 @@
 #include "gen/scad/scad_tab.h"
 
+#include "gen/model/features/orientation_tab.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
 
@@ -7,27 +8,30 @@ namespace tsf {
 
 void emitTabData(std::string& o, const Scene& s) {
     if (!s.marks.tab) return;
-    const OrientationTab& t = *s.marks.tab;
-    auto xy = [](const TabPoint& p) { return "[" + formatShortest(p.x_mm) + ", " + formatShortest(p.y_mm) + "]"; };
+    // The tab as the closed body tsf meshes it (gen/model/features/orientation_tab.h:
+    // meshTabBody), every face a triangle: OpenSCAD then takes each corner as
+    // written, where a polygon face it must tessellate itself would have its
+    // corners moved to its 2^-20 mm grid (and the union with them).
+    const TabBody body = meshTabBody(s, /*joined=*/false);
     o += "/* [Orientation marks] */\n"
          "// The tab west of the pillars: the notch cut into its south-west corner, the\n"
          "// triangle (right angle south-west, the longer leg east) on its top (docs/model.md).\n"
          "show_orientation_tab = true;\n\n"
          "/* [Hidden] */\n"
          "// The tab as tsf placed it, in mm, for the parameters as generated (it does not\n"
-         "// follow cell or base; regenerate with tsf gen to change it).\n"
+         "// follow cell, base, snap or mirror; regenerate with tsf gen to change them):\n"
+         "// [points, triangles] of a closed body, triangles counter-clockwise seen from outside.\n"
          "orientation_tab = [[";
-    for (size_t n = 0; n < t.outline.size(); ++n) o += (n ? ", " : "") + xy(t.outline[n]);
-    o += "], " + formatShortest(s.zMm(t.top_units)) + ", [";
-    if (t.has_triangle)
-        o += xy(t.triangle[0]) + ", " + xy(t.triangle[1]) + ", " + xy(t.triangle[2]) + "], " +
-             formatShortest(s.zMm(t.top_units + t.triangle_raise_units));
-    else
-        o += "], 0";
-    o += ", " + formatShortest(s.zMm(t.bottom_units)) + ", " +
-         (t.has_triangle && t.under_triangle ? formatShortest(s.zMm(t.bottom_units - t.triangle_raise_units))
-                                             : formatShortest(s.zMm(t.bottom_units)));
-    o += "];\n";
+    for (size_t v = 0; v < body.mesh.positions.size(); ++v) {
+        const Vec3& p = body.mesh.positions[v];
+        o += std::string(v ? ", " : "") + "[" + formatShortest(p.x) + ", " + formatShortest(p.y) + ", " + formatShortest(p.z) + "]";
+    }
+    o += "], [";
+    for (size_t t = 0; t < body.mesh.triangles.size(); ++t) {
+        const auto& f = body.mesh.triangles[t];
+        o += std::string(t ? ", " : "") + "[" + std::to_string(f[0]) + ", " + std::to_string(f[1]) + ", " + std::to_string(f[2]) + "]";
+    }
+    o += "]];\n";
     // The tab stands against the pillars' walls where tsf put them: another
     // cell, base, snap or mirror would move the walls away from it.
     o += "assert(!show_orientation_tab || [cell, base, snap, mirror] == [" + formatShortest(s.pitch_mm) + ", " +

@@ -214,6 +214,22 @@ TEST(OrientationTab, MirroredModelsCarryThemOnBothFaces) {
     expectOrientable("mirrored_dense", denseGrid("dense_m.csv", 80, 80, false) + " --mirror");
 }
 
+// Cut into halves, each half carries its side of the tab with the marks on
+// its face away from the cut: the upper half as the top shows them, the
+// lower half (printed turned over about the x axis) as the underside does,
+// which is the top's layout once its y is turned back.
+TEST(OrientationTab, EachHalfCarriesTheMarks) {
+    const auto dir = test::scratchDir("tab_halves");
+    const std::string model = (dir / "m.stl").string();
+    const auto r = test::runTsf("gen " + test::sourcePath("examples/volcano.csv") + " --mirror --halves -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    expectMarks("upper half", findMarks(readMesh((dir / "m-upper.stl").string())));
+    Mesh lower = readMesh((dir / "m-lower.stl").string());
+    for (Vec3& p : lower.positions) p.y = -p.y;
+    for (auto& t : lower.triangles) std::swap(t[1], t[2]);  // a reflection turns the faces inside out
+    expectMarks("lower half", findMarks(lower));
+}
+
 // Leaving a mark out leaves it out; --marks-on data keeps the old placement.
 TEST(OrientationTab, OptionsChooseTheMarks) {
     const auto dir = test::scratchDir("tab_options");

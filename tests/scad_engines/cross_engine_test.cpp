@@ -396,11 +396,12 @@ TEST_P(CrossEngineHalves, RendersTheSameHalfAsTheDirectMesher) {
     field.source = "terrain x 6";
     field.one_to_one = true;
     SceneParams p = test::terrainParams(Bottom::Mirrored);
-    p.marks = MarkParams{};
+    p.marks = MarkParams{};  // on the tab, which each half carries its side of
     p.pitch_mm = 6.0;
     p.halves = true;
     const Scene scene = buildScene(field, p);
     ASSERT_TRUE(scene.halves.has_value());
+    ASSERT_TRUE(scene.marks.tab.has_value());
     const bool upper = kind == HalfKind::Upper;
     const std::string piece = upper ? "upper" : "lower";
     const fs::path dir = test::scratchDir("halves_" + engine_name + "_" + piece);

@@ -158,7 +158,7 @@ bool inTriangle(const std::array<TabPoint, 3>& t, double x, double y) {
 double tabWidthMm(const MarkParams& m) { return tabSize(m).width; }
 
 bool wantsTab(const SceneParams& p) {
-    return p.marks.place == MarkPlace::Tab && !p.halves && (p.marks.notch || p.marks.triangle);
+    return p.marks.place == MarkPlace::Tab && (p.marks.notch || p.marks.triangle);
 }
 
 void placeTab(Scene& s) {
@@ -192,7 +192,15 @@ void placeTab(Scene& s) {
     // `thick` units thick.
     const bool mirrored = s.params.bottom == Bottom::Mirrored;
     const int64_t thick = std::min(s.mirror_thickness_units, std::max<int64_t>(1, snapUnits(kTabMinThicknessMm, s.z_snap_mm)));
-    auto fits = [&](Band b) { return !mirrored || b.top - b.bottom >= thick; };
+    // Cut into halves, the tab is as thick as the base on each side of the
+    // cut, so each half carries a tab of its own and the two make one.
+    const int64_t half_tab = std::max(thick, snapUnits(s.params.base_mm, s.z_snap_mm));
+    const std::optional<Band> cut_band =
+        s.halves ? std::optional<Band>(Band{s.halves->split_units - half_tab, s.halves->split_units + half_tab}) : std::nullopt;
+    auto fits = [&](Band b) {
+        if (cut_band) return b.bottom <= cut_band->bottom && b.top >= cut_band->top;
+        return !mirrored || b.top - b.bottom >= thick;
+    };
     std::vector<int32_t> best, best_fillers;
     Band best_band;
     std::string blocked = "cells without data, tilted corners below the floor or culled rows";
@@ -220,7 +228,8 @@ void placeTab(Scene& s) {
             contacts.push_back(cand[n].kept);
         }
         if (!fits(band)) {
-            blocked = "pillars thinner than " + formatSignificant(kTabMinThicknessMm) + " mm";
+            blocked = cut_band ? std::string("pillars that do not hold the cut's slab")
+                               : "pillars thinner than " + formatSignificant(kTabMinThicknessMm) + " mm";
             continue;
         }
         const double y_north = std::max(y_reach, yOf(cand[start + contacts.size() - 1].j + 1));
@@ -237,6 +246,8 @@ void placeTab(Scene& s) {
     if (!best.empty()) {
         if (!mirrored) {
             best_band = {0, s.floor_units};
+        } else if (cut_band) {
+            best_band = *cut_band;
         } else {
             // As thick as a flat model's base (at least `thick`), in the
             // middle of the band: a plate, not a block as tall as the pillars.
@@ -339,8 +350,9 @@ TabBody meshTabBody(const Scene& s, bool joined) {
 void checkTab(const Scene& s, const OrientationTab& t) {
     auto bad = [](const std::string& why) { throw InputError("the orientation tab " + why); };
     if (t.outline.size() < 4 || t.joined.size() != t.outline.size()) bad("has no outline, or joined flags that do not match it");
-    if (s.params.bottom == Bottom::Flat ? t.bottom_units != 0 || t.top_units != s.floor_units : t.bottom_units >= t.top_units)
-        bad(s.params.bottom == Bottom::Flat ? "does not stand from the bed to the floor" : "has no thickness");
+    if (t.bottom_units >= t.top_units || (s.params.bottom == Bottom::Flat && t.bottom_units != 0))
+        bad(t.bottom_units >= t.top_units ? "has no thickness" : "does not stand on the bed");
+    if (s.params.bottom == Bottom::Flat && !s.halves && t.top_units != s.floor_units) bad("does not reach the floor");
     if (t.under_triangle && s.params.bottom != Bottom::Mirrored) bad("has a triangle on the underside of a flat model");
     if (t.has_triangle && t.triangle_raise_units <= 0) bad("has a triangle that does not stand above it");
     const int64_t ids = latticeVertexIdCount(s.grid);

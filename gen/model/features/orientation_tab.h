@@ -31,11 +31,15 @@
 // stands against one pillar: the outline's notch between two would be a slot
 // open above and below it, which the tab would ring (a handle).
 //
+// Cut into halves (gen/model/features/halves.h), the tab lies across the
+// cut, as thick as the base on each side of it: each half keeps its side,
+// standing on the cut face, with the marks on its face away from the cut
+// (halfScene), and the two together make one tab.
+//
 // Placed by placeTab (buildScene, after the top shapes and the legend) with
-// MarkParams::place == Tab; a model cut into halves keeps the marks in the
-// data. When the west side has no run of contacts clear of pits, tilted
-// corners below the floor and the legend's plate, the marks are left out
-// with a note that says why.
+// MarkParams::place == Tab. When the west side has no run of contacts clear
+// of pits, tilted corners below the floor and the legend's plate, the marks
+// are left out with a note that says why.
 #pragma once
 
 #include <cstdint>
