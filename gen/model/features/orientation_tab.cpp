@@ -101,11 +101,10 @@ OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y
     add({x_back, first.y_mm, -1}, false);
     // The tab fills the outline's notches between contacts (else a hole
     // would reach down to the bed); a mirrored model's tab has one contact.
-    const bool fill = true;
     for (size_t n = 0; n < contacts.size(); ++n) {
         const int32_t c = contacts[n];
         add(corner(s, c, kLowerLeft), true);  // the west wall, south to north
-        if (n + 1 < contacts.size() && fill) {
+        if (n + 1 < contacts.size()) {
             // The outline's notch up to the next contact: c's north-west
             // wall, the filler's west wall, the next one's south-west wall.
             add(corner(s, c, kUpperLeft), true);
@@ -128,7 +127,7 @@ OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y
     }
     for (size_t n = 0; n < contacts.size(); ++n) {
         t.touched.push_back({contacts[n], kWestEdge});
-        if (n + 1 < contacts.size() && fill) {
+        if (n + 1 < contacts.size()) {
             t.touched.push_back({contacts[n], kNorthWestEdge});
             t.touched.push_back({fillers[n], kWestEdge});
             t.touched.push_back({contacts[n + 1], kSouthWestEdge});
