@@ -218,7 +218,10 @@ void runGen(GenCommandOptions o) {
     timer.begin("scene");
     // STL and 3MF store float32: the z grid must be one float32 resolves.
     o.gen.scene.stored_as_float32 = model_ext == ".stl" || model_ext == ".3mf";
-    const Scene scene = buildScene(field, o.gen.scene);
+    Scene scene = buildScene(field, o.gen.scene);
+    // What stands beside the pillars does not shrink with them: fit again
+    // (a culled outline can need a second step).
+    for (int again = 0; again < 3 && shrinkFitToBed(scene, o.printer, o.gen); ++again) scene = buildScene(field, o.gen.scene);
     summary.scene = &scene;
     if (const std::string note = cellNozzleNote(scene.pitch_mm, o.printer); !note.empty())
         summary.printer_notes.push_back(note);
@@ -231,7 +234,7 @@ void runGen(GenCommandOptions o) {
     if (o.printer.nozzle_mm > 0) rq.verify_options.nozzle_mm = o.printer.nozzle_mm;
     if (o.printer.layer_mm > 0) rq.verify_options.layer_mm = o.printer.layer_mm;
     rq.on_mesh = [&](const Mesh& mesh) {
-        checkFitsBed(mesh, scene.pitch_mm, fixedWidthMm(scene), o.printer);
+        checkFitsBed(mesh, scene, o.printer);
         if (rq.verify && !rq.verify_full && mesh.triangleCount() > kQuickVerifyTriangles)
             std::fprintf(stderr, "tsf: %zu triangles: verifying topology and heights only (--verify-full for all checks)\n",
                          mesh.triangleCount());

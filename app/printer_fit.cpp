@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "app/bed_size.h"
@@ -86,27 +87,65 @@ std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer) {
            " mm): pillars print as blobs of perimeters (a larger --cell, or fewer --bins)";
 }
 
-double fixedWidthMm(const Scene& s) {
-    double w = 0;
-    if (s.marks.tab) w += s.marks.tab->x_east_mm - s.marks.tab->x_west_mm;
-    if (s.scale) w += s.scale->x1_mm - s.scale->x0_mm;
-    return w;
+SceneFootprint sceneFootprint(const Scene& s) {
+    SceneFootprint f;
+    auto add = [&f](double x0, double x1, double y0, double y1) {
+        f.x0 = std::min(f.x0, x0), f.x1 = std::max(f.x1, x1), f.y0 = std::min(f.y0, y0), f.y1 = std::max(f.y1, y1);
+    };
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
+        add(latticeX({c.i - 1, 0}, s.pitch_mm), latticeX({c.i + 1, 0}, s.pitch_mm), latticeY({0, c.j - 2}, s.pitch_mm),
+            latticeY({0, c.j + 2}, s.pitch_mm));
+    }
+    if (s.marks.tab) add(s.marks.tab->x_west_mm, s.marks.tab->x_east_mm, s.marks.tab->y_south_mm, s.marks.tab->y_north_mm);
+    if (s.scale) add(s.scale->x0_mm, s.scale->x1_mm, s.scale->y0_mm, s.scale->y1_mm);
+    if (s.legend) add(s.legend->x0_mm, s.legend->plate_east_mm, s.legend->plate_south_mm, s.legend->plate_north_mm);
+    return f;
 }
 
-void checkFitsBed(const Mesh& mesh, double pitch_mm, double fixed_width_mm, const PrinterSpec& printer) {
+bool shrinkFitToBed(const Scene& scene, const PrinterSpec& printer, GenOptions& gen) {
+    if (printer.bed.empty() || gen.scene.pitch_mm > 0 || scene.keptCount() == 0) return false;
+    const BedSize bed = parseBedSize(printer.bed, "--bed", /*need_height=*/false);
+    const double w = bed.width_mm - 2 * kBedMarginMm, d = bed.depth_mm - 2 * kBedMarginMm;
+    const SceneFootprint f = sceneFootprint(scene);
+    const double over_w = f.x1 - f.x0 - w, over_d = f.y1 - f.y0 - d;
+    if (over_w <= 0 && over_d <= 0) return false;
+    // Round the overflow up to 0.01 mm so the next fit lands inside.
+    if (over_w > 0) gen.scene.fit_width_mm = std::max(1.0, gen.scene.fit_width_mm - std::ceil(over_w * 100) / 100 - 0.01);
+    if (over_d > 0) gen.scene.fit_depth_mm = std::max(1.0, gen.scene.fit_depth_mm - std::ceil(over_d * 100) / 100 - 0.01);
+    return true;
+}
+
+void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& printer) {
     if (printer.bed.empty() || mesh.positions.empty()) return;
     const BedSize bed = parseBedSize(printer.bed, "--bed", /*need_height=*/false);
     const double w = bed.width_mm - 2 * kBedMarginMm, d = bed.depth_mm - 2 * kBedMarginMm;
     const Bounds b = meshBounds(mesh);
     const double mw = b.max.x - b.min.x, md = b.max.y - b.min.y;
     if (mw <= w && md <= d) return;
-    // The pillars scale with the cell, what stands beside them does not: the
-    // largest cell that fits, rounded down to 0.01 mm.
-    const double fixed = std::min(fixed_width_mm, 0.9 * std::min(mw, w));
-    const double cell = std::floor(pitch_mm * std::min((w - fixed) / (mw - fixed), d / md) * 100.0) / 100.0;
-    throw InputError("the model is " + formatSignificant(mw, 4) + " x " + formatSignificant(md, 4) + " mm, larger than the " + formatSignificant(bed.width_mm, 4) + " x " +
-                     formatSignificant(bed.depth_mm, 4) + " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side (" + formatSignificant(w, 4) + " x " +
-                     formatSignificant(d, 4) + " mm); give --cell " + formatSignificant(cell, 4) + " or less, or leave --cell out to fit the bed " +
+    // The pillars scale with the cell; what stands beside them (the
+    // orientation tab, the scale, the legend's plate) does not. The pillars'
+    // own extent at this cell, from the kept cells' hexagons:
+    int64_t i_lo = INT64_MAX, i_hi = INT64_MIN, j_lo = INT64_MAX, j_hi = INT64_MIN;
+    for (size_t k = 0; k < scene.keptCount(); ++k) {
+        const LatticePoint c = hexCentre(scene.grid, scene.col[k], scene.row[k]);
+        i_lo = std::min(i_lo, c.i - 1), i_hi = std::max(i_hi, c.i + 1);
+        j_lo = std::min(j_lo, c.j - 2), j_hi = std::max(j_hi, c.j + 2);
+    }
+    const double pw = scene.keptCount() ? latticeX({i_hi - i_lo, 0}, scene.pitch_mm) : mw;
+    const double pd = scene.keptCount() ? latticeY({0, j_hi - j_lo}, scene.pitch_mm) : md;
+    const double fw = std::max(0.0, mw - pw), fd = std::max(0.0, md - pd);
+    // The largest cell that fits, rounded down to 0.01 mm.
+    const double scale = std::min(pw > 0 ? (w - fw) / pw : 0.0, pd > 0 ? (d - fd) / pd : 0.0);
+    const double cell = std::floor(scene.pitch_mm * scale * 100.0) / 100.0;
+    const std::string what = "the model is " + formatSignificant(mw, 4) + " x " + formatSignificant(md, 4) + " mm, larger than the " +
+                             formatSignificant(bed.width_mm, 4) + " x " + formatSignificant(bed.depth_mm, 4) + " mm bed less " +
+                             formatSignificant(kBedMarginMm, 4) + " mm on each side (" + formatSignificant(w, 4) + " x " +
+                             formatSignificant(d, 4) + " mm)";
+    if (!(cell > 0))
+        throw InputError(what + "; what stands beside the pillars (" + formatSignificant(fw, 4) + " x " + formatSignificant(fd, 4) +
+                         " mm: the orientation tab, the scale, the legend) alone does not fit it: give a larger --bed");
+    throw InputError(what + "; give --cell " + formatSignificant(cell, 4) + " or less, or leave --cell out to fit the bed " +
                      "(tsf does not split a model over several prints)");
 }
 

@@ -51,12 +51,22 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
 /// nozzle widths; "" when they are not or no nozzle was given.
 std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer);
 
-/// Width (mm) of what stands beside the pillars and does not scale with the
-/// cell: the orientation tab and the tactile scale.
-double fixedWidthMm(const Scene& scene);
+/// x, y extent (mm) of everything a Scene places: the pillars, the
+/// orientation tab, the tactile scale, the legend's plate.
+struct SceneFootprint {
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+};
+SceneFootprint sceneFootprint(const Scene& scene);
+
+/// With --bed and the cell left to tsf: when what stands beside the pillars
+/// (the legend's plate, the tab, the scale) takes the model past the bed,
+/// shrinks the fit box by the overflow (gen.scene.fit_width_mm, fit_depth_mm)
+/// and returns true: the Scene is then built again.
+bool shrinkFitToBed(const Scene& scene, const PrinterSpec& printer, GenOptions& gen);
 
 /// After meshing: throws InputError when the mesh's footprint is larger
-/// than the bed less its margins, naming the largest --cell that fits.
-void checkFitsBed(const Mesh& mesh, double pitch_mm, double fixed_width_mm, const PrinterSpec& printer);
+/// than the bed less its margins, naming the largest --cell that fits (the
+/// pillars scale with the cell, what stands beside them does not).
+void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& printer);
 
 }  // namespace tsf::cli

@@ -98,18 +98,27 @@ TEST(LegendCli, WhereTheLegendCannotStandTheCommandSaysWhatToChange) {
 namespace tsf {
 namespace {
 
-// A legend on a model of one cell: the exact join cannot be made; the user
-// is told what is too small (exit 2), never a library's assertion (exit 3).
+// A legend on a model whose exact join cannot be made (a 3 x 2
+// checkerboard resampled to 200 bins): the user is told what is too small
+// (exit 2), never a library's assertion (exit 3). A legend on one point
+// fitted to a small bed is made: the fit leaves the plate and the tab room.
 TEST(LegendCli, AModelTooSmallForTheLegendsJoinIsBadInputThatSaysWhy) {
     const auto dir = test::scratchDir();
-    test::writeText(dir / "one.csv", "x,y\n0,0\n");
+    test::writeText(dir / "board.csv", "0,1\n1,0\n0,1\n");
     const std::string out = (dir / "o.stl").string();
-    const auto r = test::runTsf("gen " + (dir / "one.csv").string() + " --points x=x,y=y --units mm --bed 100x100 --marks-on data -o " + out, dir);
+    const auto r = test::runTsf("gen " + (dir / "board.csv").string() + " --title Rain --bins 200 -o " + out, dir);
     EXPECT_EQ(r.exit_code, test::kExitBadInput) << r.out << r.err;
     EXPECT_NE(r.err.find("--title/--units"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("1 cell,"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" cells, "), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("CGAL"), std::string::npos) << "no library message reaches the user: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(out));
+
+    test::writeText(dir / "one.csv", "x,y\n0,0\n");
+    const auto one = test::runTsf("gen " + (dir / "one.csv").string() + " --points x=x,y=y --units mm --bed 100x100 -o " + out, dir);
+    ASSERT_EQ(one.exit_code, test::kExitOk) << one.out << one.err;
+    const Bounds b = meshBounds(readMesh(out));
+    EXPECT_LE(b.max.x - b.min.x, 90.0 + 1e-6);
+    EXPECT_LE(b.max.y - b.min.y, 90.0 + 1e-6);
 }
 
 }  // namespace
