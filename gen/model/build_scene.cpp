@@ -406,6 +406,16 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     // The tab and the scale last: they stand against cells whose tops (tilted
     // or not) rise to the floor, clear of the legend's plate.
     placeTab(s);
+    if (wantsTab(params) && !s.marks.tab && s.keptCount() > 0) {
+        // No pillar on the west side to stand a tab against (placeTab's note
+        // says why): the marks go in the data where they fit, as the thesis
+        // places them, rather than nowhere.
+        SceneParams in_data = params;
+        in_data.marks.place = MarkPlace::Data;
+        Scene again = buildScene(field, in_data);
+        again.notes.insert(again.notes.begin(), s.notes.back() + "; they are placed in the data instead, where they fit");
+        return again;
+    }
     placeScale(s);
     if (params.stored_as_float32) {
         const double snap = float32SafeSnapMm(s);

@@ -244,6 +244,15 @@ TEST(OrientationTab, OptionsChooseTheMarks) {
     EXPECT_LT(findMarks(readMesh((dir / "b.stl").string())).notch_depth_mm, 5.0);  // 3 mm cells: a shallow V in the corner pillar
     EXPECT_NE(data.out.find("notch     V"), std::string::npos) << data.out;
     EXPECT_EQ(data.out.find("  tab "), std::string::npos) << data.out;
+
+    // One value with a braille legend: the legend's plate leaves the tab no
+    // room, so the marks go in the data, and the summary says why.
+    test::writeText(dir / "one.csv", "5\n");
+    const auto one = test::runTsf("gen " + (dir / "one.csv").string() + " --title T -o " + (dir / "c.stl").string(), dir);
+    ASSERT_EQ(one.exit_code, test::kExitOk) << one.err;
+    EXPECT_NE(one.out.find("no orientation tab"), std::string::npos) << one.out;
+    EXPECT_NE(one.out.find("braille legend's plate"), std::string::npos) << one.out;
+    EXPECT_NE(one.out.find("notch     V 6.0 mm deep"), std::string::npos) << one.out;
 }
 
 }  // namespace

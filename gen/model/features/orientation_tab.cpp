@@ -260,9 +260,9 @@ void placeTab(Scene& s) {
         s.marks.tab = buildTab(s, i_west, y_south, std::max(y_reach, yOf(last_j + 1)), best, best_fillers, size, best_band);
         return;
     }
-    s.notes.push_back("orientation marks left out: the tab that carries them (" + formatSignificant(size.width, 3) + " x " +
+    s.notes.push_back("no orientation tab: the tab that carries the marks (" + formatSignificant(size.width, 3) + " x " +
                       formatSignificant(size.depth, 3) + " mm) finds no pillar on the model's west side to stand "
-                      "against, clear of " + blocked + "; --marks-on data puts them in the data where they fit");
+                      "against, clear of " + blocked);
 }
 
 std::optional<int64_t> tabTopAt(const Scene& s, double x, double y) {

@@ -38,8 +38,8 @@
 //
 // Placed by placeTab (buildScene, after the top shapes and the legend) with
 // MarkParams::place == Tab. When the west side has no run of contacts clear
-// of pits, tilted corners below the floor and the legend's plate, the marks
-// are left out with a note that says why.
+// of pits, tilted corners below the floor and the legend's plate, placeTab
+// notes why and buildScene places the marks in the data where they fit.
 #pragma once
 
 #include <cstdint>
@@ -77,8 +77,8 @@ inline constexpr double kTabLegendClearanceMm = 2.0;
 /// width west of the pillars, whatever the cell.
 double tabWidthMm(const MarkParams& marks);
 
-/// Places the orientation tab when the Scene asks for it (see above); adds a
-/// note for marks that cannot be placed.
+/// Places the orientation tab when the Scene asks for it (see above); when it
+/// finds no place, leaves Scene::marks.tab empty with a note saying why.
 void placeTab(Scene& scene);
 
 /// Whether the Scene's marks belong on a tab: MarkPlace::Tab, a model not
