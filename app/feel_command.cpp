@@ -21,6 +21,7 @@
 #include "app/commands.h"
 #include "app/gen_options.h"
 #include "gen/util/error.h"
+#include "gen/model/scene_json.h"
 #include "gen/readers/load_field.h"
 #include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
@@ -117,6 +118,12 @@ private:
 [[noreturn]] void deviceFailed(const std::string& message) {
     std::fprintf(stderr, "tsf: error: %s\n", message.c_str());
     throw CLI::RuntimeError(kExitDeviceFailed);
+}
+
+// A scene sidecar written beside a model by tsf gen (gen/model/scene_json.h).
+bool isSceneSidecar(const std::string& path) {
+    const std::string suffix = ".scene.json";
+    return path.size() > suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 struct FieldFacts {
@@ -229,9 +236,20 @@ void runFeel(const FeelOptions& o) {
         throw InputError("--levels must be 1 to " + std::to_string(kMaxScaleLevels));
     if (!(o.lod >= 0 && o.lod < o.levels)) throw InputError("--lod must be between 0 and --levels - 1");
 
-    // The relief tsf gen would print from the same input and options.
-    const HexField field = loadField(o.gen);
-    const Scene scene = buildScene(field, o.gen.scene);
+    // The relief tsf gen would print from the same input and options, or the
+    // model a sidecar (MODEL.stl.scene.json) describes, exactly as printed.
+    const bool from_sidecar = isSceneSidecar(o.gen.input);
+    HexField field;
+    if (!from_sidecar) field = loadField(o.gen);
+    const Scene scene = from_sidecar ? readSceneJson(o.gen.input) : buildScene(field, o.gen.scene);
+    if (from_sidecar) {
+        // The values the model holds, for the report: its kept cells' (NaN:
+        // a pit without data), not the culled cells of its grid.
+        field.grid = scene.grid;
+        field.values = scene.value;
+        field.source = o.gen.input;
+        field.how = "the model its scene sidecar describes, as printed";
+    }
     const DeviceLimits limits;  // the Falcon's (sim and replay stand in for one)
     const FeelSurface surface = buildFeelSurface(
         scene, o.levels, o.scale_space == "mipmap" ? ScaleSpaceKind::kMipmap : ScaleSpaceKind::kGaussian, limits);
@@ -413,6 +431,8 @@ void addFeelCommand(CLI::App& app) {
         "  tsf feel field.csv --device replay:forces.csv --log again.csv\n"
         "  tsf feel examples/volcano.csv --device falcon --firmware nvent_firmware.bin\n"
         "The input and model options are tsf gen's: the relief felt is the relief gen prints.\n"
+        "Given MODEL.stl.scene.json (the sidecar tsf gen writes), the model it describes is felt as printed:\n"
+        "orientation tab, legend and scale included; the model options are then not used.\n"
         "Device frame: x right, y up, z toward the user, metres; north of the field is away from the user.\n"
         "Buttons: centre = volume mode on/off, plus = coarser level, minus = finer level.\n"
         "Ctrl-C ramps the force to zero and ends the session (exit code 130). See docs/haptics.md.");

@@ -141,6 +141,26 @@ TEST(FeelCli, FeelsTheReliefGenPrintsFromTheSameOptions) {
     EXPECT_TRUE(j["relief"]["exact_at_cell_centres"].get<bool>());
 }
 
+// The sidecar tsf gen writes beside a model is felt as that model: its
+// mapping and cells, whatever options are given to feel.
+TEST(FeelCli, FeelsTheModelASidecarDescribes) {
+    const std::string f = hillField();
+    const auto dir = tsf::test::scratchDir("feel_sidecar");
+    const std::string model = (dir / "m.stl").string();
+    const tsf::test::RunResult gen =
+        tsf::test::runTsf("gen " + f + " --transfer sqrt --baseline 20 --scale --title Hill -o " + model + " --json", dir);
+    ASSERT_EQ(gen.exit_code, 0) << gen.output;
+    const auto g = nlohmann::json::parse(gen.out);
+    const tsf::test::RunResult feel =
+        tsf::test::runTsf("feel " + model + ".scene.json --transfer log --trajectory taps --json", dir);
+    ASSERT_EQ(feel.exit_code, 0) << feel.output;
+    const auto j = nlohmann::json::parse(feel.out);
+    EXPECT_EQ(j["relief"]["transfer"], "sqrt");  // the model's, not --transfer log
+    EXPECT_EQ(j["relief"]["baseline"], g["scene"]["mapping"]["baseline"]);
+    EXPECT_EQ(j["field"]["kept_cells"], g["scene"]["cells"]["kept"]);
+    EXPECT_EQ(j["field"]["how"], "the model its scene sidecar describes, as printed");
+}
+
 TEST(FeelCli, UnsafeOrBadOptionsAreRejectedWithExitTwo) {
     const std::string f = hillField();
     for (const std::string& args :
