@@ -22,6 +22,7 @@
 #include "app/gen_options.h"
 #include "gen/util/error.h"
 #include "gen/model/scene_json.h"
+#include "gen/util/atomic_file.h"
 #include "gen/readers/load_field.h"
 #include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
@@ -75,6 +76,7 @@ struct FeelOptions {
     double spin_us = 100.0;
     std::string log;
     std::string plot;
+    std::string relief_csv;
     bool json = false;
     bool realtime = false;
     bool no_realtime = false;
@@ -227,7 +229,7 @@ void runFeel(const FeelOptions& o) {
     checkOutputPaths({{o.gen.input, "the field"},
                       {is_replay ? spec.substr(7) : std::string(), "the recording replayed"},
                       {o.firmware, "--firmware"}},
-                     {{o.log, "--log"}, {o.plot, "--plot"}});
+                     {{o.log, "--log"}, {o.plot, "--plot"}, {o.relief_csv, "--relief"}});
     const SimTrajectory trajectory = parseSimTrajectory(o.trajectory);
     FalconOptions falcon_options;
     if (is_falcon && !o.firmware.empty()) falcon_options.firmware = readFalconFirmware(o.firmware);
@@ -312,6 +314,21 @@ void runFeel(const FeelOptions& o) {
     const double wall_s = session.wall_s;
 
     if (!o.log.empty()) writeForceLogCsv(o.log, log);
+    if (!o.relief_csv.empty()) {
+        // 0.5 mm, or a sixth of a cell where cells are narrower than 3 mm.
+        const ReliefSurface r = reliefSurface(scene, std::min(0.5, scene.pitch_mm / kReliefSamplesPerPitch));
+        writeFileAtomically(o.relief_csv, [&](std::ostream& os) {
+            os << "x_mm,y_mm,z_mm\n";
+            char line[96];
+            for (int32_t j = 0; j < r.rows; ++j)
+                for (int32_t i = 0; i < r.cols; ++i) {
+                    const double z = r.z_mm[size_t(j) * size_t(r.cols) + size_t(i)];
+                    std::snprintf(line, sizeof line, std::isnan(z) ? "%.4f,%.4f,NaN\n" : "%.4f,%.4f,%.4f\n",
+                                  r.x0_mm + (i + 0.5) * r.sample_mm, r.y0_mm + (j + 0.5) * r.sample_mm, z);
+                    os << line;
+                }
+        });
+    }
     if (!o.plot.empty()) {
         haptics::PlotOptions po;
         po.title = "tsf feel: " + std::filesystem::path(o.gen.input).filename().string() + ", " + o.device + ", " +
@@ -378,6 +395,7 @@ void runFeel(const FeelOptions& o) {
         j["coverage"] = {{"cells", coverage.cells}, {"touched", coverage.touched}, {"fraction", coverage.fraction()}};
         j["log"] = {{"file", o.log}, {"records", log.size()}, {"dropped", log.dropped()}};
         j["plot"] = o.plot;
+        j["relief_csv"] = o.relief_csv;
         std::cout << j.dump(2) << "\n";
     } else {
         std::printf("tsf feel: %s (%d x %d cells, values %g..%g%s) on %s\n", o.gen.input.c_str(), field.grid.cols,
@@ -411,6 +429,7 @@ void runFeel(const FeelOptions& o) {
             std::printf("  log       %s (%zu rows%s)\n", o.log.c_str(), log.size(),
                         log.dropped() ? (", " + std::to_string(log.dropped()) + " dropped: log full").c_str() : "");
         if (!o.plot.empty()) std::printf("  plot      %s\n", o.plot.c_str());
+        if (!o.relief_csv.empty()) std::printf("  relief    %s (the printed surface, x_mm,y_mm,z_mm)\n", o.relief_csv.c_str());
     }
     std::fflush(stdout);
     if (stats.end == LoopEnd::kDeviceFailed) {
@@ -472,6 +491,9 @@ void addFeelCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--log", o->log, "Write a CSV of time, position, force and mode per tick");
     cmd->add_option("--plot", o->plot, "Write a PNG of the field with the path and the forces felt");
+    cmd->add_option("--relief", o->relief_csv,
+                    "Write the surface felt as CSV: x_mm,y_mm,z_mm of the printed model's top on a 0.5 mm grid "
+                    "(finer for cells under 3 mm) over its whole footprint, NaN where nothing is");
     cmd->add_flag("--json", o->json, "Print the statistics as JSON");
     cmd->add_flag("--realtime", o->realtime, "Run on the wall clock even for simulated devices");
     cmd->add_flag("--no-realtime", o->no_realtime, "Run as fast as possible (simulated devices do by default)");

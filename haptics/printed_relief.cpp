@@ -100,6 +100,20 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
     return g;
 }
 
+ReliefSurface reliefSurface(const Scene& scene, double sample_mm) {
+    ReliefSurface r;
+    const Mesh mesh = meshScene(scene);
+    if (mesh.positions.empty() || !(sample_mm > 0)) return r;
+    const Bounds b = meshBounds(mesh);
+    r.sample_mm = sample_mm;
+    r.x0_mm = b.min.x;
+    r.y0_mm = b.min.y;
+    r.cols = int32_t(std::max(1.0, std::ceil((b.max.x - b.min.x) / sample_mm)));
+    r.rows = int32_t(std::max(1.0, std::ceil((b.max.y - b.min.y) / sample_mm)));
+    r.z_mm = topsOver(mesh, sample_mm, r.cols, r.rows, r.x0_mm, r.y0_mm);
+    return r;
+}
+
 GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, const ReliefInfo& info) {
     const LatticePoint c = hexCentre(scene.grid, col, row);
     // Sample i covers [i - origin_i, i - origin_i + 1) / samples_per_pitch

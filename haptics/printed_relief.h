@@ -57,6 +57,17 @@ struct ReliefInfo {
 /// max_height_mm is 0).
 HeightGrid printedRelief(const Scene& scene, ReliefInfo* info = nullptr);
 
+/// The model's upper surface in millimetres on a square grid of side
+/// sample_mm over its whole footprint (x, y of sample (i, j): x0_mm + (i +
+/// 0.5) * sample_mm, y0_mm + (j + 0.5) * sample_mm; z NaN where no surface
+/// is above the point): what `tsf feel --relief` writes.
+struct ReliefSurface {
+    double x0_mm = 0, y0_mm = 0, sample_mm = 0;
+    int32_t cols = 0, rows = 0;
+    std::vector<double> z_mm;  ///< row-major, row 0 south
+};
+ReliefSurface reliefSurface(const Scene& scene, double sample_mm);
+
 /// Where the centre of hex cell (col, row) lies in the relief grid's
 /// continuous coordinates (height_grid.h) for the given samples per pitch.
 GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, const ReliefInfo& info);
