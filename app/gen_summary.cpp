@@ -1,5 +1,6 @@
 #include "app/gen_summary.h"
 
+#include "app/printer_fit.h"
 #include "gen/model/features/braille.h"
 #include "gen/model/features/halves.h"
 #include "gen/model/features/orientation_tab.h"
@@ -39,6 +40,11 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     double zmax = 0;
     for (int64_t t : s.top) zmax = std::max(zmax, s.zMm(t));
     j["size_mm"] = {gridWidth(s.grid, s.pitch_mm), gridDepth(s.grid, s.pitch_mm), zmax};
+    if (s.keptCount() > 0) {
+        // The footprint of everything placed: pillars, tab, scale, legend plate.
+        const SceneFootprint f = sceneFootprint(s);
+        j["footprint_mm"] = {{"west", f.x0}, {"east", f.x1}, {"south", f.y0}, {"north", f.y1}};
+    }
     j["z_snap_mm"] = s.z_snap_mm;
     j["mapping"] = {{"transfer", toString(s.mapping.transfer)}, {"baseline", s.mapping.baseline},
                     {"value_max", s.mapping.value_max}, {"max_height_mm", s.mapping.max_height_mm},
@@ -151,7 +157,13 @@ std::string formatSceneFacts(const Scene& s) {
       << " at the floor, " << s.grid.cellCount() - s.cells_with_data << " without data; culling: "
       << toString(s.params.cull) << ")\n";
     o << "  size      " << formatFixed(w, 1) << " x " << formatFixed(d, 1) << " x " << formatFixed(zmax, 1)
-      << " mm (grid box), hexagons " << formatFixed(s.pitch_mm, 2) << " mm across flats\n";
+      << " mm (grid box), hexagons " << formatFixed(s.pitch_mm, 2) << " mm across flats";
+    if (s.keptCount() > 0 && (s.marks.tab || s.scale || s.legend)) {
+        const SceneFootprint f = sceneFootprint(s);
+        o << "; " << formatFixed(f.x1 - f.x0, 1) << " x " << formatFixed(f.y1 - f.y0, 1)
+          << " mm with what stands beside the pillars";
+    }
+    o << "\n";
     o << "  heights   " << mappingText(s) << "\n";
     if (s.params.bottom == Bottom::Flat)
         o << "  bottom    flat, base " << formatFixed(s.params.base_mm, 2) << " mm\n";
