@@ -455,6 +455,13 @@ std::string emitScadParameterSets(const Scene& scene) {
     half["height"] = formatShortest(p.max_height_mm / 2);
     half["base"] = formatShortest(std::max(p.base_mm / 2, p.z_step_mm));
 
+    // The orientation tab stands where tsf placed it for the parameters as
+    // generated (the file asserts them): the other sets leave it out.
+    if (scene.marks.tab) {
+        all["show_orientation_tab"] = "true";
+        for (nlohmann::ordered_json* set : {&layers, &flip, &half}) (*set)["show_orientation_tab"] = "false";
+    }
+
     nlohmann::ordered_json sets;
     sets[kSetAsGenerated] = all;
     sets[kSetLayerSteps] = layers;

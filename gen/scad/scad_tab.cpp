@@ -33,12 +33,21 @@ void emitTabData(std::string& o, const Scene& s) {
     }
     o += "]];\n";
     // The tab stands against the pillars' walls where tsf put them: another
-    // cell, base, snap or mirror would move the walls away from it.
-    o += "assert(!show_orientation_tab || [cell, base, snap, mirror] == [" + formatShortest(s.pitch_mm) + ", " +
-         formatShortest(s.params.base_mm) + ", " + formatShortest(s.z_snap_mm) + ", " +
-         (s.params.bottom == Bottom::Mirrored ? "true" : "false") +
-         "],\n       \"the orientation tab was placed by tsf for the cell, base, snap and mirror it wrote: set "
-         "show_orientation_tab = false, or run tsf gen again to change them\");\n\n";
+    // cell, base, snap or mirror would move the walls away from it; on a
+    // mirrored model it lies in the band its pillar spans, which every
+    // parameter moves.
+    const bool mirrored = s.params.bottom == Bottom::Mirrored;
+    const std::string names = mirrored ? "[cell, height, transfer, baseline, value_max, snap, base, mirror]" : "[cell, base, snap, mirror]";
+    const std::string values =
+        mirrored ? "[" + formatShortest(s.pitch_mm) + ", " + formatShortest(s.mapping.max_height_mm) + ", \"" +
+                       toString(s.mapping.transfer) + "\", " + formatShortest(s.mapping.baseline) + ", " +
+                       formatShortest(s.mapping.value_max) + ", " + formatShortest(s.z_snap_mm) + ", " +
+                       formatShortest(s.params.base_mm) + ", true]"
+                 : "[" + formatShortest(s.pitch_mm) + ", " + formatShortest(s.params.base_mm) + ", " +
+                       formatShortest(s.z_snap_mm) + ", false]";
+    o += "assert(!show_orientation_tab || " + names + " == " + values + ",\n       \"the orientation tab was placed by tsf for the " +
+         (mirrored ? std::string("values and parameters") : std::string("cell, base, snap and mirror")) +
+         " it wrote: set show_orientation_tab = false, or run tsf gen again to change them\");\n\n";
 }
 
 std::string tabCallPrefix(const Scene& s) { return s.marks.tab ? "tsf_with_tab(orientation_tab, show_orientation_tab) " : ""; }

@@ -183,6 +183,24 @@ TEST(ScadEmitter, ParameterSetsAreOpenScadJsonWithStringValues) {
     EXPECT_EQ(mirrored["parameterSets"]["flat bottom"]["mirror"], "false");
 }
 
+// The orientation tab stands where tsf placed it for the parameters as
+// generated, and the file asserts them: every other set leaves the tab out,
+// so each set renders; the generated file names the tab's body and the check.
+TEST(ScadEmitter, ParameterSetsLeaveTheOrientationTabOutWhereItWouldNotStand) {
+    SceneParams p = smallParams(Bottom::Flat);
+    p.marks = MarkParams{};
+    const Scene scene = buildScene(bumpyField(9, 8), p);
+    ASSERT_TRUE(scene.marks.tab.has_value());
+    const nlohmann::json sets = nlohmann::json::parse(emitScadParameterSets(scene))["parameterSets"];
+    EXPECT_EQ(sets["as generated"]["show_orientation_tab"], "true");
+    for (const char* name : {"layer steps 0.2 mm", "mirrored bottom", "half size"})
+        EXPECT_EQ(sets[name]["show_orientation_tab"], "false") << name;
+    const std::string scad = emitScad(scene, options(), "model.scad");
+    EXPECT_TRUE(contains(scad, "orientation_tab = [[")) << scad;
+    EXPECT_TRUE(contains(scad, "assert(!show_orientation_tab || [cell, base, snap, mirror] == ["));
+    EXPECT_TRUE(contains(scad, "tsf_with_tab(orientation_tab, show_orientation_tab) "));
+}
+
 TEST(ScadEmitter, WritesTheFileAndItsParameterSetsAtomically) {
     const std::string dir = scratchDir("emitter_write");
     const Scene scene = bumpyScene();
