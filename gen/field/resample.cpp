@@ -29,6 +29,22 @@ PixelPoint hexCentrePx(const ResampleLayout& layout, int32_t col, int32_t row) {
     return {layout.x0_px + latticeX(c, layout.pitch_px), layout.y0_px - latticeY(c, layout.pitch_px)};
 }
 
+// Calls visit(grid index, value) for every pixel whose centre lies in a
+// hexagon of the grid (pitch_px pixels across flats): the one pass over the
+// raster that the mean and the mode both make.
+template <class Visit>
+void forEachPixelInHexagon(const Raster& raster, const ResampleLayout& layout, const HexGrid& grid, double pitch_px,
+                           const Visit& visit) {
+    for (int32_t pr = 0; pr < raster.rows; ++pr) {
+        const double y_pitch = (layout.y0_px - (pr + 0.5)) / pitch_px;
+        for (int32_t pc = 0; pc < raster.cols; ++pc) {
+            const double x_pitch = (pc + 0.5 - layout.x0_px) / pitch_px;
+            int32_t c = 0, r = 0;
+            if (hexCellAt(grid, x_pitch, y_pitch, c, r)) visit(size_t(grid.index(c, r)), raster.at(pc, pr));
+        }
+    }
+}
+
 double nearestValue(const Raster& raster, PixelPoint p) {
     return raster.at(clampIndex(std::floor(p.x), raster.cols), clampIndex(std::floor(p.y), raster.rows));
 }
@@ -114,20 +130,12 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
             std::vector<double> sum(size_t(grid.cellCount()), 0.0);
             std::vector<int64_t> finite(size_t(grid.cellCount()), 0);
             std::vector<int64_t> inside(size_t(grid.cellCount()), 0);
-            for (int32_t pr = 0; pr < raster.rows; ++pr) {
-                const double y_pitch = (layout.y0_px - (pr + 0.5)) / p;
-                for (int32_t pc = 0; pc < raster.cols; ++pc) {
-                    const double x_pitch = (pc + 0.5 - layout.x0_px) / p;
-                    int32_t c = 0, r = 0;
-                    if (!hexCellAt(grid, x_pitch, y_pitch, c, r)) continue;
-                    const size_t k = size_t(grid.index(c, r));
-                    ++inside[k];
-                    const double v = raster.at(pc, pr);
-                    if (std::isnan(v)) continue;
-                    sum[k] += v;
-                    ++finite[k];
-                }
-            }
+            forEachPixelInHexagon(raster, layout, grid, p, [&](size_t k, double v) {
+                ++inside[k];
+                if (std::isnan(v)) return;
+                sum[k] += v;
+                ++finite[k];
+            });
             for (int32_t r = 0; r < grid.rows; ++r)
                 for (int32_t c = 0; c < grid.cols; ++c) {
                     const size_t k = size_t(grid.index(c, r));
@@ -141,22 +149,14 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
             // in class maps, so a short list searched linearly.
             std::vector<std::vector<std::pair<double, int64_t>>> seen(size_t(grid.cellCount()));
             std::vector<uint8_t> inside(size_t(grid.cellCount()), 0);
-            for (int32_t pr = 0; pr < raster.rows; ++pr) {
-                const double y_pitch = (layout.y0_px - (pr + 0.5)) / p;
-                for (int32_t pc = 0; pc < raster.cols; ++pc) {
-                    const double x_pitch = (pc + 0.5 - layout.x0_px) / p;
-                    int32_t c = 0, r = 0;
-                    if (!hexCellAt(grid, x_pitch, y_pitch, c, r)) continue;
-                    const size_t k = size_t(grid.index(c, r));
-                    inside[k] = 1;
-                    const double v = raster.at(pc, pr);
-                    if (std::isnan(v)) continue;
-                    auto& list = seen[k];
-                    auto it = std::find_if(list.begin(), list.end(), [v](const auto& e) { return e.first == v; });
-                    if (it == list.end()) list.push_back({v, 1});
-                    else ++it->second;
-                }
-            }
+            forEachPixelInHexagon(raster, layout, grid, p, [&](size_t k, double v) {
+                inside[k] = 1;
+                if (std::isnan(v)) return;
+                auto& list = seen[k];
+                auto it = std::find_if(list.begin(), list.end(), [v](const auto& e) { return e.first == v; });
+                if (it == list.end()) list.push_back({v, 1});
+                else ++it->second;
+            });
             for (int32_t r = 0; r < grid.rows; ++r)
                 for (int32_t c = 0; c < grid.cols; ++c) {
                     const size_t k = size_t(grid.index(c, r));
