@@ -17,4 +17,10 @@ namespace tsf {
 std::vector<std::array<uint32_t, 3>> triangulateRings(const std::vector<Vec3>& positions,
                                                       const std::vector<std::vector<uint32_t>>& rings);
 
+/// The same for a region given as directed or undirected segments (pairs of
+/// indices into `positions`) that together form closed loops; loops may
+/// touch at a vertex (a pinch), never cross. Each point must be one index.
+std::vector<std::array<uint32_t, 3>> triangulateSegments(const std::vector<Vec3>& positions,
+                                                         const std::vector<std::array<uint32_t, 2>>& segments);
+
 }  // namespace tsf
