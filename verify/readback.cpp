@@ -72,7 +72,23 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
     for (size_t k = 0; k < scene.keptCount(); ++k)
         z_extent = std::max({z_extent, std::fabs(scene.zMm(scene.top[k])), std::fabs(scene.zMm(scene.bottom[k]))});
     f.height_step_tolerance_mm = options.height_tolerance_mm > 0 ? options.height_tolerance_mm : 0.5 * scene.z_snap_mm;
-    f.float32_rounding_mm = z_extent * kFloat32UnitRoundoff;
+    // On a tilted or dimpled top the float32 rounding of x and y moves the
+    // surface up or down by its slope times the shift (up to sqrt 2 x the
+    // largest |x| or |y| times the unit roundoff). The steepest slope a cell
+    // has is at most its largest rise from the centre to a corner over half
+    // the pitch (a corner is at least that far from the centre along the slope).
+    int64_t rise = 0;
+    if (!scene.shapes.empty())
+        for (size_t k = 0; k < scene.keptCount(); ++k) {
+            if (!isShaped(scene.shapes, k)) continue;
+            for (int e = 0; e < kHexCorners; ++e) {
+                rise = std::max(rise, std::abs(cornerTop(scene, k, e) - centreTop(scene, k)));
+                if (mirrored) rise = std::max(rise, std::abs(cornerBottom(scene, k, e) - centreBottom(scene, k)));
+            }
+        }
+    const double xy_extent = have_mesh ? std::max({std::fabs(b.min.x), std::fabs(b.max.x), std::fabs(b.min.y), std::fabs(b.max.y)}) : 0.0;
+    const double slope = scene.zMm(rise) / (0.5 * scene.pitch_mm);
+    f.float32_rounding_mm = (z_extent + slope * std::sqrt(2.0) * xy_extent) * kFloat32UnitRoundoff;
     f.tolerance_mm = f.height_step_tolerance_mm + f.float32_rounding_mm;
 
     const size_t keep = options.max_offenders;
