@@ -8,8 +8,9 @@
 // file carries that solid as data, `legend_plate = [points, faces]` (mm,
 // faces clockwise seen from outside, as polyhedron() wants them), so OpenSCAD
 // draws exactly the dots tsf's own mesh has. The plate's top is the floor of
-// a flat model (base_mm); it reaches under the northern pillars, and the
-// union joins it to them.
+// a flat model (base_mm); it fills the culled corners and the notches of the
+// outline north of the pillars and stands against their walls (it never
+// overlaps them), and the union joins it to them.
 
 // Module: tsf_with_legend()
 // Usage:

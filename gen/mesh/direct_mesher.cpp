@@ -50,6 +50,7 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <set>
 #include <thread>
 #include <unordered_map>
 #include <unordered_set>
@@ -65,6 +66,7 @@
 #include "gen/model/features/halves.h"
 
 #include "gen/mesh/legend_join.h"
+#include "gen/model/features/legend_plate.h"
 #include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"
 #include "gen/model/scene_check.h"
@@ -101,7 +103,7 @@ void runParts(unsigned parts, const Work& work) {
 class MeshBuilder {
 public:
     explicit MeshBuilder(const Scene& scene)
-        : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat), merge_(!scene.legend), lattice_ids_(latticeVertexIdCount(g_)) {
+        : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat), lattice_ids_(latticeVertexIdCount(g_)) {
         const int64_t ids = lattice_ids_ + int64_t(s_.faces.extra.size()) + int64_t(s_.shapes.extra.size());
         first_index_.assign(size_t(ids) + 1, 0);
         const auto& faces = s_.faces.faces;
@@ -112,9 +114,24 @@ public:
                     if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
                 }
         // The feet that stand against pillar walls from 0 to the floor: the
-        // tactile scale's (east) and the orientation tab (west).
+        // tactile scale's (east), the orientation tab (west) and the legend's
+        // plate (north).
         std::vector<std::pair<int32_t, int>> feet = scaleTouchedEdges(s_);
         if (s_.marks.tab) feet.insert(feet.end(), s_.marks.tab->touched.begin(), s_.marks.tab->touched.end());
+        // The plate stands against a hexagon drawn by a face (a mark in the
+        // data) along the face's ring, whose points may split the edge.
+        const PlateOutline plate = legendPlateOutline(s_);
+        for (const PlateOutline::Edge& e : plate.edges) {
+            if (e.cell < 0) continue;
+            if (!drawnByFace(e.cell)) {
+                feet.push_back({e.cell, e.side});
+                continue;
+            }
+            const int64_t v = plate.points[e.b].lattice, w = plate.points[e.a].lattice;  // the face's direction
+            foot_ring_edges_.insert({v, w});
+            foot_corners_.insert(v);
+            foot_corners_.insert(w);
+        }
         if (!feet.empty()) {
             foot_edges_.assign(s_.keptCount(), 0);
             for (const auto& [k, e] : feet) {
@@ -141,6 +158,10 @@ public:
         if (s_.marks.tab) {
             const TabBody tab = meshTabBody(s_, /*joined=*/true);
             addJoinedBody(tab.mesh, tab.lattice_id);
+        }
+        if (s_.legend) {
+            const PlateBody plate = legendJoinedBody(s_);
+            addJoinedBody(plate.mesh, plate.lattice_id);
         }
         return std::move(mesh_);
     }
@@ -176,7 +197,7 @@ private:
         const size_t n = s_.keptCount();
         region_.assign(n, kNotMerged);
         UnionFind uf(n);
-        for (size_t k = 0; k < n && merge_; ++k) {
+        for (size_t k = 0; k < n; ++k) {
             if (!mergeable(int32_t(k))) continue;
             for (int e = 0; e < 3; ++e) {  // east, north-east, north-west: each pair once
                 const int32_t o = s_.keptNeighbour(k, e);
@@ -204,7 +225,6 @@ private:
     // Flat: the interior lattice vertices of the sparse sublattice at the floor.
     void findBottomPoints() {
         bottom_point_.assign(size_t(lattice_ids_), 0);
-        if (!merge_) return;
         for (size_t k = 0; k < s_.keptCount(); ++k) {
             if (drawnByFace(int32_t(k))) continue;
             for (int e = 0; e < kHexCorners; ++e) {
@@ -474,6 +494,10 @@ private:
                     ov = spanAt(size_t(a.index), v);
                     ow = spanAt(size_t(a.index), w);
                 }
+                if (a.kind == Across::Kind::Outside && foot_ring_edges_.count({v, w})) {
+                    addWalls(v, w, {bottom, top}, {bottom, top}, true, footSpan(), footSpan());
+                    continue;
+                }
                 addWalls(v, w, {bottom, top}, {bottom, top}, a.kind != Across::Kind::Outside, ov, ow);
             }
         }
@@ -688,12 +712,6 @@ private:
     const Scene& s_;
     const HexGrid& g_;
     const bool flat_;
-    // Merged level tops and the sparse bottom points are left out beside a
-    // braille legend: its plate is joined by a CGAL union (gen/mesh/legend_join.h)
-    // whose new vertices on the large merged triangles fold once snapped to
-    // the grid (self-intersections on the airports example). Per-cell tops
-    // and the plain bottom join cleanly.
-    const bool merge_;
     const int64_t lattice_ids_;
     std::vector<uint32_t> first_index_;  // planar vertex id -> first mesh vertex index
     std::unordered_map<int64_t, std::vector<int32_t>> faces_at_;  // planar vertex id -> faces with it on a ring
@@ -705,20 +723,16 @@ private:
     std::vector<int64_t> bottom_points_;    // flat: those ids
     std::vector<uint8_t> foot_edges_;                             // per kept cell: bit e = a foot covers edge e
     std::unordered_set<int64_t> foot_corners_;                    // the lattice corners of those edges
+    std::set<std::pair<int64_t, int64_t>> foot_ring_edges_;       // a face's ring edges (v, w) a foot covers
     Mesh mesh_;
 };
 
 }  // namespace
 
-Mesh meshSceneBeforeLegend(const Scene& scene) {
+Mesh meshScene(const Scene& scene) {
     checkScene(scene);
     if (scene.keptCount() == 0) return {};
     return MeshBuilder(scene).build();
-}
-
-Mesh meshScene(const Scene& scene) {
-    Mesh mesh = meshSceneBeforeLegend(scene);
-    return scene.legend && !mesh.triangles.empty() ? unionWithLegend(mesh, scene) : mesh;
 }
 
 }  // namespace tsf

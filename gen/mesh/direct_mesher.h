@@ -9,7 +9,11 @@
 //   - a bottom face per kept cell when mirrored; a flat bottom is ONE polygon
 //     (the outline of the kept region) with the same sparse interior vertices;
 //   - a vertical wall wherever a neighbour's z interval does not cover this
-//     cell's (only where heights differ; outer walls on the kept region's rim).
+//     cell's (only where heights differ; outer walls on the kept region's rim);
+//   - the bodies that stand against the outer walls (the tactile scale, the
+//     orientation tab, the braille legend's plate): each covers the walls it
+//     touches from 0 to the floor as a neighbour would, and shares their
+//     lattice corners, so no boolean operation joins them.
 // Every corner line is split at every height that meets it, so there are no
 // T-junctions; vertices are identified by lattice id and snapped height, never
 // by comparing floats. The result is closed, 2-manifold, outward-oriented
@@ -25,10 +29,5 @@ namespace tsf {
 /// Scene that breaks the invariants the mesher builds on (gen/model/scene_check.h;
 /// buildScene never makes one) is a tsf::InputError.
 Mesh meshScene(const Scene& scene);
-
-/// The same without the braille legend's plate and dots (the Scene's legend
-/// still shapes the mesh as it is before the union: gen/mesh/legend_join.h
-/// unionWithLegend joins them). For the parts of a multi-part 3MF.
-Mesh meshSceneBeforeLegend(const Scene& scene);
 
 }  // namespace tsf

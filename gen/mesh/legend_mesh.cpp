@@ -4,21 +4,12 @@
 #include <cassert>
 #include <cmath>
 #include <array>
-#include <map>
 #include <numbers>
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include "gen/geometry/polygon_triangulation.h"
 
 namespace tsf {
 namespace {
-
-using K = CGAL::Exact_predicates_exact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<int64_t, K>;
-using Fb = CGAL::Constrained_triangulation_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_intersections_tag>;
 
 double snapUm(double mm) { return std::round(mm * 1000.0) / 1000.0; }
 
@@ -72,67 +63,95 @@ void addDome(Builder& b, const LegendDot& d, const BrailleStandard& st, double h
 
 }  // namespace
 
-Mesh meshLegendPlate(const PlateSpec& s) {
-    assert(s.height_mm > 0 && s.x1_mm > s.x0_mm && s.y1_mm > s.y0_mm);
+PlateBody meshPlateBody(const PlateSpec& s, bool joined) {
+    assert(s.height_mm > 0 && (!s.outline.edges.empty() || (s.x1_mm > s.x0_mm && s.y1_mm > s.y0_mm)));
+    PlateOutline box;
+    if (s.outline.edges.empty()) {
+        box.points = {{s.x0_mm, s.y0_mm, -1}, {s.x1_mm, s.y0_mm, -1}, {s.x1_mm, s.y1_mm, -1}, {s.x0_mm, s.y1_mm, -1}};
+        for (uint32_t k = 0; k < 4; ++k) box.edges.push_back({k, (k + 1) % 4});
+    }
+    const PlateOutline& o = s.outline.edges.empty() ? box : s.outline;
+    PlateBody body;
     Builder b;
-    const double r = s.standard.dot_base_mm / 2, h = s.height_mm;
-
-    Cdt cdt;
-    auto insert = [&cdt](double x, double y) { return cdt.insert(K::Point_2(x, y)); };
-    const Cdt::Vertex_handle corner[4] = {insert(s.x0_mm, s.y0_mm), insert(s.x1_mm, s.y0_mm), insert(s.x1_mm, s.y1_mm),
-                                          insert(s.x0_mm, s.y1_mm)};
-    for (int k = 0; k < 4; ++k) cdt.insert_constraint(corner[k], corner[(k + 1) % 4]);
-    std::vector<std::vector<Cdt::Vertex_handle>> bases;
+    const double h = s.height_mm;
+    const uint32_t n = uint32_t(o.points.size());
+    // Corners of the outline on the bottom (0 .. n-1) and the top (n .. 2n-1).
+    for (const double z : {0.0, h})
+        for (const TabPoint& p : o.points) {
+            b.add(p.x_mm, p.y_mm, z);
+            body.lattice_id.push_back(p.lattice);
+        }
+    std::vector<std::array<uint32_t, 2>> bottom, top;
+    for (const PlateOutline::Edge& e : o.edges) {
+        bottom.push_back({e.a, e.b});
+        top.push_back({e.a + n, e.b + n});
+    }
+    for (const auto& t : triangulateSegments(b.mesh.positions, bottom)) b.tri(t[0], t[2], t[1]);  // facing down
+    // The dots' base octagons are loops of the top: the region inside one is its dome's.
+    std::vector<std::vector<uint32_t>> bases;
     for (const LegendDot& d : s.dots) {
-        std::vector<Cdt::Vertex_handle> ring;
-        for (const Vec3& p : domeBase(d, s.standard, h)) ring.push_back(insert(p.x, p.y));
-        for (int k = 0; k < kDomeSides; ++k) cdt.insert_constraint(ring[size_t(k)], ring[size_t((k + 1) % kDomeSides)]);
+        std::vector<uint32_t> ring;
+        for (const Vec3& p : domeBase(d, s.standard, h)) {
+            ring.push_back(b.add(p.x, p.y, p.z));
+            body.lattice_id.push_back(-1);
+        }
+        for (size_t k = 0; k < ring.size(); ++k) top.push_back({ring[k], ring[(k + 1) % ring.size()]});
         bases.push_back(ring);
     }
-    for (const PlateSegment& e : s.top_edges) cdt.insert_constraint(K::Point_2(e.ax, e.ay), K::Point_2(e.bx, e.by));
-
-    // Top and bottom copies of every triangulation vertex.
-    std::map<Cdt::Vertex_handle, std::pair<uint32_t, uint32_t>> ids;
-    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
-        const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
-        ids[v] = {b.add(x, y, h), b.add(x, y, 0)};
-    }
-    // A face inside a dot's base is the dome's, not the plate top's.
-    auto insideDot = [&](const K::Point_2& c) {
-        const double x = CGAL::to_double(c.x()), y = CGAL::to_double(c.y());
-        for (const LegendDot& d : s.dots)
-            if (std::hypot(x - d.x_mm, y - d.y_mm) < r * std::cos(std::numbers::pi / kDomeSides)) return true;
-        return false;
+    for (const auto& t : triangulateSegments(b.mesh.positions, top)) b.tri(t[0], t[1], t[2]);
+    // The sides: the outline runs with the plate on its left, so the outward
+    // normal of edge a -> b is (b - a) x up. A side that starts above the bed
+    // stands on the pillar below it (a no-data pit). Every corner carries
+    // each height a side meets it at, and each side zips up through the
+    // heights of both its corners, so no corner line has a T-junction.
+    std::vector<double> from(o.edges.size(), 0.0);
+    std::vector<std::vector<std::pair<double, uint32_t>>> column(n);  // per outline point: (z, vertex), by z
+    for (uint32_t v = 0; v < n; ++v) column[v] = {{0.0, v}, {h, v + n}};
+    auto addHeight = [&](uint32_t v, double z) {
+        for (const auto& [zz, id] : column[v])
+            if (zz == z) return;
+        column[v].push_back({z, b.add(o.points[v].x_mm, o.points[v].y_mm, z)});
+        body.lattice_id.push_back(o.points[v].lattice);
+        std::sort(column[v].begin(), column[v].end());
     };
-    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-        const auto a = f->vertex(0), c = f->vertex(1), d = f->vertex(2);  // counter-clockwise
-        b.tri(ids[a].second, ids[d].second, ids[c].second);                // bottom, normal -z
-        if (!insideDot(CGAL::centroid(a->point(), c->point(), d->point())))
-            b.tri(ids[a].first, ids[c].first, ids[d].first);
-    }
-    // Sides: every triangulation edge on the outline, outward.
-    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-        Cdt::Face_handle f = e->first;
-        int i = e->second;
-        if (cdt.is_infinite(f)) {  // look from the finite side
-            const Cdt::Face_handle nb = f->neighbor(i);
-            i = nb->index(f);
-            f = nb;
+    for (size_t k = 0; k < o.edges.size(); ++k) {
+        from[k] = joined && k < s.side_from_mm.size() ? s.side_from_mm[k] : 0.0;
+        if (from[k] > 0 && from[k] < h) {
+            addHeight(o.edges[k].a, from[k]);
+            addHeight(o.edges[k].b, from[k]);
         }
-        if (!cdt.is_infinite(f->neighbor(i))) continue;
-        // The finite face runs along the edge from ccw(i) to cw(i) (counter-clockwise).
-        const auto p = f->vertex(Cdt::ccw(i)), q = f->vertex(Cdt::cw(i));
-        b.tri(ids[p].second, ids[q].second, ids[q].first);
-        b.tri(ids[p].second, ids[q].first, ids[p].first);
     }
-    // Domes on the base octagons.
-    for (size_t n = 0; n < s.dots.size(); ++n) {
-        std::vector<uint32_t> base;
-        for (const auto& v : bases[n]) base.push_back(ids[v].first);
-        addDome(b, s.dots[n], s.standard, h, base);
+    for (size_t k = 0; k < o.edges.size(); ++k) {
+        if (from[k] >= h) continue;
+        std::vector<uint32_t> l, r;
+        for (const auto& [z, id] : column[o.edges[k].a])
+            if (z >= from[k]) l.push_back(id);
+        for (const auto& [z, id] : column[o.edges[k].b])
+            if (z >= from[k]) r.push_back(id);
+        // Advance the side whose next point is lower (left on ties).
+        size_t li = 0, ri = 0;
+        while (li + 1 < l.size() || ri + 1 < r.size()) {
+            const bool left = ri + 1 == r.size() ||
+                              (li + 1 < l.size() && b.mesh.positions[l[li + 1]].z <= b.mesh.positions[r[ri + 1]].z);
+            if (left) {
+                b.tri(l[li], r[ri], l[li + 1]);
+                ++li;
+            } else {
+                b.tri(l[li], r[ri], r[ri + 1]);
+                ++ri;
+            }
+        }
     }
-    return b.mesh;
+    for (size_t k = 0; k < s.dots.size(); ++k) {
+        const size_t before = b.mesh.positions.size();
+        addDome(b, s.dots[k], s.standard, h, bases[k]);
+        body.lattice_id.resize(body.lattice_id.size() + (b.mesh.positions.size() - before), -1);
+    }
+    body.mesh = std::move(b.mesh);
+    return body;
 }
+
+Mesh meshLegendPlate(const PlateSpec& s) { return meshPlateBody(s, /*joined=*/false).mesh; }
 
 Mesh meshLegendDots(const PlateSpec& s) {
     Builder b;

@@ -1,17 +1,16 @@
-// meshLegendPlate: the braille legend as a closed solid: a plate with the
-// legend's domed dots standing on its top, every dot's base sharing its
-// vertices with the plate's top (one piece, no T-junctions).
+// The braille legend as a closed solid: a plate with the legend's domed
+// dots standing on its top, every dot's base sharing its vertices with the
+// plate's top (one piece, no T-junctions).
 //
-// The plate is the box [x0, x1] x [y0, y1] x [0, height] mm. Its top is a
-// constrained Delaunay triangulation (exact kernel) of the box's outline,
-// each dot's base octagon (vertices at 0, 45, ..., 315 degrees) and any
-// extra segments the caller needs as edges of the top (the hexagon edges of
-// the pillars the plate reaches under, so that joining the two meets walls
-// only at lattice corners). The bottom is the same triangulation at z = 0;
-// the sides join them at every vertex on the outline. A dot is a low-poly
+// The plate stands from z = 0 to height_mm on its outline
+// (gen/model/features/legend_plate.h: the plate's box less the pillars in
+// it; without one, the box [x0, x1] x [y0, y1]). Its top is a constrained
+// Delaunay triangulation of the outline and each dot's base octagon
+// (vertices at 0, 45, ..., 315 degrees); the bottom is the outline's at
+// z = 0; the sides stand on every outline edge. A dot is a low-poly
 // spherical cap: the base octagon (diameter dot_base_mm), kDomeRings smaller
 // octagons on the sphere, and an apex dot_height_mm above the plate. Every
-// input position must be on the 1 um grid; the mesh adds no other xy
+// input position must be on the model's xy grid; the mesh adds no other xy
 // position except the dots' rings.
 #pragma once
 
@@ -19,6 +18,7 @@
 #include <vector>
 
 #include "gen/model/features/legend.h"
+#include "gen/model/features/legend_plate.h"
 #include "gen/geometry/mesh.h"
 
 namespace tsf {
@@ -28,18 +28,29 @@ inline constexpr int kDomeRings = 2;
 /// Corners of a dome's base and rings.
 inline constexpr int kDomeSides = 8;
 
-/// A segment in the plane z = const, mm.
-struct PlateSegment {
-    double ax = 0, ay = 0, bx = 0, by = 0;
-};
-
 struct PlateSpec {
     double x0_mm = 0, y0_mm = 0, x1_mm = 0, y1_mm = 0;  ///< the box's footprint
     double height_mm = 0;                              ///< its top, > 0
     std::vector<LegendDot> dots;                       ///< centres, same frame as the box
     BrailleStandard standard = kNlsSpec800;
-    std::vector<PlateSegment> top_edges;               ///< inside the box; they may touch its outline
+    /// The plate's footprint (empty: the box). Its corners are those of the
+    /// plate's top and bottom, in order.
+    PlateOutline outline;
+    /// Per outline edge, with `joined`: where its side starts, mm. 0 is a side
+    /// from the bed; at or above height_mm no side (a pillar's wall stands
+    /// there); between, a pillar lower than the plate (a no-data pit).
+    std::vector<double> side_from_mm;
 };
+
+/// The plate and its dots as a closed solid. `joined`: the sides
+/// side_from_mm leaves out are left open, to be closed by the pillars the
+/// outline stands against (the part of a joined mesh). lattice_id[v] is the
+/// outline point's lattice id a vertex stands on, -1 for the plate's own.
+struct PlateBody {
+    Mesh mesh;
+    std::vector<int64_t> lattice_id;
+};
+PlateBody meshPlateBody(const PlateSpec& spec, bool joined);
 
 /// The plate and its dots as one closed, outward-facing, 2-manifold mesh.
 Mesh meshLegendPlate(const PlateSpec& spec);

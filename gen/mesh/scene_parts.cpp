@@ -42,8 +42,8 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
     std::vector<MeshPart> parts;
     if (scene.keptCount() == 0) return parts;
     // The pillars: the same Scene with every raised face brought down to its
-    // region (the raise is the marks part), meshed before the legend (joined below
-    // without its dots, which are the legend part).
+    // region (the raise is the marks part), with the legend's plate but not
+    // its dots (the legend part).
     Scene level = scene;
     std::vector<const PlanarFace*> raised;
     for (size_t k = 0; k < scene.faces.faces.size(); ++k)
@@ -53,9 +53,8 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
         }
     level.scale.reset();  // the scale is a part of its own, touching the pillars' east walls
     level.marks.tab.reset();  // the tab too, touching their west walls
-    Mesh pillars = meshSceneBeforeLegend(level);
-    if (scene.legend) pillars = unionWithLegend(pillars, scene, /*dots=*/false);
-    parts.push_back({"pillars", std::move(pillars)});
+    if (level.legend) level.legend->layout.dots.clear();
+    parts.push_back({"pillars", meshScene(level)});
 
     // Every raised face (the orientation triangle in the data) or the
     // orientation tab in one part.

@@ -376,7 +376,6 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     }
     placeMarks(s);
     if (s.halves) placeHalves(s);
-    // The legend first: the structural dimples below depend on it.
     placeLegend(s);
     if (params.structural_texture && params.halves)
         s.notes.push_back("structural cells are left level on a model cut into halves (the cut and the pin "
@@ -388,14 +387,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         // it is a value (0 rain is data) and is never dimpled. Not when
         // nothing rises above the floor (the whole model is then such cells).
         std::vector<uint8_t> structural(kept, 0);
-        // The legend's exact join re-triangulates the shared bottom plane with
-        // points off the z grid; beside dimpled tops those can fold once the
-        // file's float coordinates round them, so the two are not combined yet.
         const bool dimples = params.structural_texture && s.cells_nonempty > 0 && !field.moments.empty();
-        if (dimples && s.legend)
-            s.notes.push_back("structural cells are left level on a model with a braille legend (the two are not "
-                              "combined yet): give --no-texture-structural to silence this, or leave out --title");
-        if (dimples && !s.legend)
+        if (dimples)
             for (size_t k = 0; k < kept; ++k) {
                 const size_t idx = size_t(g.index(s.col[k], s.row[k]));
                 structural[k] = s.kind[k] == CellKind::Data && h_units[idx] == 0 && field.moments[idx].n == 0 &&

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "gen/model/features/legend_plate.h"
 #include "gen/model/scene.h"
 #include "gen/util/error.h"
 
@@ -62,16 +63,28 @@ void placeLegend(Scene& s) {
     // The south edge: the line through the upper side corners of row `reach`
     // (it meets hexagon walls only at their corners); the braille begins north
     // of the tips of row 0.
-    l.reach_row = reach;
-    const LatticePoint south = hexCentre(s.grid, 0, reach), north = hexCentre(s.grid, 0, 0);
-    l.plate_south_mm = s.point(LatticePoint{south.i, south.j + 1}, 0).y;
+    const LatticePoint north = hexCentre(s.grid, 0, 0);
     const double tips_mm = s.point(LatticePoint{north.i, north.j + 2}, 0).y;
     l.x0_mm = 0;
     l.y0_mm = tips_mm;
     l.plate_north_mm = snapUm(tips_mm + l.layout.depth_mm);
-    l.plate_east_mm = snapUm(std::max(width, l.layout.width_mm));
+    // On the grid box's east edge (a lattice line, so the plate meets the
+    // eastmost walls at their corners) unless the braille is wider.
+    l.plate_east_mm = l.layout.width_mm <= width + 1e-3 ? width : snapUm(l.layout.width_mm);
     l.plate_top_units = s.floor_units;
-    s.legend = l;
+    // The south edge, pulled north while a wall the plate would stand
+    // against is cut by the notch in the data (a model of few rows).
+    for (;; --reach) {
+        l.reach_row = reach;
+        l.plate_south_mm = s.point(LatticePoint{hexCentre(s.grid, 0, reach).i, hexCentre(s.grid, 0, reach).j + 1}, 0).y;
+        s.legend = l;
+        if (!legendPlateOutline(s).meets_cut) return;
+        if (reach == 0) break;
+    }
+    s.legend.reset();
+    throw InputError("--title/--units: the braille legend's plate would stand against the orientation notch on a model "
+                     "this small (" + std::to_string(s.keptCount()) + (s.keptCount() == 1 ? " cell" : " cells") +
+                     "): give it more cells, or --no-notch, or leave out --title and --units");
 }
 
 }  // namespace tsf
