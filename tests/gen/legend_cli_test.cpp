@@ -105,11 +105,15 @@ TEST(LegendCli, SmallAndOddModelsTakeALegendThatVerifies) {
     test::writeText(dir / "five.csv", "x,y\n0,0\n1,0\n0,1\n1,1\n0.5,0.5\n");
     test::writeText(dir / "grid.csv", "1,2,3,4,5\n5,4,3,2,1\n");
     test::writeText(dir / "one.csv", "x,y\n0,0\n");
+    // Two clusters far apart: the tab finds no place, the notch goes in the
+    // data, and the plate's south edge must stay north of the row it cuts.
+    test::writeText(dir / "clusters.csv", "x,y\n-24.999,32.0019\n-24.999,32.0001\n50.0015,4.00225\n-25.0006,32.0018\n");
     const std::string out = (dir / "o.stl").string();
     for (const std::string args : {"board.csv --title Rain --bins 200", "three.csv --points x=x,y=y --title x",
                                    "five.csv --points x=x,y=y --title x", "grid.csv --units airports --bins 10",
                                    "three.csv --points x=x,y=y --title x --marks-on data",
                                    "one.csv --points x=x,y=y --units mm --marks-on data --no-triangle",
+                                   "clusters.csv --points x=x,y=y --bins 22 --title T --units mm",
                                    "one.csv --points x=x,y=y --units mm --bed 100x100"}) {
         const auto r = test::runTsf("gen " + (dir / args).string() + " -o " + out, dir);
         ASSERT_EQ(r.exit_code, test::kExitOk) << args << "\n" << r.out << r.err;
