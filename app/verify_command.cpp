@@ -29,6 +29,7 @@ struct VerifyCommandOptions {
     bool json = false;
     bool strict = false;
     bool no_printability = false;
+    bool tactile = false;
     double nozzle_mm = kDefaultNozzleMm;
     double layer_mm = kDefaultLayerMm;
     std::string bed;
@@ -107,6 +108,7 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
         vo.bed_mm = {bed.width_mm, bed.depth_mm, bed.height_mm};
     }
     vo.fail_on_warnings = o.strict;
+    vo.tactile = o.tactile;
 
     Mesh reference;
     if (!o.reference.empty()) {
@@ -156,6 +158,7 @@ void addVerifyCommand(CLI::App& app) {
         "  tsf verify model.stl --scene model.stl.scene.json     # ... standing at the data's heights?\n"
         "  tsf verify model.stl --against field.csv --mirror     # the same, rebuilt from the field\n"
         "  tsf verify openscad.stl --reference direct.stl        # the same solid as another mesh?\n"
+        "  tsf verify model.stl --scene model.stl.scene.json --tactile  # ... and readable by hand?\n"
         "  tsf verify parts.3mf                                  # a 3MF of parts (tsf gen --parts): each part\n"
         "                                                        # alone, then touching but never overlapping\n"
         "Exit codes: 0 every check passed, 1 a check failed, 2 bad input.\n"
@@ -185,6 +188,11 @@ void addVerifyCommand(CLI::App& app) {
     cmd->add_option("--bed", opts->bed, "Printable volume WIDTHxDEPTHxHEIGHT, mm (e.g. 220x220x250)")->group(print);
     cmd->add_flag("--strict", opts->strict, "Printability warnings fail the verification")->group(print);
     cmd->add_flag("--no-printability", opts->no_printability, "Skip the printability checks")->group(print);
+    cmd->add_flag("--tactile", opts->tactile,
+                  "Also check the model as a hand reads it: no sharp points or knife edges, no pit or valley a "
+                  "fingertip cannot reach the bottom of, and (with --scene) orientation marks of tactile size "
+                  "(docs/tactile.md)")
+        ->group(print);
 
     auto* out = "Output";
     cmd->add_flag("--json", opts->json, "Print every figure as JSON")->group(out);

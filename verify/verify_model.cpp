@@ -8,6 +8,7 @@
 #include "verify/readback.h"
 #include "verify/attachment_readback.h"
 #include "verify/solid_checks.h"
+#include "verify/tactile.h"
 #include "verify/tilt_readback.h"
 
 namespace tsf {
@@ -41,7 +42,7 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
     // memory at once), the values read back and the printability rays.
     std::unique_ptr<TriangleBvh> caster = std::move(solid.bvh);
     append(report, std::move(solid));
-    if (!caster && (scene || options.printability)) {
+    if (!caster && (scene || options.printability || options.tactile)) {
         caster = std::make_unique<TriangleBvh>(mesh);
         report.stages.push_back({"bvh", caster->buildMs()});
     }
@@ -81,6 +82,12 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
         PrintabilityResult pr = checkPrintability(mesh, closed_oriented, *caster, po);
         report.printability = std::move(pr.figures);
         append(report, std::move(pr));
+    }
+
+    if (options.tactile) {
+        TactileOptions to;
+        to.max_offenders = options.max_offenders;
+        append(report, checkTactile(mesh, scene, *caster, to));
     }
 
     report.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -4,7 +4,8 @@
 //   1. the solid checks (verify/solid_checks.h), always;
 //   2. the values read back against a Scene (verify/readback.h), when a Scene is given;
 //   3. the agreement with a reference mesh (verify/agreement.h), when one is given;
-//   4. the printability warnings (verify/printability.h), unless turned off.
+//   4. the printability warnings (verify/printability.h), unless turned off;
+//   5. the tactile checks (verify/tactile.h), when asked for.
 // and returns one VerifyReport (verify/report.h): report.passed() is the
 // verdict, formatReport() the text for people, toJson() the figures.
 //
@@ -46,6 +47,10 @@ struct VerifyOptions {
     double layer_mm = kDefaultLayerMm;
     std::optional<Vec3> bed_mm;
     bool fail_on_warnings = false;        ///< printability warnings fail the report
+
+    // The model as a hand reads it (verify/tactile.h): sharp points, knife
+    // edges, places a fingertip cannot reach, and with a Scene the marks.
+    bool tactile = false;
 };
 
 /// Verifies `mesh`; `scene` (nullable) is the Scene it was made from, for the

@@ -1,0 +1,134 @@
+// tsf verify --tactile: the model as a hand reads it (verify/tactile.h).
+// A needle, a blade, a pit narrower than a fingertip and a model without
+// orientation marks fail; a plain block and the bundled volcano pass.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+namespace fs = std::filesystem;
+
+// The status of check `id` in `tsf verify --json` output ("" when absent).
+std::string statusOf(const std::string& json_text, const std::string& id) {
+    const nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
+    if (j.is_discarded()) return "";
+    for (const auto& c : j["checks"])
+        if (c["id"] == id) return c["status"].get<std::string>();
+    return "";
+}
+
+int64_t countOf(const std::string& json_text, const std::string& id) {
+    const nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
+    for (const auto& c : j["checks"])
+        if (c["id"] == id) return c["count"].get<int64_t>();
+    return -1;
+}
+
+// A closed box [0, w] x [0, d] x [0, h] as OFF text.
+std::string boxOff(double w, double d, double h) {
+    return "OFF\n8 12 0\n0 0 0\n" + std::to_string(w) + " 0 0\n" + std::to_string(w) + " " + std::to_string(d) + " 0\n0 " +
+           std::to_string(d) + " 0\n0 0 " + std::to_string(h) + "\n" + std::to_string(w) + " 0 " + std::to_string(h) + "\n" +
+           std::to_string(w) + " " + std::to_string(d) + " " + std::to_string(h) + "\n0 " + std::to_string(d) + " " +
+           std::to_string(h) +
+           "\n3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n";
+}
+
+TEST(TactileCli, APlainBlockPasses) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "block.off", boxOff(30, 20, 5));
+    const auto r = test::runTsf("verify " + (dir / "block.off").string() + " --tactile --json", dir);
+    EXPECT_EQ(r.exit_code, test::kExitOk) << r.out;
+    for (const char* id : {"tactile_sharp_points", "tactile_knife_edges", "tactile_finger_reach"})
+        EXPECT_EQ(statusOf(r.out, id), "pass") << id << "\n" << r.out;
+}
+
+// A 10 mm spike on a 0.5 mm square base: a valid solid, and a prick.
+TEST(TactileCli, ANeedleIsASharpPoint) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "needle.off",
+                    "OFF\n5 6 0\n0 0 0\n0.5 0 0\n0.5 0.5 0\n0 0.5 0\n0.25 0.25 10\n"
+                    "3 0 2 1\n3 0 3 2\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
+    const auto plain = test::runTsf("verify " + (dir / "needle.off").string() + " --no-printability", dir);
+    EXPECT_EQ(plain.exit_code, test::kExitOk) << "a valid solid:\n" << plain.out;
+    const auto r = test::runTsf("verify " + (dir / "needle.off").string() + " --tactile --json", dir);
+    EXPECT_EQ(r.exit_code, test::kExitCheckFailed) << r.out;
+    EXPECT_EQ(statusOf(r.out, "tactile_sharp_points"), "fail") << r.out;
+    EXPECT_EQ(countOf(r.out, "tactile_sharp_points"), 1) << "the apex, and only it:\n" << r.out;
+    const auto text = test::runTsf("verify " + (dir / "needle.off").string() + " --tactile", dir);
+    EXPECT_NE(text.out.find("at (0.250, 0.250, 10.000) mm: a point as narrow as a cone of"), std::string::npos) << text.out;
+}
+
+// A wedge 10 mm tall whose vertical edge is 10 degrees: a blade.
+TEST(TactileCli, ABladeIsAKnifeEdge) {
+    const auto dir = test::scratchDir();
+    // The triangle (0, 0) (20, 0) (20, 20 tan 10 deg) extruded from z = 0 to 10.
+    const std::string t = std::to_string(20 * 0.17632698070846498);
+    test::writeText(dir / "wedge.off", "OFF\n6 8 0\n0 0 0\n20 0 0\n20 " + t + " 0\n0 0 10\n20 0 10\n20 " + t +
+                                           " 10\n3 0 2 1\n3 3 4 5\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 0 3\n3 2 3 5\n");
+    const auto r = test::runTsf("verify " + (dir / "wedge.off").string() + " --tactile --json", dir);
+    EXPECT_EQ(r.exit_code, test::kExitCheckFailed) << r.out;
+    EXPECT_EQ(statusOf(r.out, "outward_orientation"), "pass") << r.out;
+    EXPECT_EQ(statusOf(r.out, "tactile_knife_edges"), "fail") << r.out;
+    EXPECT_EQ(countOf(r.out, "tactile_knife_edges"), 1) << "the vertical 10-degree edge:\n" << r.out;
+}
+
+// A pillar 3 mm across, 4 mm lower than the six around it: a pit no
+// fingertip reaches the bottom of. The same pit 1 mm deep passes.
+TEST(TactileCli, APitNarrowerThanAFingertipIsFound) {
+    const auto dir = test::scratchDir();
+    std::string deep, shallow;
+    for (int r = 0; r < 7; ++r) {
+        for (int c = 0; c < 7; ++c) {
+            deep += std::string(c ? "," : "") + (r == 3 && c == 3 ? "6" : "10");
+            shallow += std::string(c ? "," : "") + (r == 3 && c == 3 ? "9" : "10");
+        }
+        deep += "\n";
+        shallow += "\n";
+    }
+    test::writeText(dir / "deep.csv", deep);
+    test::writeText(dir / "shallow.csv", shallow);
+    for (const std::string name : {"deep", "shallow"}) {
+        const std::string model = (dir / (name + ".stl")).string();
+        const auto g = test::runTsf("gen " + (dir / (name + ".csv")).string() + " --cell 3 --height 10 --baseline zero -o " + model, dir);
+        ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+        const auto r = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json", dir);
+        if (name == "deep") {
+            EXPECT_EQ(r.exit_code, test::kExitCheckFailed) << r.out;
+            EXPECT_EQ(statusOf(r.out, "tactile_finger_reach"), "fail") << r.out;
+            EXPECT_EQ(countOf(r.out, "tactile_finger_reach"), 1) << r.out;
+        } else {
+            EXPECT_EQ(statusOf(r.out, "tactile_finger_reach"), "pass") << r.out;
+        }
+    }
+}
+
+// With the sidecar: a model made without marks cannot be oriented by hand.
+TEST(TactileCli, AModelWithoutOrientationMarksFailsWithItsScene) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "v.stl").string();
+    const auto g = test::runTsf("gen " + test::sourcePath("examples/volcano.csv") + " --no-notch --no-triangle -o " + model, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    const auto r = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json", dir);
+    EXPECT_EQ(r.exit_code, test::kExitCheckFailed) << r.out;
+    EXPECT_EQ(statusOf(r.out, "tactile_marks"), "fail") << r.out;
+}
+
+// The bundled volcano's default model reads by hand: every tactile check passes.
+TEST(TactileCli, TheVolcanosDefaultModelPasses) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "v.stl").string();
+    const auto g = test::runTsf("gen " + test::sourcePath("examples/volcano.csv") + " -o " + model, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    const auto r = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json", dir);
+    EXPECT_EQ(r.exit_code, test::kExitOk) << r.out;
+    for (const char* id : {"tactile_sharp_points", "tactile_knife_edges", "tactile_finger_reach", "tactile_marks"})
+        EXPECT_EQ(statusOf(r.out, id), "pass") << id;
+}
+
+}  // namespace
+}  // namespace tsf

@@ -1,0 +1,399 @@
+#include "verify/tactile.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <thread>
+#include <unordered_map>
+
+#include "gen/model/scene.h"
+#include "gen/util/number_format.h"
+#include "verify/triangle_bvh.h"
+
+namespace tsf {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Vec3 cross(const Vec3& a, const Vec3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+// Keeps the `keep` offenders with the smallest amount, smallest first.
+void keepWorst(std::vector<Offender>& worst, size_t keep, bool smallest_first) {
+    std::sort(worst.begin(), worst.end(), [&](const Offender& a, const Offender& b) {
+        return smallest_first ? a.amount < b.amount : a.amount > b.amount;
+    });
+    if (worst.size() > keep) worst.resize(keep);
+}
+
+// The interior dihedral angle (radians, in (0, 2 pi)) at every edge of a
+// closed, consistently oriented 2-manifold mesh, keyed by its directed edge
+// (a, b) of the triangle that has it; false when the mesh is not one.
+bool dihedralAngles(const Mesh& m, std::unordered_map<uint64_t, double>& angle) {
+    std::unordered_map<uint64_t, uint32_t> tri_of;  // directed edge -> triangle
+    tri_of.reserve(m.triangles.size() * 3);
+    auto key = [](uint32_t a, uint32_t b) { return uint64_t(a) << 32 | b; };
+    for (uint32_t t = 0; t < m.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            if (!tri_of.emplace(key(m.triangles[t][size_t(k)], m.triangles[t][size_t((k + 1) % 3)]), t).second) return false;
+    for (const auto& [k, t] : tri_of) {
+        const uint32_t a = uint32_t(k >> 32), b = uint32_t(k & 0xffffffffu);
+        if (a > b) continue;  // each edge once
+        const auto other = tri_of.find(key(b, a));
+        if (other == tri_of.end()) return false;
+        const auto& t1 = m.triangles[t];
+        const auto& t2 = m.triangles[other->second];
+        const Vec3 n1 = cross(sub(m.positions[t1[1]], m.positions[t1[0]]), sub(m.positions[t1[2]], m.positions[t1[0]]));
+        const Vec3 n2 = cross(sub(m.positions[t2[1]], m.positions[t2[0]]), sub(m.positions[t2[2]], m.positions[t2[0]]));
+        const double l1 = norm(n1), l2 = norm(n2);
+        if (l1 == 0 || l2 == 0) continue;  // a degenerate triangle: the solid checks report it
+        uint32_t apex2 = t2[0];
+        for (const uint32_t v : t2)
+            if (v != a && v != b) apex2 = v;
+        const double c = std::clamp(dot(n1, n2) / (l1 * l2), -1.0, 1.0);
+        const double phi = std::acos(c);
+        // Convex when the other triangle's apex lies behind this one's plane.
+        const bool convex = dot(n1, sub(m.positions[apex2], m.positions[a])) < 0;
+        angle[key(a, b)] = convex ? kPi - phi : kPi + phi;
+    }
+    return true;
+}
+
+// Sharp points and knife edges: both read the interior dihedral angles.
+void checkPointsAndEdges(const Mesh& m, const TactileOptions& o, TactileResult& r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Check points{"tactile_sharp_points", "no sharp points on the touched surface"};
+    Check edges{"tactile_knife_edges", "no knife edges on the touched surface"};
+    points.unit = "deg";
+    edges.unit = "deg";
+    std::unordered_map<uint64_t, double> angle;
+    if (m.triangles.empty() || !dihedralAngles(m, angle)) {
+        for (Check* c : {&points, &edges}) {
+            c->status = CheckStatus::Skipped;
+            c->note = "skipped: needs a closed, manifold, consistently oriented mesh";
+        }
+    } else {
+        double bed = std::numeric_limits<double>::infinity();
+        for (const Vec3& p : m.positions) bed = std::min(bed, p.z);
+        auto onBed = [&](uint32_t v) { return m.positions[v].z <= bed; };
+        // A vertex's material fills the solid angle sum(dihedrals) - (n - 2) pi
+        // (the area of its link, a spherical polygon whose angles are the
+        // dihedral angles of its n edges).
+        std::vector<double> sum(m.positions.size(), 0.0);
+        std::vector<uint32_t> count(m.positions.size(), 0);
+        const double knife = kKnifeEdgeDeg * kPi / 180;
+        double sharpest_edge = 180;
+        for (const auto& [k, theta] : angle) {
+            const uint32_t a = uint32_t(k >> 32), b = uint32_t(k & 0xffffffffu);
+            sum[a] += theta;
+            sum[b] += theta;
+            ++count[a];
+            ++count[b];
+            if (onBed(a) && onBed(b)) continue;
+            sharpest_edge = std::min(sharpest_edge, theta * 180 / kPi);
+            if (theta < knife) {
+                ++edges.count;
+                const Vec3 mid{(m.positions[a].x + m.positions[b].x) / 2, (m.positions[a].y + m.positions[b].y) / 2,
+                               (m.positions[a].z + m.positions[b].z) / 2};
+                edges.worst.push_back({mid, theta * 180 / kPi,
+                                       "faces meet at " + formatFixed(theta * 180 / kPi, 1) + " degrees along " +
+                                           formatFixed(norm(sub(m.positions[a], m.positions[b])), 2) + " mm"});
+            }
+        }
+        const double half = kSharpPointHalfAngleDeg * kPi / 180;
+        const double limit_sr = 2 * kPi * (1 - std::cos(half));
+        double sharpest_point = 360;
+        for (uint32_t v = 0; v < m.positions.size(); ++v) {
+            if (count[v] < 3 || onBed(v)) continue;
+            const double omega = sum[v] - double(count[v] - 2) * kPi;
+            // As the half-angle of the cone of that solid angle, degrees.
+            const double cone = std::acos(std::clamp(1 - omega / (2 * kPi), -1.0, 1.0)) * 180 / kPi;
+            sharpest_point = std::min(sharpest_point, cone);
+            if (omega < limit_sr) {
+                ++points.count;
+                points.worst.push_back({m.positions[v], cone,
+                                        "a point as narrow as a cone of " + formatFixed(cone, 1) + " degrees (half-angle)"});
+            }
+        }
+        keepWorst(points.worst, o.max_offenders, true);
+        keepWorst(edges.worst, o.max_offenders, true);
+        points.status = points.count ? CheckStatus::Fail : CheckStatus::Pass;
+        edges.status = edges.count ? CheckStatus::Fail : CheckStatus::Pass;
+        points.note = "narrowest point a cone of " + formatFixed(std::min(sharpest_point, 180.0), 1) +
+                      " degrees (half-angle); limit " + formatFixed(kSharpPointHalfAngleDeg, 0) + " degrees";
+        edges.note = "sharpest convex edge " + formatFixed(sharpest_edge, 1) + " degrees; limit " + formatFixed(kKnifeEdgeDeg, 0) +
+                     " degrees";
+    }
+    const double ms = msSince(t0);
+    for (Check* c : {&points, &edges}) {
+        c->time_ms = ms;
+        c->stage = "tactile_angles";
+        r.checks.push_back(std::move(*c));
+    }
+    r.stages.push_back({"tactile_angles", ms});
+}
+
+// The top surface sampled on a grid from above; -inf where a ray meets nothing.
+struct HeightMap {
+    double x0 = 0, y0 = 0, step = 0.5;
+    int nx = 0, ny = 0;
+    std::vector<double> z;
+    double at(int i, int j) const { return z[size_t(j) * size_t(nx) + size_t(i)]; }
+};
+
+// Runs fn(row) for every row on the verifier's worker threads.
+template <class Fn>
+void forRows(int rows, Fn fn) {
+    const unsigned workers = TriangleBvh::workerCount(0);
+    std::vector<std::thread> pool;
+    for (unsigned w = 1; w < workers; ++w)
+        pool.emplace_back([&, w] {
+            for (int j = int(w); j < rows; j += int(workers)) fn(j);
+        });
+    for (int j = 0; j < rows; j += int(workers)) fn(j);
+    for (std::thread& t : pool) t.join();
+}
+
+// Where a ball of radius r lowered from above onto the surface can touch:
+// the surface closed by the ball (the lowest each ball centre can go, then
+// the lowest point of the balls above each sample). The table around the
+// model (no hit) is at `table`.
+std::vector<double> reachedBy(const HeightMap& h, double r, double table) {
+    struct Offset {
+        int di, dj;
+        double rise;
+    };
+    std::vector<Offset> disc;
+    const int n = int(std::ceil(r / h.step));
+    for (int dj = -n; dj <= n; ++dj)
+        for (int di = -n; di <= n; ++di) {
+            const double d2 = (di * h.step) * (di * h.step) + (dj * h.step) * (dj * h.step);
+            if (d2 <= r * r) disc.push_back({di, dj, std::sqrt(r * r - d2)});
+        }
+    auto height = [&](int i, int j) {
+        if (i < 0 || j < 0 || i >= h.nx || j >= h.ny) return table;
+        const double z = h.at(i, j);
+        return std::isfinite(z) ? z : table;
+    };
+    std::vector<double> centre(h.z.size()), reach(h.z.size());
+    forRows(h.ny, [&](int j) {
+        for (int i = 0; i < h.nx; ++i) {
+            double c = -std::numeric_limits<double>::infinity();
+            for (const Offset& o : disc) c = std::max(c, height(i + o.di, j + o.dj) + o.rise);
+            centre[size_t(j) * size_t(h.nx) + size_t(i)] = c;
+        }
+    });
+    forRows(h.ny, [&](int j) {
+        for (int i = 0; i < h.nx; ++i) {
+            double lowest = std::numeric_limits<double>::infinity();
+            for (const Offset& o : disc) {
+                const int ci = i + o.di, cj = j + o.dj;
+                // A centre beyond the sampled area stands on the table.
+                const double c = ci < 0 || cj < 0 || ci >= h.nx || cj >= h.ny ? table + r : centre[size_t(cj) * size_t(h.nx) + size_t(ci)];
+                lowest = std::min(lowest, c - o.rise);
+            }
+            reach[size_t(j) * size_t(h.nx) + size_t(i)] = lowest;
+        }
+    });
+    return reach;
+}
+
+struct Unreached {
+    int64_t places = 0;   // connected groups of samples left unreached
+    double deepest = 0;   // mm
+    std::vector<Offender> worst;
+};
+
+Unreached unreachedPlaces(const HeightMap& h, const std::vector<double>& reach) {
+    Unreached u;
+    std::vector<int32_t> label(h.z.size(), -1);
+    for (int j = 0; j < h.ny; ++j)
+        for (int i = 0; i < h.nx; ++i) {
+            const size_t s = size_t(j) * size_t(h.nx) + size_t(i);
+            const double z = h.z[s];
+            if (!std::isfinite(z) || label[s] >= 0 || reach[s] - z <= kUnreachedDepthMm) continue;
+            // Flood the group of deep samples around it. It is a place the
+            // fingertip cannot read only when no sample beside it, reached,
+            // continues its surface (lower, or higher by less than the
+            // depth): otherwise it is the foot of a wall the fingertip reads
+            // a little further out.
+            Offender worst{{0, 0, 0}, 0, ""};
+            int64_t samples = 0;
+            bool escapes = false;
+            std::vector<size_t> stack{s};
+            label[s] = int32_t(u.places);
+            while (!stack.empty()) {
+                const size_t p = stack.back();
+                stack.pop_back();
+                ++samples;
+                const int pi = int(p % size_t(h.nx)), pj = int(p / size_t(h.nx));
+                const double depth = reach[p] - h.z[p];
+                if (depth > worst.amount)
+                    worst = {{h.x0 + pi * h.step, h.y0 + pj * h.step, h.z[p]}, depth, ""};
+                for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                    const int qi = pi + di, qj = pj + dj;
+                    if (qi < 0 || qj < 0 || qi >= h.nx || qj >= h.ny) continue;
+                    const size_t q = size_t(qj) * size_t(h.nx) + size_t(qi);
+                    if (label[q] >= 0 || !std::isfinite(h.z[q])) continue;
+                    if (reach[q] - h.z[q] <= kUnreachedDepthMm) {
+                        escapes = escapes || h.z[q] <= h.z[p] + kUnreachedDepthMm;
+                        continue;
+                    }
+                    label[q] = int32_t(u.places);
+                    stack.push_back(q);
+                }
+            }
+            if (escapes) continue;
+            ++u.places;
+            u.deepest = std::max(u.deepest, worst.amount);
+            worst.detail = "the fingertip stops " + formatFixed(worst.amount, 1) + " mm above the surface, over " +
+                           formatFixed(double(samples) * h.step * h.step, 1) + " mm^2";
+            u.worst.push_back(worst);
+        }
+    return u;
+}
+
+void checkFingerReach(const Mesh& m, const TriangleBvh& caster, const TactileOptions& o, TactileResult& r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Check c{"tactile_finger_reach", "a fingertip reaches the bottom of every pit and valley"};
+    c.unit = "mm";
+    const Bounds b = meshBounds(m);
+    if (m.triangles.empty() || !std::isfinite(b.min.z)) {
+        c.status = CheckStatus::Skipped;
+        c.note = "skipped: an empty mesh";
+    } else {
+        HeightMap h;
+        const double margin = kAdultFingertipRadiusMm;
+        const double w = b.max.x - b.min.x + 2 * margin, d = b.max.y - b.min.y + 2 * margin;
+        // At most about a million samples (a 500 mm model at 0.5 mm).
+        h.step = std::max(o.sample_mm, std::sqrt(w * d / 1.0e6));
+        h.x0 = b.min.x - margin;
+        h.y0 = b.min.y - margin;
+        h.nx = int(std::ceil(w / h.step)) + 1;
+        h.ny = int(std::ceil(d / h.step)) + 1;
+        h.z.assign(size_t(h.nx) * size_t(h.ny), -std::numeric_limits<double>::infinity());
+        const double above = b.max.z + 1.0;
+        forRows(h.ny, [&](int j) {
+            for (int i = 0; i < h.nx; ++i) {
+                const auto hit = caster.firstHit({h.x0 + i * h.step, h.y0 + j * h.step, above}, {0, 0, -1});
+                if (hit) h.z[size_t(j) * size_t(h.nx) + size_t(i)] = hit->point_mm.z;
+            }
+        });
+        const Unreached adult = unreachedPlaces(h, reachedBy(h, kAdultFingertipRadiusMm, b.min.z));
+        const Unreached child = unreachedPlaces(h, reachedBy(h, kChildFingertipRadiusMm, b.min.z));
+        c.count = adult.places;
+        c.worst = adult.worst;
+        keepWorst(c.worst, o.max_offenders, false);
+        c.status = adult.places ? CheckStatus::Fail : CheckStatus::Pass;
+        c.note = "an adult's fingertip (" + formatFixed(2 * kAdultFingertipRadiusMm, 0) + " mm) leaves " +
+                 std::to_string(adult.places) + (adult.places == 1 ? " place" : " places") + " more than " +
+                 formatFixed(kUnreachedDepthMm, 1) + " mm deep unreached (deepest " + formatFixed(adult.deepest, 1) +
+                 " mm), a child's (" + formatFixed(2 * kChildFingertipRadiusMm, 0) + " mm) " + std::to_string(child.places) +
+                 " (deepest " + formatFixed(child.deepest, 1) + " mm); top sampled every " + formatSignificant(h.step, 2) + " mm";
+    }
+    c.time_ms = msSince(t0);
+    c.stage = "tactile_reach";
+    r.stages.push_back({"tactile_reach", c.time_ms});
+    r.checks.push_back(std::move(c));
+}
+
+void checkMarks(const Scene& s, const TactileOptions& o, TactileResult& r) {
+    Check c{"tactile_marks", "the orientation marks are there, of a size a fingertip recognises"};
+    c.unit = "mm";
+    double notch = 0, long_leg = 0, short_leg = 0;
+    bool has_notch = false, has_triangle = false;
+    Vec3 at{0, 0, s.zMm(s.floor_units)};
+    if (s.marks.tab) {
+        const OrientationTab& t = *s.marks.tab;
+        has_notch = t.has_notch;
+        notch = t.notch_depth_mm;
+        has_triangle = t.has_triangle;
+        if (has_triangle) {
+            const double ex = std::hypot(t.triangle[1].x_mm - t.triangle[0].x_mm, t.triangle[1].y_mm - t.triangle[0].y_mm);
+            const double ny = std::hypot(t.triangle[2].x_mm - t.triangle[0].x_mm, t.triangle[2].y_mm - t.triangle[0].y_mm);
+            long_leg = std::max(ex, ny);
+            short_leg = std::min(ex, ny);
+        }
+        at = {t.x_west_mm, t.y_south_mm, at.z};
+    } else {
+        if (s.marks.notch) {
+            has_notch = true;
+            notch = s.marks.notch->depth_mm;
+        }
+        if (s.marks.triangle) {
+            has_triangle = true;
+            long_leg = std::max(s.marks.triangle->leg_x_mm, s.marks.triangle->leg_y_mm);
+            short_leg = std::min(s.marks.triangle->leg_x_mm, s.marks.triangle->leg_y_mm);
+        }
+    }
+    auto miss = [&](const std::string& what, double amount) {
+        ++c.count;
+        c.worst.push_back({at, amount, what});
+    };
+    if (!has_notch && !has_triangle) miss("no orientation mark: the reader cannot tell which corner is the origin", 0);
+    if (has_notch && notch < kMinNotchDepthMm)
+        miss("the notch is " + formatFixed(notch, 2) + " mm deep, " + formatFixed(kMinNotchDepthMm - notch, 2) +
+                 " mm short of " + formatFixed(kMinNotchDepthMm, 1) + " mm",
+             notch);
+    if (has_triangle && short_leg < kMinTriangleLegMm)
+        miss("the triangle's shorter leg is " + formatFixed(short_leg, 1) + " mm, under " + formatFixed(kMinTriangleLegMm, 2) + " mm",
+             short_leg);
+    if (has_triangle && long_leg < 12.7)
+        miss("the triangle's longer leg is " + formatFixed(long_leg, 1) + " mm, under 12.7 mm", long_leg);
+    if (c.worst.size() > o.max_offenders) c.worst.resize(o.max_offenders);
+    c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
+    c.note = std::string(has_notch ? "notch " + formatFixed(notch, 1) + " mm deep" : "no notch") + ", " +
+             (has_triangle ? "triangle legs " + formatFixed(long_leg, 1) + " x " + formatFixed(short_leg, 1) + " mm" : "no triangle") +
+             (s.marks.tab ? " on the orientation tab" : " in the data");
+    c.stage = "tactile_marks";
+    r.checks.push_back(std::move(c));
+}
+
+}  // namespace
+
+const std::vector<TactileThreshold>& tactileThresholds() {
+    static const std::vector<TactileThreshold> table = {
+        {"tactile_sharp_points", "narrowest point of the touched surface (cone half-angle)", kSharpPointHalfAngleDeg, "deg",
+         "tsf's rule: a needle or spike reads as a prick, not a shape; a 20-degree cone (a sharpened pencil's tip is "
+         "about 10) passes the corners of hexagons (120), of the tab's triangle (31) and of the scale (90)"},
+        {"tactile_knife_edges", "smallest angle between two faces along a convex edge", kKnifeEdgeDeg, "deg",
+         "tsf's rule: a blade is felt as a cut; a top tilted steeper than 60 degrees meets its wall under 30"},
+        {"tactile_finger_reach", "adult fingertip radius", kAdultFingertipRadiusMm, "mm",
+         "half the width of an adult index fingertip (about 16 mm across the pad)"},
+        {"tactile_finger_reach", "child fingertip radius", kChildFingertipRadiusMm, "mm",
+         "index finger diameter 9-22 mm, mean 15 mm, in children aged 3-10 (Ann. Anat. 192(3):156-161, 2010); the "
+         "fingertip is narrower than the finger: 11 mm is taken"},
+        {"tactile_finger_reach", "depth below a rigid fingertip that a pressing finger still reaches", kUnreachedDepthMm, "mm",
+         "the fingertip's pulp yields about 2 mm under a light press of 1 N (Serina, Mote, Rempel, J. Biomech. "
+         "30(10):1035-1040, 1997); deeper, the bottom is not felt and its value not read"},
+        {"tactile_marks", "notch depth", kMinNotchDepthMm, "mm",
+         "1/8 in, the smallest space between two elements a reader perceives (L. Hasty, Design principles for "
+         "tactile graphics, '1/8th inch rule')"},
+        {"tactile_marks", "triangle's shorter leg", kMinTriangleLegMm, "mm",
+         "1/4 in, the smallest component read on its own (L. Hasty, ibid.); APH: symbols closer than 1/4 in are hard "
+         "to tell apart"},
+        {"tactile_marks", "triangle's longer leg", 12.7, "mm",
+         "1/2 in: shapes with sides under 1/2 in may not be recognisable (APH, Guidelines for Design of Tactile "
+         "Graphics, 1997)"},
+    };
+    return table;
+}
+
+TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TriangleBvh& caster, const TactileOptions& options) {
+    TactileResult r;
+    checkPointsAndEdges(mesh, options, r);
+    checkFingerReach(mesh, caster, options, r);
+    if (scene) checkMarks(*scene, options, r);
+    return r;
+}
+
+}  // namespace tsf

@@ -1,0 +1,74 @@
+// The model as a hand reads it: checks against tactile-graphics numbers.
+//
+// The solid checks prove a mesh is a printable solid; these ask whether a
+// fingertip can read it (tsf verify --tactile, docs/tactile.md):
+//   - tactile_sharp_points: a vertex of the touched surface whose material
+//     fills less solid angle than a cone of kSharpPointHalfAngleDeg (a
+//     needle, the spike of an over-tilted top);
+//   - tactile_knife_edges: a convex edge of the touched surface whose two
+//     faces meet at less than kKnifeEdgeDeg (a blade);
+//   - tactile_finger_reach: places a fingertip cannot reach the bottom of: a
+//     ball of the fingertip's radius lowered over the top surface stops more
+//     than kUnreachedDepthMm above it (narrow pits, empty bins between tall
+//     pillars), for an adult's fingertip (a failure) and a child's (stated);
+//   - tactile_marks (with a Scene): the orientation marks are there and of a
+//     size a fingertip recognises (notch depth, triangle legs).
+// The thresholds live in kTactileThresholds, each with its source; the
+// report says which a model misses and by how much.
+//
+// Units: millimetres and degrees, model frame (x east, y north, z up). The
+// touched surface is every face not lying on the bed (the lowest z).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "gen/geometry/mesh.h"
+#include "verify/report.h"
+
+namespace tsf {
+
+struct Scene;
+class TriangleBvh;
+
+/// One threshold of the tactile checks and where its number comes from.
+struct TactileThreshold {
+    const char* id;      ///< the check it belongs to
+    const char* what;    ///< what it bounds
+    double value;
+    const char* unit;
+    const char* source;  ///< the publication or the reasoning behind the number
+};
+
+/// Narrowest cone (half-angle, degrees) a point of the touched surface may be.
+inline constexpr double kSharpPointHalfAngleDeg = 20.0;
+/// Smallest angle (degrees) two faces may meet at along a convex edge.
+inline constexpr double kKnifeEdgeDeg = 30.0;
+/// Fingertip radii (mm): half the width of an adult's and a young child's index fingertip.
+inline constexpr double kAdultFingertipRadiusMm = 8.0;
+inline constexpr double kChildFingertipRadiusMm = 5.5;
+/// Depth (mm) of a place the fingertip may leave unreached.
+inline constexpr double kUnreachedDepthMm = 2.0;
+/// Smallest orientation marks (mm): the notch's depth and the triangle's shorter leg.
+inline constexpr double kMinNotchDepthMm = 3.2;
+inline constexpr double kMinTriangleLegMm = 6.35;
+
+/// Every threshold above with its source (docs/tactile.md prints the same table).
+const std::vector<TactileThreshold>& tactileThresholds();
+
+struct TactileOptions {
+    size_t max_offenders = 10;
+    double sample_mm = 0.5;  ///< spacing of the top surface's height samples (coarsened on very large models)
+};
+
+struct TactileResult {
+    std::vector<Check> checks;
+    std::vector<Stage> stages;
+};
+
+/// Runs the tactile checks on `mesh` (closed or not: a check that needs a
+/// closed, oriented mesh says so and is skipped). `scene` (nullable) adds
+/// the marks check.
+TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TriangleBvh& caster, const TactileOptions& options);
+
+}  // namespace tsf
