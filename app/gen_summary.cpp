@@ -218,8 +218,15 @@ std::string formatSceneFacts(const Scene& s) {
         const BrailleStandard& st = l.layout.standard;
         o << "  legend    braille (" << s.params.legend.table << ") on a plate " << formatFixed(l.plate_east_mm, 1) << " x "
           << formatFixed(l.plate_north_mm - l.plate_south_mm, 1) << " mm north of the pillars, " << l.layout.dots.size()
-          << " dots " << formatFixed(st.dot_base_mm, 2) << " mm across, " << formatFixed(st.dot_height_mm, 2) << " mm high ("
-          << st.name << ")\n";
+          << " dots " << formatFixed(st.dot_base_mm, 2) << " mm across, " << formatFixed(st.dot_height_mm, 2) << " mm high (";
+        if (s.params.legend.layer_mm > 0)
+            o << formatSignificant(st.dot_height_mm / s.params.legend.layer_mm, 3) << " whole layers of "
+              << formatSignificant(s.params.legend.layer_mm, 3) << " mm; ";
+        o << st.name << ")\n";
+        if (s.params.legend.layer_mm <= 0)
+            o << "  note      braille dots " << formatFixed(st.dot_height_mm, 2) << " mm high print "
+              << formatFixed(printedDotHeightMm(st.dot_height_mm, 0.2), 2)
+              << " mm at 0.2 mm layers: give --layer (your printer's layer height) and the dots are made whole layers\n";
         for (size_t k = 0; k < l.layout.text.size(); ++k)
             o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
     }

@@ -358,6 +358,42 @@ void checkMarks(const Scene& s, const TactileOptions& o, TactileResult& r) {
     r.checks.push_back(std::move(c));
 }
 
+void checkBraille(const Scene& s, const TactileOptions& o, TactileResult& r) {
+    Check c{"tactile_braille", "the braille dots print inside the standards' range"};
+    c.unit = "mm";
+    const SceneLegend& l = *s.legend;
+    const BrailleStandard& st = l.layout.standard;
+    const double printed = printedDotHeightMm(st.dot_height_mm, o.layer_mm);
+    const Vec3 at = l.layout.dots.empty()
+                        ? Vec3{0, 0, 0}
+                        : Vec3{l.layout.dots[0].x_mm + l.x0_mm, l.layout.dots[0].y_mm + l.y0_mm, s.zMm(l.plate_top_units)};
+    const std::string layers = " at " + formatSignificant(o.layer_mm, 3) + " mm layers";
+    if (printed < kMinPrintedDotHeightMm - 1e-9) {
+        ++c.count;
+        c.worst.push_back({at, printed,
+                           "dots " + formatFixed(st.dot_height_mm, 2) + " mm high print " + formatFixed(printed, 2) + " mm" +
+                               layers + ", under the " + formatFixed(kMinPrintedDotHeightMm, 2) +
+                               " mm a reader expects: make the model with --layer " + formatSignificant(o.layer_mm, 3)});
+    } else if (printed > kMaxBrailleDotHeightMm + 1e-9) {
+        ++c.count;
+        c.worst.push_back({at, printed,
+                           "dots print " + formatFixed(printed, 2) + " mm high" + layers + ", over the " +
+                               formatFixed(kMaxBrailleDotHeightMm, 2) + " mm of the highest standard"});
+    }
+    if (st.dot_base_mm < kMinDotBaseNozzles * o.nozzle_mm) {
+        ++c.count;
+        c.worst.push_back({at, st.dot_base_mm,
+                           "dots " + formatFixed(st.dot_base_mm, 2) + " mm across are under two widths of the " +
+                               formatSignificant(o.nozzle_mm, 3) + " mm nozzle: they print as blobs"});
+    }
+    c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
+    c.note = std::to_string(l.layout.dots.size()) + " dots " + formatFixed(st.dot_base_mm, 2) + " mm across, " +
+             formatFixed(st.dot_height_mm, 2) + " mm high, printing " + formatFixed(printed, 2) + " mm" + layers +
+             " (range " + formatFixed(kMinPrintedDotHeightMm, 2) + "-" + formatFixed(kMaxBrailleDotHeightMm, 2) + " mm)";
+    c.stage = "tactile_marks";
+    r.checks.push_back(std::move(c));
+}
+
 }  // namespace
 
 const std::vector<TactileThreshold>& tactileThresholds() {
@@ -384,6 +420,12 @@ const std::vector<TactileThreshold>& tactileThresholds() {
         {"tactile_marks", "triangle's longer leg", 12.7, "mm",
          "1/2 in: shapes with sides under 1/2 in may not be recognisable (APH, Guidelines for Design of Tactile "
          "Graphics, 1997)"},
+        {"tactile_braille", "lowest printed dot", kMinPrintedDotHeightMm, "mm",
+         "0.019 in, the dot height of NLS Specification 800 (2008) 3.2 (paper braille)"},
+        {"tactile_braille", "highest printed dot", kMaxBrailleDotHeightMm, "mm",
+         "0.037 in, the top of the dot height range for tactile signs (2010 ADA Standards 703.3.1)"},
+        {"tactile_braille", "narrowest dot base, in nozzle widths", kMinDotBaseNozzles, "",
+         "tsf's rule: two perimeters side by side make a dome; fewer, a blob"},
     };
     return table;
 }
@@ -393,6 +435,7 @@ TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TriangleB
     checkPointsAndEdges(mesh, options, r);
     checkFingerReach(mesh, caster, options, r);
     if (scene) checkMarks(*scene, options, r);
+    if (scene && scene->legend) checkBraille(*scene, options, r);
     return r;
 }
 

@@ -12,7 +12,10 @@
 //     than kUnreachedDepthMm above it (narrow pits, empty bins between tall
 //     pillars), for an adult's fingertip (a failure) and a child's (stated);
 //   - tactile_marks (with a Scene): the orientation marks are there and of a
-//     size a fingertip recognises (notch depth, triangle legs).
+//     size a fingertip recognises (notch depth, triangle legs);
+//   - tactile_braille (with a Scene that has a legend): the dots as they will
+//     print, their height rounded to whole layers and their base against the
+//     nozzle, inside the braille standards' range.
 // The thresholds live in kTactileThresholds, each with its source; the
 // report says which a model misses and by how much.
 //
@@ -52,6 +55,12 @@ inline constexpr double kUnreachedDepthMm = 2.0;
 /// Smallest orientation marks (mm): the notch's depth and the triangle's shorter leg.
 inline constexpr double kMinNotchDepthMm = 3.2;
 inline constexpr double kMinTriangleLegMm = 6.35;
+/// Lowest printed braille dot, mm: NLS Specification 800's dot height (paper
+/// braille; lower dots are read poorly). The highest is kMaxBrailleDotHeightMm
+/// (gen/model/features/legend.h).
+inline constexpr double kMinPrintedDotHeightMm = 0.48;
+/// Narrowest dot base, in nozzle widths: two perimeters make a dome.
+inline constexpr double kMinDotBaseNozzles = 2.0;
 
 /// Every threshold above with its source (docs/tactile.md prints the same table).
 const std::vector<TactileThreshold>& tactileThresholds();
@@ -59,6 +68,8 @@ const std::vector<TactileThreshold>& tactileThresholds();
 struct TactileOptions {
     size_t max_offenders = 10;
     double sample_mm = 0.5;  ///< spacing of the top surface's height samples (coarsened on very large models)
+    double layer_mm = 0.2;   ///< the printer's layer: braille dots print a whole number of layers high
+    double nozzle_mm = 0.4;  ///< the printer's nozzle: a dot narrower than two widths prints as a blob
 };
 
 struct TactileResult {

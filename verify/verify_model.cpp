@@ -87,6 +87,8 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
     if (options.tactile) {
         TactileOptions to;
         to.max_offenders = options.max_offenders;
+        to.layer_mm = options.layer_mm;
+        to.nozzle_mm = options.nozzle_mm;
         append(report, checkTactile(mesh, scene, *caster, to));
     }
 

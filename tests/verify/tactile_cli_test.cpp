@@ -130,5 +130,30 @@ TEST(TactileCli, TheVolcanosDefaultModelPasses) {
         EXPECT_EQ(statusOf(r.out, id), "pass") << id;
 }
 
+// Braille as it will print: 0.48 mm dots print 0.4 mm at 0.2 mm layers
+// (fail), 0.5 mm at 0.1 mm layers (pass); made with --layer 0.2 they are
+// three whole layers, 0.6 mm (pass).
+TEST(TactileCli, BrailleDotsAreCheckedAsTheyWillPrint) {
+    const auto dir = test::scratchDir();
+    const std::string plain = (dir / "plain.stl").string(), layered = (dir / "layered.stl").string();
+    const std::string field = test::sourcePath("examples/volcano.csv");
+    const auto g = test::runTsf("gen " + field + " --title Volcano -o " + plain, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    EXPECT_NE(g.out.find("0.48 mm high"), std::string::npos) << g.out;
+    EXPECT_NE(g.out.find("print 0.40 mm at 0.2 mm layers"), std::string::npos) << g.out;
+    const auto at02 = test::runTsf("verify " + plain + " --scene " + plain + ".scene.json --tactile --json", dir);
+    EXPECT_EQ(at02.exit_code, test::kExitCheckFailed) << at02.out;
+    EXPECT_EQ(statusOf(at02.out, "tactile_braille"), "fail") << at02.out;
+    const auto at01 = test::runTsf("verify " + plain + " --scene " + plain + ".scene.json --tactile --layer 0.1 --json", dir);
+    EXPECT_EQ(statusOf(at01.out, "tactile_braille"), "pass") << at01.out;
+
+    const auto l = test::runTsf("gen " + field + " --title Volcano --layer 0.2 -o " + layered, dir);
+    ASSERT_EQ(l.exit_code, test::kExitOk) << l.out << l.err;
+    EXPECT_NE(l.out.find("0.60 mm high (3 whole layers of 0.2 mm"), std::string::npos) << l.out;
+    const auto v = test::runTsf("verify " + layered + " --scene " + layered + ".scene.json --tactile --json", dir);
+    EXPECT_EQ(v.exit_code, test::kExitOk) << v.out;
+    EXPECT_EQ(statusOf(v.out, "tactile_braille"), "pass") << v.out;
+}
+
 }  // namespace
 }  // namespace tsf

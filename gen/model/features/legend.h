@@ -33,6 +33,15 @@ struct BrailleStandard {
 /// (nominal values).
 inline constexpr BrailleStandard kNlsSpec800{"NLS Specification 800 (2008) 3.2", 1.44, 0.48, 2.34, 6.2, 10.0};
 
+/// The highest dot a reader expects, mm: 0.037 in, the top of the range for
+/// tactile signs (2010 ADA Standards for Accessible Design, 703.3.1).
+inline constexpr double kMaxBrailleDotHeightMm = 0.94;
+
+/// The dot height (mm) printed at `layer_mm` layers: the slicer keeps a
+/// layer where the dot reaches past its middle, so the height rounds to
+/// whole layers. layer_mm <= 0 gives the height as it is.
+double printedDotHeightMm(double dot_height_mm, double layer_mm);
+
 struct LegendParams {
     std::vector<std::string> lines;            ///< text, UTF-8; empty lines are skipped
     std::string table = "en-us-g1.ctb";        ///< liblouis table (braille.h)
@@ -59,6 +68,10 @@ struct LegendRequest {
     std::string title;                      ///< first line, UTF-8
     std::string units;                      ///< after the value range ("0 to 27 airports")
     std::string table = "en-us-g1.ctb";     ///< liblouis table
+    /// The printer's layer (mm, 0: not known): the dots are made a whole
+    /// number of layers high, the fewest that reach the standard's height
+    /// (a 0.48 mm dot prints 0.4 mm at 0.2 mm layers; 0.6 mm is three).
+    double layer_mm = 0;
     bool wanted() const { return !title.empty() || !units.empty(); }
 };
 

@@ -34,6 +34,12 @@ void placeLegend(Scene& s) {
     if (!rq.title.empty()) p.lines.push_back(rq.title);
     if (std::isfinite(lo)) p.lines.push_back(legendRangeText(lo, hi, rq.units));
     p.table = rq.table;
+    if (rq.layer_mm > 0) {
+        // Whole layers: the fewest that reach the standard's height, unless
+        // that is higher than a reader expects (a layer thicker than the range).
+        const double layers = std::ceil(p.standard.dot_height_mm / rq.layer_mm - 1e-9);
+        if (layers * rq.layer_mm <= kMaxBrailleDotHeightMm) p.standard.dot_height_mm = std::max(1.0, layers) * rq.layer_mm;
+    }
     const double width = gridWidth(s.grid, s.pitch_mm);
     const BrailleStandard& st = p.standard;
     p.max_cells = std::max(1, int(std::floor((width - 2 * p.margin_mm - st.dot_base_mm - st.dot_pitch_mm) /
