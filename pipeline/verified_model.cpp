@@ -61,9 +61,14 @@ VerifiedModel makeVerifiedModel(const Scene& scene, const ModelRequest& rq,
     if (rq.verify) {
         say(progress, "verifying");
         VerifyOptions vo = rq.verify_options;
+        // The model as a hand reads it, as warnings (docs/tactile.md).
+        vo.tactile = true;
+        vo.tactile_as_warnings = true;
+        vo.tactile_sample_mm = 1.0;  // a sixteenth of the work of 0.5 mm; pits narrower than 3 mm still span samples
         if (!rq.verify_full && m.mesh.triangleCount() > kQuickVerifyTriangles) {
             vo.self_intersections = false;
             vo.printability = false;
+            vo.tactile = false;
             m.quick = true;
         }
         // In parts, the file holds the parts, checked as float32 below; the

@@ -88,8 +88,16 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
         TactileOptions to;
         to.max_offenders = options.max_offenders;
         to.layer_mm = options.layer_mm;
+        to.sample_mm = options.tactile_sample_mm;
         to.nozzle_mm = options.nozzle_mm;
-        append(report, checkTactile(mesh, scene, *caster, to));
+        TactileResult tr = checkTactile(mesh, scene, *caster, to);
+        if (options.tactile_as_warnings)
+            for (Check& c : tr.checks)
+                if (c.status == CheckStatus::Fail) {
+                    c.status = CheckStatus::Warn;
+                    c.note += " (tsf verify --tactile lists the places)";
+                }
+        append(report, std::move(tr));
     }
 
     report.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -51,6 +51,8 @@ struct VerifyOptions {
     // The model as a hand reads it (verify/tactile.h): sharp points, knife
     // edges, places a fingertip cannot reach, and with a Scene the marks.
     bool tactile = false;
+    bool tactile_as_warnings = false;     ///< a tactile check that fails is a warning (tsf gen's self-check)
+    double tactile_sample_mm = 0.5;       ///< spacing of the top surface's samples for the fingertip's reach
 };
 
 /// Verifies `mesh`; `scene` (nullable) is the Scene it was made from, for the
