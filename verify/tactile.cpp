@@ -9,6 +9,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
 #include "verify/triangle_bvh.h"
@@ -358,6 +359,83 @@ void checkMarks(const Scene& s, const TactileOptions& o, TactileResult& r) {
     r.checks.push_back(std::move(c));
 }
 
+// The top of kept cell k at its centre, mm.
+double centreTopMm(const Scene& s, size_t k) { return s.zMm(centreTop(s, k)); }
+
+void checkPillars(const Scene& s, const TactileOptions& o, TactileResult& r) {
+    // A regular hexagon w across flats (side a = w / sqrt 3) bends like a
+    // beam whose weaker section modulus is I / c = (5 sqrt(3) / 16 a^4) / a
+    // = 5 / 48 w^3: a push F at height h stresses its foot F h / S, and it
+    // breaks above the interlayer strength, so it may stand free up to
+    // strength * S / F.
+    const double w = s.pitch_mm;
+    const double section_mm3 = 5.0 / 48.0 * w * w * w;
+    const double free_max = kPrintedPlaInterlayerMpa * section_mm3 / kHandPushN;
+    Check c{"tactile_slender_pillars", "no pillar slender enough to break under a hand"};
+    c.unit = "mm";
+    const double floor_mm = s.zMm(s.params.bottom == Bottom::Mirrored ? 0 : s.floor_units);
+    double freest = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        // It stands free above its highest neighbour (the floor without one).
+        double around = floor_mm;
+        for (int e = 0; e < kHexCorners; ++e) {
+            const int32_t n = s.keptNeighbour(k, e);
+            if (n >= 0) around = std::max(around, centreTopMm(s, size_t(n)));
+        }
+        const double free = centreTopMm(s, k) - around;
+        freest = std::max(freest, free);
+        if (free > free_max) {
+            ++c.count;
+            const Vec3 at = s.point(hexCentre(s.grid, s.col[k], s.row[k]), centreTop(s, k));
+            c.worst.push_back({at, free,
+                               "cell (col " + std::to_string(s.col[k]) + ", row " + std::to_string(s.row[k]) + ") stands " +
+                                   formatFixed(free, 1) + " mm above its neighbours, " + formatFixed(w, 2) +
+                                   " mm across: more than " + formatFixed(free_max, 1) + " mm breaks under " +
+                                   formatSignificant(kHandPushN, 3) + " N"});
+        }
+    }
+    keepWorst(c.worst, o.max_offenders, false);
+    c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
+    c.note = "highest free stand " + formatFixed(freest, 1) + " mm; a " + formatFixed(w, 2) + " mm pillar stands up to " +
+             formatFixed(free_max, 1) + " mm free under a " + formatSignificant(kHandPushN, 3) + " N push";
+    c.stage = "tactile_marks";
+    r.checks.push_back(std::move(c));
+}
+
+void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r) {
+    Check c{"tactile_height_steps", "neighbouring values at least a printed layer apart"};
+    c.unit = "mm";
+    int64_t pairs = 0, close = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        if (s.kind[k] != CellKind::Data) continue;
+        for (int e = 0; e < 3; ++e) {  // east, north-east, north-west: each pair once
+            const int32_t n = s.keptNeighbour(k, e);
+            if (n < 0 || s.kind[size_t(n)] != CellKind::Data || s.value[k] == s.value[size_t(n)]) continue;
+            ++pairs;
+            const double dz = std::fabs(centreTopMm(s, k) - centreTopMm(s, size_t(n)));
+            if (dz < o.layer_mm - 1e-9) {
+                ++close;
+                if (c.worst.size() < 4 * o.max_offenders)
+                    c.worst.push_back({s.point(hexCentre(s.grid, s.col[k], s.row[k]), centreTop(s, k)), dz,
+                                       "cell (col " + std::to_string(s.col[k]) + ", row " + std::to_string(s.row[k]) +
+                                           ") and its neighbour differ by " + formatSignificant(dz, 3) + " mm"});
+            }
+        }
+    }
+    keepWorst(c.worst, o.max_offenders, true);
+    c.count = close;
+    const double share = pairs ? 100.0 * double(close) / double(pairs) : 0.0;
+    c.status = close ? CheckStatus::Warn : CheckStatus::Pass;
+    c.note = formatFixed(share, 1) + " % of " + std::to_string(pairs) + " neighbouring pairs of different values differ by less than a " +
+             formatSignificant(o.layer_mm, 3) + " mm layer (they print the same, or a layer apart by rounding)" +
+             (!close                               ? std::string()
+              : s.z_snap_mm >= o.layer_mm - 1e-9 ? std::string(": a larger --height spreads them over more layers")
+                                                   : ": make the model with --layer " + formatSignificant(o.layer_mm, 3) +
+                                                         " (whole layers), or a larger --height");
+    c.stage = "tactile_marks";
+    r.checks.push_back(std::move(c));
+}
+
 void checkBraille(const Scene& s, const TactileOptions& o, TactileResult& r) {
     Check c{"tactile_braille", "the braille dots print inside the standards' range"};
     c.unit = "mm";
@@ -420,6 +498,11 @@ const std::vector<TactileThreshold>& tactileThresholds() {
         {"tactile_marks", "triangle's longer leg", 12.7, "mm",
          "1/2 in: shapes with sides under 1/2 in may not be recognisable (APH, Guidelines for Design of Tactile "
          "Graphics, 1997)"},
+        {"tactile_slender_pillars", "push at a pillar's top", kHandPushN, "N",
+         "tsf's rule: a hand leaning on the model, several times the 0.5-2 N fingers use to explore"},
+        {"tactile_slender_pillars", "strength of printed PLA across its layers", kPrintedPlaInterlayerMpa, "MPa",
+         "the low end of the interlayer strengths measured for FDM-printed PLA (Chacon et al., Materials & Design "
+         "124:143-157, 2017: upright specimens, 20-50 MPa)"},
         {"tactile_braille", "lowest printed dot", kMinPrintedDotHeightMm, "mm",
          "0.019 in, the dot height of NLS Specification 800 (2008) 3.2 (paper braille)"},
         {"tactile_braille", "highest printed dot", kMaxBrailleDotHeightMm, "mm",
@@ -434,7 +517,11 @@ TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TriangleB
     TactileResult r;
     checkPointsAndEdges(mesh, options, r);
     checkFingerReach(mesh, caster, options, r);
-    if (scene) checkMarks(*scene, options, r);
+    if (scene) {
+        checkMarks(*scene, options, r);
+        checkPillars(*scene, options, r);
+        checkHeightSteps(*scene, options, r);
+    }
     if (scene && scene->legend) checkBraille(*scene, options, r);
     return r;
 }

@@ -13,6 +13,11 @@
 //     pillars), for an adult's fingertip (a failure) and a child's (stated);
 //   - tactile_marks (with a Scene): the orientation marks are there and of a
 //     size a fingertip recognises (notch depth, triangle legs);
+//   - tactile_slender_pillars (with a Scene): a pillar standing free above
+//     its neighbours far enough for a hand's push at its top to break it;
+//   - tactile_height_steps (with a Scene, a warning): neighbouring pillars
+//     whose heights differ by less than one printed layer (they print the
+//     same, or a layer apart by rounding);
 //   - tactile_braille (with a Scene that has a legend): the dots as they will
 //     print, their height rounded to whole layers and their base against the
 //     nozzle, inside the braille standards' range.
@@ -61,6 +66,12 @@ inline constexpr double kMinTriangleLegMm = 6.35;
 inline constexpr double kMinPrintedDotHeightMm = 0.48;
 /// Narrowest dot base, in nozzle widths: two perimeters make a dome.
 inline constexpr double kMinDotBaseNozzles = 2.0;
+/// A push at a pillar's top (N) it must stand: a hand leaning on the model,
+/// several times the 0.5-2 N of exploring touch.
+inline constexpr double kHandPushN = 10.0;
+/// Strength of printed PLA across its layers (MPa = N/mm^2), where a pillar
+/// pushed sideways breaks.
+inline constexpr double kPrintedPlaInterlayerMpa = 20.0;
 
 /// Every threshold above with its source (docs/tactile.md prints the same table).
 const std::vector<TactileThreshold>& tactileThresholds();

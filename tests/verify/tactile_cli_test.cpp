@@ -133,6 +133,36 @@ TEST(TactileCli, TheVolcanosDefaultModelPasses) {
         EXPECT_EQ(statusOf(r.out, id), "pass") << id;
 }
 
+// A pillar 3 mm across standing 20 mm above its neighbours breaks under a
+// hand; 8 mm across it stands. Neighbouring values closer than a layer are
+// a warning, not a failure.
+TEST(TactileCli, SlenderPillarsFailAndCloseHeightsWarn) {
+    const auto dir = test::scratchDir();
+    std::string spike;
+    for (int r = 0; r < 5; ++r) {
+        for (int c = 0; c < 5; ++c) spike += std::string(c ? "," : "") + (r == 2 && c == 2 ? "20" : "0");
+        spike += "\n";
+    }
+    test::writeText(dir / "spike.csv", spike);
+    for (const std::string cell : {"3", "8"}) {
+        const std::string model = (dir / ("spike" + cell + ".stl")).string();
+        const auto g = test::runTsf("gen " + (dir / "spike.csv").string() + " --cell " + cell + " --cull none -o " + model, dir);
+        ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+        const auto r = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json", dir);
+        EXPECT_EQ(statusOf(r.out, "tactile_slender_pillars"), cell == "3" ? "fail" : "pass") << cell << "\n" << r.out;
+        if (cell == "3") {
+            EXPECT_EQ(countOf(r.out, "tactile_slender_pillars"), 1) << r.out;
+        }
+    }
+    // The volcano at 0.001 mm steps: many neighbours less than a 0.2 mm layer apart; a warning.
+    const std::string v = (dir / "v.stl").string();
+    ASSERT_EQ(test::runTsf("gen " + test::sourcePath("examples/volcano.csv") + " -o " + v, dir).exit_code, test::kExitOk);
+    const auto r = test::runTsf("verify " + v + " --scene " + v + ".scene.json --tactile --json", dir);
+    EXPECT_EQ(r.exit_code, test::kExitOk) << r.out;
+    EXPECT_EQ(statusOf(r.out, "tactile_height_steps"), "warn") << r.out;
+    EXPECT_GT(countOf(r.out, "tactile_height_steps"), 0) << r.out;
+}
+
 // Braille as it will print: 0.48 mm dots print 0.4 mm at 0.2 mm layers
 // (fail), 0.5 mm at 0.1 mm layers (pass); made with --layer 0.2 they are
 // three whole layers, 0.6 mm (pass).
