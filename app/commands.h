@@ -29,5 +29,6 @@ void addRenderCommand(CLI::App& app);  // render_command.cpp
 void addVerifyCommand(CLI::App& app);  // verify_command.cpp
 void addFeelCommand(CLI::App& app);    // feel_command.cpp
 void addPrintCheckCommand(CLI::App& app);  // print_check_command.cpp
+void addCouponCommand(CLI::App& app);  // coupon_command.cpp
 
 }  // namespace tsf::cli

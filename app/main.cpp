@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
     tsf::cli::addVerifyCommand(app);
     tsf::cli::addFeelCommand(app);
     tsf::cli::addPrintCheckCommand(app);
+    tsf::cli::addCouponCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {

@@ -142,5 +142,18 @@ TEST(PrintCheckCli, MultiPart3mfIsOneObjectToPrusaSlicerAndGenPrintChecksIt) {
     EXPECT_NE(info.output.find("number_of_facets = " + std::to_string(triangles)), std::string::npos) << info.output;
 }
 
+// tsf coupon's piece prints in under an hour at 0.2 mm layers (PrusaSlicer's estimate).
+TEST(PrintCheckCli, TheCalibrationCouponPrintsInUnderAnHour) {
+    REQUIRE_SLICER();
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "coupon.stl").string();
+    const test::RunResult c = test::runTsf("coupon -o " + model, dir);
+    ASSERT_EQ(c.exit_code, 0) << c.out << c.err;
+    const nlohmann::json j = printCheck(model, dir);
+    ASSERT_TRUE(j.contains("print_time_s")) << j.dump();
+    EXPECT_LT(j["print_time_s"].get<double>(), 3600.0) << j.dump();
+    EXPECT_GT(j["print_time_s"].get<double>(), 600.0) << "a real piece, not an empty one: " << j.dump();
+}
+
 }  // namespace
 }  // namespace tsf
