@@ -36,23 +36,30 @@ void keepWorst(std::vector<Offender>& worst, size_t keep, bool smallest_first) {
     if (worst.size() > keep) worst.resize(keep);
 }
 
-// The interior dihedral angle (radians, in (0, 2 pi)) at every edge of a
-// closed, consistently oriented 2-manifold mesh, keyed by its directed edge
-// (a, b) of the triangle that has it; false when the mesh is not one.
-bool dihedralAngles(const Mesh& m, std::unordered_map<uint64_t, double>& angle) {
-    std::unordered_map<uint64_t, uint32_t> tri_of;  // directed edge -> triangle
+// The interior dihedral angle (radians, in (0, 2 pi)) at every edge that
+// two consistently oriented triangles share, keyed by its directed edge
+// (a, b) with a < b; edges on a border, or shared by more than two
+// triangles, get none (incident[v] counts every edge at v, so a vertex can
+// tell whether all of its edges were measured). False for an empty mesh.
+bool dihedralAngles(const Mesh& m, std::unordered_map<uint64_t, double>& angle, std::vector<uint32_t>& incident) {
+    std::unordered_map<uint64_t, int64_t> tri_of;  // directed edge -> triangle, -1 when two triangles have it
     tri_of.reserve(m.triangles.size() * 3);
     auto key = [](uint32_t a, uint32_t b) { return uint64_t(a) << 32 | b; };
     for (uint32_t t = 0; t < m.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k)
-            if (!tri_of.emplace(key(m.triangles[t][size_t(k)], m.triangles[t][size_t((k + 1) % 3)]), t).second) return false;
+        for (int k = 0; k < 3; ++k) {
+            const auto [it, fresh] = tri_of.emplace(key(m.triangles[t][size_t(k)], m.triangles[t][size_t((k + 1) % 3)]), t);
+            if (!fresh) it->second = -1;
+        }
+    incident.assign(m.positions.size(), 0);
     for (const auto& [k, t] : tri_of) {
         const uint32_t a = uint32_t(k >> 32), b = uint32_t(k & 0xffffffffu);
-        if (a > b) continue;  // each edge once
         const auto other = tri_of.find(key(b, a));
-        if (other == tri_of.end()) return false;
-        const auto& t1 = m.triangles[t];
-        const auto& t2 = m.triangles[other->second];
+        if (a > b && other != tri_of.end()) continue;  // each edge once
+        ++incident[a];
+        ++incident[b];
+        if (other == tri_of.end() || t < 0 || other->second < 0) continue;
+        const auto& t1 = m.triangles[size_t(t)];
+        const auto& t2 = m.triangles[size_t(other->second)];
         const Vec3 n1 = cross(sub(m.positions[t1[1]], m.positions[t1[0]]), sub(m.positions[t1[2]], m.positions[t1[0]]));
         const Vec3 n2 = cross(sub(m.positions[t2[1]], m.positions[t2[0]]), sub(m.positions[t2[2]], m.positions[t2[0]]));
         const double l1 = norm(n1), l2 = norm(n2);
@@ -66,7 +73,7 @@ bool dihedralAngles(const Mesh& m, std::unordered_map<uint64_t, double>& angle) 
         const bool convex = dot(n1, sub(m.positions[apex2], m.positions[a])) < 0;
         angle[key(a, b)] = convex ? kPi - phi : kPi + phi;
     }
-    return true;
+    return !m.triangles.empty();
 }
 
 // Sharp points and knife edges: both read the interior dihedral angles.
@@ -77,10 +84,11 @@ void checkPointsAndEdges(const Mesh& m, const TactileOptions& o, TactileResult& 
     points.unit = "deg";
     edges.unit = "deg";
     std::unordered_map<uint64_t, double> angle;
-    if (m.triangles.empty() || !dihedralAngles(m, angle)) {
+    std::vector<uint32_t> incident;
+    if (!dihedralAngles(m, angle, incident)) {
         for (Check* c : {&points, &edges}) {
             c->status = CheckStatus::Skipped;
-            c->note = "skipped: needs a closed, manifold, consistently oriented mesh";
+            c->note = "skipped: an empty mesh";
         }
     } else {
         double bed = std::numeric_limits<double>::infinity();
@@ -114,7 +122,8 @@ void checkPointsAndEdges(const Mesh& m, const TactileOptions& o, TactileResult& 
         const double limit_sr = 2 * kPi * (1 - std::cos(half));
         double sharpest_point = 360;
         for (uint32_t v = 0; v < m.positions.size(); ++v) {
-            if (count[v] < 3 || onBed(v)) continue;
+            // Only where every edge of the vertex was measured (its link is a closed polygon).
+            if (count[v] < 3 || count[v] != incident[v] || onBed(v)) continue;
             const double omega = sum[v] - double(count[v] - 2) * kPi;
             // As the half-angle of the cone of that solid angle, degrees.
             const double cone = std::acos(std::clamp(1 - omega / (2 * kPi), -1.0, 1.0)) * 180 / kPi;
@@ -457,6 +466,12 @@ void checkBraille(const Scene& s, const TactileOptions& o, TactileResult& r) {
         c.worst.push_back({at, printed,
                            "dots print " + formatFixed(printed, 2) + " mm high" + layers + ", over the " +
                                formatFixed(kMaxBrailleDotHeightMm, 2) + " mm of the highest standard"});
+    }
+    if (st.dot_pitch_mm - st.dot_base_mm < o.nozzle_mm) {
+        ++c.count;
+        c.worst.push_back({at, st.dot_pitch_mm - st.dot_base_mm,
+                           "the gap between dots, " + formatFixed(st.dot_pitch_mm - st.dot_base_mm, 2) +
+                               " mm, is under one width of the " + formatSignificant(o.nozzle_mm, 3) + " mm nozzle: neighbouring dots merge"});
     }
     if (st.dot_base_mm < kMinDotBaseNozzles * o.nozzle_mm) {
         ++c.count;

@@ -61,6 +61,17 @@ TEST(TactileCli, ANeedleIsASharpPoint) {
     EXPECT_EQ(countOf(r.out, "tactile_sharp_points"), 1) << "the apex, and only it:\n" << r.out;
     const auto text = test::runTsf("verify " + (dir / "needle.off").string() + " --tactile", dir);
     EXPECT_NE(text.out.find("at (0.250, 0.250, 10.000) mm: a point as narrow as a cone of"), std::string::npos) << text.out;
+
+    // The same spike, open at its foot, standing on a 0.5 mm plate: not a
+    // closed solid, and its tip is still found.
+    test::writeText(dir / "on_plate.off",
+                                              "OFF\n13 16 0\n0 0 0\n20 0 0\n20 20 0\n0 20 0\n0 0 0.5\n20 0 0.5\n20 20 0.5\n0 20 0.5\n"
+                                              "9.75 9.75 0.5\n10.25 9.75 0.5\n10.25 10.25 0.5\n9.75 10.25 0.5\n10 10 10.5\n"
+                                              "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n"
+                                              "3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n3 8 9 12\n3 9 10 12\n3 10 11 12\n3 11 8 12\n");
+    const auto on_plate = test::runTsf("verify " + (dir / "on_plate.off").string() + " --tactile --json", dir);
+    EXPECT_EQ(on_plate.exit_code, test::kExitCheckFailed) << on_plate.out;
+    EXPECT_EQ(statusOf(on_plate.out, "tactile_sharp_points"), "fail") << on_plate.out;
 }
 
 // A wedge 10 mm tall whose vertical edge is 10 degrees: a blade.
