@@ -50,7 +50,8 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
-#include <set>
+#include <map>
+#include <optional>
 #include <thread>
 #include <unordered_map>
 #include <unordered_set>
@@ -113,31 +114,28 @@ public:
                     auto& at = faces_at_[id];
                     if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
                 }
-        // The feet that stand against pillar walls from 0 to the floor: the
-        // tactile scale's (east), the orientation tab (west) and the legend's
-        // plate (north).
-        std::vector<std::pair<int32_t, int>> feet = scaleTouchedEdges(s_);
-        if (s_.marks.tab) feet.insert(feet.end(), s_.marks.tab->touched.begin(), s_.marks.tab->touched.end());
-        // The plate stands against a hexagon drawn by a face (a mark in the
-        // data) along the face's ring, whose points may split the edge.
-        const PlateOutline plate = legendPlateOutline(s_);
-        for (const PlateOutline::Edge& e : plate.edges) {
-            if (e.cell < 0) continue;
-            if (!drawnByFace(e.cell)) {
-                feet.push_back({e.cell, e.side});
-                continue;
-            }
-            const int64_t v = plate.points[e.b].lattice, w = plate.points[e.a].lattice;  // the face's direction
-            foot_ring_edges_.insert({v, w});
-            foot_corners_.insert(v);
-            foot_corners_.insert(w);
-        }
-        if (!feet.empty()) {
-            foot_edges_.assign(s_.keptCount(), 0);
-            for (const auto& [k, e] : feet) {
-                foot_edges_[size_t(k)] |= uint8_t(1u << e);
-                for (const int corner : {e, (e + 1) % kHexCorners})
-                    foot_corners_.insert(hexCornerId(g_, s_.col[size_t(k)], s_.row[size_t(k)], corner));
+        // The feet that stand against pillar walls, each over its z span:
+        // the tactile scale's (east, 0 to the floor), the orientation tab
+        // (west) and the legend's plate (north), the last two from the bed
+        // to the floor, or in a mirrored model's band.
+        for (const auto& [k, e] : scaleTouchedEdges(s_)) addFoot(k, e, {0, s_.floor_units});
+        if (s_.marks.tab)
+            for (const auto& [k, e] : s_.marks.tab->touched) addFoot(k, e, {s_.marks.tab->bottom_units, s_.marks.tab->top_units});
+        if (s_.legend) {
+            const Span band{s_.legend->plate_bottom_units, s_.legend->plate_top_units};
+            // The plate stands against a hexagon drawn by a face (a mark in the
+            // data) along the face's ring, whose points may split the edge.
+            const PlateOutline plate = legendPlateOutline(s_);
+            for (const PlateOutline::Edge& e : plate.edges) {
+                if (e.cell < 0) continue;
+                if (!drawnByFace(e.cell)) {
+                    addFoot(e.cell, e.side, band);
+                    continue;
+                }
+                const int64_t v = plate.points[e.b].lattice, w = plate.points[e.a].lattice;  // the face's direction
+                foot_ring_edges_[{v, w}] = band;
+                addFootHeights(v, band);
+                addFootHeights(w, band);
             }
         }
     }
@@ -274,12 +272,15 @@ private:
                 if (!flat_ || rim) out[n++] = shaped ? cornerBottomAt(s_, size_t(c), id) : s_.bottom[size_t(c)];
             }
             if (flat_ && bottom_point_[size_t(id)]) out[n++] = 0;
-            // A foot (the scale's, the tab) meets the wall of a contact cell at its
-            // bottom and top (flat: 0, which the rim has, and the floor).
-            if (!foot_corners_.empty() && foot_corners_.count(id)) {
-                out[n++] = footSpan().bottom;
-                out[n++] = footSpan().top;
-            }
+            // A foot (the scale's, the tab, the plate) meets the wall of a
+            // contact cell at its bottom and top (flat: 0, which the rim has,
+            // and the floor).
+            if (!foot_heights_.empty())
+                if (const auto f = foot_heights_.find(id); f != foot_heights_.end())
+                    for (const int64_t z : f->second) {
+                        assert(n < kMaxHeightsPerVertex && "too many heights meet at a vertex");
+                        out[n++] = z;
+                    }
         } else {
             rim = rim_.count(id) > 0;
         }
@@ -429,8 +430,8 @@ private:
             const int e1 = (e + 1) % kHexCorners;
             const bool has = other >= 0;
             const Span none{0, 0};
-            if (other < 0 && footAcross(k, e)) {
-                addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), true, footSpan(), footSpan());
+            if (const auto foot = other < 0 ? footAcross(k, e) : std::nullopt) {
+                addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), true, *foot, *foot);
                 continue;
             }
             addWalls(id[e], id[e1], cornerSpan(k, e), cornerSpan(k, e1), has, has ? spanAt(size_t(other), id[e]) : none,
@@ -465,8 +466,8 @@ private:
             const bool has = other >= 0;
             const int64_t v = id[e], w = id[(e + 1) % kHexCorners];
             const Span none{0, 0};
-            if (!has && footAcross(k, e)) {
-                addWalls(v, w, {bottom, top}, {bottom, top}, true, footSpan(), footSpan());
+            if (const auto foot = has ? std::nullopt : footAcross(k, e)) {
+                addWalls(v, w, {bottom, top}, {bottom, top}, true, *foot, *foot);
                 continue;
             }
             // A level cell beside a tilted one meets its corners where they are.
@@ -494,10 +495,11 @@ private:
                     ov = spanAt(size_t(a.index), v);
                     ow = spanAt(size_t(a.index), w);
                 }
-                if (a.kind == Across::Kind::Outside && foot_ring_edges_.count({v, w})) {
-                    addWalls(v, w, {bottom, top}, {bottom, top}, true, footSpan(), footSpan());
-                    continue;
-                }
+                if (a.kind == Across::Kind::Outside && !foot_ring_edges_.empty())
+                    if (const auto foot = foot_ring_edges_.find({v, w}); foot != foot_ring_edges_.end()) {
+                        addWalls(v, w, {bottom, top}, {bottom, top}, true, foot->second, foot->second);
+                        continue;
+                    }
                 addWalls(v, w, {bottom, top}, {bottom, top}, a.kind != Across::Kind::Outside, ov, ow);
             }
         }
@@ -659,13 +661,24 @@ private:
         }
     }
 
-    // A foot lies across edge e of kept cell k (the scale's, gen/model/features/scale.h:
-    // scaleTouchedEdges; the tab's, OrientationTab::touched), as a neighbour from 0 to the floor would.
-    bool footAcross(size_t k, int e) const { return !foot_edges_.empty() && (foot_edges_[k] >> e & 1u); }
-    // Flat, every foot spans 0 to the floor; a mirrored model's only foot is
-    // the tab, over the band its pillars share (gen/model/features/orientation_tab.h).
-    Span footSpan() const {
-        return s_.marks.tab ? Span{s_.marks.tab->bottom_units, s_.marks.tab->top_units} : Span{0, s_.floor_units};
+    // The span of the foot across edge e of kept cell k (the scale's,
+    // gen/model/features/scale.h: scaleTouchedEdges; the tab's,
+    // OrientationTab::touched; the legend plate's, legend_plate.h), which
+    // covers the wall there as a neighbour of that span would; none if no foot.
+    std::optional<Span> footAcross(size_t k, int e) const {
+        if (foot_span_.empty()) return std::nullopt;
+        const auto f = foot_span_.find(int64_t(k) * kHexCorners + e);
+        return f == foot_span_.end() ? std::nullopt : std::optional<Span>(f->second);
+    }
+    void addFootHeights(int64_t id, const Span& span) {
+        auto& h = foot_heights_[id];
+        for (const int64_t z : {span.bottom, span.top})
+            if (std::find(h.begin(), h.end(), z) == h.end()) h.push_back(z);
+    }
+    void addFoot(int32_t k, int e, const Span& span) {
+        foot_span_[int64_t(k) * kHexCorners + e] = span;
+        for (const int corner : {e, (e + 1) % kHexCorners})
+            addFootHeights(hexCornerId(g_, s_.col[size_t(k)], s_.row[size_t(k)], corner), span);
     }
 
     // A foot's own body (the scale, the tab); where it stands on a lattice
@@ -721,9 +734,9 @@ private:
     std::vector<uint8_t> dropped_top_;      // lattice id -> 1: inside a merged top, no vertex
     std::vector<uint8_t> bottom_point_;     // flat, lattice id -> 1: an interior vertex of the bottom
     std::vector<int64_t> bottom_points_;    // flat: those ids
-    std::vector<uint8_t> foot_edges_;                             // per kept cell: bit e = a foot covers edge e
-    std::unordered_set<int64_t> foot_corners_;                    // the lattice corners of those edges
-    std::set<std::pair<int64_t, int64_t>> foot_ring_edges_;       // a face's ring edges (v, w) a foot covers
+    std::unordered_map<int64_t, Span> foot_span_;                  // kept cell * 6 + edge -> the foot across it
+    std::unordered_map<int64_t, std::vector<int64_t>> foot_heights_;  // lattice corner of a foot -> its heights
+    std::map<std::pair<int64_t, int64_t>, Span> foot_ring_edges_;  // a face's ring edge (v, w) -> the foot across it
     Mesh mesh_;
 };
 

@@ -21,14 +21,17 @@ PlateSpec plateSpec(const Scene& s, bool dots) {
     spec.x1_mm = l.plate_east_mm;
     spec.y1_mm = l.plate_north_mm;
     spec.height_mm = s.zMm(l.plate_top_units);
+    spec.bottom_mm = s.zMm(l.plate_bottom_units);
     spec.standard = l.layout.standard;
     if (dots)
         for (const LegendDot& d : l.layout.dots) spec.dots.push_back({snapUm(d.x_mm + l.x0_mm), snapUm(d.y_mm + l.y0_mm)});
     spec.outline = legendPlateOutline(s);
     // Against a pillar at or above the plate's top no side; against a lower
-    // one (a no-data pit) the side from its top up.
+    // one (a no-data pit) the side from its top up. (A mirrored model's plate
+    // lies in a band every pillar it stands against holds.)
     for (const PlateOutline::Edge& e : spec.outline.edges)
-        spec.side_from_mm.push_back(e.cell < 0 ? 0.0 : s.zMm(std::min(s.top[size_t(e.cell)], l.plate_top_units)));
+        spec.side_from_mm.push_back(e.cell < 0 ? spec.bottom_mm
+                                               : s.zMm(std::clamp(s.top[size_t(e.cell)], l.plate_bottom_units, l.plate_top_units)));
     return spec;
 }
 

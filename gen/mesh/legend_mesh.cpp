@@ -64,7 +64,7 @@ void addDome(Builder& b, const LegendDot& d, const BrailleStandard& st, double h
 }  // namespace
 
 PlateBody meshPlateBody(const PlateSpec& s, bool joined) {
-    assert(s.height_mm > 0 && (!s.outline.edges.empty() || (s.x1_mm > s.x0_mm && s.y1_mm > s.y0_mm)));
+    assert(s.height_mm > s.bottom_mm && (!s.outline.edges.empty() || (s.x1_mm > s.x0_mm && s.y1_mm > s.y0_mm)));
     PlateOutline box;
     if (s.outline.edges.empty()) {
         box.points = {{s.x0_mm, s.y0_mm, -1}, {s.x1_mm, s.y0_mm, -1}, {s.x1_mm, s.y1_mm, -1}, {s.x0_mm, s.y1_mm, -1}};
@@ -73,10 +73,10 @@ PlateBody meshPlateBody(const PlateSpec& s, bool joined) {
     const PlateOutline& o = s.outline.edges.empty() ? box : s.outline;
     PlateBody body;
     Builder b;
-    const double h = s.height_mm;
+    const double h = s.height_mm, z0 = s.bottom_mm;
     const uint32_t n = uint32_t(o.points.size());
     // Corners of the outline on the bottom (0 .. n-1) and the top (n .. 2n-1).
-    for (const double z : {0.0, h})
+    for (const double z : {z0, h})
         for (const TabPoint& p : o.points) {
             b.add(p.x_mm, p.y_mm, z);
             body.lattice_id.push_back(p.lattice);
@@ -106,7 +106,7 @@ PlateBody meshPlateBody(const PlateSpec& s, bool joined) {
     // heights of both its corners, so no corner line has a T-junction.
     std::vector<double> from(o.edges.size(), 0.0);
     std::vector<std::vector<std::pair<double, uint32_t>>> column(n);  // per outline point: (z, vertex), by z
-    for (uint32_t v = 0; v < n; ++v) column[v] = {{0.0, v}, {h, v + n}};
+    for (uint32_t v = 0; v < n; ++v) column[v] = {{z0, v}, {h, v + n}};
     auto addHeight = [&](uint32_t v, double z) {
         for (const auto& [zz, id] : column[v])
             if (zz == z) return;
@@ -115,8 +115,8 @@ PlateBody meshPlateBody(const PlateSpec& s, bool joined) {
         std::sort(column[v].begin(), column[v].end());
     };
     for (size_t k = 0; k < o.edges.size(); ++k) {
-        from[k] = joined && k < s.side_from_mm.size() ? s.side_from_mm[k] : 0.0;
-        if (from[k] > 0 && from[k] < h) {
+        from[k] = joined && k < s.side_from_mm.size() ? std::max(z0, s.side_from_mm[k]) : z0;
+        if (from[k] > z0 && from[k] < h) {
             addHeight(o.edges[k].a, from[k]);
             addHeight(o.edges[k].b, from[k]);
         }

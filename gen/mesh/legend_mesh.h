@@ -30,14 +30,15 @@ inline constexpr int kDomeSides = 8;
 
 struct PlateSpec {
     double x0_mm = 0, y0_mm = 0, x1_mm = 0, y1_mm = 0;  ///< the box's footprint
-    double height_mm = 0;                              ///< its top, > 0
+    double height_mm = 0;                              ///< its top, > bottom_mm
+    double bottom_mm = 0;                              ///< its bottom: the bed, or a mirrored model's band
     std::vector<LegendDot> dots;                       ///< centres, same frame as the box
     BrailleStandard standard = kNlsSpec800;
     /// The plate's footprint (empty: the box). Its corners are those of the
     /// plate's top and bottom, in order.
     PlateOutline outline;
-    /// Per outline edge, with `joined`: where its side starts, mm. 0 is a side
-    /// from the bed; at or above height_mm no side (a pillar's wall stands
+    /// Per outline edge, with `joined`: where its side starts, mm. bottom_mm
+    /// is a whole side; at or above height_mm no side (a pillar's wall stands
     /// there); between, a pillar lower than the plate (a no-data pit).
     std::vector<double> side_from_mm;
 };

@@ -381,7 +381,8 @@ json legendJson(const Scene& s) {
             {"origin_mm", {l.x0_mm, l.y0_mm}},
             {"reach_row", l.reach_row},
             {"plate_mm", {{"south", l.plate_south_mm}, {"north", l.plate_north_mm}, {"east", l.plate_east_mm}}},
-            {"plate_top_units", l.plate_top_units}};
+            {"plate_top_units", l.plate_top_units},
+            {"plate_bottom_units", l.plate_bottom_units}};
 }
 
 double getFinite(const json& obj, const std::string& path, const char* key) {
@@ -452,6 +453,9 @@ void readLegend(const json& l, const Scene& s, SceneLegend& out, LegendRequest& 
     if (!(out.plate_north_mm > out.plate_south_mm)) fail(join(pp, "north"), "must be north of the plate's south edge");
     if (!(out.plate_east_mm > 0)) fail(join(pp, "east"), "must be east of the plate's west edge (x = 0)");
     out.plate_top_units = getInt(l, lp, "plate_top_units");
+    // Version 7: a mirrored model's plate lies in a band; before, on the bed.
+    out.plate_bottom_units = l.contains("plate_bottom_units") ? getInt(l, lp, "plate_bottom_units") : 0;
+    if (out.plate_bottom_units >= out.plate_top_units) fail(join(lp, "plate_bottom_units"), "must be below the plate's top");
     const double r = 0.5 * standard.dot_base_mm;
     const json& dots = getArray(l, lp, "dots");
     for (size_t i = 0; i < dots.size(); ++i) {

@@ -2,7 +2,7 @@
 // so that `tsf verify --scene` can check the model's heights without the
 // original field and options.
 //
-// Format ("format": "tsf-scene", "version": 6), one object:
+// Format ("format": "tsf-scene", "version": 7), one object:
 //   grid {cols, rows}, pitch_mm, z_snap_mm,
 //   params {pitch_mm, fit_width_mm, fit_depth_mm, max_height_mm, base_mm,
 //           transfer, baseline_mode, baseline_value, value_max (null = unset),
@@ -36,7 +36,8 @@
 //            text [lines], cells [[braille cell 0..255, ...] per line],
 //            dots [[x, y] legend frame mm], size_mm [w, d], origin_mm [x, y]
 //            (the legend frame's origin in the model frame), reach_row,
-//            plate_mm {south, north, east}, plate_top_units},
+//            plate_mm {south, north, east}, plate_top_units,
+//            plate_bottom_units (version 7; 0 before)},
 //   scale: null | {step, step_given, x0_i, y0_j, y1_j, x_mm [west, steps'
 //           west, east], y_mm [south, north], foot_top_units,
 //           steps [[value, top_units, y_south_mm, y_north_mm], ...],
@@ -80,7 +81,7 @@ inline constexpr const char* kSceneJsonFormat = "tsf-scene";
 /// as asked for, the marks' faces and the tilted tops' fans; 4: scale;
 /// 3: shapes; 2: marks, nodata_pit_units, one_to_one. 1 to 4 are still read,
 /// except a version 4 sidecar with a legend (it recorded only the request).
-inline constexpr int kSceneJsonVersion = 6;
+inline constexpr int kSceneJsonVersion = 7;
 /// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
 /// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
 inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;

@@ -84,7 +84,10 @@ struct SceneLegend {
     double plate_south_mm = 0;    ///< y (model frame) of the plate's south edge: the upper side corners of reach_row
     double plate_north_mm = 0;    ///< y of its north edge
     double plate_east_mm = 0;     ///< x of its east edge (its west edge is x = 0)
-    int64_t plate_top_units = 0;  ///< z of its top (the floor), z snap units
+    int64_t plate_top_units = 0;     ///< z of its top (flat: the floor), z snap units
+    /// z of its bottom: flat, the bed (0); mirrored, the bottom of the band
+    /// every pillar it stands against holds.
+    int64_t plate_bottom_units = 0;
 };
 
 /// Lays the legend out as described above. Throws InputError for a table
