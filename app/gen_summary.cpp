@@ -217,7 +217,11 @@ std::string formatSceneFacts(const Scene& s) {
         const SceneLegend& l = *s.legend;
         const BrailleStandard& st = l.layout.standard;
         o << "  legend    braille (" << s.params.legend.table << ") on a plate " << formatFixed(l.plate_east_mm, 1) << " x "
-          << formatFixed(l.plate_north_mm - l.plate_south_mm, 1) << " mm north of the pillars, " << l.layout.dots.size()
+          << formatFixed(l.plate_north_mm - l.plate_south_mm, 1) << " mm north of the pillars, ";
+        if (s.params.bottom == Bottom::Mirrored)
+            o << "from z = " << formatFixed(s.zMm(l.plate_bottom_units), 2) << " to " << formatFixed(s.zMm(l.plate_top_units), 2)
+              << " mm (the band the pillars it stands against share), ";
+        o << l.layout.dots.size()
           << " dots " << formatFixed(st.dot_base_mm, 2) << " mm across, " << formatFixed(st.dot_height_mm, 2) << " mm high (";
         if (s.params.legend.layer_mm > 0)
             o << formatSignificant(st.dot_height_mm / s.params.legend.layer_mm, 3) << " whole layers of "

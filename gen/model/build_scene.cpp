@@ -376,7 +376,6 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     }
     placeMarks(s);
     if (s.halves) placeHalves(s);
-    placeLegend(s);
     if (params.structural_texture && params.halves)
         s.notes.push_back("structural cells are left level on a model cut into halves (the cut and the pin "
                           "holes are drawn on level cells): give --no-texture-structural to silence this");
@@ -396,8 +395,10 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             }
         resolveTopShapes(s, tiltSlopes(field, s, params.tilt), params.steepness, structural);
     }
-    // The tab and the scale last: they stand against cells whose tops (tilted
-    // or not) rise to the floor, clear of the legend's plate.
+    // The legend, the tab and the scale last: they stand against cells whose
+    // tops (tilted or not) rise to the floor, or on a mirrored model hold
+    // their band; the tab and the scale keep clear of the legend's plate.
+    placeLegend(s);
     placeTab(s);
     if (wantsTab(params) && !s.marks.tab && s.keptCount() > 0) {
         // No pillar on the west side to stand a tab against (placeTab's note

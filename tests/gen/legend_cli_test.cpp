@@ -79,9 +79,9 @@ TEST(LegendCli, WhereTheLegendCannotStandTheCommandSaysWhatToChange) {
     const auto dir = test::scratchDir();
     test::writeText(dir / "f.csv", kField);
     const std::string field = (dir / "f.csv").string(), model = (dir / "m.stl").string();
-    const auto mirrored = test::runTsf("gen " + field + " --cell 6 --mirror --title Depth -o " + model, dir);
-    EXPECT_EQ(mirrored.exit_code, test::kExitBadInput) << mirrored.err;
-    EXPECT_NE(mirrored.err.find("Leave out --mirror"), std::string::npos) << mirrored.err;
+    const auto halves = test::runTsf("gen " + field + " --cell 6 --mirror --halves --title Depth -o " + model, dir);
+    EXPECT_EQ(halves.exit_code, test::kExitBadInput) << halves.err;
+    EXPECT_NE(halves.err.find("Leave out --halves"), std::string::npos) << halves.err;
     const auto table = test::runTsf("gen " + field + " --cell 6 --title Depth --braille-table nope.ctb -o " + model, dir);
     EXPECT_EQ(table.exit_code, test::kExitBadInput) << table.err;
     EXPECT_NE(table.err.find("nope.ctb"), std::string::npos) << table.err;
@@ -90,6 +90,28 @@ TEST(LegendCli, WhereTheLegendCannotStandTheCommandSaysWhatToChange) {
     EXPECT_EQ(wide.exit_code, test::kExitBadInput) << wide.err;
     EXPECT_NE(wide.err.find("give a shorter --title"), std::string::npos) << wide.err;
     EXPECT_FALSE(std::filesystem::exists(model));
+}
+
+// A mirrored model takes a legend: its plate lies in the z band every
+// pillar it stands against holds (there is no floor), its dots on top; the
+// model verifies against its sidecar, tilted too.
+TEST(LegendCli, AMirroredModelTakesALegendInTheBandItsPillarsShare) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "f.csv", kField);
+    const std::string field = (dir / "f.csv").string(), model = (dir / "m.stl").string();
+    for (const std::string extra : {"", " --tilt gradient", " --units mm --layer 0.2"}) {
+        const auto r = test::runTsf("gen " + field + " --cell 6 --mirror --title Depth" + extra + " -o " + model, dir);
+        ASSERT_EQ(r.exit_code, test::kExitOk) << extra << "\n" << r.out << r.err;
+        EXPECT_NE(r.out.find("legend    braille"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("mm north of the pillars, from z = "), std::string::npos) << r.out;
+        const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json", dir);
+        EXPECT_EQ(v.exit_code, test::kExitOk) << extra << "\n" << v.out;
+        EXPECT_NE(v.out.find("PASS  the legend plate and every braille dot at its height"), std::string::npos) << v.out;
+        const nlohmann::json scene = nlohmann::json::parse(test::readText(model + ".scene.json"));
+        const int64_t bottom = scene["legend"]["plate_bottom_units"], top = scene["legend"]["plate_top_units"];
+        EXPECT_GT(bottom, 0) << "the plate floats in the band, off the bed";
+        EXPECT_GT(top, bottom);
+    }
 }
 
 // Small and odd models take a legend: the plate stands against the

@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "gen/model/features/legend_plate.h"
+#include "gen/model/features/top_shapes.h"
+#include "gen/util/number_format.h"
 #include "gen/model/scene.h"
 #include "gen/util/error.h"
 
@@ -21,9 +23,10 @@ constexpr double kPlateHoldFraction = 0.6;
 void placeLegend(Scene& s) {
     const LegendRequest& rq = s.params.legend;
     if (!rq.wanted() || s.keptCount() == 0) return;
-    if (s.params.bottom == Bottom::Mirrored)
-        throw InputError("--title/--units: the braille legend stands on the floor of a flat model; a mirrored model "
-                         "has none. Leave out --mirror, or leave out --title and --units");
+    const bool mirrored = s.params.bottom == Bottom::Mirrored;
+    if (s.params.halves)
+        throw InputError("--title/--units with --halves: a legend on a model cut into halves is not made yet. Leave out "
+                         "--halves (the mirrored model prints whole, with supports), or leave out --title and --units");
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const double v : s.value)
         if (!std::isnan(v)) {
@@ -78,16 +81,47 @@ void placeLegend(Scene& s) {
     // eastmost walls at their corners) unless the braille is wider.
     l.plate_east_mm = l.layout.width_mm <= width + 1e-3 ? width : snapUm(l.layout.width_mm);
     l.plate_top_units = s.floor_units;
+    // A mirrored model has no floor: the plate lies in the z band every
+    // pillar it stands against holds, as thick as the base (at least
+    // kMinMirroredPlateMm, at most the band), in the band's middle.
+    const int64_t min_thick = std::max<int64_t>(1, snapUnits(kMinMirroredPlateMm, s.z_snap_mm));
+    const int64_t want_thick = std::max(min_thick, snapUnits(s.params.base_mm, s.z_snap_mm));
+    bool band_too_thin = false;
     // The south edge, pulled north while a wall the plate would stand
-    // against is cut by the notch in the data (a model of few rows).
+    // against is cut by the notch in the data (a model of few rows), or
+    // (mirrored) while the pillars it stands against share no band thick enough.
     for (;; --reach) {
         l.reach_row = reach;
         l.plate_south_mm = s.point(LatticePoint{hexCentre(s.grid, 0, reach).i, hexCentre(s.grid, 0, reach).j + 1}, 0).y;
         s.legend = l;
-        if (!legendPlateOutline(s).meets_cut) return;
+        const PlateOutline outline = legendPlateOutline(s);
+        bool fits = !outline.meets_cut;
+        if (fits && mirrored) {
+            int64_t bottom = INT64_MIN, top = INT64_MAX;
+            for (const PlateOutline::Edge& e : outline.edges) {
+                if (e.cell < 0) continue;
+                for (const int c : {e.side, (e.side + 1) % kHexCorners}) {
+                    bottom = std::max(bottom, cornerBottom(s, size_t(e.cell), c));
+                    top = std::min(top, cornerTop(s, size_t(e.cell), c));
+                }
+            }
+            fits = top - bottom >= min_thick;
+            band_too_thin = band_too_thin || !fits;
+            if (fits) {
+                const int64_t thick = std::min(top - bottom, want_thick);
+                s.legend->plate_bottom_units = bottom + (top - bottom - thick) / 2;
+                s.legend->plate_top_units = s.legend->plate_bottom_units + thick;
+            }
+        }
+        if (fits) return;
         if (reach == 0) break;
     }
     s.legend.reset();
+    if (band_too_thin)
+        throw InputError("--title/--units: the braille legend's plate on a mirrored model lies in the band every "
+                         "northern pillar it stands against holds, and these share less than " +
+                         formatSignificant(kMinMirroredPlateMm, 3) +
+                         " mm; give a thicker --base, or leave out --mirror, or --title and --units");
     throw InputError("--title/--units: the braille legend's plate would stand against the orientation notch on a model "
                      "this small (" + std::to_string(s.keptCount()) + (s.keptCount() == 1 ? " cell" : " cells") +
                      "): give it more cells, or --no-notch, or leave out --title and --units");

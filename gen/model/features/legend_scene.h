@@ -18,12 +18,20 @@
 // hexagons' tips: the title on the first line, the value range of the data
 // with its units on the next, lines broken to fit the model's width.
 //
-// Limits (InputError saying what to change): a mirrored model (no flat floor
-// to stand the plate on), a word wider than the model, or a plate that would
-// stand against the notch even at the first row.
+// A mirrored model has no floor: there the plate lies in the z band every
+// pillar it stands against holds (as the orientation tab does), as thick as
+// the base (at least kMinMirroredPlateMm) in the band's middle, its dots on
+// its top; the south edge moves north until the pillars share such a band.
+//
+// Limits (InputError saying what to change): a model cut into halves, a word
+// wider than the model, a plate that would stand against the notch even at
+// the first row, or (mirrored) no band thick enough even there.
 #pragma once
 
 namespace tsf {
+
+/// Thinnest legend plate on a mirrored model, mm (eight 0.2 mm layers).
+inline constexpr double kMinMirroredPlateMm = 1.6;
 
 struct Scene;
 
