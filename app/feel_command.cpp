@@ -21,6 +21,8 @@
 #include "app/commands.h"
 #include "app/gen_options.h"
 #include "gen/util/error.h"
+#include "gen/mesh_io/mesh_reader.h"
+#include "gen/mesh_io/mesh_writer.h"
 #include "gen/model/scene_json.h"
 #include "gen/util/atomic_file.h"
 #include "gen/readers/load_field.h"
@@ -77,6 +79,7 @@ struct FeelOptions {
     std::string log;
     std::string plot;
     std::string relief_csv;
+    std::string scene;  ///< --scene: the sidecar of the model a mesh input was made from
     bool json = false;
     bool realtime = false;
     bool no_realtime = false;
@@ -120,6 +123,12 @@ private:
 [[noreturn]] void deviceFailed(const std::string& message) {
     std::fprintf(stderr, "tsf: error: %s\n", message.c_str());
     throw CLI::RuntimeError(kExitDeviceFailed);
+}
+
+// A mesh file (STL, 3MF, OFF, OBJ), felt as it is.
+bool isMeshFile(const std::string& path) {
+    const std::string ext = lowerCaseExtension(path);
+    return ext == ".stl" || ext == ".3mf" || ext == ".off" || ext == ".obj";
 }
 
 // A scene sidecar written beside a model by tsf gen (gen/model/scene_json.h).
@@ -238,23 +247,46 @@ void runFeel(const FeelOptions& o) {
         throw InputError("--levels must be 1 to " + std::to_string(kMaxScaleLevels));
     if (!(o.lod >= 0 && o.lod < o.levels)) throw InputError("--lod must be between 0 and --levels - 1");
 
-    // The relief tsf gen would print from the same input and options, or the
-    // model a sidecar (MODEL.stl.scene.json) describes, exactly as printed.
-    const bool from_sidecar = isSceneSidecar(o.gen.input);
+    // The relief tsf gen would print from the same input and options, the
+    // model a sidecar (MODEL.stl.scene.json) describes, exactly as printed,
+    // or a mesh file itself (a model as written, or as OpenSCAD rendered an
+    // edited .scad) on the grid of its sidecar.
+    const bool from_mesh = isMeshFile(o.gen.input);
+    std::string sidecar = from_mesh ? (o.scene.empty() ? o.gen.input + ".scene.json" : o.scene) : std::string();
+    if (!from_mesh && !o.scene.empty()) throw InputError("--scene is for a mesh input (MODEL.stl --scene MODEL.stl.scene.json)");
+    if (from_mesh && !std::filesystem::exists(sidecar))
+        throw InputError(o.gen.input + ": feeling a mesh needs the scene sidecar of the model it was made from (for its "
+                         "grid and heights): give --scene MODEL.stl.scene.json (tsf gen writes it beside the model)");
+    const bool from_sidecar = from_mesh || isSceneSidecar(o.gen.input);
     HexField field;
     if (!from_sidecar) field = loadField(o.gen);
-    const Scene scene = from_sidecar ? readSceneJson(o.gen.input) : buildScene(field, o.gen.scene);
+    const Scene scene = from_sidecar ? readSceneJson(from_mesh ? sidecar : o.gen.input) : buildScene(field, o.gen.scene);
+    Mesh file_mesh;
+    if (from_mesh) {
+        MeshReadReport read;
+        file_mesh = readMesh(o.gen.input, &read);
+        if (file_mesh.triangles.empty()) throw InputError(o.gen.input + ": the mesh has no triangles to feel");
+        const double overhang = overhangAreaMm2(file_mesh);
+        // A hand from above meets the top only: say what it cannot reach.
+        if (overhang > 0 && !o.json)
+            std::fprintf(stderr,
+                         "tsf: note: %s has %.0f mm^2 of surface facing down above the bed (overhangs, a mirrored "
+                         "underside): a hand from above cannot reach under it; the top is felt\n",
+                         o.gen.input.c_str(), overhang);
+    }
     if (from_sidecar) {
         // The values the model holds, for the report: its kept cells' (NaN:
         // a pit without data), not the culled cells of its grid.
         field.grid = scene.grid;
         field.values = scene.value;
         field.source = o.gen.input;
-        field.how = "the model its scene sidecar describes, as printed";
+        field.how = from_mesh ? "the mesh as written, on the grid of its scene sidecar"
+                              : "the model its scene sidecar describes, as printed";
     }
     const DeviceLimits limits;  // the Falcon's (sim and replay stand in for one)
-    const FeelSurface surface = buildFeelSurface(
-        scene, o.levels, o.scale_space == "mipmap" ? ScaleSpaceKind::kMipmap : ScaleSpaceKind::kGaussian, limits);
+    const FeelSurface surface =
+        buildFeelSurface(scene, o.levels, o.scale_space == "mipmap" ? ScaleSpaceKind::kMipmap : ScaleSpaceKind::kGaussian,
+                         limits, from_mesh ? &file_mesh : nullptr);
     const ReliefInfo& relief = surface.relief;
     const HeightGrid& grid = surface.grid;
     const FieldMapping& mapping = surface.mapping;
@@ -316,7 +348,8 @@ void runFeel(const FeelOptions& o) {
     if (!o.log.empty()) writeForceLogCsv(o.log, log);
     if (!o.relief_csv.empty()) {
         // 0.5 mm, or a sixth of a cell where cells are narrower than 3 mm.
-        const ReliefSurface r = reliefSurface(scene, std::min(0.5, scene.pitch_mm / kReliefSamplesPerPitch));
+        const double sample_mm = std::min(0.5, scene.pitch_mm / kReliefSamplesPerPitch);
+        const ReliefSurface r = from_mesh ? reliefSurface(file_mesh, sample_mm) : reliefSurface(scene, sample_mm);
         writeFileAtomically(o.relief_csv, [&](std::ostream& os) {
             os << "x_mm,y_mm,z_mm\n";
             char line[96];
@@ -452,6 +485,8 @@ void addFeelCommand(CLI::App& app) {
         "The input and model options are tsf gen's: the relief felt is the relief gen prints.\n"
         "Given MODEL.stl.scene.json (the sidecar tsf gen writes), the model it describes is felt as printed:\n"
         "orientation tab, legend and scale included; the model options are then not used.\n"
+        "Given a mesh (MODEL.stl, .3mf, .off, .obj), that mesh is felt on the grid of its sidecar (--scene):\n"
+        "  tsf feel edited.stl --scene model.stl.scene.json   # an edit of the .scad, rendered by OpenSCAD\n"
         "Device frame: x right, y up, z toward the user, metres; north of the field is away from the user.\n"
         "Buttons: centre = volume mode on/off, plus = coarser level, minus = finer level.\n"
         "Ctrl-C ramps the force to zero and ends the session (exit code 130). See docs/haptics.md.");
@@ -491,6 +526,10 @@ void addFeelCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--log", o->log, "Write a CSV of time, position, force and mode per tick");
     cmd->add_option("--plot", o->plot, "Write a PNG of the field with the path and the forces felt");
+    cmd->add_option("--scene", o->scene,
+                    "With a mesh input (MODEL.stl, .3mf, .off, .obj): the scene sidecar of the model it was made from "
+                    "(default MODEL.stl.scene.json beside it), for its grid and heights; the mesh itself is felt, "
+                    "e.g. what OpenSCAD rendered after an edit of the .scad");
     cmd->add_option("--relief", o->relief_csv,
                     "Write the surface felt as CSV: x_mm,y_mm,z_mm of the printed model's top on a 0.5 mm grid "
                     "(finer for cells under 3 mm) over its whole footprint, NaN where nothing is");

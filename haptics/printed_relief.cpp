@@ -61,7 +61,10 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
     // What is felt is the model as meshed, every feature included (the
     // notch, the triangle, tilted and dimpled tops, the legend's plate and
     // dots, the scale): nothing about the model is decided again here.
-    const Mesh mesh = meshScene(scene);
+    return meshRelief(scene, meshScene(scene), info);
+}
+
+HeightGrid meshRelief(const Scene& scene, const Mesh& mesh, ReliefInfo* info) {
     const Bounds b = meshBounds(mesh);
     const double width_p = std::max(gridWidth(scene.grid, 1.0), std::isfinite(b.max.x) ? b.max.x / scene.pitch_mm : 0.0);
     const double depth_p = std::max(gridDepth(scene.grid, 1.0), std::isfinite(b.max.y) ? b.max.y / scene.pitch_mm : 0.0);
@@ -100,9 +103,25 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
     return g;
 }
 
-ReliefSurface reliefSurface(const Scene& scene, double sample_mm) {
+ReliefSurface reliefSurface(const Scene& scene, double sample_mm) { return reliefSurface(meshScene(scene), sample_mm); }
+
+double overhangAreaMm2(const Mesh& mesh) {
+    const Bounds b = meshBounds(mesh);
+    double area = 0;
+    for (const auto& t : mesh.triangles) {
+        const tsf::Vec3 &p = mesh.positions[t[0]], &q = mesh.positions[t[1]], &r = mesh.positions[t[2]];
+        if (std::max({p.z, q.z, r.z}) <= b.min.z) continue;  // on the bed
+        const double nx = (q.y - p.y) * (r.z - p.z) - (q.z - p.z) * (r.y - p.y);
+        const double ny = (q.z - p.z) * (r.x - p.x) - (q.x - p.x) * (r.z - p.z);
+        const double nz = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+        const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+        if (len > 0 && nz < -std::sqrt(0.5) * len) area += len / 2;
+    }
+    return area;
+}
+
+ReliefSurface reliefSurface(const Mesh& mesh, double sample_mm) {
     ReliefSurface r;
-    const Mesh mesh = meshScene(scene);
     if (mesh.positions.empty() || !(sample_mm > 0)) return r;
     const Bounds b = meshBounds(mesh);
     r.sample_mm = sample_mm;

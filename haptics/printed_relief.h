@@ -57,6 +57,11 @@ struct ReliefInfo {
 /// max_height_mm is 0).
 HeightGrid printedRelief(const Scene& scene, ReliefInfo* info = nullptr);
 
+/// The same relief read from `mesh` instead of the Scene's own mesh: a model
+/// as written, or as OpenSCAD rendered it after a person edited the .scad,
+/// on the Scene's grid and heights (so an edited pillar is felt edited).
+HeightGrid meshRelief(const Scene& scene, const Mesh& mesh, ReliefInfo* info = nullptr);
+
 /// The model's upper surface in millimetres on a square grid of side
 /// sample_mm over its whole footprint (x, y of sample (i, j): x0_mm + (i +
 /// 0.5) * sample_mm, y0_mm + (j + 0.5) * sample_mm; z NaN where no surface
@@ -67,6 +72,13 @@ struct ReliefSurface {
     std::vector<double> z_mm;  ///< row-major, row 0 south
 };
 ReliefSurface reliefSurface(const Scene& scene, double sample_mm);
+/// The same from `mesh` (a model file as written or rendered).
+ReliefSurface reliefSurface(const Mesh& mesh, double sample_mm);
+
+/// Area (mm^2) of the surface of `mesh` that faces down more than 45
+/// degrees, above its lowest point: what a hand from above cannot reach
+/// (a mirrored model's underside, an edit that overhangs).
+double overhangAreaMm2(const Mesh& mesh);
 
 /// Where the centre of hex cell (col, row) lies in the relief grid's
 /// continuous coordinates (height_grid.h) for the given samples per pitch.

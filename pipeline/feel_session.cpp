@@ -30,9 +30,10 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-FeelSurface buildFeelSurface(const Scene& scene, int levels, ScaleSpaceKind kind, const DeviceLimits& limits) {
+FeelSurface buildFeelSurface(const Scene& scene, int levels, ScaleSpaceKind kind, const DeviceLimits& limits,
+                             const Mesh* mesh) {
     FeelSurface s;
-    s.grid = printedRelief(scene, &s.relief);
+    s.grid = mesh ? meshRelief(scene, *mesh, &s.relief) : printedRelief(scene, &s.relief);
     s.limits = limits;
     s.mapping = mapFieldToWorkspace(s.grid.cols, s.grid.rows, limits.workspace);
     const auto t0 = std::chrono::steady_clock::now();

@@ -39,8 +39,11 @@ struct FeelSurface {
 };
 
 /// `levels` (1..kMaxScaleLevels) of `kind`; the Falcon's workspace and limits.
+/// `mesh` (nullable): feel that mesh (a model file as written, or as
+/// OpenSCAD rendered an edited .scad) on the Scene's grid instead of the
+/// Scene's own mesh.
 FeelSurface buildFeelSurface(const Scene& scene, int levels, haptics::ScaleSpaceKind kind,
-                             const haptics::DeviceLimits& limits = {});
+                             const haptics::DeviceLimits& limits = {}, const Mesh* mesh = nullptr);
 
 struct FeelRequest {
     haptics::ForceParams force;

@@ -1,0 +1,107 @@
+// tsf feel MODEL.stl: a mesh file is felt as it is, on the grid of the scene
+// sidecar of the model it was made from. The written model feels as its
+// sidecar does; an edit of the generated .scad, rendered by OpenSCAD, is
+// felt edited, and tsf verify names the edited cell in words.
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <string>
+#include <utility>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/required_tools.h"
+#include "tests/support/run.h"
+
+namespace {
+
+// x_mm,y_mm -> z_mm of a relief CSV (tsf feel --relief).
+std::map<std::pair<long, long>, double> readRelief(const std::string& path) {
+    std::map<std::pair<long, long>, double> z;
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    double x, y, h;
+    while (std::getline(in, line))
+        if (std::sscanf(line.c_str(), "%lf,%lf,%lf", &x, &y, &h) == 3) z[{std::lround(x * 1000), std::lround(y * 1000)}] = h;
+    return z;
+}
+
+const char* kGrid = "1,2,3,4\n2,3,4,5\n3,4,5,6\n4,5,6,7\n";
+
+TEST(FeelCli, FeelsAMeshFileOnTheGridOfItsSidecar) {
+    const auto dir = tsf::test::scratchDir("feel_mesh");
+    tsf::test::writeText(dir / "g.csv", kGrid);
+    const std::string model = (dir / "g.stl").string();
+    ASSERT_EQ(tsf::test::runTsf("gen " + (dir / "g.csv").string() + " --cell 8 -o " + model, dir).exit_code, 0);
+    const auto mesh = tsf::test::runTsf("feel " + model + " --trajectory taps --relief " + (dir / "a.csv").string() + " --json", dir);
+    ASSERT_EQ(mesh.exit_code, 0) << mesh.output;
+    EXPECT_EQ(nlohmann::json::parse(mesh.out)["field"]["how"], "the mesh as written, on the grid of its scene sidecar");
+    const auto side = tsf::test::runTsf("feel " + model + ".scene.json --trajectory taps --relief " + (dir / "b.csv").string(), dir);
+    ASSERT_EQ(side.exit_code, 0) << side.output;
+    // The file is the model its sidecar describes: the same surface, point for point
+    // (within the float32 rounding of the STL).
+    const auto a = readRelief((dir / "a.csv").string()), b = readRelief((dir / "b.csv").string());
+    ASSERT_GT(a.size(), 1000u);
+    ASSERT_EQ(a.size(), b.size());
+    size_t same = 0;
+    for (const auto& [k, z] : a) {
+        const auto it = b.find(k);
+        same += it != b.end() && ((std::isnan(z) && std::isnan(it->second)) || std::fabs(z - it->second) <= 1e-3);
+    }
+    EXPECT_GE(double(same), 0.99 * double(a.size()));
+
+    // A mesh without the sidecar it needs is refused, saying what to give.
+    std::filesystem::copy_file(model, dir / "alone.stl");
+    const auto alone = tsf::test::runTsf("feel " + (dir / "alone.stl").string() + " --trajectory taps", dir);
+    EXPECT_EQ(alone.exit_code, tsf::test::kExitBadInput) << alone.output;
+    EXPECT_NE(alone.err.find("--scene"), std::string::npos) << alone.err;
+}
+
+// A blind maker edits one value of the generated .scad (4 -> 7), OpenSCAD
+// renders it, and tsf feel meets the edited pillar raised by the edit's
+// height; tsf verify against the original sidecar names that cell.
+TEST(FeelCli, AnOpenScadRenderOfAnEditedScadIsFeltEdited) {
+    TSF_NEED_TOOL(std::system("command -v openscad >/dev/null 2>&1") == 0, "openscad");
+    const auto dir = tsf::test::scratchDir("feel_scad_edit");
+    tsf::test::writeText(dir / "g.csv", kGrid);
+    const std::string model = (dir / "g.stl").string(), scad = (dir / "g.scad").string();
+    ASSERT_EQ(tsf::test::runTsf("gen " + (dir / "g.csv").string() + " --cell 8 --scad " + scad + " -o " + model, dir).exit_code, 0);
+    std::string text = tsf::test::readText(scad);
+    const std::string row = "    [2, 3, 4, 5],  // row 1";
+    const size_t at = text.find(row);
+    ASSERT_NE(at, std::string::npos) << "the generated values table changed its layout";
+    text.replace(at, row.size(), "    [2, 3, 7, 5],  // row 1");
+    tsf::test::writeText(dir / "edited.scad", text);
+    const std::string edited = (dir / "edited.stl").string();
+    const auto render = tsf::test::runTsf("render " + (dir / "edited.scad").string() + " -o " + edited, dir);
+    ASSERT_EQ(render.exit_code, 0) << render.output;
+
+    const auto feel = tsf::test::runTsf("feel " + edited + " --scene " + model + ".scene.json --trajectory taps --relief " +
+                                            (dir / "e.csv").string(), dir);
+    ASSERT_EQ(feel.exit_code, 0) << feel.output;
+    ASSERT_EQ(tsf::test::runTsf("feel " + model + ".scene.json --trajectory taps --relief " + (dir / "o.csv").string(), dir)
+                  .exit_code, 0);
+    // Heights: values 0..7 -> 0..20 mm above a 2 mm floor; the edited
+    // cell's top goes from 2 + 20 * 4/7 to 2 + 20 mm, nothing else moves.
+    const auto o = readRelief((dir / "o.csv").string()), e = readRelief((dir / "e.csv").string());
+    size_t raised = 0, moved = 0;
+    for (const auto& [k, z] : o) {
+        const auto it = e.find(k);
+        if (it == e.end() || std::isnan(z) || std::isnan(it->second)) continue;
+        if (std::fabs(it->second - z) <= 0.01) continue;
+        ++moved;
+        raised += std::fabs(z - (2 + 20.0 * 4 / 7)) < 0.01 && std::fabs(it->second - 22.0) < 0.01;
+    }
+    EXPECT_GT(raised, 100u) << "the edited pillar's top, felt higher";
+    EXPECT_GE(double(raised), 0.9 * double(moved)) << "and little else (points on its walls)";
+
+    const auto verify = tsf::test::runTsf("verify " + edited + " --scene " + model + ".scene.json", dir);
+    EXPECT_EQ(verify.exit_code, tsf::test::kExitCheckFailed) << verify.output;
+    EXPECT_NE(verify.out.find("cell (col 2, row 1) top"), std::string::npos) << verify.out;
+    EXPECT_NE(verify.out.find("value 4 reads as 7"), std::string::npos) << verify.out;
+}
+
+}  // namespace
