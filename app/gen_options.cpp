@@ -63,9 +63,14 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "nan, NA, N/A and - are always no data")
         ->group(in);
     cmd->add_option("--project", o.project,
-                    "Points: auto (equirectangular when the columns are named lon/lat), none, equirect "
-                    "(x = longitude x cos(mean latitude))")
-        ->check(CLI::IsMember({"auto", "none", "equirect"}))->capture_default_str()->group(in);
+                    "Points: auto (equal-area with PROJ when the columns are named lon/lat, or with --crs: Lambert "
+                    "azimuthal centred on the data, Equal Earth for the world; x, y in km), none, equal-area, "
+                    "equirect (x = longitude x cos(mean latitude)), or any PROJ/EPSG definition (e.g. EPSG:3035)")
+        ->capture_default_str()->group(in);
+    cmd->add_option("--crs", o.crs,
+                    "Points: the coordinate system of the x, y columns when they are not longitude/latitude (e.g. "
+                    "EPSG:3857); they are brought to longitude/latitude, then projected as --project says")
+        ->group(in);
 
     auto* model = "Model (millimetres)";
     SceneParams& p = o.scene;

@@ -18,10 +18,12 @@ namespace tsf {
 namespace {
 
 using ReadFn = int (*)(const GdalCall*);
+using TransformFn = int (*)(const GdalTransformCall*);
 using AbiFn = int (*)();
 
 struct Module {
     ReadFn read = nullptr;
+    TransformFn transform = nullptr;
     std::string problem;  // why there is no module, when read is null
 };
 
@@ -57,12 +59,14 @@ Module load() {
         }
         const auto abi = reinterpret_cast<AbiFn>(::dlsym(h, "tsf_gdal_module_abi"));
         const auto read = reinterpret_cast<ReadFn>(::dlsym(h, "tsf_gdal_read"));
-        if (!abi || !read || abi() != kGdalModuleAbi) {
+        const auto transform = reinterpret_cast<TransformFn>(::dlsym(h, "tsf_gdal_transform"));
+        if (!abi || !read || !transform || abi() != kGdalModuleAbi) {
             m.problem = path + " is from another build of tsf (reinstall tsf)";
             ::dlclose(h);
             return m;
         }
         m.read = read;  // kept loaded for the life of the process
+        m.transform = transform;
         return m;
     }
     m.problem = std::string(kGdalModuleName) + " was not found (looked in: " + tried +
@@ -93,5 +97,18 @@ Raster call(const std::string& path, const std::string_view* bytes, int band) {
 Raster readGdalRaster(const std::string& path, int band) { return call(path, nullptr, band); }
 
 Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band) { return call(path, &bytes, band); }
+
+std::string transformCoordinates(const std::string& from, const std::string& to, std::vector<double>& x,
+                                 std::vector<double>& y) {
+    const Module& m = module();
+    if (!m.transform) throw std::runtime_error("points are projected through GDAL and PROJ, and tsf's GDAL module " + m.problem);
+    std::string name;
+    GdalModuleError e;
+    const GdalTransformCall c{&from, &to, &x, &y, &name, &e};
+    const int status = m.transform(&c);
+    if (status == kGdalInputError) throw InputError(e.path, e.line, e.column, e.detail);
+    if (status != kGdalOk) throw std::runtime_error("projecting points failed: " + e.detail);
+    return name;
+}
 
 }  // namespace tsf

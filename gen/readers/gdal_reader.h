@@ -33,6 +33,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "gen/field/raster.h"
 
@@ -42,6 +43,13 @@ namespace tsf {
 /// `band` is 1-based (a band, a time step or a level); a band the file does
 /// not have is an InputError saying how many it has.
 Raster readGdalRaster(const std::string& path, int band = 1);
+
+/// Transforms points in place from CRS `from` to `to` (anything GDAL reads
+/// as user input: "EPSG:4326", a PROJ string, WKT) with PROJ, x east and y
+/// north whatever the authority's axis order; returns the target's name.
+/// An unknown CRS or a point that cannot be projected is an InputError.
+std::string transformCoordinates(const std::string& from, const std::string& to, std::vector<double>& x,
+                                 std::vector<double>& y);
 
 /// Same on bytes in memory (GDAL's /vsimem/); `path` names them in messages
 /// and tells GDAL the extension. Files that need a sidecar (.hdr, .prj)

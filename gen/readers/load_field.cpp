@@ -43,7 +43,7 @@ HexField loadField(const FieldLoadOptions& o) {
         b.bin_size = o.bin_size;
         b.hex_cols = o.bins;
         PointTable points = table;
-        const std::string projected = projectPoints(points, parseProjection(o.project));
+        const std::string projected = projectPoints(points, parseProjection(o.project), o.crs);
         HexField f = binPoints(points, b);
         f.source = o.input;
         f.input.kind = "points";

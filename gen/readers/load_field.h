@@ -37,7 +37,8 @@ struct FieldLoadOptions {
     std::string delimiter;      ///< CSV delimiter: "," ";" "tab" "space" (or the character); "" = detect
     bool decimal_comma = false; ///< grid CSV: "1,5" is 1.5 (default: detected, gen/readers/decimal_mark.h)
     std::optional<double> nodata;  ///< rasters: this value means "no data" (e.g. -9999)
-    std::string project = "auto";  ///< points: auto | none | equirect (point_projection.h)
+    std::string project = "auto";  ///< points: auto | none | equirect | equal-area | a PROJ/EPSG definition (point_projection.h)
+    std::string crs;               ///< points: the CRS the x, y columns are in ("" = longitude / latitude, or none)
     // Where the model goes: decides one pillar per value or resampling (RasterPlacement).
     double cell_mm = 0;         ///< the cell size asked for (mm); 0 = fit the box
     double fit_width_mm = 150;  ///< the box the model must fit (mm)

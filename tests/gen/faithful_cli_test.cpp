@@ -136,9 +136,10 @@ TEST(FaithfulCli, LonLatPointsAreProjectedAndSaySo) {
     writeText(dir / "pts.csv", csv.str());
     const auto r = runTsf("info " + (dir / "pts.csv").string() + " --points x=lon,y=lat --json");
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_NE(r.output.find("equirectangular"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("Lambert azimuthal equal-area"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("area distortion at most"), std::string::npos) << r.output;
     const auto none = runTsf("info " + (dir / "pts.csv").string() + " --points x=lon,y=lat --project none --json");
-    EXPECT_EQ(none.output.find("equirectangular"), std::string::npos) << none.output;
+    EXPECT_EQ(none.output.find("projected"), std::string::npos) << none.output;
 }
 
 TEST(FaithfulCli, LargeRasterIsResampledToTactileCellsAndSaysWhy) {

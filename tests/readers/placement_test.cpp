@@ -64,11 +64,19 @@ PointTable lonLat() {
     return p;
 }
 
-TEST(Projection, LonLatColumnsAreProjectedAboutTheMeanLatitude) {
+// (The equal-area default goes through PROJ in the GDAL module: tested
+// end to end in tests/gen/equal_area_cli_test.cpp.)
+TEST(Projection, EquirectProjectsAboutTheMeanLatitudeAndStatesItsDistortion) {
     PointTable p = lonLat();
     EXPECT_TRUE(looksLikeLonLat(p));
-    const std::string how = projectPoints(p, Projection::Auto);
+    const std::string how = projectPoints(p, {Projection::Equirect, ""});
     EXPECT_NE(how.find("equirectangular"), std::string::npos);
+    // cos(40) / cos(60) - 1 = 53.2 % on a sphere (the WGS84 ellipsoid's own
+    // area moves it by under 1 %): the spread of map area per ground area.
+    const size_t at = how.find("area distortion at most ");
+    ASSERT_NE(at, std::string::npos) << how;
+    const double pct = std::stod(how.substr(at + 24));
+    EXPECT_NEAR(pct, 100 * (std::cos(40 * M_PI / 180) / std::cos(60 * M_PI / 180) - 1), 1.0) << how;
     const double k = std::cos(50.0 * M_PI / 180.0);
     EXPECT_NEAR(p.x[1], 10.0 * k, 1e-12);
     EXPECT_EQ(p.y[1], 50.0);
@@ -78,16 +86,18 @@ TEST(Projection, OtherColumnsAreLeftAloneUnlessAsked) {
     PointTable p = lonLat();
     p.x_name = "x";
     p.y_name = "y";
-    EXPECT_EQ(projectPoints(p, Projection::Auto), "");
+    EXPECT_EQ(projectPoints(p, {Projection::Auto, ""}), "");
     EXPECT_EQ(p.x[1], 10.0);
-    EXPECT_NE(projectPoints(p, Projection::Equirect), "");
+    EXPECT_NE(projectPoints(p, {Projection::Equirect, ""}), "");
     PointTable q = lonLat();
-    EXPECT_EQ(projectPoints(q, Projection::None), "");
+    EXPECT_EQ(projectPoints(q, {Projection::None, ""}), "");
     PointTable far = lonLat();
     far.y[0] = 95;  // not a latitude
     EXPECT_FALSE(looksLikeLonLat(far));
-    EXPECT_THROW(projectPoints(far, Projection::Equirect), InputError);
-    EXPECT_THROW(parseProjection("mercator"), InputError);
+    EXPECT_THROW(projectPoints(far, {Projection::Equirect, ""}), InputError);
+    EXPECT_EQ(parseProjection("EPSG:3035").kind, Projection::Definition);
+    EXPECT_EQ(parseProjection("equal-area").kind, Projection::EqualArea);
+    EXPECT_THROW(parseProjection(""), InputError);
 }
 
 }  // namespace

@@ -193,3 +193,53 @@ extern "C" __attribute__((visibility("default"))) int tsf_gdal_read(const tsf::G
         return tsf::kGdalFailed;
     }
 }
+
+namespace tsf {
+namespace {
+
+struct Srs {
+    OGRSpatialReferenceH h = OSRNewSpatialReference(nullptr);
+    ~Srs() { OSRDestroySpatialReference(h); }
+};
+
+void transformPoints(const GdalTransformCall& c) {
+    QuietGdal quiet;
+    Srs from, to;
+    if (OSRSetFromUserInput(from.h, c.from->c_str()) != OGRERR_NONE)
+        throw InputError("'" + *c.from + "' is not a coordinate reference system GDAL and PROJ know: " + QuietGdal::lastMessage());
+    if (OSRSetFromUserInput(to.h, c.to->c_str()) != OGRERR_NONE)
+        throw InputError("'" + *c.to + "' is not a projection GDAL and PROJ know: " + QuietGdal::lastMessage());
+    // x east (longitude), y north (latitude), whatever order the authority gives.
+    OSRSetAxisMappingStrategy(from.h, OAMS_TRADITIONAL_GIS_ORDER);
+    OSRSetAxisMappingStrategy(to.h, OAMS_TRADITIONAL_GIS_ORDER);
+    OGRCoordinateTransformationH t = OCTNewCoordinateTransformation(from.h, to.h);
+    if (!t) throw InputError("no transformation from '" + *c.from + "' to '" + *c.to + "': " + QuietGdal::lastMessage());
+    std::vector<double>& x = *c.x;
+    std::vector<double>& y = *c.y;
+    std::vector<int> ok(x.size(), 0);
+    const int done = x.empty() ? 1 : OCTTransformEx(t, int(x.size()), x.data(), y.data(), nullptr, ok.data());
+    OCTDestroyCoordinateTransformation(t);
+    for (size_t k = 0; k < ok.size(); ++k)
+        if (!done || !ok[k] || !std::isfinite(x[k]) || !std::isfinite(y[k]))
+            throw InputError("point " + std::to_string(k + 1) + " cannot be projected from '" + *c.from + "' to '" + *c.to + "'");
+    *c.to_name = crsName(to.h);
+}
+
+}  // namespace
+}  // namespace tsf
+
+extern "C" __attribute__((visibility("default"))) int tsf_gdal_transform(const tsf::GdalTransformCall* call) {
+    try {
+        tsf::transformPoints(*call);
+        return tsf::kGdalOk;
+    } catch (const tsf::InputError& e) {
+        call->error->path = e.path();
+        call->error->line = e.line();
+        call->error->column = e.column();
+        call->error->detail = e.detail();
+        return tsf::kGdalInputError;
+    } catch (const std::exception& e) {
+        call->error->detail = e.what();
+        return tsf::kGdalFailed;
+    }
+}

@@ -6,6 +6,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "gen/field/raster.h"
 
@@ -15,7 +16,7 @@ namespace tsf {
 inline constexpr const char* kGdalModuleName = "tsf-gdal.so";
 
 /// Bumped whenever GdalCall, GdalModuleError or Raster change.
-inline constexpr int kGdalModuleAbi = 3;  // 3: GdalCall::band; 2: Raster::categorical
+inline constexpr int kGdalModuleAbi = 4;  // 4: tsf_gdal_transform; 3: GdalCall::band; 2: Raster::categorical
 
 inline constexpr int kGdalOk = 0;
 inline constexpr int kGdalInputError = 1;  ///< error holds an InputError's parts
@@ -35,8 +36,20 @@ struct GdalCall {
     int band = 1;                             ///< which band, 1-based (bands, time steps, levels)
 };
 
-// The module's two entry points (extern "C", looked up with dlsym):
+/// Points from one coordinate reference system to another (PROJ, through
+/// GDAL's OSR): x is the easting or longitude, y the northing or latitude.
+struct GdalTransformCall {
+    const std::string* from = nullptr;  ///< any CRS GDAL reads from user input: "EPSG:4326", "+proj=...", WKT
+    const std::string* to = nullptr;
+    std::vector<double>* x = nullptr;   ///< in and out
+    std::vector<double>* y = nullptr;   ///< in and out
+    std::string* to_name = nullptr;     ///< out: the target CRS's name
+    GdalModuleError* error = nullptr;   ///< out, when the result is not kGdalOk
+};
+
+// The module's entry points (extern "C", looked up with dlsym):
 //   int tsf_gdal_module_abi();                 returns kGdalModuleAbi
 //   int tsf_gdal_read(const GdalCall* call);   returns kGdalOk, kGdalInputError or kGdalFailed
+//   int tsf_gdal_transform(const GdalTransformCall* call);   the same
 
 }  // namespace tsf
