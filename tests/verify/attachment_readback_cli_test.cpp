@@ -40,7 +40,7 @@ const MadeModel& madeModel() {
         r.model = (r.dir / "m.stl").string();
         r.sidecar = r.model + ".scene.json";
         const auto g = test::runTsf("gen " + test::sourcePath("examples/airports-europe.csv") +
-                                        " --points x=lon,y=lat --bins 20 --title Airports --units airports --scale"
+                                        " --points x=lon,y=lat --project equirect --bins 20 --title Airports --units airports --scale"
                                         " --tilt points --marks-on data -o " + r.model,
                                     r.dir);
         EXPECT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;

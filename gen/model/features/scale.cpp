@@ -72,6 +72,20 @@ std::vector<ScaleLevel> scaleLevels(const ValueMapping& m, double step, double z
     return levels;
 }
 
+namespace {
+
+// The next 1, 2 or 5 x 10^k above `step`.
+double nextNiceStep(double step) {
+    const double decade = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+    for (const double mantissa : {1.0, 2.0, 5.0, 10.0}) {
+        const double next = roundedMultiple(1, mantissa * decade);
+        if (next > step * (1 + 1e-9)) return next;
+    }
+    return roundedMultiple(1, 10 * decade);
+}
+
+}  // namespace
+
 std::optional<double> chooseScaleStep(const ValueMapping& m, double z_snap_mm) {
     if (!(m.value_max > m.baseline)) return std::nullopt;
     const double range = m.value_max - m.baseline;
@@ -119,88 +133,121 @@ void placeScale(Scene& s) {
                              formatSignificant(kScaleMinRiserMm) + " mm apart; give a larger --height, or leave out --scale");
         sc.step = *step;
     }
-    const std::vector<ScaleLevel> levels = scaleLevels(s.mapping, sc.step, s.z_snap_mm, kScaleMaxSteps, &why);
-    assert(why.empty() && !levels.empty());
-    const int n = int(levels.size());
-
-    // The foot's west face: the easternmost hexagon edge of the kept cells.
-    // Every kept cell with its east edge there is a candidate contact.
-    int64_t i_east = INT64_MIN;
-    for (size_t k = 0; k < s.keptCount(); ++k) i_east = std::max(i_east, hexCentre(s.grid, s.col[k], s.row[k]).i + 1);
-    struct Candidate {
-        int32_t kept;
-        int64_t j;  // the centre's lattice j; its east edge spans j - 1 .. j + 1
-        bool ok;
-    };
-    std::vector<Candidate> cand;
-    for (size_t k = 0; k < s.keptCount(); ++k) {
-        const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
-        if (c.i + 1 != i_east) continue;
-        const bool ok = footCanTouch(s, int32_t(k));
-        cand.push_back({int32_t(k), c.j, ok});
-    }
-    std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
-    auto inBand = [&](int64_t j) {
-        for (const Candidate& c : cand)
-            if (j >= c.j - 1 && j <= c.j + 1) return true;
+    // Places the staircase for `step` along the east side; false (with
+    // `blocked` saying what is in the way and `need_mm` the run it needs)
+    // when no run there is long enough.
+    std::string blocked;
+    double need_mm = 0;
+    int n = 0;
+    auto tryStep = [&](double step) -> bool {
+        const std::vector<ScaleLevel> levels = scaleLevels(s.mapping, step, s.z_snap_mm, kScaleMaxSteps, &why);
+        if (!why.empty() || levels.empty()) return false;
+        n = int(levels.size());
+        // The foot's west face: the easternmost hexagon edge of the kept cells.
+        // Every kept cell with its east edge there is a candidate contact.
+        int64_t i_east = INT64_MIN;
+        for (size_t k = 0; k < s.keptCount(); ++k) i_east = std::max(i_east, hexCentre(s.grid, s.col[k], s.row[k]).i + 1);
+        struct Candidate {
+            int32_t kept;
+            int64_t j;  // the centre's lattice j; its east edge spans j - 1 .. j + 1
+            bool ok;
+        };
+        std::vector<Candidate> cand;
+        for (size_t k = 0; k < s.keptCount(); ++k) {
+            const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
+            if (c.i + 1 != i_east) continue;
+            const bool ok = footCanTouch(s, int32_t(k));
+            cand.push_back({int32_t(k), c.j, ok});
+        }
+        std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
+        auto inBand = [&](int64_t j) {
+            for (const Candidate& c : cand)
+                if (j >= c.j - 1 && j <= c.j + 1) return true;
+            return false;
+        };
+        const double unit_y_mm = s.pitch_mm / (2.0 * kSqrt3);  // one lattice j step
+        need_mm = n * kScaleTreadMm;
+        auto yOf = [&](int64_t j) { return s.point(LatticePoint{i_east, j}, 0).y; };
+        for (const Candidate& start : cand) {
+            if (!start.ok) continue;
+            const int64_t j0 = std::max<int64_t>(0, start.j - 3);  // the middle of the gap below it
+            if (inBand(j0)) continue;
+            int64_t j1 = j0 + int64_t(std::ceil(need_mm / unit_y_mm - 1e-9));
+            while (inBand(j1)) ++j1;
+            // Every candidate in the run is touched; consecutive ones are one
+            // notch apart, and the cell in the notch is touched too.
+            bool clear = true;
+            std::vector<int32_t> contacts, fillers;
+            for (const Candidate& c : cand) {
+                if (c.j <= j0 || c.j >= j1) continue;
+                clear = clear && c.ok;
+                if (!contacts.empty()) {
+                    const int64_t previous_j = hexCentre(s.grid, s.col[size_t(contacts.back())], s.row[size_t(contacts.back())]).j;
+                    const int32_t filler = keptAtCentre(s, i_east - 2, previous_j + 3);
+                    clear = clear && c.j - previous_j == 6 && footCanTouch(s, filler);
+                    fillers.push_back(filler);
+                }
+                contacts.push_back(c.kept);
+            }
+            if (!clear) {
+                blocked = "cells without data, under a mark or culled";
+                continue;
+            }
+            const double y1 = yOf(j1);
+            if (s.legend && y1 + kScaleLegendClearanceMm > s.legend->plate_south_mm) {
+                blocked = "the braille legend's plate";
+                continue;
+            }
+            sc.x0_i = i_east;
+            sc.y0_j = j0;
+            sc.y1_j = j1;
+            sc.x0_mm = s.point(LatticePoint{i_east, j0}, 0).x;
+            sc.xs_mm = snapXy(sc.x0_mm + kScaleGapMm);
+            sc.x1_mm = snapXy(sc.xs_mm + kScaleStepWidthMm);
+            sc.y0_mm = yOf(j0);
+            sc.y1_mm = y1;
+            sc.foot_top_units = s.floor_units;
+            for (int i = 0; i < n; ++i) {
+                ScaleStep st;
+                st.value = levels[size_t(i)].value;
+                st.top_units = s.floor_units + levels[size_t(i)].height_units;
+                st.y_south_mm = i == 0 ? sc.y0_mm : sc.steps.back().y_north_mm;
+                st.y_north_mm = i + 1 == n ? sc.y1_mm : snapXy(sc.y0_mm + (sc.y1_mm - sc.y0_mm) * (i + 1) / n);
+                sc.steps.push_back(st);
+            }
+            sc.step = step;
+            sc.contacts = std::move(contacts);
+            sc.fillers = std::move(fillers);
+            s.scale = std::move(sc);
+            return true;
+        }
         return false;
     };
-    const double unit_y_mm = s.pitch_mm / (2.0 * kSqrt3);  // one lattice j step
-    const double need_mm = n * kScaleTreadMm;
-    auto yOf = [&](int64_t j) { return s.point(LatticePoint{i_east, j}, 0).y; };
-    std::string blocked;
-    for (const Candidate& start : cand) {
-        if (!start.ok) continue;
-        const int64_t j0 = std::max<int64_t>(0, start.j - 3);  // the middle of the gap below it
-        if (inBand(j0)) continue;
-        int64_t j1 = j0 + int64_t(std::ceil(need_mm / unit_y_mm - 1e-9));
-        while (inBand(j1)) ++j1;
-        // Every candidate in the run is touched; consecutive ones are one
-        // notch apart, and the cell in the notch is touched too.
-        bool clear = true;
-        std::vector<int32_t> contacts, fillers;
-        for (const Candidate& c : cand) {
-            if (c.j <= j0 || c.j >= j1) continue;
-            clear = clear && c.ok;
-            if (!contacts.empty()) {
-                const int64_t previous_j = hexCentre(s.grid, s.col[size_t(contacts.back())], s.row[size_t(contacts.back())]).j;
-                const int32_t filler = keptAtCentre(s, i_east - 2, previous_j + 3);
-                clear = clear && c.j - previous_j == 6 && footCanTouch(s, filler);
-                fillers.push_back(filler);
+    if (tryStep(sc.step)) return;
+    // A step tsf chose grows (the next nice number: fewer, taller steps)
+    // until the staircase fits the east side; a step given is kept.
+    const double first_need = need_mm;
+    const int first_n = n;
+    const std::string first_blocked = blocked;
+    if (!sc.step_given) {
+        const double range = s.mapping.value_max - s.mapping.baseline;
+        for (double step = nextNiceStep(sc.step); step <= range; step = nextNiceStep(step)) {
+            // At least two steps: one is no staircase to measure by.
+            std::string level_why;
+            if (scaleLevels(s.mapping, step, s.z_snap_mm, kScaleMaxSteps, &level_why).size() < 2) break;
+            blocked.clear();
+            if (tryStep(step)) {
+                s.notes.push_back("--scale: steps of " + formatSignificant(step) + " (" + std::to_string(n) +
+                                  ") rather than " + formatSignificant(first_need / kScaleTreadMm, 3) +
+                                  " steps: the model's east side holds no longer run clear of " +
+                                  (first_blocked.empty() ? std::string("its shape") : first_blocked));
+                return;
             }
-            contacts.push_back(c.kept);
         }
-        if (!clear) {
-            blocked = "cells without data, under a mark or culled";
-            continue;
-        }
-        const double y1 = yOf(j1);
-        if (s.legend && y1 + kScaleLegendClearanceMm > s.legend->plate_south_mm) {
-            blocked = "the braille legend's plate";
-            continue;
-        }
-        sc.x0_i = i_east;
-        sc.y0_j = j0;
-        sc.y1_j = j1;
-        sc.x0_mm = s.point(LatticePoint{i_east, j0}, 0).x;
-        sc.xs_mm = snapXy(sc.x0_mm + kScaleGapMm);
-        sc.x1_mm = snapXy(sc.xs_mm + kScaleStepWidthMm);
-        sc.y0_mm = yOf(j0);
-        sc.y1_mm = y1;
-        sc.foot_top_units = s.floor_units;
-        for (int i = 0; i < n; ++i) {
-            ScaleStep st;
-            st.value = levels[size_t(i)].value;
-            st.top_units = s.floor_units + levels[size_t(i)].height_units;
-            st.y_south_mm = i == 0 ? sc.y0_mm : sc.steps.back().y_north_mm;
-            st.y_north_mm = i + 1 == n ? sc.y1_mm : snapXy(sc.y0_mm + (sc.y1_mm - sc.y0_mm) * (i + 1) / n);
-            sc.steps.push_back(st);
-        }
-        sc.contacts = std::move(contacts);
-        sc.fillers = std::move(fillers);
-        s.scale = std::move(sc);
-        return;
     }
+    need_mm = first_need;
+    n = first_n;
+    blocked = first_blocked;
     throw InputError("--scale: the tactile scale needs " + formatSignificant(std::round(need_mm)) + " mm (" + std::to_string(n) +
                      " steps of " + formatSignificant(kScaleTreadMm) + " mm) along the model's east side, and the run there is cut by " +
                      (blocked.empty() ? std::string("the model's shape") : blocked) +
