@@ -19,7 +19,9 @@ inline constexpr int kExitToolFailed = 3;    ///< an external tool (openscad, ..
 inline constexpr int kExitDeviceFailed = 4;  ///< a haptic device could not be used
 inline constexpr int kExitInterrupted = 130; ///< SIGINT
 
-/// The command line tsf was started with ("tsf gen field.csv -o m.stl"), for file headers.
+/// The command line tsf was started with ("tsf gen field.csv -o m.stl"), for
+/// file headers: every path shortened to its file name, so no folder of the
+/// user's travels with a shared file.
 const std::string& invocation();
 void setInvocation(int argc, char** argv);
 

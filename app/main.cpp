@@ -1,6 +1,7 @@
 // tsf: tangible scalar fields. One binary, one subcommand per job.
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 #include "app/commands.h"
@@ -15,7 +16,16 @@ const std::string& invocation() { return g_invocation; }
 void setInvocation(int argc, char** argv) {
     g_invocation = "tsf";
     for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
+        // File names only: a shared .scad must not carry the folders of the
+        // person who made it. A path is an argument (or the value of an
+        // --option=value) whose folder exists; "km/h" stays as it is.
+        std::string arg = argv[i];
+        const size_t eq = arg.rfind("--", 0) == 0 ? arg.find('=') : std::string::npos;
+        const std::string value = eq == std::string::npos ? arg : arg.substr(eq + 1);
+        const std::filesystem::path path(value);
+        std::error_code ec;
+        if (path.has_parent_path() && path.has_filename() && std::filesystem::is_directory(path.parent_path(), ec))
+            arg = (eq == std::string::npos ? std::string() : arg.substr(0, eq + 1)) + path.filename().string();
         const bool plain = arg.find_first_of(" \t'\"\\$") == std::string::npos && !arg.empty();
         g_invocation += " " + (plain ? arg : "'" + arg + "'");
     }

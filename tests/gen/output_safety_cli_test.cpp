@@ -122,5 +122,32 @@ TEST(OutputSafety, AFileSizeLimitFailsCleanly) {
     EXPECT_EQ(temporaryFiles(dir), 0);
 }
 
+// A shared model carries no folder of the person who made it: the .scad
+// header's command, the STL header, the 3MF's names and config, the
+// parameter sets and the sidecar name files, never paths. A --title with a
+// slash that is no path stays as written.
+TEST(OutputSafety, NoFolderOfTheUsersTravelsWithTheFiles) {
+    const auto dir = test::scratchDir() / "private_folder_name";
+    std::filesystem::create_directories(dir);
+    test::writeText(dir / "f.csv", "1,2,3\n4,5,6\n7,8,9\n");
+    const std::string d = dir.string();
+    const auto stl = runTsf("gen " + d + "/f.csv --title km/h --scad=" + d + "/m.scad -o " + d + "/m.stl");
+    ASSERT_EQ(stl.exit_code, 0) << stl.output;
+    const auto parts = runTsf("gen " + d + "/f.csv --parts --title km/h -o " + d + "/p.3mf");
+    ASSERT_EQ(parts.exit_code, 0) << parts.output;
+    for (const char* name : {"m.scad", "m.stl", "m.stl.scene.json", "m.json", "p.3mf", "p.3mf.scene.json"}) {
+        if (!std::filesystem::exists(dir / name)) continue;
+        const std::string bytes = readText(dir / name);
+        EXPECT_EQ(bytes.find("private_folder_name"), std::string::npos) << name << " names the folder";
+    }
+    // A 3MF is a zip: its entries are stored, or deflated; look inside.
+    const auto listing = runCommand("unzip -p " + d + "/p.3mf");
+    ASSERT_EQ(listing.exit_code, 0) << listing.output.substr(0, 400);
+    EXPECT_NE(listing.output.find("f.csv"), std::string::npos) << "the file name is there";
+    EXPECT_EQ(listing.output.find("private_folder_name"), std::string::npos) << listing.output.substr(0, 400);
+    EXPECT_NE(readText(dir / "m.scad").find("// Command:   tsf gen f.csv --title km/h --scad=m.scad -o m.stl"), std::string::npos)
+        << readText(dir / "m.scad").substr(0, 400);
+}
+
 }  // namespace
 }  // namespace tsf
