@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gen/model/features/legend_plate.h"
+#include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 
 namespace tsf {
@@ -32,6 +33,24 @@ PlateSpec plateSpec(const Scene& s, bool dots) {
     for (const PlateOutline::Edge& e : spec.outline.edges)
         spec.side_from_mm.push_back(e.cell < 0 ? spec.bottom_mm
                                                : s.zMm(std::clamp(s.top[size_t(e.cell)], l.plate_bottom_units, l.plate_top_units)));
+    // Every height the pillars have at a lattice corner of the outline (a
+    // pit that meets the plate's own side only at that corner, below its
+    // top): the plate's sides split there too, so no T-junction.
+    const int64_t ids = latticeVertexIdCount(s.grid);
+    for (const TabPoint& p : spec.outline.points) {
+        std::vector<double> z;
+        if (p.lattice >= 0 && p.lattice < ids) {
+            int32_t cols[3], rows[3];
+            latticeVertexCells(s.grid, p.lattice, cols, rows);
+            for (int c = 0; c < 3; ++c) {
+                const int32_t k = s.keptAt(cols[c], rows[c]);
+                if (k < 0) continue;
+                for (const int64_t u : {cornerTopAt(s, size_t(k), p.lattice), cornerBottomAt(s, size_t(k), p.lattice)})
+                    if (u > l.plate_bottom_units && u < l.plate_top_units) z.push_back(s.zMm(u));
+            }
+        }
+        spec.point_heights_mm.push_back(std::move(z));
+    }
     return spec;
 }
 

@@ -114,6 +114,10 @@ PlateBody meshPlateBody(const PlateSpec& s, bool joined) {
         body.lattice_id.push_back(o.points[v].lattice);
         std::sort(column[v].begin(), column[v].end());
     };
+    if (joined)
+        for (uint32_t v = 0; v < n && v < s.point_heights_mm.size(); ++v)
+            for (const double z : s.point_heights_mm[v])
+                if (z > z0 && z < h) addHeight(v, z);
     for (size_t k = 0; k < o.edges.size(); ++k) {
         from[k] = joined && k < s.side_from_mm.size() ? std::max(z0, s.side_from_mm[k]) : z0;
         if (from[k] > z0 && from[k] < h) {

@@ -41,6 +41,10 @@ struct PlateSpec {
     /// is a whole side; at or above height_mm no side (a pillar's wall stands
     /// there); between, a pillar lower than the plate (a no-data pit).
     std::vector<double> side_from_mm;
+    /// Per outline point (or empty): more heights its corner line carries,
+    /// mm, where the pillars meeting it there have vertices (a pit's top
+    /// beside the plate's own side), so the sides split there too.
+    std::vector<std::vector<double>> point_heights_mm;
 };
 
 /// The plate and its dots as a closed solid. `joined`: the sides

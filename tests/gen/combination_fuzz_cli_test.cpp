@@ -9,8 +9,7 @@
 //
 // CI runs TSF_COMBINATION_RUNS (default 40) combinations from a fixed seed;
 // run longer on demand with another seed:
-//   TSF_COMBINATION_RUNS=2000 TSF_COMBINATION_SEED=7 \
-//     build/tests/test_gen --gtest_filter='Combination*'
+//   TSF_COMBINATION_RUNS=2000 TSF_COMBINATION_SEED=7 build/tests/test_gen --gtest_filter='Combination*'
 // What it finds becomes a regression test of its own.
 #include <gtest/gtest.h>
 

@@ -153,7 +153,8 @@ TEST(LegendCli, SmallAndOddModelsTakeALegendThatVerifies) {
 // No-data pits beside the plate stay pits: the plate's side rises from the
 // pit's top to the floor, and every corner of that side splits the plate's
 // other walls at the pit's height (found by the combination fuzzer as open
-// edges at a pit's corner on the plate's south edge). A two-row field
+// edges at a pit's corner on the plate's south edge, twice: at the end of a
+// pit's edge, and where a pit meets the plate at a corner only). A two-row field
 // resampled fine, with the scale beside the legend, the same.
 TEST(LegendCli, NoDataPitsBesideThePlateStayPits) {
     const auto dir = test::scratchDir();
@@ -161,10 +162,14 @@ TEST(LegendCli, NoDataPitsBesideThePlateStayPits) {
                     "3,,3,3,3,3,3,,3,\n,,3,3,3,,3,3,,\n,3,3,3,3,3,3,3,3,3\n,3,3,,3,3,3,3,3,3\n"
                     ",3,,3,3,,,3,3,\n,3,3,3,3,,,3,3,3\n3,3,,,3,3,3,3,3,3\n,,3,3,3,,,,,\n");
     test::writeText(dir / "two.csv", ",1,\n,,1\n");
+    // A pit whose corner only (not an edge) meets the plate's own side on
+    // its south edge: the side splits at the pit's top there too.
+    test::writeText(dir / "corner.csv", "18,,\n,90,\n");
     const std::string out = (dir / "o.off").string();
     for (const std::string args : {"gaps.csv --title Rain --units u --no-triangle --height 0 --base 1 --bed 220x220",
                                    "gaps.csv --title Rain --height 5",
-                                   "two.csv --bins 58 --title Rain --units airports --scale --no-texture-structural"}) {
+                                   "two.csv --bins 58 --title Rain --units airports --scale --no-texture-structural",
+                                   "corner.csv --units u --transfer sqrt"}) {
         const auto r = test::runTsf("gen " + (dir / args).string() + " -o " + out, dir);
         ASSERT_EQ(r.exit_code, test::kExitOk) << args << "\n" << r.out << r.err;
         const auto v = test::runTsf("verify " + out + " --scene " + out + ".scene.json", dir);
