@@ -36,6 +36,7 @@ long envOr(const char* name, long fallback) {
 struct Case {
     std::string field;    ///< the input file's text
     bool points = false;  ///< a point table, not a grid
+    bool lonlat = false;  ///< its columns are lon, lat (projected with PROJ unless asked not to)
     std::string options;  ///< for tsf gen, without the input and -o
     std::string output;   ///< file name of the model
 };
@@ -49,8 +50,10 @@ Case randomCase(std::mt19937_64& rng) {
     std::ostringstream f;
     f.precision(6);
     if (c.points) {
-        // Clustered points: a few centres, each point near one; sometimes repeated.
-        f << "x,y\n";
+        // Clustered points: a few centres, each point near one; sometimes
+        // repeated; sometimes longitude / latitude.
+        c.lonlat = chance(0.3);
+        f << (c.lonlat ? "lon,lat\n" : "x,y\n");
         const int n = chance(0.2) ? integer(1, 5) : integer(6, 80);
         std::vector<std::pair<double, double>> centres;
         for (int k = integer(1, 4); k > 0; --k) centres.push_back({integer(-50, 50), integer(-50, 50)});
@@ -81,7 +84,8 @@ Case randomCase(std::mt19937_64& rng) {
 
     std::string o;
     if (c.points) {
-        o += " --points x=x,y=y";
+        o += c.lonlat ? " --points x=lon,y=lat" : " --points x=x,y=y";
+        if (c.lonlat && chance(0.3)) o += " --project " + pick({"equal-area", "equirect", "none", "EPSG:3035"});
         if (chance(0.5)) o += " --bins " + std::to_string(integer(1, 40));
         if (chance(0.2)) o += " --tilt points";
     } else {
