@@ -455,11 +455,16 @@ std::string emitScadParameterSets(const Scene& scene) {
     half["height"] = formatShortest(p.max_height_mm / 2);
     half["base"] = formatShortest(std::max(p.base_mm / 2, p.z_step_mm));
 
-    // The orientation tab stands where tsf placed it for the parameters as
-    // generated (the file asserts them): the other sets leave it out.
+    // The orientation tab and the legend's plate stand where tsf placed them
+    // for the parameters as generated (the file asserts the tab's): the other
+    // sets leave them out (a mirrored model's plate would float over a flat one).
     if (scene.marks.tab) {
         all["show_orientation_tab"] = "true";
         for (nlohmann::ordered_json* set : {&layers, &flip, &half}) (*set)["show_orientation_tab"] = "false";
+    }
+    if (scene.legend) {
+        all["braille_legend"] = "true";
+        for (nlohmann::ordered_json* set : {&layers, &flip, &half}) (*set)["braille_legend"] = "false";
     }
 
     nlohmann::ordered_json sets;

@@ -201,6 +201,22 @@ TEST(ScadEmitter, ParameterSetsLeaveTheOrientationTabOutWhereItWouldNotStand) {
     EXPECT_TRUE(contains(scad, "tsf_with_tab(orientation_tab, show_orientation_tab) "));
 }
 
+// The legend's plate too: drawn for the parameters as generated (a mirrored
+// model's lies in its pillars' band), left out of every other set.
+TEST(ScadEmitter, ParameterSetsLeaveTheLegendOutWhereItWouldNotStand) {
+    for (const Bottom bottom : {Bottom::Flat, Bottom::Mirrored}) {
+        SceneParams p = smallParams(bottom);
+        p.base_mm = 3;  // a mirrored plate needs a band of 1.6 mm its pillars share
+        p.legend.title = "Depth";
+        const Scene scene = buildScene(bumpyField(12, 10), p);
+        ASSERT_TRUE(scene.legend.has_value());
+        const nlohmann::json sets = nlohmann::json::parse(emitScadParameterSets(scene))["parameterSets"];
+        EXPECT_EQ(sets["as generated"]["braille_legend"], "true");
+        for (const auto& [name, set] : sets.items())
+            if (name != "as generated") EXPECT_EQ(set["braille_legend"], "false") << name;
+    }
+}
+
 TEST(ScadEmitter, WritesTheFileAndItsParameterSetsAtomically) {
     const std::string dir = scratchDir("emitter_write");
     const Scene scene = bumpyScene();
