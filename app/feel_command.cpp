@@ -125,6 +125,72 @@ private:
     throw CLI::RuntimeError(kExitDeviceFailed);
 }
 
+// A mesh tsf did not make, moved so its footprint starts at (0, 0) (the
+// Scene frame's grid corner), and its top sampled at the centres of a
+// hexagonal grid about 60 cells across laid over it: the values (mm above
+// its lowest top) of a Scene that gives the feel its grid, coverage and
+// report. What is felt is the mesh's own top (meshRelief).
+constexpr int kForeignMeshCells = 60;
+
+HexField meshTopField(Mesh& mesh, const std::string& path) {
+    const Bounds b = meshBounds(mesh);
+    for (tsf::Vec3& p : mesh.positions) {
+        p.x -= b.min.x;
+        p.y -= b.min.y;
+    }
+    const double width = b.max.x - b.min.x, depth = b.max.y - b.min.y;
+    HexField f;
+    const double pitch = std::max({width, depth, 1e-3}) / kForeignMeshCells;
+    f.grid.cols = std::max(1, int32_t(std::ceil(width / pitch)));
+    f.grid.rows = std::max(1, int32_t(std::ceil(depth / (pitch * kSqrt3 / 2))));
+    const ReliefSurface top = reliefSurface(mesh, pitch / kReliefSamplesPerPitch);
+    f.values.assign(size_t(f.grid.cellCount()), std::nan(""));
+    for (int32_t r = 0; r < f.grid.rows; ++r)
+        for (int32_t c = 0; c < f.grid.cols; ++c) {
+            const LatticePoint centre = hexCentre(f.grid, c, r);
+            const auto i = int32_t(std::floor((latticeX(centre, pitch) - top.x0_mm) / top.sample_mm));
+            const auto j = int32_t(std::floor((latticeY(centre, pitch) - top.y0_mm) / top.sample_mm));
+            if (i >= 0 && j >= 0 && i < top.cols && j < top.rows) f.at(c, r) = top.z_mm[size_t(j) * size_t(top.cols) + size_t(i)];
+        }
+    double lowest = INFINITY;
+    for (const double v : f.values)
+        if (std::isfinite(v)) lowest = std::min(lowest, v);
+    for (double& v : f.values)
+        if (std::isfinite(v)) v -= lowest;  // mm above the lowest top
+    f.source = path;
+    f.pitch_data = pitch;
+    f.how = "the mesh's own top (no scene sidecar), on " + std::to_string(f.grid.cols) + " x " +
+            std::to_string(f.grid.rows) + " hexagons laid over it";
+    f.input.kind = "mesh";
+    return f;
+}
+
+// The Scene for meshTopField's values: one hexagon per value at the pitch
+// they were sampled at, heights in mm as the values are, the floor at the
+// mesh's lowest top, nothing added (no marks, no culling).
+SceneParams meshTopParams(const HexField& f, const Mesh& mesh) {
+    SceneParams p;
+    p.pitch_mm = f.pitch_data;
+    double highest = 0;
+    for (const double v : f.values)
+        if (std::isfinite(v)) highest = std::max(highest, v);
+    const Bounds b = meshBounds(mesh);
+    p.max_height_mm = std::max(highest, 1e-3);
+    p.value_max = p.max_height_mm;
+    p.baseline_mode = BaselineMode::Zero;
+    // The floor: the lowest top above the mesh's bottom (at least a snap step).
+    double floor = INFINITY;
+    const ReliefSurface top = reliefSurface(mesh, f.pitch_data / kReliefSamplesPerPitch);
+    for (const double z : top.z_mm)
+        if (std::isfinite(z)) floor = std::min(floor, z);
+    p.base_mm = std::max(std::isfinite(floor) ? floor - b.min.z : 0.0, 0.001);
+    p.cull = Cull::None;
+    p.marks.notch = false;
+    p.marks.triangle = false;
+    p.structural_texture = false;
+    return p;
+}
+
 // A mesh file (STL, 3MF, OFF, OBJ), felt as it is.
 bool isMeshFile(const std::string& path) {
     const std::string ext = lowerCaseExtension(path);
@@ -254,18 +320,24 @@ void runFeel(const FeelOptions& o) {
     const bool from_mesh = isMeshFile(o.gen.input);
     std::string sidecar = from_mesh ? (o.scene.empty() ? o.gen.input + ".scene.json" : o.scene) : std::string();
     if (!from_mesh && !o.scene.empty()) throw InputError("--scene is for a mesh input (MODEL.stl --scene MODEL.stl.scene.json)");
-    if (from_mesh && !std::filesystem::exists(sidecar))
-        throw InputError(o.gen.input + ": feeling a mesh needs the scene sidecar of the model it was made from (for its "
-                         "grid and heights): give --scene MODEL.stl.scene.json (tsf gen writes it beside the model)");
-    const bool from_sidecar = from_mesh || isSceneSidecar(o.gen.input);
-    HexField field;
-    if (!from_sidecar) field = loadField(o.gen);
-    const Scene scene = from_sidecar ? readSceneJson(from_mesh ? sidecar : o.gen.input) : buildScene(field, o.gen.scene);
+    if (from_mesh && !o.scene.empty() && !std::filesystem::exists(sidecar))
+        throw InputError("--scene " + o.scene + ": no such file (tsf gen writes MODEL.stl.scene.json beside the model)");
+    // A mesh tsf did not make has no sidecar: its top is felt on a grid laid over it.
+    const bool foreign_mesh = from_mesh && !std::filesystem::exists(sidecar);
+    const bool from_sidecar = (from_mesh && !foreign_mesh) || isSceneSidecar(o.gen.input);
     Mesh file_mesh;
     if (from_mesh) {
         MeshReadReport read;
         file_mesh = readMesh(o.gen.input, &read);
         if (file_mesh.triangles.empty()) throw InputError(o.gen.input + ": the mesh has no triangles to feel");
+    }
+    HexField field;
+    if (!from_sidecar && !from_mesh) field = loadField(o.gen);
+    if (foreign_mesh) field = meshTopField(file_mesh, o.gen.input);
+    Scene scene;
+    if (foreign_mesh) scene = buildScene(field, meshTopParams(field, file_mesh));
+    else scene = from_sidecar ? readSceneJson(from_mesh ? sidecar : o.gen.input) : buildScene(field, o.gen.scene);
+    if (from_mesh) {
         const double overhang = overhangAreaMm2(file_mesh);
         // A hand from above meets the top only: say what it cannot reach.
         if (overhang > 0 && !o.json)
@@ -274,7 +346,7 @@ void runFeel(const FeelOptions& o) {
                          "underside): a hand from above cannot reach under it; the top is felt\n",
                          o.gen.input.c_str(), overhang);
     }
-    if (from_sidecar) {
+    if (from_sidecar && !foreign_mesh) {
         // The values the model holds, for the report: its kept cells' (NaN:
         // a pit without data), not the culled cells of its grid.
         field.grid = scene.grid;
@@ -485,7 +557,8 @@ void addFeelCommand(CLI::App& app) {
         "The input and model options are tsf gen's: the relief felt is the relief gen prints.\n"
         "Given MODEL.stl.scene.json (the sidecar tsf gen writes), the model it describes is felt as printed:\n"
         "orientation tab, legend and scale included; the model options are then not used.\n"
-        "Given a mesh (MODEL.stl, .3mf, .off, .obj), that mesh is felt on the grid of its sidecar (--scene):\n"
+        "Given a mesh (MODEL.stl, .3mf, .off, .obj), that mesh is felt on the grid of its sidecar (--scene),\n"
+        "or, without one (a mesh tsf did not make), on a grid laid over it:\n"
         "  tsf feel edited.stl --scene model.stl.scene.json   # an edit of the .scad, rendered by OpenSCAD\n"
         "Device frame: x right, y up, z toward the user, metres; north of the field is away from the user.\n"
         "Buttons: centre = volume mode on/off, plus = coarser level, minus = finer level.\n"

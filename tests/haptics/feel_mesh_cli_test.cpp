@@ -53,11 +53,47 @@ TEST(FeelCli, FeelsAMeshFileOnTheGridOfItsSidecar) {
     }
     EXPECT_GE(double(same), 0.99 * double(a.size()));
 
-    // A mesh without the sidecar it needs is refused, saying what to give.
-    std::filesystem::copy_file(model, dir / "alone.stl");
-    const auto alone = tsf::test::runTsf("feel " + (dir / "alone.stl").string() + " --trajectory taps", dir);
-    EXPECT_EQ(alone.exit_code, tsf::test::kExitBadInput) << alone.output;
-    EXPECT_NE(alone.err.find("--scene"), std::string::npos) << alone.err;
+    // A --scene that is not there is bad input naming it.
+    const auto missing = tsf::test::runTsf("feel " + model + " --scene " + (dir / "nope.json").string() + " --trajectory taps", dir);
+    EXPECT_EQ(missing.exit_code, tsf::test::kExitBadInput) << missing.output;
+    EXPECT_NE(missing.err.find("nope.json"), std::string::npos) << missing.err;
+}
+
+// A mesh tsf did not make (no sidecar): its own top is felt, on a grid laid
+// over it. A 40 x 30 mm block 4 mm thick with a 10 x 10 mm block 6 mm
+// higher on it, away from the origin: the relief is the two tops.
+TEST(FeelCli, FeelsAMeshTsfDidNotMake) {
+    const auto dir = tsf::test::scratchDir("feel_foreign_mesh");
+    // Two boxes: [100, 140] x [50, 80] x [0, 4] and [115, 125] x [60, 70] x [4, 10], one closed solid each.
+    auto box = [](double x0, double y0, double z0, double x1, double y1, double z1, int first) {
+        std::string v, f;
+        for (int k = 0; k < 8; ++k)
+            v += std::to_string(k & 1 ? x1 : x0) + " " + std::to_string(k & 2 ? y1 : y0) + " " + std::to_string(k & 4 ? z1 : z0) + "\n";
+        const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+        for (const auto& s : q)
+            f += "3 " + std::to_string(first + s[0]) + " " + std::to_string(first + s[1]) + " " + std::to_string(first + s[2]) +
+                 "\n3 " + std::to_string(first + s[0]) + " " + std::to_string(first + s[2]) + " " + std::to_string(first + s[3]) + "\n";
+        return std::make_pair(v, f);
+    };
+    const auto [v1, f1] = box(100, 50, 0, 140, 80, 4, 0);
+    const auto [v2, f2] = box(115, 60, 4, 125, 70, 10, 8);
+    tsf::test::writeText(dir / "blocks.off", "OFF\n16 24 0\n" + v1 + v2 + f1 + f2);
+    const std::string csv = (dir / "r.csv").string();
+    const auto r = tsf::test::runTsf("feel " + (dir / "blocks.off").string() + " --trajectory taps --relief " + csv + " --json", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_NE(j["field"]["how"].get<std::string>().find("no scene sidecar"), std::string::npos) << j["field"].dump();
+    EXPECT_NEAR(j["relief"]["printed_height_mm"].get<double>(), 6.0, 0.05) << "the step above the lowest top";
+    // The relief: 10 mm over the small block, 4 mm over the rest of the big one, in the mesh's own frame moved to (0, 0).
+    const auto z = readRelief(csv);
+    size_t high = 0, low = 0;
+    for (const auto& [k, h] : z) {
+        const double x = k.first / 1000.0, y = k.second / 1000.0;
+        if (x > 16 && x < 24 && y > 11 && y < 19) high += std::fabs(h - 10) < 1e-6;
+        if ((x > 1 && x < 10) || (x > 30 && x < 39)) low += std::fabs(h - 4) < 1e-6;
+    }
+    EXPECT_GT(high, 100u);
+    EXPECT_GT(low, 500u);
 }
 
 // A blind maker edits one value of the generated .scad (4 -> 7), OpenSCAD
