@@ -132,14 +132,20 @@ private:
 // report. What is felt is the mesh's own top (meshRelief).
 constexpr int kForeignMeshCells = 60;
 
-HexField meshTopField(Mesh& mesh, const std::string& path) {
+struct MeshTop {
+    HexField field;
+    double floor_mm = 0;  ///< the lowest top above the mesh's bottom
+};
+
+MeshTop meshTopField(Mesh& mesh, const std::string& path) {
     const Bounds b = meshBounds(mesh);
     for (tsf::Vec3& p : mesh.positions) {
         p.x -= b.min.x;
         p.y -= b.min.y;
     }
     const double width = b.max.x - b.min.x, depth = b.max.y - b.min.y;
-    HexField f;
+    MeshTop out;
+    HexField& f = out.field;
     const double pitch = std::max({width, depth, 1e-3}) / kForeignMeshCells;
     f.grid.cols = std::max(1, int32_t(std::ceil(width / pitch)));
     f.grid.rows = std::max(1, int32_t(std::ceil(depth / (pitch * kSqrt3 / 2))));
@@ -153,37 +159,35 @@ HexField meshTopField(Mesh& mesh, const std::string& path) {
             if (i >= 0 && j >= 0 && i < top.cols && j < top.rows) f.at(c, r) = top.z_mm[size_t(j) * size_t(top.cols) + size_t(i)];
         }
     double lowest = INFINITY;
-    for (const double v : f.values)
-        if (std::isfinite(v)) lowest = std::min(lowest, v);
+    for (const double z : top.z_mm)
+        if (std::isfinite(z)) lowest = std::min(lowest, z);
+    if (!std::isfinite(lowest)) lowest = 0;
     for (double& v : f.values)
         if (std::isfinite(v)) v -= lowest;  // mm above the lowest top
+    out.floor_mm = lowest - b.min.z;
     f.source = path;
     f.pitch_data = pitch;
     f.how = "the mesh's own top (no scene sidecar), on " + std::to_string(f.grid.cols) + " x " +
             std::to_string(f.grid.rows) + " hexagons laid over it";
     f.input.kind = "mesh";
-    return f;
+    return out;
 }
 
 // The Scene for meshTopField's values: one hexagon per value at the pitch
 // they were sampled at, heights in mm as the values are, the floor at the
 // mesh's lowest top, nothing added (no marks, no culling).
-SceneParams meshTopParams(const HexField& f, const Mesh& mesh) {
+SceneParams meshTopParams(const MeshTop& top) {
+    const HexField& f = top.field;
     SceneParams p;
     p.pitch_mm = f.pitch_data;
     double highest = 0;
     for (const double v : f.values)
         if (std::isfinite(v)) highest = std::max(highest, v);
-    const Bounds b = meshBounds(mesh);
     p.max_height_mm = std::max(highest, 1e-3);
     p.value_max = p.max_height_mm;
     p.baseline_mode = BaselineMode::Zero;
     // The floor: the lowest top above the mesh's bottom (at least a snap step).
-    double floor = INFINITY;
-    const ReliefSurface top = reliefSurface(mesh, f.pitch_data / kReliefSamplesPerPitch);
-    for (const double z : top.z_mm)
-        if (std::isfinite(z)) floor = std::min(floor, z);
-    p.base_mm = std::max(std::isfinite(floor) ? floor - b.min.z : 0.0, 0.001);
+    p.base_mm = std::max(top.floor_mm, 0.001);
     p.cull = Cull::None;
     p.marks.notch = false;
     p.marks.triangle = false;
@@ -333,10 +337,13 @@ void runFeel(const FeelOptions& o) {
     }
     HexField field;
     if (!from_sidecar && !from_mesh) field = loadField(o.gen);
-    if (foreign_mesh) field = meshTopField(file_mesh, o.gen.input);
     Scene scene;
-    if (foreign_mesh) scene = buildScene(field, meshTopParams(field, file_mesh));
-    else scene = from_sidecar ? readSceneJson(from_mesh ? sidecar : o.gen.input) : buildScene(field, o.gen.scene);
+    if (foreign_mesh) {
+        const MeshTop top = meshTopField(file_mesh, o.gen.input);
+        field = top.field;
+        scene = buildScene(field, meshTopParams(top));
+    }
+    if (!foreign_mesh) scene = from_sidecar ? readSceneJson(from_mesh ? sidecar : o.gen.input) : buildScene(field, o.gen.scene);
     if (from_mesh) {
         const double overhang = overhangAreaMm2(file_mesh);
         // A hand from above meets the top only: say what it cannot reach.

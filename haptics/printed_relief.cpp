@@ -111,11 +111,9 @@ double overhangAreaMm2(const Mesh& mesh) {
     for (const auto& t : mesh.triangles) {
         const tsf::Vec3 &p = mesh.positions[t[0]], &q = mesh.positions[t[1]], &r = mesh.positions[t[2]];
         if (std::max({p.z, q.z, r.z}) <= b.min.z) continue;  // on the bed
-        const double nx = (q.y - p.y) * (r.z - p.z) - (q.z - p.z) * (r.y - p.y);
-        const double ny = (q.z - p.z) * (r.x - p.x) - (q.x - p.x) * (r.z - p.z);
-        const double nz = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
-        const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-        if (len > 0 && nz < -std::sqrt(0.5) * len) area += len / 2;
+        const tsf::Vec3 n = tsf::cross(tsf::sub(q, p), tsf::sub(r, p));
+        const double len = std::sqrt(tsf::dot(n, n));
+        if (len > 0 && n.z < -std::sqrt(0.5) * len) area += len / 2;
     }
     return area;
 }

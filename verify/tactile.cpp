@@ -23,9 +23,6 @@ double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 cross(const Vec3& a, const Vec3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
 // Keeps the `keep` offenders with the smallest amount, smallest first.
@@ -357,8 +354,9 @@ void checkMarks(const Scene& s, const TactileOptions& o, TactileResult& r) {
     if (has_triangle && short_leg < kMinTriangleLegMm)
         miss("the triangle's shorter leg is " + formatFixed(short_leg, 1) + " mm, under " + formatFixed(kMinTriangleLegMm, 2) + " mm",
              short_leg);
-    if (has_triangle && long_leg < 12.7)
-        miss("the triangle's longer leg is " + formatFixed(long_leg, 1) + " mm, under 12.7 mm", long_leg);
+    if (has_triangle && long_leg < kMinTriangleLongLegMm)
+        miss("the triangle's longer leg is " + formatFixed(long_leg, 1) + " mm, under " + formatFixed(kMinTriangleLongLegMm, 1) + " mm",
+             long_leg);
     if (c.worst.size() > o.max_offenders) c.worst.resize(o.max_offenders);
     c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
     c.note = std::string(has_notch ? "notch " + formatFixed(notch, 1) + " mm deep" : "no notch") + ", " +
@@ -510,7 +508,7 @@ const std::vector<TactileThreshold>& tactileThresholds() {
         {"tactile_marks", "triangle's shorter leg", kMinTriangleLegMm, "mm",
          "1/4 in, the smallest component read on its own (L. Hasty, ibid.); APH: symbols closer than 1/4 in are hard "
          "to tell apart"},
-        {"tactile_marks", "triangle's longer leg", 12.7, "mm",
+        {"tactile_marks", "triangle's longer leg", kMinTriangleLongLegMm, "mm",
          "1/2 in: shapes with sides under 1/2 in may not be recognisable (APH, Guidelines for Design of Tactile "
          "Graphics, 1997)"},
         {"tactile_slender_pillars", "push at a pillar's top", kHandPushN, "N",

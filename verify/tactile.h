@@ -60,6 +60,7 @@ inline constexpr double kUnreachedDepthMm = 2.0;
 /// Smallest orientation marks (mm): the notch's depth and the triangle's shorter leg.
 inline constexpr double kMinNotchDepthMm = 3.2;
 inline constexpr double kMinTriangleLegMm = 6.35;
+inline constexpr double kMinTriangleLongLegMm = 12.7;
 /// Lowest printed braille dot, mm: NLS Specification 800's dot height (paper
 /// braille; lower dots are read poorly). The highest is kMaxBrailleDotHeightMm
 /// (gen/model/features/legend.h).

@@ -16,9 +16,6 @@ constexpr int kMarginPx = 24;
 constexpr int kFontScale = 3;         // label glyphs: 9 x 15 px
 constexpr uint32_t kInk = 0x202020;
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 cross(const Vec3& a, const Vec3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Vec3 unit(const Vec3& v) {
     const double n = std::sqrt(dot(v, v));
     return n > 0 ? Vec3{v.x / n, v.y / n, v.z / n} : v;

@@ -212,11 +212,4 @@ PlateOutline legendPlateOutline(const Scene& s) {
     return std::move(b.out);
 }
 
-std::vector<std::pair<int32_t, int>> legendTouchedEdges(const Scene& s) {
-    std::vector<std::pair<int32_t, int>> out;
-    for (const PlateOutline::Edge& e : legendPlateOutline(s).edges)
-        if (e.cell >= 0) out.push_back({e.cell, e.side});
-    return out;
-}
-
 }  // namespace tsf

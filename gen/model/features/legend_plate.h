@@ -47,10 +47,6 @@ struct PlateOutline {
 /// The outline of the Scene's legend plate (empty without a legend).
 PlateOutline legendPlateOutline(const Scene& scene);
 
-/// The hexagon edges (kept cell, edge 0..5) the plate stands against, from 0
-/// to the floor: the pillar walls of its outline, as the pillars see them.
-std::vector<std::pair<int32_t, int>> legendTouchedEdges(const Scene& scene);
-
 /// Whether the plate's east edge is the grid box's east edge (a lattice
 /// line), rather than further east under a legend wider than the grid.
 bool legendEastOnLattice(const Scene& scene);

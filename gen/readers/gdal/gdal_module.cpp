@@ -175,23 +175,36 @@ Raster parseGdalBytes(std::string_view bytes, const std::string& path, int band)
 
 extern "C" __attribute__((visibility("default"))) int tsf_gdal_module_abi() { return tsf::kGdalModuleAbi; }
 
-// No exception crosses the module's edge: an InputError comes back as its
-// parts, anything else as its message.
-extern "C" __attribute__((visibility("default"))) int tsf_gdal_read(const tsf::GdalCall* call) {
+namespace tsf {
+namespace {
+
+// Runs `work`; no exception crosses the module's edge: an InputError comes
+// back as its parts, anything else as its message.
+template <class Work>
+int guarded(GdalModuleError* error, Work work) {
     try {
+        work();
+        return kGdalOk;
+    } catch (const InputError& e) {
+        error->path = e.path();
+        error->line = e.line();
+        error->column = e.column();
+        error->detail = e.detail();
+        return kGdalInputError;
+    } catch (const std::exception& e) {
+        error->detail = e.what();
+        return kGdalFailed;
+    }
+}
+
+}  // namespace
+}  // namespace tsf
+
+extern "C" __attribute__((visibility("default"))) int tsf_gdal_read(const tsf::GdalCall* call) {
+    return tsf::guarded(call->error, [call] {
         *call->raster = call->bytes ? tsf::parseGdalBytes(*call->bytes, *call->path, call->band)
                                     : tsf::readGdalFile(*call->path, call->band);
-        return tsf::kGdalOk;
-    } catch (const tsf::InputError& e) {
-        call->error->path = e.path();
-        call->error->line = e.line();
-        call->error->column = e.column();
-        call->error->detail = e.detail();
-        return tsf::kGdalInputError;
-    } catch (const std::exception& e) {
-        call->error->detail = e.what();
-        return tsf::kGdalFailed;
-    }
+    });
 }
 
 namespace tsf {
@@ -229,17 +242,5 @@ void transformPoints(const GdalTransformCall& c) {
 }  // namespace tsf
 
 extern "C" __attribute__((visibility("default"))) int tsf_gdal_transform(const tsf::GdalTransformCall* call) {
-    try {
-        tsf::transformPoints(*call);
-        return tsf::kGdalOk;
-    } catch (const tsf::InputError& e) {
-        call->error->path = e.path();
-        call->error->line = e.line();
-        call->error->column = e.column();
-        call->error->detail = e.detail();
-        return tsf::kGdalInputError;
-    } catch (const std::exception& e) {
-        call->error->detail = e.what();
-        return tsf::kGdalFailed;
-    }
+    return tsf::guarded(call->error, [call] { tsf::transformPoints(*call); });
 }
