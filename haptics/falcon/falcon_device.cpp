@@ -10,6 +10,25 @@ namespace {
 
 constexpr int kWriteTimeout_ms = 2;
 constexpr int kCloseReadTimeout_ms = 5;
+/// Draining the link: it is quiet after this many reads in a row without
+/// data (each ends at the chip's 1 ms latency timer), and given up on
+/// after kDrainMaxReads.
+constexpr int kDrainQuietReads = 3;
+constexpr int kDrainMaxReads = 50;
+
+/// Reads until the device has sent everything it was going to (replies to
+/// packets still in flight), then empties the chip's receive buffer: a
+/// session must not start with another exchange's reply taken for its
+/// first, or every later frame would answer the packet before (two in
+/// flight, positions a packet old).
+void drain(FtdiLink& link, std::span<uint8_t, FtdiLink::kDataBytes> buf) noexcept {
+    for (int quiet = 0, k = 0; quiet < kDrainQuietReads && k < kDrainMaxReads; ++k) {
+        const UsbResult r = link.read(buf, kCloseReadTimeout_ms);
+        if (r.status == UsbStatus::kNoDevice) return;
+        quiet = r.bytes == 0 ? quiet + 1 : 0;
+    }
+    link.purgeReceive();
+}
 
 }  // namespace
 
@@ -54,8 +73,9 @@ void FalconDevice::open() {
                               " does not answer; switch its power off and on and try again");
         }
     }
-    // The check above left frames in the parser's way; start clean and learn
+    // The check above may have left replies in flight; start clean and learn
     // the homed state from one exchange.
+    drain(*link_, buf_);
     parser_.clear();
     awaiting_ = false;
     if (!send(FalconCommand{{0, 0, 0}, statusBits()})) {

@@ -21,10 +21,17 @@ constexpr uint8_t kHandshakeAnswer[] = {0x0A, 'D', ',', 0x0D};
 constexpr uint8_t kAutobaud = 'A';
 
 /// A failed step of one attempt; `fatal` stops all attempts (device gone).
+/// `no_loader`: the boot loader never answered the handshake.
 struct Failure {
     std::string what;
     bool fatal = false;
+    bool no_loader = false;
 };
+
+/// Attempts whose handshake got no answer at all before the load gives up:
+/// a second DTR reset that changes nothing means the DSP is not there (its
+/// power supply is off) or not in its boot loader.
+constexpr int kSilentLoaderAttempts = 2;
 
 std::string hex(uint8_t b) {
     char s[8];
@@ -39,7 +46,7 @@ bool gone(const UsbResult& r) { return r.status == UsbStatus::kNoDevice; }
 bool readUpTo(FtdiLink& link, size_t want, std::vector<uint8_t>& got, const FirmwareLoadOptions& o, Failure& f) {
     std::array<uint8_t, FtdiLink::kDataBytes> buf;
     for (int k = 0; k < o.reads_per_reply && got.size() < want; ++k) {
-        const UsbResult r = link.read(buf, o.read_timeout_ms);
+        const UsbResult r = link.read(buf, o.read_timeout_ms, want - got.size());
         if (gone(r)) {
             f = {"the Falcon disappeared from USB while loading its firmware", true};
             return false;
@@ -72,7 +79,8 @@ bool handshake(FtdiLink& link, const FirmwareLoadOptions& o, Failure& f) {
             return true;
     }
     f = {"the Falcon's boot loader did not answer the handshake (" + std::to_string(o.handshake_tries) +
-         " tries); is the firmware already running, or is the power supply off?"};
+             " tries); is the firmware already running, or is the power supply off?",
+         false, true};
     return false;
 }
 
@@ -164,6 +172,7 @@ bool falconFirmwareRunning(FtdiLink& link, int tries, int read_timeout_ms) noexc
 FirmwareLoadReport loadFalconFirmware(FtdiLink& link, std::span<const uint8_t> image, const FirmwareLoadOptions& o) {
     FirmwareLoadReport rep;
     Failure f;
+    int silent_loader = 0;
     for (int attempt = 1; attempt <= std::max(1, o.attempts); ++attempt) {
         rep.attempts = attempt;
         rep.bytes = rep.chunks = 0;
@@ -174,7 +183,7 @@ FirmwareLoadReport loadFalconFirmware(FtdiLink& link, std::span<const uint8_t> i
                 throw DeviceError("the firmware was uploaded but switching the Falcon's link to normal mode failed");
             return rep;
         }
-        if (f.fatal) break;
+        if (f.fatal || (f.no_loader && ++silent_loader >= kSilentLoaderAttempts)) break;
     }
     throw DeviceError("loading the Falcon's firmware failed after " + std::to_string(rep.attempts) +
                       (rep.attempts == 1 ? " attempt: " : " attempts: ") + f.what +

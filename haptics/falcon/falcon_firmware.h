@@ -23,8 +23,21 @@
 // checked by sending zero-force packets and waiting for a valid answer
 // (falconFirmwareRunning).
 //
-// Timeouts are counted in reads of read_timeout_ms each, so a fake device
-// that answers at once makes the tests run at full speed.
+// Timing. The loader runs with the chip's latency timer at 16 ms, so a read
+// with nothing to return still ends after 16 ms (a status-only packet);
+// waits are therefore counted in reads, each bounded by read_timeout_ms.
+// What an answer should take on the hardware: a 62-byte chunk is 4.3 ms on
+// the wire at 142 857 baud and its echo as long again, and the 4-byte
+// handshake answer 4.2 ms at 9600 baud, so every answer is in within about
+// 10 ms plus a latency period (26 ms). reads_per_reply = 25 waits at least
+// 25 x 16 ms = 400 ms for one (15 times that, for a DSP busy writing its
+// memory or a loaded USB bus; libnifalcon waits 1000 ms and loading is
+// known to fail on hosts with short waits), and read_timeout_ms = 50 bounds
+// a read above the latency period. Measured against the fake chip
+// (tests/haptics/falcon_link_test.cpp): a 7400-byte image loads in 0.59 s of
+// link time, each echo read sized to end with its packet (2.5 s when every
+// read waited for the latency timer). A loader that never answers costs handshake_tries x 400 ms an
+// attempt, and the load gives up after two such attempts (about 8 s).
 #pragma once
 
 #include <cstddef>
@@ -47,10 +60,10 @@ inline constexpr size_t kFirmwareChunkBytes = 62;
 std::vector<uint8_t> readFalconFirmware(const std::string& path);
 
 struct FirmwareLoadOptions {
-    int attempts = 3;           ///< whole loads tried before giving up
-    int handshake_tries = 100;  ///< 'C' sent per attempt before giving up on the loader
-    int reads_per_reply = 10;   ///< reads waited for one answer (handshake, 'A', one echo)
-    int read_timeout_ms = 10;   ///< each read's timeout
+    int attempts = 5;          ///< whole loads tried before giving up (a bad echo restarts the load)
+    int handshake_tries = 10;  ///< 'C' sent per attempt before giving up on the loader
+    int reads_per_reply = 25;  ///< reads waited for one answer (handshake, 'A', one echo)
+    int read_timeout_ms = 50;  ///< each read's timeout (above the 16 ms latency timer)
 };
 
 struct FirmwareLoadReport {

@@ -26,9 +26,11 @@ UsbResult FtdiLink::write(std::span<const uint8_t> data, int timeout_ms) noexcep
     return usb_.bulkWrite(data, timeout_ms);
 }
 
-UsbResult FtdiLink::read(std::span<uint8_t, kDataBytes> out, int timeout_ms) noexcept {
+UsbResult FtdiLink::read(std::span<uint8_t, kDataBytes> out, int timeout_ms, size_t expect_bytes) noexcept {
     std::array<uint8_t, kRawBytes> raw;
-    UsbResult r = usb_.bulkRead(raw, timeout_ms);
+    constexpr size_t kPacketData = kUsbPacketBytes - 2;
+    const size_t packets = std::clamp<size_t>((expect_bytes + kPacketData - 1) / kPacketData, 1, 4);
+    UsbResult r = usb_.bulkRead(std::span<uint8_t>(raw.data(), packets * kUsbPacketBytes), timeout_ms);
     r.bytes = stripFtdiStatus(std::span<const uint8_t>(raw.data(), std::min(r.bytes, raw.size())), out, status_);
     return r;
 }

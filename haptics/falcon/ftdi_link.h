@@ -59,9 +59,17 @@ public:
     /// One bulk IN transfer of up to kRawBytes raw bytes; the serial data
     /// (status bytes removed) goes to out, which must hold kDataBytes.
     /// result.bytes counts data bytes.
+    ///
+    /// The transfer ends at the chip's first short packet (its latency timer
+    /// sends one, data or none, that long after its last packet), when the
+    /// buffer is full, or at the timeout. A caller that knows how many bytes
+    /// it waits for passes `expect_bytes`: the buffer is then sized to the
+    /// packets those need, so the transfer ends as soon as they are in
+    /// (a 62-byte echo fills one full packet, which alone would not end a
+    /// longer transfer before the latency timer fires).
     static constexpr size_t kRawBytes = 4 * kUsbPacketBytes;
     static constexpr size_t kDataBytes = 4 * (kUsbPacketBytes - 2);
-    UsbResult read(std::span<uint8_t, kDataBytes> out, int timeout_ms) noexcept;
+    UsbResult read(std::span<uint8_t, kDataBytes> out, int timeout_ms, size_t expect_bytes = kDataBytes) noexcept;
 
     /// Modem-status bytes of the last packet read (0, 0 before any).
     uint8_t modemStatus() const noexcept { return status_[0]; }

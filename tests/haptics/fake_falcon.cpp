@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "haptics/falcon/falcon_kinematics.h"
+#include "tests/haptics/fake_falcon_mechanism.h"
 
 namespace tsf::haptics::testing {
 namespace {
@@ -13,6 +13,10 @@ constexpr uint8_t kModemStatus = 0x31, kLineStatus = 0x60;  // what an idle FT23
 /// Encoder offset before homing (any number will do: the counts are relative).
 constexpr int kUnhomedOffset = 1234;
 constexpr double kPacketPeriod_s = 0.001;
+/// Data bytes in one USB packet of the chip (64 less the two status bytes).
+constexpr size_t kPacketData = kUsbPacketBytes - 2;
+/// A split reply's second part comes this much after its first.
+constexpr double kSplitGap_us = 1500.0;
 
 }  // namespace
 
@@ -31,8 +35,19 @@ FakeFalcon::FakeFalcon(FakeFalconConfig config) : cfg_(std::move(config)) {
     p_ = cfg_.pose ? cfg_.pose(0.0) : Vec3(0.0);
 }
 
-void FakeFalcon::queue(std::vector<uint8_t> bytes) {
-    out_.push_back({std::move(bytes), reads_ + reply_delay_reads});
+double FakeFalcon::byteTime_us() const {
+    // 10 bits (start, 8 data, stop) at the line's speed.
+    const double baud = divisor_ == kDivisorNormal ? 1.5e6 : divisor_ == kDivisorUpload ? 3e6 / 21.0 : 9600.0;
+    return 10.0 / baud * 1e6;
+}
+
+void FakeFalcon::send(std::span<const uint8_t> bytes, double after_us) {
+    double t = std::max(now_us_ + after_us, line_free_us_);
+    for (uint8_t b : bytes) {
+        t += byteTime_us();
+        rx_.push_back({b, t});
+    }
+    line_free_us_ = t;
 }
 
 UsbResult FakeFalcon::control(uint8_t request, uint16_t value, uint16_t index, int) noexcept {
@@ -40,7 +55,7 @@ UsbResult FakeFalcon::control(uint8_t request, uint16_t value, uint16_t index, i
     controls_.push_back({request, value, index});
     switch (request) {
     case 0:  // purge
-        if (value == 1) out_.clear();
+        if (value == 1) rx_.clear();
         if (value == 2) in_.clear();
         break;
     case 1:  // modem control: DTR is bit 0 of the state, enabled by bit 8 of the mask
@@ -78,13 +93,16 @@ UsbResult FakeFalcon::control(uint8_t request, uint16_t value, uint16_t index, i
 void FakeFalcon::onLoaderBytes(std::span<const uint8_t> data) {
     if (loader_ == Loader::kHandshake && divisor_ == kDivisorLoader) {
         const bool is_c = data.size() == 3 && data[0] == 0x0A && data[1] == 'C' && data[2] == 0x0D;
-        if (is_c && ++handshakes_ > cfg_.handshake_after && !cfg_.silent_loader)
-            queue({0x0A, 'D', ',', 0x0D});
+        if (is_c && ++handshakes_ > cfg_.handshake_after && !cfg_.silent_loader) {
+            const uint8_t answer[] = {0x0A, 'D', ',', 0x0D};
+            send(answer, double(data.size()) * byteTime_us() + cfg_.loader_turnaround_ms * 1000.0);
+        }
         return;
     }
     if (loader_ == Loader::kAutobaud && divisor_ == kDivisorUpload) {
         if (data.size() == 1 && data[0] == 'A') {
-            queue({'A'});
+            const uint8_t a = 'A';
+            send({&a, 1}, byteTime_us() + cfg_.loader_turnaround_ms * 1000.0);
             loader_ = Loader::kUpload;
             ++upload_attempts_;
             uploaded_ = 0;
@@ -106,7 +124,13 @@ void FakeFalcon::onLoaderBytes(std::span<const uint8_t> data) {
             }
             echo.push_back(b);
         }
-        if (!echo.empty()) queue(std::move(echo));
+        // Each byte is echoed as it comes in: the echo starts one byte time
+        // (plus the loader's turnaround) after the write.
+        ++upload_writes_;
+        double after_us = byteTime_us() + cfg_.loader_turnaround_ms * 1000.0;
+        if (cfg_.slow_echo_every > 0 && upload_writes_ % cfg_.slow_echo_every == 0)
+            after_us += cfg_.slow_echo_ms * 1000.0;
+        if (!echo.empty()) send(echo, after_us);
     }
 }
 
@@ -135,9 +159,7 @@ void FakeFalcon::onCommand(const FalconCommand& c) {
     if (c.status & kFalconHoming) ++homing_seen_;
     if (cfg_.homing_packets >= 0 && homing_seen_ >= cfg_.homing_packets) homed_ = true;
     // The motors push with the commanded torques at the current pose.
-    Vec3 force(0.0);
-    FalconAngles theta;
-    if (falconInverseKinematics(p_, theta)) force = falconForceFromCommands(p_, theta, c.motor);
+    const Vec3 force = fakeMotorForce(p_, c.motor);
     forces_.push_back(force);
     stepGrip(force);
 
@@ -145,19 +167,24 @@ void FakeFalcon::onCommand(const FalconCommand& c) {
     if (cfg_.silent_after_packets >= 0 && n > cfg_.silent_after_packets) silent_ = true;
     if (silent_ || (cfg_.drop_reply_every > 0 && n % cfg_.drop_reply_every == 0)) return;
     FalconReport rep;
-    FalconAngles now;
-    if (falconInverseKinematics(p_, now))
-        for (size_t i = 0; i < 3; ++i)
-            rep.encoder[i] = int16_t(std::lround(falconAngleToEncoder(now[i])) + (homed_ ? 0 : kUnhomedOffset));
+    std::array<double, 3> now;
+    if (fakeThighAngles(p_, now))
+        for (size_t i = 0; i < 3; ++i) rep.encoder[i] = int16_t(fakeEncoderCount(now[i]) + (homed_ ? 0 : kUnhomedOffset));
     rep.buttons = cfg_.buttons ? cfg_.buttons(t_s_) : 0;
     rep.homed_mask = homed_ ? kFalconAllHomed : uint8_t(homing_seen_ > 0 ? 0x1 : 0x0);
     const FalconPacket frame = encodeFalconReport(rep);
-    if (cfg_.garbage_every > 0 && n % cfg_.garbage_every == 0) queue({'>', 0x41, '<', 0x13, '<', 0x42, 0x00});
+    // The command's last byte came in one byte time after the write; the
+    // firmware answers a turnaround later.
+    const double after_us = double(kFalconPacketBytes) * byteTime_us() + cfg_.reply_turnaround_us;
+    if (cfg_.garbage_every > 0 && n % cfg_.garbage_every == 0) {
+        const uint8_t garbage[] = {'>', 0x41, '<', 0x13, '<', 0x42, 0x00};
+        send(garbage, after_us);
+    }
     if (cfg_.split_every > 0 && n % cfg_.split_every == 0) {
-        queue(std::vector<uint8_t>(frame.begin(), frame.begin() + 7));
-        out_.push_back({std::vector<uint8_t>(frame.begin() + 7, frame.end()), reads_ + reply_delay_reads + 1});
+        send(std::span<const uint8_t>(frame.data(), 7), after_us);
+        send(std::span<const uint8_t>(frame.data() + 7, frame.size() - 7), after_us + kSplitGap_us);
     } else {
-        queue(std::vector<uint8_t>(frame.begin(), frame.end()));
+        send(frame, after_us);
     }
 }
 
@@ -186,24 +213,41 @@ UsbResult FakeFalcon::bulkWrite(std::span<const uint8_t> data, int) noexcept {
     return unplugged_ ? UsbResult{UsbStatus::kNoDevice, 0} : UsbResult{UsbStatus::kOk, data.size()};
 }
 
-UsbResult FakeFalcon::bulkRead(std::span<uint8_t> buffer, int) noexcept {
+UsbResult FakeFalcon::bulkRead(std::span<uint8_t> buffer, int timeout_ms) noexcept {
     if (unplugged_) return {UsbStatus::kNoDevice, 0};
-    ++reads_;
     if (buffer.size() < 2) return {UsbStatus::kError, 0};
-    // One packet: status bytes, then as much ready data as fits in 62 bytes.
-    buffer[0] = kModemStatus;
-    buffer[1] = kLineStatus;
-    size_t n = 2;
-    const size_t room = std::min(buffer.size(), kUsbPacketBytes);
-    while (!out_.empty() && out_.front().ready_at_read <= reads_ && n < room) {
-        Pending& p = out_.front();
-        const size_t take = std::min(room - n, p.bytes.size());
-        std::copy(p.bytes.begin(), p.bytes.begin() + long(take), buffer.begin() + long(n));
-        n += take;
-        p.bytes.erase(p.bytes.begin(), p.bytes.begin() + long(take));
-        if (p.bytes.empty()) out_.pop_front();
+    // libusb's timeout 0 waits for ever; the latency timer ends every wait.
+    const double deadline = timeout_ms > 0 ? now_us_ + timeout_ms * 1000.0 : 1e300;
+    double t = now_us_;
+    size_t n = 0;
+    for (;;) {
+        // The chip sends a full packet once 62 bytes are in, else what it
+        // has when the latency timer runs out (counted from its last packet).
+        const size_t room = std::min(kUsbPacketBytes, buffer.size() - n) - 2;
+        const double t_full = rx_.size() >= room ? std::max(t, rx_[room - 1].at_us) : 1e300;
+        const double t_timer = std::max(t, last_packet_us_ + latency_ms_ * 1000.0);
+        const double t_next = std::min(t_full, t_timer);
+        if (t_next > deadline) {
+            now_us_ = deadline;
+            return {UsbStatus::kTimeout, n};
+        }
+        t = t_next;
+        buffer[n] = kModemStatus;
+        buffer[n + 1] = kLineStatus;
+        size_t take = 0;
+        while (take < room && take < rx_.size() && rx_[take].at_us <= t) {
+            buffer[n + 2 + take] = rx_[take].byte;
+            ++take;
+        }
+        rx_.erase(rx_.begin(), rx_.begin() + long(take));
+        n += 2 + take;
+        last_packet_us_ = t;
+        // A short packet ends the transfer, and so does a full buffer.
+        if (take < kPacketData || buffer.size() - n < 2) {
+            now_us_ = t;
+            return {UsbStatus::kOk, n};
+        }
     }
-    return {UsbStatus::kOk, n};
 }
 
 }  // namespace tsf::haptics::testing

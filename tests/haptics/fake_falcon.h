@@ -3,20 +3,33 @@
 // LD_PRELOAD libusb stand-in in fake_libusb/ for `tsf feel --device falcon`).
 //
 // What it plays:
-//   - the FTDI chip: records every control request; tracks the baud divisor,
-//     DTR and the latency timer; purges; prefixes every IN packet with two
-//     modem-status bytes;
+//   - the FTDI chip, on a virtual clock (no test waits for real time):
+//     every control request is recorded (baud divisor, DTR, latency
+//     timer, purges). Bytes the DSP sends reach the chip at the serial line's
+//     speed (10 bits a byte at 9600, 142 857 or 1 500 000 baud). The chip
+//     hands the host a USB packet (two modem-status bytes, then up to 62
+//     data bytes) when 62 bytes are waiting, or else when its latency timer
+//     runs out since the last packet - with whatever has come, nothing at
+//     all included (a 2-byte status-only packet). A bulk read lasts until a
+//     short packet ends it, the buffer is full or its timeout passes; a
+//     full 64-byte packet does not end it. So a read right after a quiet
+//     spell returns at once with no data, and one that waits for a 62-byte
+//     echo in a 256-byte buffer lasts until the latency timer fires after it.
 //   - the DSP's boot loader: a DTR low -> high edge at 9600 baud resets it;
 //     it answers LF 'C' CR with LF 'D' ',' CR, then at upload speed echoes
-//     'A' and every firmware byte; switching to normal speed starts the
-//     firmware if the whole image (firmware_bytes) came through intact;
-//   - the firmware: answers each 16-byte command with one 16-byte frame of
-//     encoder counts from the grip's pose (inverse kinematics, rounded to
-//     counts), buttons and homed flags. Before homing, counts are offset by
-//     an arbitrary amount, as relative encoders are after power-up.
+//     'A' and every firmware byte as it arrives; switching to normal speed
+//     starts the firmware if the whole image (firmware_bytes) came through
+//     intact;
+//   - the firmware: answers each 16-byte command, reply_turnaround_us after
+//     it arrived, with one 16-byte frame of encoder counts from the grip's
+//     pose, buttons and homed flags. Before homing, counts are offset by an
+//     arbitrary amount, as relative encoders are after power-up.
+//   - the mechanism (fake_falcon_mechanism.h, written independently of the
+//     driver's kinematics): thigh angles and encoder counts from the pose,
+//     the motors' force from the commands;
 //   - the grip: either a scripted pose (pose(t)) or a finger - a mass held by
-//     a hand spring toward pose(t) and pushed by the motors' force
-//     (falconForceFromCommands) - integrated 1 ms per command packet.
+//     a hand spring toward pose(t) and pushed by the motors' force -
+//     integrated 1 ms per command packet.
 // Faults are switched on in FakeFalconConfig.
 #pragma once
 
@@ -41,10 +54,14 @@ struct FakeFalconConfig {
     long corrupt_echo_byte = -1;     ///< image byte whose echo is flipped...
     int corrupt_attempts = 1;        ///< ...in this many upload attempts
     long swallow_echo_from = -1;     ///< image byte from which echoes stop coming (timeout)
+    double loader_turnaround_ms = 0.1; ///< the loader's delay before it answers or echoes a byte
+    int slow_echo_every = 0;         ///< every Nth upload write is echoed late...
+    double slow_echo_ms = 0.0;       ///< ...by this much (a DSP busy writing its memory)
     // Normal-mode faults.
     int homing_packets = 30;         ///< packets with the homing bit before all motors report homed (-1 = never)
     int garbage_every = 0;           ///< every Nth reply is preceded by garbage bytes
-    int split_every = 0;             ///< every Nth reply arrives in two reads
+    int split_every = 0;             ///< every Nth reply stops after 7 bytes and comes on 1.5 ms later
+    double reply_turnaround_us = 250.0; ///< the firmware's delay between a command and its reply
     int drop_reply_every = 0;        ///< every Nth command gets no reply
     long unplug_after_packets = -1;  ///< every transfer fails with kNoDevice after this many commands
     long silent_after_packets = -1;  ///< the firmware hangs after this many commands: taken, never answered
@@ -91,22 +108,25 @@ public:
     /// Lowest y the grip reached after homing.
     double lowestHomedY() const { return lowest_y_; }
     double time() const { return t_s_; }
+    /// The link's virtual clock (seconds since the fake was made): what the
+    /// reads and writes so far would have taken on the hardware.
+    double linkTime() const { return now_us_ * 1e-6; }
     Vec3 gripPosition() const { return p_; }
     uint16_t baudDivisor() const { return divisor_; }
     int latencyTimer() const { return latency_ms_; }
     bool dtr() const { return dtr_; }
 
-    /// Every packet of bytes the device would send next is prepared this
-    /// many reads late (0 = ready at the next read).
-    int reply_delay_reads = 0;
-
 private:
     enum class Loader { kOff, kHandshake, kAutobaud, kUpload };
-    struct Pending {
-        std::vector<uint8_t> bytes;
-        long ready_at_read = 0;
+    /// A byte the DSP sent, and when it is in the chip's buffer (us).
+    struct Arriving {
+        uint8_t byte;
+        double at_us;
     };
-    void queue(std::vector<uint8_t> bytes);
+    /// The DSP sends bytes, starting `after_us` from now (or when the line
+    /// is free), one byte time apart.
+    void send(std::span<const uint8_t> bytes, double after_us);
+    double byteTime_us() const;
     void onCommandBytes(std::span<const uint8_t> data);
     void onCommand(const FalconCommand& c);
     void onLoaderBytes(std::span<const uint8_t> data);
@@ -116,9 +136,12 @@ private:
     std::vector<ControlRecord> controls_;
     std::vector<FalconCommand> commands_;
     std::vector<Vec3> forces_;
-    std::deque<Pending> out_;
+    std::deque<Arriving> rx_;  ///< bytes for the host, in the chip or still on the line
     std::vector<uint8_t> in_;  ///< partial command bytes
-    long reads_ = 0;
+    double now_us_ = 0.0;
+    double line_free_us_ = 0.0;    ///< when the DSP's transmit line is next free
+    double last_packet_us_ = -1e9; ///< when the chip last handed the host a packet
+    long upload_writes_ = 0;
     uint16_t divisor_ = 0x4138;
     int latency_ms_ = 16;
     bool dtr_ = false;

@@ -28,8 +28,6 @@ UsbOpener openerFor(FakeFalcon& fake) {
 FalconOptions options(bool with_firmware = true) {
     FalconOptions o;
     if (with_firmware) o.firmware = fakeFirmwareImage();
-    o.firmware_load.reads_per_reply = 3;
-    o.firmware_load.read_timeout_ms = 1;
     o.firmware_check_tries = 5;
     return o;
 }
@@ -203,8 +201,11 @@ TEST(FalconDevice, ResynchronisesThroughGarbageSplitFramesAndLostReplies) {
 }
 
 TEST(FalconDevice, KeepsOnePacketInFlight) {
-    Rig rig(running());
-    rig.fake.reply_delay_reads = 2;  // a reply is there two reads (ticks) after its command
+    FakeFalconConfig cfg = running();
+    // The firmware answers 1.5 ms after a command: the tick's read ends at
+    // the chip's 1 ms latency timer without it, the next tick's read has it.
+    cfg.reply_turnaround_us = 1500.0;
+    Rig rig(cfg);
     Session s;
     run(rig.dev, s, 1.0);
     EXPECT_EQ(s.stats.end, LoopEnd::kDuration);

@@ -11,6 +11,7 @@
 #include "gen/util/error.h"
 #include "haptics/falcon/falcon_firmware.h"
 #include "haptics/falcon/ftdi_link.h"
+#include "haptics/falcon/falcon_packet.h"
 #include "haptics/haptic_device.h"
 #include "tests/haptics/fake_falcon.h"
 
@@ -22,19 +23,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Fast timeouts: the fake answers at once or never.
-FirmwareLoadOptions quick() {
-    FirmwareLoadOptions o;
-    o.reads_per_reply = 3;
-    o.read_timeout_ms = 1;
-    o.handshake_tries = 20;
-    return o;
-}
-
 std::string errorOf(FakeFalcon& fake, const std::vector<uint8_t>& image) {
     FtdiLink link(fake);
     try {
-        loadFalconFirmware(link, image, quick());
+        loadFalconFirmware(link, image, {});
     } catch (const DeviceError& e) {
         return e.what();
     }
@@ -71,13 +63,18 @@ TEST(FalconFirmware, LoadsWithTheDocumentedRequestSequence) {
     cfg.firmware_bytes = image.size();
     FakeFalcon fake(cfg);
     FtdiLink link(fake);
-    const FirmwareLoadReport rep = loadFalconFirmware(link, image, quick());
+    const FirmwareLoadReport rep = loadFalconFirmware(link, image, {});
     EXPECT_EQ(rep.attempts, 1);
     EXPECT_EQ(rep.bytes, image.size());
     EXPECT_EQ(rep.chunks, (image.size() + 61) / 62);
     EXPECT_TRUE(rep.retried_because.empty());
     EXPECT_TRUE(fake.firmwareRunning());
     EXPECT_EQ(fake.firmwareBytesEchoed(), image.size());
+    // Each chunk's read ends when its echo fills a packet (4.5 ms at
+    // 142 857 baud), not at the next latency timer 16 ms later: 120 chunks
+    // in about 0.55 s of link time (docs/haptics.md).
+    EXPECT_GT(fake.linkTime(), 120 * 0.0044);
+    EXPECT_LT(fake.linkTime(), 0.7);
     // Normal mode afterwards: 1 ms latency timer, 1.5 Mbaud, DTR low.
     EXPECT_EQ(fake.latencyTimer(), 1);
     EXPECT_EQ(fake.baudDivisor(), kFtdiBaud1500000);
@@ -107,7 +104,7 @@ TEST(FalconFirmware, WaitsForALateBootLoader) {
     cfg.handshake_after = 7;
     FakeFalcon fake(cfg);
     FtdiLink link(fake);
-    EXPECT_EQ(loadFalconFirmware(link, image, quick()).attempts, 1);
+    EXPECT_EQ(loadFalconFirmware(link, image, {}).attempts, 1);
     EXPECT_EQ(fake.handshakes(), 8);
 }
 
@@ -118,7 +115,7 @@ TEST(FalconFirmware, ABadEchoRestartsTheLoad) {
     cfg.corrupt_echo_byte = 500;  // chunk 9 (bytes 496..557), its 5th byte
     FakeFalcon fake(cfg);
     FtdiLink link(fake);
-    const FirmwareLoadReport rep = loadFalconFirmware(link, image, quick());
+    const FirmwareLoadReport rep = loadFalconFirmware(link, image, {});
     EXPECT_EQ(rep.attempts, 2);
     EXPECT_EQ(fake.uploads(), 2);
     EXPECT_TRUE(has(rep.retried_because, "bad echo of firmware chunk 9 of 120 at byte 4")) << rep.retried_because;
@@ -132,7 +129,7 @@ TEST(FalconFirmware, GivesUpAfterTheAttemptsWithTheReason) {
     cfg.corrupt_attempts = 99;
     FakeFalcon fake(cfg);
     const std::string e = errorOf(fake, image);
-    EXPECT_TRUE(has(e, "after 3 attempts")) << e;
+    EXPECT_TRUE(has(e, "after 5 attempts")) << e;
     EXPECT_TRUE(has(e, "bad echo of firmware chunk 1")) << e;
     EXPECT_TRUE(has(e, "plug them back in")) << e;
     EXPECT_FALSE(fake.firmwareRunning());
@@ -145,6 +142,35 @@ TEST(FalconFirmware, EchoTimeoutFails) {
     FakeFalcon fake(cfg);
     const std::string e = errorOf(fake, image);
     EXPECT_TRUE(has(e, "no complete echo of firmware chunk 17")) << e;
+    // Each attempt waited its 25 reads of at least 16 ms for the echo.
+    EXPECT_GT(fake.linkTime(), 5 * 25 * 0.016);
+}
+
+TEST(FalconFirmware, SlowEchoesAreWaitedFor) {
+    // A DSP that now and then takes a third of a second to echo a chunk (a
+    // busy memory write, a loaded bus): the load still succeeds at once.
+    const auto image = fakeFirmwareImage(7400);
+    FakeFalconConfig cfg;
+    cfg.firmware_bytes = image.size();
+    cfg.slow_echo_every = 10;
+    cfg.slow_echo_ms = 300.0;
+    cfg.loader_turnaround_ms = 2.0;
+    FakeFalcon fake(cfg);
+    FtdiLink link(fake);
+    const FirmwareLoadReport rep = loadFalconFirmware(link, image, {});
+    EXPECT_EQ(rep.attempts, 1) << rep.retried_because;
+    EXPECT_TRUE(fake.firmwareRunning());
+    EXPECT_GT(fake.linkTime(), 12 * 0.3);  // the twelve slow echoes were waited for
+}
+
+TEST(FalconFirmware, AnEchoLaterThanTheWaitRestartsTheLoad) {
+    const auto image = fakeFirmwareImage(3000);
+    FakeFalconConfig cfg;
+    cfg.slow_echo_every = 30;
+    cfg.slow_echo_ms = 2000.0;  // five times the 400 ms wait
+    FakeFalcon fake(cfg);
+    const std::string e = errorOf(fake, image);
+    EXPECT_TRUE(has(e, "no complete echo of firmware chunk 30")) << e;
 }
 
 TEST(FalconFirmware, SilentBootLoaderFails) {
@@ -153,7 +179,55 @@ TEST(FalconFirmware, SilentBootLoaderFails) {
     FakeFalcon fake(cfg);
     const std::string e = errorOf(fake, fakeFirmwareImage(2000));
     EXPECT_TRUE(has(e, "did not answer the handshake")) << e;
-    EXPECT_EQ(fake.handshakes(), 3 * 20);
+    EXPECT_TRUE(has(e, "after 2 attempts")) << e;  // a second reset that changes nothing: no loader there
+    EXPECT_EQ(fake.handshakes(), 2 * 10);
+    // 20 handshakes, each waited 25 reads that the latency timer ends after 16 ms.
+    EXPECT_NEAR(fake.linkTime(), 20 * 25 * 0.016, 0.1);
+}
+
+// The fake chip hands out packets as an FTDI chip does (the driver's timing
+// rests on it): status-only packets, batching by the latency timer, and a
+// full packet that does not end a longer transfer.
+TEST(FakeFtdiChip, BatchesByTheLatencyTimer) {
+    FakeFalconConfig cfg;
+    cfg.firmware_running = true;
+    FakeFalcon fake(cfg);
+    FtdiLink link(fake);
+    ASSERT_TRUE(setFalconNormalMode(link));  // latency timer 1 ms
+    std::array<uint8_t, 256> raw;
+    // After a quiet spell a read returns at once: a status-only packet.
+    const double t0 = fake.linkTime();
+    UsbResult r = fake.bulkRead(raw, 100);
+    EXPECT_EQ(r.bytes, 2u);
+    EXPECT_EQ(raw[0], 0x31);
+    EXPECT_DOUBLE_EQ(fake.linkTime(), t0);
+    // With nothing to send, the next one comes when the timer runs out.
+    r = fake.bulkRead(raw, 100);
+    EXPECT_EQ(r.bytes, 2u);
+    EXPECT_NEAR(fake.linkTime() - t0, 0.001, 1e-9);
+    const double t1 = fake.linkTime();
+    // Four replies (64 bytes): a full packet as soon as 62 are in, which
+    // does not end a 256-byte transfer; the last 2 come when the timer
+    // runs out after it.
+    for (int k = 0; k < 4; ++k) ASSERT_TRUE(link.write(encodeFalconCommand(FalconCommand{}), 2).ok());
+    r = fake.bulkRead(raw, 100);
+    EXPECT_EQ(r.bytes, 64u + 4u);
+    EXPECT_GT(fake.linkTime() - t1, 0.001);
+    // The same four in a 64-byte transfer: it ends with the full packet,
+    // before the latency timer.
+    for (int k = 0; k < 4; ++k) ASSERT_TRUE(link.write(encodeFalconCommand(FalconCommand{}), 2).ok());
+    const double t2 = fake.linkTime();
+    r = fake.bulkRead(std::span<uint8_t>(raw.data(), 64), 100);
+    EXPECT_EQ(r.bytes, 64u);
+    EXPECT_LT(fake.linkTime() - t2, 0.001);
+    // With the loader's 16 ms timer, a 10 ms read times out empty.
+    fake.bulkRead(raw, 100);  // the 2 bytes left
+    ASSERT_TRUE(link.setLatencyTimer(16).ok());
+    const double t3 = fake.linkTime();
+    r = fake.bulkRead(raw, 10);
+    EXPECT_EQ(r.status, UsbStatus::kTimeout);
+    EXPECT_EQ(r.bytes, 0u);
+    EXPECT_NEAR(fake.linkTime() - t3, 0.010, 1e-9);
 }
 
 TEST(FalconFirmware, UnpluggedDeviceFailsAtOnce) {
