@@ -66,9 +66,11 @@ inline constexpr double kFalconFkTolerance_m = 0.01 * kFalconMetresPerCount;
 /// Motor units per N m of thigh torque. Derived from Novint's own driver
 /// (HDAL) as traced by libnifalcon: -12.5 N along z at the workspace centre
 /// gave about 700 units, and tau_z there is 0.0252 N m per N, so
-/// 700 / (12.5 * 0.0252) = 2220. libnifalcon's own code uses 10000 (its
-/// comment calls the scale "rather random"); the smaller figure is the
-/// safer one until it is measured on a device.
+/// 700 / (12.5 * 0.0252) = 2220. Novint's sideways traces command 1.7-1.9
+/// times more than this gives (tests/haptics/falcon_force_trace_test.cpp,
+/// docs/haptics.md); libnifalcon's own code uses 10000 (its comment calls
+/// the scale "rather random"). The figure that never exceeds Novint's
+/// driver is kept until it is measured on a device.
 inline constexpr double kFalconCountsPerNm = 2220.0;
 /// Largest motor command magnitude sent (libnifalcon's documented cap).
 inline constexpr int kFalconMaxMotorCommand = 4096;
