@@ -119,6 +119,65 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
     return out;
 }
 
+/// z of the outward unit normal of a mesh triangle (`sign` -1 on an
+/// inside-out mesh).
+double faceNormalZ(const Mesh& mesh, uint32_t t, double sign) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+    return len > 0 ? sign * nz / len : 0.0;
+}
+
+/// How far beside a wall the vertical probes start (mm): far below any
+/// feature a printer makes, far above float32's rounding at model sizes.
+constexpr double kProbeOffsetMm = 1e-3;
+
+/// The width of the material behind a steep triangle (`material`: along
+/// -normal) or of the gap in front of it (along the normal), measured where a
+/// printer draws the wall, from `at` (the centroid):
+///   - when the ray leaves through a face that looks up or down, the material
+///     (or the gap) narrows toward the wall's top or bottom: under a tilted
+///     top's rim it is a wedge, thinner than any nozzle at its very edge. The
+///     layer at that end is that layer's rounding, so a vertical wall is
+///     measured a layer in from that end (found by vertical probes beside the
+///     wall, on both sides);
+///   - a wall face less than a layer tall at this place is one layer's step,
+///     not a wall a printer draws, and is not measured;
+///   - otherwise (the far side is a wall too: a slab, as thin everywhere) the
+///     first width stands.
+/// nullopt when nothing was hit (within max_mm) or the wall is not drawn.
+std::optional<double> wallWidth(const TriangleBvh& caster, const Mesh& mesh, double sign, uint32_t t, const Vec3& at,
+                                const Vec3& n, bool material, const PrintabilityOptions& o,
+                                double max_mm = std::numeric_limits<double>::infinity()) {
+    const Vec3 dir = material ? Vec3{-n.x, -n.y, -n.z} : n;
+    const auto hit = caster.firstHit(at, dir, int64_t(t), max_mm);
+    if (!hit) return std::nullopt;
+    const double nz = faceNormalZ(mesh, hit->triangle, sign);
+    const bool narrows = std::fabs(nz) >= kSteepNormalZ && std::fabs(n.z) < 1e-9;
+    if (!narrows && hit->distance_mm >= o.nozzle_mm) return hit->distance_mm;
+    // Where the wall face ends above and below this place: the nearer end on
+    // either side of it.
+    const double inf = std::numeric_limits<double>::infinity();
+    double top = inf, bottom = -inf;
+    for (const double side : {-1.0, 1.0}) {
+        const Vec3 p{at.x + side * kProbeOffsetMm * n.x, at.y + side * kProbeOffsetMm * n.y, at.z};
+        if (const auto up = caster.firstHit(p, {0, 0, 1}, int64_t(t))) top = std::min(top, p.z + up->distance_mm);
+        if (const auto down = caster.firstHit(p, {0, 0, -1}, int64_t(t))) bottom = std::max(bottom, p.z - down->distance_mm);
+    }
+    if (top - bottom < o.layer_mm) return std::nullopt;
+    if (!narrows) return hit->distance_mm;
+    // Material under a face that looks up narrows upward; a gap over it narrows downward.
+    const bool narrows_up = (nz > 0) == material;
+    const double z = narrows_up ? top - o.layer_mm : bottom + o.layer_mm;
+    // From just off the wall's plane (this place may lie on another triangle
+    // of the same wall), along the ray.
+    const Vec3 from{at.x + kProbeOffsetMm * dir.x, at.y + kProbeOffsetMm * dir.y, z};
+    const auto again = caster.firstHit(from, dir, int64_t(t), max_mm);
+    return again ? std::optional<double>(again->distance_mm + kProbeOffsetMm) : std::nullopt;
+}
+
 // A ray's length from the centroid of `triangle` (where the ray starts; the
 // offenders list it). 16 bytes: a 1000 x 1000 model has 5 million of them.
 struct Sample {
@@ -194,11 +253,15 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
                 const Vec3 centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
                 const Vec3 inward{-n.x, -n.y, -n.z};
                 const bool steep = std::fabs(n.z) < kSteepNormalZ;
-                if (const auto hit = caster.firstHit(centroid, inward, int64_t(t)))
-                    (steep ? out.walls : out.slabs).push_back({hit->distance_mm, t});
-                if (steep)
-                    if (const auto hit = caster.firstHit(centroid, n, int64_t(t), gap_search_mm))
-                        out.gaps.push_back({hit->distance_mm, t});
+                if (!steep) {
+                    if (const auto hit = caster.firstHit(centroid, inward, int64_t(t)))
+                        out.slabs.push_back({hit->distance_mm, t});
+                    continue;
+                }
+                if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, true, o))
+                    out.walls.push_back({*d, t});
+                if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, false, o, gap_search_mm))
+                    out.gaps.push_back({*d, t});
             }
         };
         std::vector<std::thread> pool;

@@ -11,6 +11,20 @@
 //   [gap_width]       steep triangles, ray outwards: the distance to the wall
 //                     opposite (a one-cell valley), looked for up to ten
 //                     nozzle widths away; warns below nozzle_mm;
+//                     both measured where a printer draws the wall: a width
+//                     under the nozzle is kept only where the wall face is at
+//                     least a layer tall (less is one layer's step), and where
+//                     the material or gap narrows toward the wall's top or
+//                     bottom (the wedge under a tilted top's rim, thinner than
+//                     any nozzle at its very edge) it is measured a layer in
+//                     from that end, whose last layer is that layer's rounding;
+//                     both where a printer draws the wall: a wall region less
+//                     than a layer tall is not sampled (it is one layer's
+//                     step), and the sample is kept at least a layer from the
+//                     region's lowest and highest points (the layer at a
+//                     wall's end is that layer's rounding: the wedge under a
+//                     tilted top's rim is thinner than any nozzle at its very
+//                     edge, and a nozzle wide one layer down);
 //   [base_thickness]  flat triangles (|n_z| >= 1/2), ray inwards: the vertical
 //                     thickness (flat base under the lowest pillars, the mirrored
 //                     slab); warns below two layers (2 * layer_mm);

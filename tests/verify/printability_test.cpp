@@ -1,4 +1,6 @@
 // Printability warnings measured on boxes whose thicknesses are known.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "tests/verify/verify_test_support.h"
@@ -39,6 +41,44 @@ TEST(Printability, NarrowGapBetweenTwoBlocksIsWarned) {
     EXPECT_EQ(c.status, CheckStatus::Warn);
     EXPECT_EQ(c.count, 2);  // each facing wall sees the other
     EXPECT_NEAR(c.worst.at(0).at_mm.x, 5.15, 0.16);
+}
+
+/// A 10 mm deep block whose top falls from z = 6 at x = 0 (the rim) at
+/// `slope_deg` toward +x, `length` long: under the rim the material is a
+/// wedge, layer / tan(slope) wide one layer down.
+Mesh wedge(double slope_deg, double length) {
+    Mesh m = vtest::box({0, 0, 0}, {length, 10, 6});
+    const double low = 6 - length * std::tan(slope_deg * M_PI / 180);
+    m.positions[5].z = m.positions[6].z = low;
+    return m;
+}
+
+// The wedge under a tilted top's rim is measured a layer below the rim (its
+// last layer is that layer's rounding): at 20 degrees it is 0.55 mm wide
+// there and passes; at 40 degrees 0.24 mm and is warned with that width.
+TEST(Printability, AWedgeUnderARimIsMeasuredALayerDown) {
+    PrintabilityOptions o;
+    o.layer_mm = 0.2;
+    EXPECT_EQ(findCheck(run(wedge(20, 10), o), "wall_thickness").status, CheckStatus::Pass);
+    const PrintabilityResult r = run(wedge(40, 5), o);
+    const Check& steep = findCheck(r, "wall_thickness");
+    EXPECT_EQ(steep.status, CheckStatus::Warn);
+    EXPECT_NEAR(steep.worst.at(0).amount, 0.2 / std::tan(40 * M_PI / 180), 0.002);  // to the probes, 1 um beside the wall
+    // A thin slab is thin all the way: still found, at its full thinness.
+    const PrintabilityResult slab = run(vtest::box({0, 0, 0}, {0.25, 10, 0.5}), o);
+    ASSERT_FALSE(findCheck(slab, "wall_thickness").worst.empty());
+    EXPECT_DOUBLE_EQ(findCheck(slab, "wall_thickness").worst.at(0).amount, 0.25);
+}
+
+// A wall shorter than a layer is one layer's step, not a wall a printer
+// draws: a 0.15 mm thin plate 0.1 mm tall is not measured at 0.2 mm layers.
+TEST(Printability, AWallShorterThanALayerIsNotMeasured) {
+    PrintabilityOptions o;
+    o.layer_mm = 0.2;
+    const PrintabilityResult r = run(vtest::box({0, 0, 0}, {0.15, 10, 0.1}), o);
+    EXPECT_EQ(findCheck(r, "wall_thickness").status, CheckStatus::Pass);
+    o.layer_mm = 0.05;
+    EXPECT_EQ(findCheck(run(vtest::box({0, 0, 0}, {0.15, 10, 0.1}), o), "wall_thickness").status, CheckStatus::Warn);
 }
 
 TEST(Printability, ThinBaseIsWarnedAgainstTwoLayers) {
