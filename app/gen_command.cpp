@@ -1,4 +1,5 @@
 // tsf gen: field in, model out (mesh file, OpenSCAD, scene sidecar), verified.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -23,6 +24,7 @@
 #include "gen/model/scene_json.h"
 #include "pipeline/verified_model.h"
 #include "gen/util/file_bytes.h"
+#include "gen/util/number_format.h"
 #include "gen/util/output_paths.h"
 #include "runners/prusa_slicer/print_check.h"
 #include "verify/verify_model.h"
@@ -46,6 +48,7 @@ struct GenCommandOptions {
     std::string command_line;
     std::string preview;
     bool verify_full = false;
+    bool keep_unprintable = false;  ///< write a model whose walls are thinner than the nozzle
     bool force = false;
     PrinterSpec printer;  ///< --bed, --nozzle, --layer (printer_fit.h)
     bool parts = false;        ///< --parts: the 3MF as one object with a part per feature
@@ -147,6 +150,30 @@ std::string verifyLines(const VerifyReport& r) {
         out += buf;
     }
     return out + other;
+}
+
+/// A model whose walls are thinner than the nozzle does not print as
+/// written (the slicer leaves them out): refused, nothing written, unless
+/// --keep-unprintable. An InputError (exit 2): the options made it (cells or
+/// a model too small for the nozzle).
+void refuseUnprintable(const VerifyReport& r, double nozzle_mm, double layer_mm, bool tilted) {
+    const Check* walls = r.find("wall_thickness");
+    if (!walls || walls->status == CheckStatus::Pass || walls->status == CheckStatus::Skipped) return;
+    std::string where;
+    for (size_t k = 0; k < walls->worst.size() && k < 3; ++k) {
+        const Offender& w = walls->worst[k];
+        where += (k ? "; " : "") + formatSignificant(w.amount, 3) + " mm at (" + formatSignificant(w.at_mm.x, 4) + ", " +
+                 formatSignificant(w.at_mm.y, 4) + ", " + formatSignificant(w.at_mm.z, 4) + ") mm";
+    }
+    throw InputError("the model has " + std::to_string(walls->count) + " walls thinner than the " +
+                     formatSignificant(nozzle_mm, 3) + " mm nozzle, which would not print (" + where +
+                     "); nothing was written. " +
+                     (tilted ? "Give tilted tops a gentler --max-slope (at most " +
+                                   formatSignificant(std::floor(maxSlopeDegFor(nozzle_mm, layer_mm) * 10) / 10, 3) +
+                                   " degrees for this nozzle and " + formatSignificant(layer_mm, 3) + " mm layers), "
+                             : std::string()) +
+                     "make the cells larger (--cell, --width), give your printer's --nozzle, or --keep-unprintable "
+                     "to write it anyway");
 }
 
 // One line per part for the summary: its triangles, pieces and volume; then the assembly's verdict.
@@ -252,6 +279,9 @@ void runGen(GenCommandOptions o) {
     }
     const Mesh& mesh = made.mesh;
     summary.mesh = &mesh;
+    if (made.report && !o.keep_unprintable)
+        refuseUnprintable(*made.report, rq.verify_options.nozzle_mm, rq.verify_options.layer_mm,
+                          scene.shapes.cells_tilted > 0);
     if (made.report) {
         summary.verify = toJson(*made.report);
         summary.verify_text = verifyLines(*made.report);
@@ -349,6 +379,8 @@ void addGenCommand(CLI::App& app) {
                     "Also draw the model to this PNG: framed to fill it, coloured by height, north arrow, scale bar "
                     "and size in mm; with --mirror the underside beside the top (drawn by tsf, no OpenSCAD needed)");
     cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
+    cmd->add_flag("--keep-unprintable", opts->keep_unprintable,
+                  "Write the model even when its self-check finds walls thinner than the nozzle (they would not print)");
     cmd->add_flag("--verify-full", opts->verify_full,
                   "Run every check even on very large models (self-intersections, printability; minutes)");
     cmd->add_flag("--json", opts->json, "Print the summary as JSON");
@@ -387,6 +419,7 @@ void addGenCommand(CLI::App& app) {
         opts->given.width = cmd->get_option("--width")->count() > 0;
         opts->given.depth = cmd->get_option("--depth")->count() > 0;
         opts->given.snap = cmd->get_option("--snap")->count() > 0;
+        opts->given.max_slope = cmd->get_option("--max-slope")->count() > 0;
         // The pieces are not the model the sidecar describes: none is written for them.
         if (opts->gen.scene.halves) opts->no_sidecar = true;
         runGen(*opts);

@@ -134,8 +134,13 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "Tilt each pillar top, still at its height at the centre: none (default) | points (each bin's "
            "regression plane; --points input) | gradient (the field's own slope). docs/model.md")
         ->check(CLI::IsMember({"none", "points", "gradient"}))->group(model);
-    cmd->add_option("--steepness", p.steepness, "Multiplies every tilt's slope (tops never go below the floor)")
+    cmd->add_option("--steepness", p.steepness,
+                    "Multiplies every tilt's slope (tops never go below the floor or above the height range)")
         ->check(CLI::PositiveNumber)->capture_default_str()->group(model);
+    cmd->add_option("--max-slope", p.max_slope_deg,
+                    "Steepest a tilted top may lean, degrees from level (at most 60); steeper planes lean this much "
+                    "and the summary counts them")
+        ->capture_default_str()->group(model);
     // On by default on the command line (thesis 7.1.2): a reader must never take
     // a cell kept only to hold the model together for a value. The library's
     // SceneParams default stays off so a bare Scene is the plain model.

@@ -72,7 +72,8 @@ nlohmann::json sceneFactsJson(const Scene& s) {
         j["concave"] = {{"cells_convex_hull", s.cells_convex}, {"volume_saved_mm3", s.volume_saved_mm3}};
     j["nodata_pit_mm"] = s.zMm(s.nodata_pit_units);
     j["tilt"] = {{"source", toString(s.params.tilt)}, {"steepness", s.params.steepness},
-                 {"cells_tilted", s.shapes.cells_tilted}, {"cells_clamped", s.shapes.cells_clamped},
+                 {"max_slope_deg", s.params.max_slope_deg}, {"cells_tilted", s.shapes.cells_tilted},
+                 {"cells_slope_limited", s.shapes.cells_slope_limited}, {"cells_clamped", s.shapes.cells_clamped},
                  {"cells_clamped_level", s.shapes.cells_flat_clamped}};
     j["structural_texture"] = {{"enabled", s.params.structural_texture}, {"cells", s.shapes.cells_textured},
                                {"dimple_mm", s.zMm(s.shapes.dimple_units)}};
@@ -207,8 +208,10 @@ std::string formatSceneFacts(const Scene& s) {
     }
     if (s.params.tilt != TiltSource::None)
         o << "  tilt      " << toString(s.params.tilt) << " x " << formatSignificant(s.params.steepness, 3) << ": "
-          << s.shapes.cells_tilted << " tops tilted (" << s.shapes.cells_clamped << " clamped at the floor or a mark, "
-          << s.shapes.cells_flat_clamped << " of them level); each reads its value at its centre\n";
+          << s.shapes.cells_tilted << " tops tilted, at most " << formatSignificant(s.params.max_slope_deg, 3)
+          << " degrees (" << s.shapes.cells_slope_limited << " limited to that, " << s.shapes.cells_clamped
+          << " clamped at the floor, the height range or a mark, " << s.shapes.cells_flat_clamped
+          << " of them level); each reads its value at its centre\n";
     if (s.shapes.cells_textured > 0)
         o << "  texture   " << s.shapes.cells_textured << " structural cells (kept only to hold the model together, "
           << "no data) carry a cone-shaped dimple " << formatFixed(s.zMm(s.shapes.dimple_units), 2)

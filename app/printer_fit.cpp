@@ -52,6 +52,16 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
                             formatSignificant(bed.width_mm, 4) + " x " + formatSignificant(bed.depth_mm, 4) + " mm bed less " + formatSignificant(kBedMarginMm, 4) +
                             " mm on each side");
     }
+    if ((printer.nozzle_mm > 0 || printer.layer_mm > 0) && !given.max_slope && p.tilt != TiltSource::None) {
+        // The steepest top whose rim is still a nozzle wide one layer below
+        // its edge (see kDefaultMaxSlopeDeg), for this printer.
+        const double nozzle = printer.nozzle_mm > 0 ? printer.nozzle_mm : kDefaultSlopeNozzleMm;
+        const double layer = printer.layer_mm > 0 ? printer.layer_mm : kDefaultSlopeLayerMm;
+        p.max_slope_deg = std::min(kMaxSlopeLimitDeg, maxSlopeDegFor(nozzle, layer));
+        notes.push_back("tilted tops lean at most " + formatSignificant(p.max_slope_deg, 3) + " degrees (one " +
+                        formatSignificant(layer, 4) + " mm layer below a rim it is still a " +
+                        formatSignificant(nozzle, 4) + " mm nozzle wide; --max-slope to choose)");
+    }
     if (printer.nozzle_mm > 0) {
         const double min_cell = kCellNozzleWidths * printer.nozzle_mm;
         gen.min_cell_mm = std::max(kMinTactileCellMm, min_cell);

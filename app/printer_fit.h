@@ -39,7 +39,7 @@ struct PrinterSpec {
 
 /// Which model options the user gave himself (the printer never overrides them).
 struct GivenOptions {
-    bool width = false, depth = false, snap = false;
+    bool width = false, depth = false, snap = false, max_slope = false;
 };
 
 /// Shapes `gen` for the printer before the field is loaded; returns what it

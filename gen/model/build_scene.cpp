@@ -76,6 +76,10 @@ void validate(const HexField& field, const SceneParams& p) {
     if (p.value_max && !std::isfinite(*p.value_max)) throw InputError("value at maximum height must be finite");
     if (!std::isfinite(p.steepness) || p.steepness <= 0)
         throw InputError("steepness must be a finite number > 0 (got " + std::to_string(p.steepness) + ")");
+    if (!(p.max_slope_deg > 0 && p.max_slope_deg <= kMaxSlopeLimitDeg))
+        throw InputError("--max-slope must be more than 0 and at most " + std::to_string(int(kMaxSlopeLimitDeg)) +
+                         " degrees (got " + std::to_string(p.max_slope_deg) +
+                         "): a steeper top is a wall to a finger and a blade to a nozzle");
     if (p.halves && p.bottom != Bottom::Mirrored)
         throw InputError("--halves cuts a mirrored model at its slab; a flat model already prints without supports. "
                          "Add --mirror, or leave out --halves");

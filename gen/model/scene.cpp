@@ -10,10 +10,11 @@
 #include <limits>
 #include <sstream>
 
-
 namespace tsf {
 
 int64_t snapUnits(double mm, double snap_mm) { return int64_t(std::llround(mm / snap_mm)); }
+
+double maxSlopeDegFor(double nozzle_mm, double layer_mm) { return std::atan(layer_mm / nozzle_mm) * 180.0 / M_PI; }
 
 double spanFraction(double v, double lo, double hi) {
     const double span = hi - lo;

@@ -40,6 +40,24 @@ namespace tsf {
 /// Millimetre grid that x and y coordinates are rounded to (1 um).
 inline constexpr double kXYSnapMm = 0.001;
 
+/// The steepest a tilted top may lean, degrees from level, for a nozzle and
+/// a layer height (mm): where a top leans down from a rim that stands above
+/// its neighbour, the material under the rim is a wedge, as wide one layer
+/// below the edge as layer / tan(slope). At atan(layer / nozzle) it is a
+/// nozzle wide there, so the printer draws it as a wall from its second layer
+/// down (the verifier measures walls there: verify/printability.h).
+double maxSlopeDegFor(double nozzle_mm, double layer_mm);
+/// The printer kDefaultMaxSlopeDeg is for: a 0.4 mm nozzle, 0.2 mm layers.
+inline constexpr double kDefaultSlopeNozzleMm = 0.4;
+inline constexpr double kDefaultSlopeLayerMm = 0.2;
+/// maxSlopeDegFor(0.4, 0.2) = atan(1/2): 26.6 degrees. A finger reads it as
+/// a slope, not a wall, and the rim is a 63 degree edge, twice the sharpest
+/// a tactile graphic may have (docs/tactile.md).
+inline constexpr double kDefaultMaxSlopeDeg = 26.565051177077990;
+/// The most --max-slope may allow: above 60 degrees a top's rim is sharper
+/// than the 30 degree edge a tactile graphic may have.
+inline constexpr double kMaxSlopeLimitDeg = 60.0;
+
 /// How a value becomes a height. t = (v - baseline) / (vmax - baseline) in [0, 1].
 enum class Transfer {
     Linear,  ///< h = H * t             (default; heights proportional to values)
@@ -98,6 +116,7 @@ struct SceneParams {
     // --- shaped tops (gen/model/features/tilt.h, gen/model/features/top_shapes.h) ---
     TiltSource tilt = TiltSource::None;
     double steepness = 1.0;        ///< multiplies every tilt's slope (> 0)
+    double max_slope_deg = kDefaultMaxSlopeDeg;  ///< steepest a tilted top may lean, degrees from level
     bool structural_texture = false;  ///< dimple the cells kept only to hold the model together
     // --- braille legend (gen/model/features/legend_scene.h) ---
     LegendRequest legend;

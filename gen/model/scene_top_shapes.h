@@ -30,7 +30,8 @@ struct TopShapes {
     std::vector<int64_t> extra_z;           ///< the one height of each extra vertex, z units
     // Facts for the summary.
     int64_t cells_tilted = 0;    ///< cells whose top is not level
-    int64_t cells_clamped = 0;   ///< cells whose tilt was made shallower to stay above the floor / clear of a mark
+    int64_t cells_slope_limited = 0;  ///< cells whose plane leaned more than max_slope_deg (drawn at that slope)
+    int64_t cells_clamped = 0;   ///< cells whose tilt was made shallower to stay within the height range / clear of a mark
     int64_t cells_flat_clamped = 0;  ///< of those, cells that had to stay level
     int64_t cells_textured = 0;  ///< structural cells with a dimple
     int64_t dimple_units = 0;    ///< depth of the dimple at the centre, z units

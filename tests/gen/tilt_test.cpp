@@ -151,6 +151,120 @@ TEST(Tilt, ExtremeSlopesAreClampedAtTheFloorAndStillVerify) {
     }
 }
 
+/// The steepest gradient (mm per mm) of the fan triangle of kept cell k
+/// between corners e and e + 1 and the top's centre, from the drawn heights.
+double fanGradient(const Scene& s, size_t k, int e) {
+    const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
+    auto xy = [&](const LatticePoint& p) {
+        return std::array<double, 2>{double(p.i - c.i) * s.pitch_mm * 0.5, double(p.j - c.j) * s.pitch_mm / (2.0 * kSqrt3)};
+    };
+    const auto a = xy(hexCorner(s.grid, s.col[k], s.row[k], e)), b = xy(hexCorner(s.grid, s.col[k], s.row[k], (e + 1) % 6));
+    const double za = s.zMm(cornerTop(s, k, e)) - s.zMm(s.top[k]), zb = s.zMm(cornerTop(s, k, (e + 1) % 6)) - s.zMm(s.top[k]);
+    // The plane through (0, 0, 0), (a, za), (b, zb): z = gx x + gy y.
+    const double det = a[0] * b[1] - a[1] * b[0];
+    const double gx = (za * b[1] - zb * a[1]) / det, gy = (a[0] * zb - b[0] * za) / det;
+    return std::hypot(gx, gy);
+}
+
+// A steep field leans no top more than --max-slope (every drawn fan
+// triangle, after the corners' rounding to the z grid), and no corner rises
+// more than a mark's height above the height range; the limited tops are
+// counted and the model verifies.
+TEST(Tilt, NoTopLeansMoreThanTheLimitOrRisesAboveTheRange) {
+    for (const double limit : {kDefaultMaxSlopeDeg, 10.0, 45.0})
+        for (Bottom bottom : {Bottom::Flat, Bottom::Mirrored}) {
+            SceneParams p = test::smallParams(bottom);
+            p.tilt = TiltSource::Gradient;
+            p.steepness = 50;
+            p.max_slope_deg = limit;
+            const Scene s = buildScene(cone(), p);
+            EXPECT_GT(s.shapes.cells_slope_limited, 0) << limit;
+            EXPECT_GT(s.shapes.cells_tilted, 40) << limit;
+            const double max_gradient = std::tan(limit * M_PI / 180);
+            const int64_t ceiling = s.floor_units + snapUnits(s.mapping.max_height_mm, s.z_snap_mm) +
+                                    snapUnits(p.marks.triangle_height_mm, s.z_snap_mm);
+            for (size_t k = 0; k < s.keptCount(); ++k) {
+                if (!isShaped(s.shapes, k) || s.shapes.top_centre_dz[k] != 0) continue;
+                for (int e = 0; e < 6; ++e) {
+                    EXPECT_LE(fanGradient(s, k, e), max_gradient * (1 + 1e-9)) << "cell " << k << ", limit " << limit;
+                    if (bottom == Bottom::Flat) EXPECT_LE(cornerTop(s, k, e), ceiling) << "cell " << k;
+                }
+            }
+            expectVerified(s, "limited");
+        }
+}
+
+TEST(Tilt, TheSlopeLimitIsCheckedAndFollowsThePrinter) {
+    SceneParams p = test::smallParams();
+    p.tilt = TiltSource::Gradient;
+    for (const double bad : {0.0, -5.0, 61.0, double(NAN)}) {
+        p.max_slope_deg = bad;
+        EXPECT_THROW(buildScene(cone(), p), InputError) << bad;
+    }
+    // The default is the slope whose rim a 0.4 mm nozzle draws one 0.2 mm
+    // layer down: atan(1/2).
+    EXPECT_DOUBLE_EQ(maxSlopeDegFor(kDefaultSlopeNozzleMm, kDefaultSlopeLayerMm), kDefaultMaxSlopeDeg);
+    EXPECT_NEAR(kDefaultMaxSlopeDeg, 26.565, 1e-3);
+    EXPECT_NEAR(maxSlopeDegFor(0.4, 0.1), 14.036, 1e-3);
+}
+
+// The bundled airports with --tilt points: tops that were 5 um blades and
+// 1 um gaps (and reached 36.7 mm on a 20 mm range) now verify with no wall
+// or gap under the nozzle, no sharp point or knife edge, and most tops
+// above the floor still lean; --layer and --nozzle set the limit for the
+// printer, --max-slope overrides it.
+TEST(Tilt, AirportsPointTiltsPrintAndRead) {
+    const auto dir = test::scratchDir("tilt_airports_print");
+    const std::string in = test::sourcePath("examples/airports-europe.csv") + " --points x=lon,y=lat --tilt points --json";
+    const test::RunResult r = test::runTsf("gen " + in + " -o " + (dir / "eu.stl").string(), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const char* id : {"wall_thickness", "gap_width", "tactile_sharp_points", "tactile_knife_edges"}) {
+        bool found = false;
+        for (const auto& c : j["verify"]["checks"])
+            if (c["id"] == id) {
+                found = true;
+                EXPECT_EQ(c["status"], "pass") << id << ": " << c.dump();
+            }
+        EXPECT_TRUE(found) << id;
+    }
+    const auto& tilt = j["scene"]["tilt"];
+    EXPECT_NEAR(tilt["max_slope_deg"].get<double>(), kDefaultMaxSlopeDeg, 1e-9);
+    EXPECT_GT(tilt["cells_slope_limited"].get<int>(), 0);
+    EXPECT_GT(tilt["cells_tilted"].get<int>(), j["scene"]["cells"]["nonempty"].get<int>() / 2);  // of 311 above the floor
+    EXPECT_LE(j["mesh"]["bounds_mm"][1][2].get<double>(), 2.0 + 20.0 + 1.0 + 1e-9);  // base + range + a mark's height
+    // The printer sets the limit; --max-slope overrides it.
+    const auto fine = nlohmann::json::parse(
+        test::runTsf("gen " + in + " --layer 0.1 -o " + (dir / "fine.stl").string(), dir).out);
+    EXPECT_NEAR(fine["scene"]["tilt"]["max_slope_deg"].get<double>(), maxSlopeDegFor(0.4, 0.1), 1e-9);
+    const auto chosen = nlohmann::json::parse(
+        test::runTsf("gen " + in + " --layer 0.1 --max-slope 10 -o " + (dir / "chosen.stl").string(), dir).out);
+    EXPECT_EQ(chosen["scene"]["tilt"]["max_slope_deg"].get<double>(), 10.0);
+    // Steeper than the printer draws: the rims would not print.
+    const test::RunResult steep = test::runTsf("gen " + in + " --layer 0.1 --max-slope 20 -o " + (dir / "steep.stl").string(), dir);
+    EXPECT_EQ(steep.exit_code, 2) << steep.output;
+    EXPECT_NE(steep.err.find("--max-slope (at most 14 degrees"), std::string::npos) << steep.err;
+}
+
+// A model whose walls would not print (thinner than the nozzle) is refused:
+// exit 2, the walls' widths and places, nothing written; --keep-unprintable
+// writes it.
+TEST(Tilt, AModelWithWallsThinnerThanTheNozzleIsRefusedUnlessKept) {
+    const auto dir = test::scratchDir("unprintable");
+    test::writeText(dir / "board.csv", "0,1\n1,0\n0,1\n");
+    const std::string out = (dir / "board.stl").string();
+    const std::string args = "gen " + (dir / "board.csv").string() + " --title Rain --bins 200 -o " + out;
+    const test::RunResult refused = test::runTsf(args, dir);
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_NE(refused.err.find("walls thinner than the 0.4 mm nozzle"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("--keep-unprintable"), std::string::npos) << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    const test::RunResult kept = test::runTsf(args + " --keep-unprintable", dir);
+    EXPECT_EQ(kept.exit_code, 0) << kept.output;
+    EXPECT_NE(kept.out.find("warn      walls at least a nozzle wide"), std::string::npos) << kept.out;
+    EXPECT_TRUE(std::filesystem::exists(out));
+}
+
 TEST(Tilt, MirroredBottomTellsTheSameSlopeFromBelow) {
     SceneParams p = test::smallParams(Bottom::Mirrored);
     p.tilt = TiltSource::Gradient;

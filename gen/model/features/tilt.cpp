@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <sstream>
 #include <utility>
 
@@ -93,11 +94,28 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
     const auto face_on_edge = facesOnEdges(s);  // which face lies across a directed ring edge
 
     const double unit_per_mm = 1.0 / s.z_snap_mm;
+    // The corners are rounded to the z grid, which can steepen a fan's
+    // triangle by up to a z step over the hexagon's inradius: the limit is
+    // kept with that to spare, so no drawn triangle leans more than asked.
+    const double max_gradient =
+        std::max(0.0, std::tan(s.params.max_slope_deg * std::numbers::pi / 180.0) - s.z_snap_mm / (0.5 * s.pitch_mm));
+    // No corner more than a mark's height above the height range: a tilt
+    // says how the value changes across the cell, never a value far beyond
+    // the data's, and the highest pillars can still lean (by as much as the
+    // orientation triangle stands above its region).
+    const int64_t ceiling_units =
+        snapUnits(s.mapping.max_height_mm, s.z_snap_mm) + snapUnits(s.params.marks.triangle_height_mm, s.z_snap_mm);
     for (size_t k = 0; k < n; ++k) {
         if (s.kind[k] != CellKind::Data || t.structural[k]) continue;
         if (!s.drawn_by_face.empty() && s.drawn_by_face[k]) continue;
-        const double gx = slopes[k].x * steepness, gy = slopes[k].y * steepness;
+        double gx = slopes[k].x * steepness, gy = slopes[k].y * steepness;
         if (!std::isfinite(gx) || !std::isfinite(gy) || (gx == 0 && gy == 0)) continue;
+        const double gradient = std::hypot(gx, gy);
+        if (gradient > max_gradient) {
+            gx *= max_gradient / gradient;
+            gy *= max_gradient / gradient;
+            ++t.cells_slope_limited;
+        }
         const int64_t h = mirrored ? s.bottom[k] : s.top[k] - s.floor_units;  // height above the floor, units
         const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
         double want[kHexCorners];
@@ -106,8 +124,8 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
             const LatticePoint p = hexCorner(s.grid, s.col[k], s.row[k], e);
             const double dx = double(p.i - c.i) * s.pitch_mm * 0.5, dy = double(p.j - c.j) * s.pitch_mm / (2.0 * kSqrt3);
             want[e] = (gx * dx + gy * dy) * unit_per_mm;
-            lo[e] = -h;  // no corner below the floor
-            hi[e] = std::numeric_limits<int32_t>::max() / 2;
+            lo[e] = -h;                  // no corner below the floor
+            hi[e] = ceiling_units - h;   // nor above the height range
         }
         // An edge against a mark's face: both its ends stay on the side of the
         // face's top (and mirrored bottom) that the centre is on, so the two
@@ -190,10 +208,18 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
             s.mirror_thickness_units += grow;
         }
     }
+    if (t.cells_slope_limited > 0) {
+        std::ostringstream note;
+        note.precision(3);
+        note << "tilt: " << t.cells_slope_limited << " tops would lean more than " << s.params.max_slope_deg
+             << " degrees and lean that much (--max-slope)";
+        s.notes.push_back(note.str());
+    }
     if (t.cells_clamped > 0) {
         std::ostringstream note;
         note << "tilt: " << t.cells_clamped << " cells tilt less than their plane asks so no corner goes below the floor "
-             << "or crosses an orientation mark (" << t.cells_flat_clamped << " of them stay level)";
+             << "or above the height range, or crosses an orientation mark (" << t.cells_flat_clamped
+             << " of them stay level)";
         s.notes.push_back(note.str());
     }
     buildTopShapeGeometry(s);
