@@ -52,6 +52,7 @@ struct GenCommandOptions {
     bool force = false;
     PrinterSpec printer;  ///< --bed, --nozzle, --layer (printer_fit.h)
     bool parts = false;        ///< --parts: the 3MF as one object with a part per feature
+    std::string parts_layout = "portable";  ///< --parts-layout: portable | prusaslicer
     bool print_check = false;  ///< --print-check: slice the written model with PrusaSlicer
     GivenOptions given;   ///< model options the user gave himself
 };
@@ -222,6 +223,8 @@ void runGen(GenCommandOptions o) {
         throw InputError(o.output.empty() ? "--parts" : o.output, 0, 0,
                          "--parts writes a 3MF (one object, a part per feature): give -o MODEL.3mf; "
                          "STL, OFF and OBJ hold one solid");
+    if (o.parts_layout != "portable" && !o.parts)
+        throw InputError("--parts-layout", 0, 0, "--parts-layout lays out the parts of --parts: add --parts");
     if (o.gen.scene.halves && (o.parts || o.print_check))
         throw InputError(o.parts ? "--parts" : "--print-check", 0, 0,
                          "--halves writes each piece to a file of its own (MODEL-upper, MODEL-lower, MODEL-pins); "
@@ -304,6 +307,8 @@ void runGen(GenCommandOptions o) {
         if (halves) {
             writeHalves(*halves, o.output, wo, summary);
         } else if (o.parts) {
+            wo.parts_layout = o.parts_layout == "prusaslicer" ? MeshWriteOptions::PartsLayout::PrusaSlicer
+                                                              : MeshWriteOptions::PartsLayout::Portable;
             write3mfParts(parts, o.output, wo);
             std::string names;
             for (const MeshPart& p : parts) names += (names.empty() ? "" : ", ") + p.name;
@@ -410,6 +415,12 @@ void addGenCommand(CLI::App& app) {
                   "Write the 3MF as one object made of parts - pillars (with the notch), marks (the raised "
                   "triangle), legend (the braille dots) - so a slicer can give each its own colour or material; "
                   "each part is verified alone and with the others (docs/printing.md)");
+    cmd->add_option("--parts-layout", opts->parts_layout,
+                    "How --parts lays the parts out in the 3MF: portable (each part a 3MF object with its own colour, "
+                    "the components of one object: every 3MF reader sees the parts) | prusaslicer (one object whose "
+                    "parts only PrusaSlicer's own config names: PrusaSlicer loads it as one object of parts without "
+                    "asking)")
+        ->check(CLI::IsMember({"portable", "prusaslicer"}))->capture_default_str();
     cmd->add_flag("--print-check", opts->print_check,
                   "After writing -o MODEL.stl|.3mf, slice it with PrusaSlicer as tsf print-check does (with --layer, "
                   "--nozzle, --bed when given) and add its report: supports?, layers, time, filament");

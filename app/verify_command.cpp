@@ -61,11 +61,12 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     }
 
     MeshReadReport read;
-    // A 3MF written in parts (tsf gen --parts: an object whose volumes are
-    // named) is judged part by part and as an assembly; any other file,
-    // several objects included, as one mesh.
+    // A 3MF written in parts (tsf gen --parts: the components of its one
+    // build item, or an object whose volumes are named) is judged part by
+    // part and as an assembly; any other file, several objects included, as
+    // one mesh.
     std::vector<MeshPart> parts = readMeshParts(o.model, &read);
-    if (read.format == "3mf" && !read.named_volumes) {
+    if (read.format == "3mf" && !read.written_in_parts) {
         parts.clear();
         read = {};
         parts.push_back({"model", readMesh(o.model, &read)});

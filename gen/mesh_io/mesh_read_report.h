@@ -28,9 +28,10 @@ struct MeshReadReport {
     /// Triangles that use one vertex index twice or three times (in the file,
     /// or after exact merging). They are kept in the mesh, only counted here.
     size_t degenerate_index_triangles = 0;
-    /// 3MF read as parts: an object was split into the volumes its slicer
-    /// config names (a model written in parts, gen/mesh_io/three_mf_writer.h).
-    bool named_volumes = false;
+    /// 3MF read as parts of a model written in parts (gen/mesh_io/three_mf_writer.h):
+    /// the components of the package's one build item, or an object split
+    /// into the volumes its slicer config names.
+    bool written_in_parts = false;
     /// One sentence per thing worth knowing: merges, repairs, ignored data.
     std::vector<std::string> notes;
 };

@@ -295,8 +295,10 @@ void checkZipClaims(std::string_view b, const std::string& name) {
 
 // Reads the package and walks its build items: meshes to sink, notes to assembler.
 // model_config (may be null): receives the package's Metadata/Slic3r_PE_model.config ("" if none).
+// one_assembly (may be null): set when the package's one build item is an
+// object made of two or more components (a model written in parts, portably).
 void walkPackage(std::string_view bytes, const std::string& name, MeshAssembler& assembler, const MeshSink& sink,
-                 std::string* model_config = nullptr) {
+                 std::string* model_config = nullptr, bool* one_assembly = nullptr) {
     if (bytes.empty()) throw InputError(name, 0, 0, "empty file: a 3MF file is a ZIP package");
     checkZipClaims(bytes, name);
 
@@ -379,8 +381,19 @@ void walkPackage(std::string_view bytes, const std::string& name, MeshAssembler&
                          "reading a build item transform");
             transform = compose(to_mm, fromLib3mf(t));
         }
+        if (one_assembly) {
+            BOOL components = 0;
+            DWORD count = 0;
+            walker.check(NMR::lib3mf_object_iscomponentsobject(object.get(), &components), object.get(),
+                         "reading a build item's object");
+            if (components)
+                walker.check(NMR::lib3mf_componentsobject_getcomponentcount(object.get(), &count), object.get(),
+                             "reading components");
+            *one_assembly = item_count == 1 && components && count >= 2;
+        }
         walker.addObject(object.get(), transform, 0);
     }
+    if (one_assembly && item_count != 1) *one_assembly = false;
     if (item_count == 0) assembler.note("the package has no build items: nothing would be printed");
 }
 
@@ -421,6 +434,7 @@ std::vector<MeshPart> parse3mfParts(std::string_view bytes, const std::string& n
     std::vector<MeshPart> objects;
     std::vector<DWORD> ids;
     std::string config;
+    bool one_assembly = false;
     walkPackage(
         bytes, name, notes,
         [&](DWORD id, const std::string& object_name) -> MeshAssembler& {
@@ -429,7 +443,7 @@ std::vector<MeshPart> parse3mfParts(std::string_view bytes, const std::string& n
             ids.push_back(id);
             return *assemblers.back();
         },
-        &config);
+        &config, &one_assembly);
     const auto volumes = config.empty() ? std::map<unsigned, std::vector<mesh_io::ThreeMfVolume>>()
                                         : mesh_io::parseSlicerModelConfig(config);
     MeshReadReport total;
@@ -463,13 +477,15 @@ std::vector<MeshPart> parse3mfParts(std::string_view bytes, const std::string& n
             parts.push_back({objects[k].name, std::move(mesh)});
             continue;
         }
-        total.named_volumes = true;
+        total.written_in_parts = true;
         for (size_t n = 0; n < v->second.size(); ++n) {
             const auto& vol = v->second[n];
             parts.push_back({vol.name.empty() ? objects[k].name + " volume " + std::to_string(n + 1) : vol.name,
                              triangleRange(mesh, vol.first_triangle, vol.last_triangle)});
         }
     }
+    // The components of the one build item are the parts (tsf gen --parts).
+    if (one_assembly && parts.size() >= 2) total.written_in_parts = true;
     if (report) *report = std::move(total);
     return parts;
 }

@@ -1,5 +1,6 @@
 #include "gen/mesh_io/three_mf_writer.h"
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -105,20 +106,124 @@ void write3mf(const Mesh& mesh, const std::string& path, const MeshWriteOptions&
     finishModel(model, object, file, path);
 }
 
-void write3mfParts(const std::vector<MeshPart>& parts, const std::string& path, const MeshWriteOptions& opts) {
+std::array<uint8_t, 3> partDisplayColour(const std::vector<MeshPart>& parts, size_t index) {
+    struct Named {
+        const char* name;
+        std::array<uint8_t, 3> rgb;
+    };
+    // tsf's parts: the body light grey (the data's colour), the orientation
+    // marks red, the braille dots near black, the scale blue.
+    static constexpr Named kNamed[] = {{"pillars", {0xE6, 0xE6, 0xE6}},
+                                       {"marks", {0xD6, 0x27, 0x28}},
+                                       {"legend", {0x1F, 0x1F, 0x1F}},
+                                       {"scale", {0x1F, 0x77, 0xB4}}};
+    // Any other part: the first of these no part of the model has yet.
+    static constexpr std::array<uint8_t, 3> kPalette[] = {{0x2C, 0xA0, 0x2C}, {0xFF, 0x7F, 0x0E}, {0x94, 0x67, 0xBD},
+                                                          {0x8C, 0x56, 0x4B}, {0xE3, 0x77, 0xC2}, {0x17, 0xBE, 0xCF},
+                                                          {0xBC, 0xBD, 0x22}, {0x7F, 0x7F, 0x7F}};
+    auto named = [&](size_t k) -> const std::array<uint8_t, 3>* {
+        for (const Named& n : kNamed)
+            if (parts[k].name == n.name) return &n.rgb;
+        return nullptr;
+    };
+    std::vector<std::array<uint8_t, 3>> taken;
+    for (size_t k = 0; k < index; ++k) taken.push_back(partDisplayColour(parts, k));
+    if (const auto* rgb = named(index); rgb && std::find(taken.begin(), taken.end(), *rgb) == taken.end()) return *rgb;
+    for (const auto& rgb : kPalette) {
+        bool used = std::find(taken.begin(), taken.end(), rgb) != taken.end();
+        for (size_t k = index + 1; k < parts.size() && !used; ++k) used = named(k) && *named(k) == rgb;
+        if (!used) return rgb;
+    }
+    // More parts than colours: a grey of its own.
+    const uint8_t g = uint8_t(0x40 + (index * 37) % 0x80);
+    return {g, g, g};
+}
+
+namespace {
+
+/// A base material group with one material per part (its name and display
+/// colour); the group's resource id.
+DWORD addPartMaterials(Lib3mfHandle& model, const std::vector<MeshPart>& parts, Lib3mfHandle& group) {
+    checkLib3mf(NMR::lib3mf_model_addbasematerialgroup(model.get(), group.out()), model.get(),
+                "lib3mf_model_addbasematerialgroup");
+    for (size_t k = 0; k < parts.size(); ++k) {
+        const auto rgb = partDisplayColour(parts, k);
+        DWORD index = 0;
+        checkLib3mf(NMR::lib3mf_basematerial_addmaterialutf8(group.get(), printableTitle(parts[k].name).c_str(), rgb[0],
+                                                              rgb[1], rgb[2], &index),
+                    group.get(), "lib3mf_basematerial_addmaterialutf8");
+        // Opaque (lib3mf 1.8 leaves the alpha of a new material at 0: invisible).
+        checkLib3mf(NMR::lib3mf_basematerial_setdisplaycolorrgba(group.get(), index, rgb[0], rgb[1], rgb[2], 0xFF),
+                    group.get(), "lib3mf_basematerial_setdisplaycolorrgba");
+    }
+    DWORD id = 0;
+    checkLib3mf(NMR::lib3mf_basematerial_getresourceid(group.get(), &id), group.get(), "lib3mf_basematerial_getresourceid");
+    return id;
+}
+
+void checkParts(const std::vector<MeshPart>& parts, const std::string& path) {
     if (parts.empty()) throw InputError(path, 0, 0, "cannot write 3MF: no parts");
     for (const MeshPart& p : parts) {
         checkMeshForWriting(p.mesh, path, /*float32_format=*/true);
         check3mfLimits(p.mesh, path);
     }
+}
+
+void writePortableParts(const std::vector<MeshPart>& parts, const std::string& path, const MeshWriteOptions& opts) {
+    AtomicFile file(path);
+    const std::string title = printableTitle(opts.title);
+    Lib3mfHandle model;
+    startModel(model, title);
+    Lib3mfHandle group;
+    const DWORD group_id = addPartMaterials(model, parts, group);
+    std::vector<Lib3mfHandle> objects(parts.size());
+    for (size_t k = 0; k < parts.size(); ++k) {
+        addMeshObject(model, parts[k].mesh, printableTitle(parts[k].name), objects[k]);
+        Lib3mfHandle property;
+        checkLib3mf(NMR::lib3mf_object_createdefaultpropertyhandler(objects[k].get(), property.out()), objects[k].get(),
+                    "lib3mf_object_createdefaultpropertyhandler");
+        checkLib3mf(NMR::lib3mf_defaultpropertyhandler_setbasematerial(property.get(), group_id, DWORD(k)),
+                    property.get(), "lib3mf_defaultpropertyhandler_setbasematerial");
+    }
+    Lib3mfHandle assembly;
+    checkLib3mf(NMR::lib3mf_model_addcomponentsobject(model.get(), assembly.out()), model.get(),
+                "lib3mf_model_addcomponentsobject");
+    checkLib3mf(NMR::lib3mf_object_setnameutf8(assembly.get(), title.c_str()), assembly.get(),
+                "lib3mf_object_setnameutf8");
+    for (Lib3mfHandle& object : objects) {
+        Lib3mfHandle component;
+        checkLib3mf(NMR::lib3mf_componentsobject_addcomponent(assembly.get(), object.get(), nullptr, component.out()),
+                    assembly.get(), "lib3mf_componentsobject_addcomponent");
+    }
+    finishModel(model, assembly, file, path);
+}
+
+void writePrusaSlicerParts(const std::vector<MeshPart>& parts, const std::string& path, const MeshWriteOptions& opts) {
     const Mesh joined = joinParts(parts);
     check3mfLimits(joined, path);
     AtomicFile file(path);
     const std::string title = printableTitle(opts.title);
     Lib3mfHandle model;
     startModel(model, title);
+    Lib3mfHandle group;
+    const DWORD group_id = addPartMaterials(model, parts, group);
     Lib3mfHandle object;
     addMeshObject(model, joined, title, object);
+    // Each triangle its part's material (other readers then see the colours);
+    // 3MF wants the object's default too: the first part's.
+    Lib3mfHandle object_default;
+    checkLib3mf(NMR::lib3mf_object_createdefaultpropertyhandler(object.get(), object_default.out()), object.get(),
+                "lib3mf_object_createdefaultpropertyhandler");
+    checkLib3mf(NMR::lib3mf_defaultpropertyhandler_setbasematerial(object_default.get(), group_id, 0),
+                object_default.get(), "lib3mf_defaultpropertyhandler_setbasematerial");
+    std::vector<DWORD> groups(joined.triangles.size(), group_id), indices;
+    indices.reserve(joined.triangles.size());
+    for (size_t k = 0; k < parts.size(); ++k) indices.insert(indices.end(), parts[k].mesh.triangles.size(), DWORD(k));
+    Lib3mfHandle triangle_properties;
+    checkLib3mf(NMR::lib3mf_meshobject_createpropertyhandler(object.get(), triangle_properties.out()), object.get(),
+                "lib3mf_meshobject_createpropertyhandler");
+    checkLib3mf(NMR::lib3mf_propertyhandler_setbasematerialarray(triangle_properties.get(), groups.data(), indices.data()),
+                triangle_properties.get(), "lib3mf_propertyhandler_setbasematerialarray");
     DWORD id = 0;
     checkLib3mf(NMR::lib3mf_resource_getresourceid(object.get(), &id), object.get(), "lib3mf_resource_getresourceid");
     std::vector<ThreeMfVolume> volumes;
@@ -136,6 +241,14 @@ void write3mfParts(const std::vector<MeshPart>& parts, const std::string& path, 
                                                       config.size()),
                 attachment.get(), "lib3mf_attachment_readfrombuffer");
     finishModel(model, object, file, path);
+}
+
+}  // namespace
+
+void write3mfParts(const std::vector<MeshPart>& parts, const std::string& path, const MeshWriteOptions& opts) {
+    checkParts(parts, path);
+    if (opts.parts_layout == MeshWriteOptions::PartsLayout::PrusaSlicer) writePrusaSlicerParts(parts, path, opts);
+    else writePortableParts(parts, path, opts);
 }
 
 }  // namespace tsf

@@ -18,8 +18,9 @@
 // job.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <string>
-
 #include <vector>
 
 #include "gen/geometry/mesh.h"
@@ -35,17 +36,30 @@ namespace tsf {
 /// std::runtime_error carrying lib3mf's message if lib3mf fails.
 void write3mf(const Mesh& mesh, const std::string& path, const MeshWriteOptions& opts = {});
 
-/// Writes parts (gen/geometry/mesh_parts.h) to path atomically as ONE mesh object
-/// (named opts.title) whose triangles are the parts' in the order given,
-/// each part's vertices after the previous part's (nothing merged), one
-/// build item, and the package part Metadata/Slic3r_PE_model.config
-/// (three_mf_volumes.h) naming each part's triangle range as a volume of
-/// type ModelPart. That is how PrusaSlicer stores an object made of parts:
-/// it loads the file as one object whose volumes are the parts, so each can
-/// get its own extruder (colour or material). (A 3MF components object would
-/// be loaded as separate objects.) read3mfParts reads the parts back; a
-/// reader that knows nothing of the ranges sees one mesh. Throws as
-/// write3mf, for every part, and InputError when parts is empty.
+/// Writes parts (gen/geometry/mesh_parts.h) to path atomically, laid out as
+/// opts.parts_layout says:
+///   Portable (default): a base material group (3MF Materials extension)
+///     with one material per part, named as the part, with its display
+///     colour (partDisplayColour); each part a mesh object of its own, named
+///     as the part, whose default property is its material; one components
+///     object named opts.title holding every part (identity transforms); one
+///     build item of it. Every 3MF reader sees one object of parts in their
+///     colours. PrusaSlicer loads the parts as objects at their places and
+///     its window offers to join them as one object of parts.
+///   PrusaSlicer: ONE mesh object (named opts.title) whose triangles are the
+///     parts' in the order given, each part's vertices after the previous
+///     part's (nothing merged), one build item, and the package part
+///     Metadata/Slic3r_PE_model.config (three_mf_volumes.h) naming each
+///     part's triangle range as a volume of type ModelPart: how PrusaSlicer
+///     stores an object made of parts, loaded as one without a question.
+///     Each triangle carries its part's material too.
+/// read3mfParts reads either back. Throws as write3mf, for every part, and
+/// InputError when parts is empty.
 void write3mfParts(const std::vector<MeshPart>& parts, const std::string& path, const MeshWriteOptions& opts = {});
+
+/// sRGB display colour of a part: by its name for tsf's parts (pillars light
+/// grey, marks red, legend near black, scale blue), else from a palette by
+/// its position; no two parts of one model share a colour.
+std::array<uint8_t, 3> partDisplayColour(const std::vector<MeshPart>& parts, size_t index);
 
 }  // namespace tsf

@@ -251,45 +251,77 @@ TEST(ThreeMfReader, IndexOutOfRangeInTheXmlIsAnInputError) {
     EXPECT_THROW(parse3mf(test::threeMfPackage(xml), "range.3mf"), InputError);
 }
 
-// Two boxes that touch (the block stands on the base's top) as parts: to
-// lib3mf itself one build item of one mesh object holding both boxes'
-// triangles, and read back by tsf as two parts named as written, each with
-// its own vertices (the corner both boxes have stays a vertex of each).
-TEST(ThreeMfParts, WrittenAsOneObjectOfPartsAndReadBackAsParts) {
-    const auto dir = scratchDir();
-    const std::string path = (dir / "parts.3mf").string();
-    const std::vector<MeshPart> parts{{"pillars", test::box({0, 0, 0}, {20, 10, 5})},
-                                      {"marks", test::box({0, 0, 5}, {4, 4, 6})}};
-    MeshWriteOptions opts;
-    opts.title = "two parts";
-    write3mfParts(parts, path, opts);
-
-    {
-        Lib3mfModel lib(path);
-        NMR::PLib3MFModelBuildItemIterator* items = nullptr;
-        ASSERT_EQ(NMR::lib3mf_model_getbuilditems(lib.model, &items), LIB3MF_OK);
-        size_t item_count = 0;
-        BOOL has = false;
+/// What lib3mf itself sees of a package: its build items, and per build
+/// item the object's kind, its components' objects and their triangles and
+/// default base material (group, index, display colour).
+struct Lib3mfView {
+    size_t build_items = 0;
+    bool item_is_components = false;
+    DWORD item_triangles = 0;  ///< a mesh object's own
+    struct Component {
+        std::string name;
         DWORD triangles = 0;
-        while (NMR::lib3mf_builditemiterator_movenext(items, &has) == LIB3MF_OK && has) {
-            ++item_count;
-            NMR::PLib3MFModelBuildItem* item = nullptr;
-            NMR::lib3mf_builditemiterator_getcurrent(items, &item);
-            NMR::PLib3MFModelObjectResource* object = nullptr;
-            NMR::lib3mf_builditem_getobjectresource(item, &object);
-            NMR::lib3mf_meshobject_gettrianglecount(object, &triangles);
-            NMR::lib3mf_release(object);
-            NMR::lib3mf_release(item);
-        }
-        NMR::lib3mf_release(items);
-        EXPECT_EQ(item_count, 1u);
-        EXPECT_EQ(triangles, 24u);
-    }
+        DWORD group = 0, index = 0;
+        BYTE red = 0, green = 0, blue = 0, alpha = 0;
+    };
+    std::vector<Component> components;
+};
 
+Lib3mfView viewOf(const std::string& path) {
+    Lib3mfView v;
+    Lib3mfModel lib(path);
+    NMR::PLib3MFModelBuildItemIterator* items = nullptr;
+    EXPECT_EQ(NMR::lib3mf_model_getbuilditems(lib.model, &items), LIB3MF_OK);
+    BOOL has = false;
+    while (NMR::lib3mf_builditemiterator_movenext(items, &has) == LIB3MF_OK && has) {
+        ++v.build_items;
+        NMR::PLib3MFModelBuildItem* item = nullptr;
+        NMR::lib3mf_builditemiterator_getcurrent(items, &item);
+        NMR::PLib3MFModelObjectResource* object = nullptr;
+        NMR::lib3mf_builditem_getobjectresource(item, &object);
+        BOOL components = false;
+        NMR::lib3mf_object_iscomponentsobject(object, &components);
+        v.item_is_components = components;
+        if (!components) NMR::lib3mf_meshobject_gettrianglecount(object, &v.item_triangles);
+        DWORD count = 0;
+        if (components) NMR::lib3mf_componentsobject_getcomponentcount(object, &count);
+        for (DWORD k = 0; k < count; ++k) {
+            NMR::PLib3MFModelComponent* component = nullptr;
+            NMR::lib3mf_componentsobject_getcomponent(object, k, &component);
+            NMR::PLib3MFModelObjectResource* part = nullptr;
+            NMR::lib3mf_component_getobjectresource(component, &part);
+            Lib3mfView::Component c;
+            char name[256] = {};
+            ULONG needed = 0;
+            NMR::lib3mf_object_getnameutf8(part, name, sizeof name, &needed);
+            c.name = name;
+            NMR::lib3mf_meshobject_gettrianglecount(part, &c.triangles);
+            NMR::PLib3MFDefaultPropertyHandler* property = nullptr;
+            if (NMR::lib3mf_object_createdefaultpropertyhandler(part, &property) == LIB3MF_OK) {
+                NMR::lib3mf_defaultpropertyhandler_getbasematerial(property, &c.group, &c.index);
+                NMR::lib3mf_release(property);
+                NMR::PLib3MFModelBaseMaterial* group = nullptr;
+                if (NMR::lib3mf_model_getbasematerialbyid(lib.model, c.group, &group) == LIB3MF_OK) {
+                    NMR::lib3mf_basematerial_getdisplaycolor(group, c.index, &c.red, &c.green, &c.blue, &c.alpha);
+                    NMR::lib3mf_release(group);
+                }
+            }
+            v.components.push_back(c);
+            NMR::lib3mf_release(part);
+            NMR::lib3mf_release(component);
+        }
+        NMR::lib3mf_release(object);
+        NMR::lib3mf_release(item);
+    }
+    NMR::lib3mf_release(items);
+    return v;
+}
+
+void expectPartsReadBack(const std::string& path, const std::vector<MeshPart>& parts) {
     MeshReadReport report;
     const std::vector<MeshPart> back = read3mfParts(path, &report);
-    ASSERT_EQ(back.size(), 2u);
-    for (size_t k = 0; k < 2; ++k) {
+    ASSERT_EQ(back.size(), parts.size());
+    for (size_t k = 0; k < parts.size(); ++k) {
         EXPECT_EQ(back[k].name, parts[k].name);
         // The same triangles in the same order at the same corners (whole mm: exact in float32).
         const Mesh &a = back[k].mesh, &b = parts[k].mesh;
@@ -300,14 +332,76 @@ TEST(ThreeMfParts, WrittenAsOneObjectOfPartsAndReadBackAsParts) {
     }
     EXPECT_EQ(report.input_triangles, 24u);
     // readMeshParts dispatches on the extension; readMesh still gives everything as one mesh.
-    EXPECT_EQ(readMeshParts(path).size(), 2u);
+    EXPECT_EQ(readMeshParts(path).size(), parts.size());
     // The block's corner (0,0,5) is also the base's corner: one vertex when merged as one mesh.
     EXPECT_EQ(readMesh(path).positions.size(), 15u);
+}
+
+// Two boxes that touch (the block stands on the base's top) as parts, the
+// portable way: to lib3mf itself one build item, a components object whose
+// two components are mesh objects named as the parts, each with its own
+// base material, opaque and of a colour of its own; read back by tsf as two
+// parts named as written, each with its own vertices (the corner both boxes
+// have stays a vertex of each).
+TEST(ThreeMfParts, PortableLayoutIsComponentsOfCoreObjectsInColours) {
+    const auto dir = scratchDir();
+    const std::string path = (dir / "parts.3mf").string();
+    const std::vector<MeshPart> parts{{"pillars", test::box({0, 0, 0}, {20, 10, 5})},
+                                      {"marks", test::box({0, 0, 5}, {4, 4, 6})}};
+    MeshWriteOptions opts;
+    opts.title = "two parts";
+    write3mfParts(parts, path, opts);
+    const Lib3mfView v = viewOf(path);
+    EXPECT_EQ(v.build_items, 1u);
+    EXPECT_TRUE(v.item_is_components);
+    ASSERT_EQ(v.components.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(v.components[k].name, parts[k].name);
+        EXPECT_EQ(v.components[k].triangles, 12u);
+        EXPECT_EQ(v.components[k].index, k);
+        EXPECT_EQ(v.components[k].alpha, 0xFF) << "opaque";
+        const auto rgb = partDisplayColour(parts, k);
+        EXPECT_EQ((std::array<uint8_t, 3>{v.components[k].red, v.components[k].green, v.components[k].blue}), rgb);
+    }
+    EXPECT_EQ(v.components[0].group, v.components[1].group);
+    EXPECT_NE(partDisplayColour(parts, 0), partDisplayColour(parts, 1));
+    expectPartsReadBack(path, parts);
     // Any other format is one part named "model".
     writeMesh(parts[0].mesh, (dir / "one.stl").string());
     const std::vector<MeshPart> stl = readMeshParts((dir / "one.stl").string());
     ASSERT_EQ(stl.size(), 1u);
     EXPECT_EQ(stl[0].name, "model");
+}
+
+// The PrusaSlicer layout: to lib3mf one mesh object holding both boxes'
+// triangles (PrusaSlicer's config names the volumes), read back as the parts.
+TEST(ThreeMfParts, PrusaSlicerLayoutIsOneObjectOfNamedVolumes) {
+    const auto dir = scratchDir();
+    const std::string path = (dir / "prusa.3mf").string();
+    const std::vector<MeshPart> parts{{"pillars", test::box({0, 0, 0}, {20, 10, 5})},
+                                      {"marks", test::box({0, 0, 5}, {4, 4, 6})}};
+    MeshWriteOptions opts;
+    opts.title = "two parts";
+    opts.parts_layout = MeshWriteOptions::PartsLayout::PrusaSlicer;
+    write3mfParts(parts, path, opts);
+    const Lib3mfView v = viewOf(path);
+    EXPECT_EQ(v.build_items, 1u);
+    EXPECT_FALSE(v.item_is_components);
+    EXPECT_EQ(v.item_triangles, 24u);
+    expectPartsReadBack(path, parts);
+}
+
+// Colours: tsf's parts by name, any other from a palette, never two alike.
+TEST(ThreeMfParts, EveryPartHasAColourOfItsOwn) {
+    std::vector<MeshPart> parts;
+    for (const char* n : {"pillars", "marks", "legend", "scale", "extra", "pillars", "more"}) parts.push_back({n, {}});
+    std::vector<std::array<uint8_t, 3>> seen;
+    for (size_t k = 0; k < parts.size(); ++k) {
+        const auto rgb = partDisplayColour(parts, k);
+        EXPECT_EQ(std::count(seen.begin(), seen.end(), rgb), 0) << k;
+        seen.push_back(rgb);
+    }
+    EXPECT_EQ(seen[2], (std::array<uint8_t, 3>{0x1F, 0x1F, 0x1F}));  // the braille dots near black
 }
 
 TEST(ThreeMfParts, NoPartsIsRefused) {

@@ -103,9 +103,11 @@ TEST(PrintCheckCli, BadInputIsExitTwoAndAMissingSlicerExitThree) {
     EXPECT_NE(none.err.find("prusa-slicer"), std::string::npos) << none.err;
 }
 
-// tsf gen --parts --print-check: PrusaSlicer loads the 3MF as ONE object
-// (its --info prints one block) whose volumes are the parts, and the gen
-// summary carries the print check (time, filament). Small field, one gen.
+// tsf gen --parts --parts-layout prusaslicer --print-check: PrusaSlicer
+// loads the 3MF as ONE object (its --info prints one block) whose volumes
+// are the parts, and the gen summary carries the print check (time,
+// filament). The portable layout (the default) is three objects to
+// PrusaSlicer, sliced in place: the same layers, time and filament.
 TEST(PrintCheckCli, MultiPart3mfIsOneObjectToPrusaSlicerAndGenPrintChecksIt) {
     REQUIRE_SLICER();
     const auto dir = test::scratchDir();
@@ -117,7 +119,8 @@ TEST(PrintCheckCli, MultiPart3mfIsOneObjectToPrusaSlicerAndGenPrintChecksIt) {
     test::writeText(dir / "field.csv", csv);
     const std::string model = (dir / "parts.3mf").string();
     const auto gen = test::runTsf("gen " + (dir / "field.csv").string() +
-                                      " --cell 4 --height 4 --title T --parts --print-check --layer 0.3 --json -o " + model,
+                                      " --cell 4 --height 4 --title T --parts --parts-layout prusaslicer --print-check "
+                                      "--layer 0.3 --json -o " + model,
                                   dir);
     ASSERT_EQ(gen.exit_code, test::kExitOk) << gen.out << gen.err;
     const auto j = nlohmann::json::parse(gen.out);
@@ -140,6 +143,19 @@ TEST(PrintCheckCli, MultiPart3mfIsOneObjectToPrusaSlicerAndGenPrintChecksIt) {
     size_t triangles = 0;
     for (const MeshPart& p : readMeshParts(model)) triangles += p.mesh.triangleCount();
     EXPECT_NE(info.output.find("number_of_facets = " + std::to_string(triangles)), std::string::npos) << info.output;
+
+    const std::string portable = (dir / "portable.3mf").string();
+    const auto gen2 = test::runTsf("gen " + (dir / "field.csv").string() +
+                                       " --cell 4 --height 4 --title T --parts --print-check --layer 0.3 --json -o " + portable,
+                                   dir);
+    ASSERT_EQ(gen2.exit_code, test::kExitOk) << gen2.out << gen2.err;
+    const auto j2 = nlohmann::json::parse(gen2.out);
+    EXPECT_EQ(j2["print_check"]["objects"], 3);
+    EXPECT_EQ(j2["print_check"]["layers"], j["print_check"]["layers"]);
+    EXPECT_NEAR(j2["print_check"]["print_time_s"].get<double>(), j["print_check"]["print_time_s"].get<double>(),
+                0.01 * j["print_check"]["print_time_s"].get<double>());
+    EXPECT_NEAR(j2["print_check"]["filament_g"].get<double>(), j["print_check"]["filament_g"].get<double>(),
+                0.01 * j["print_check"]["filament_g"].get<double>());
 }
 
 // tsf coupon's piece prints in under an hour at 0.2 mm layers (PrusaSlicer's estimate).
