@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -23,6 +24,9 @@
 #include "gen/scad/scad_render_cost.h"
 #include "gen/model/scene_json.h"
 #include "pipeline/verified_model.h"
+#include "gen/key/braille_ready_file.h"
+#include "gen/key/model_key.h"
+#include "gen/util/atomic_file.h"
 #include "gen/util/file_bytes.h"
 #include "gen/util/number_format.h"
 #include "gen/util/output_paths.h"
@@ -43,6 +47,7 @@ struct GenCommandOptions {
     bool json = false;
     bool progress = false;
     bool no_sidecar = false;
+    bool no_key = false;  ///< --no-key: no MODEL.key.txt and MODEL.key.brf
     std::string scad_strategy = "polyhedron";
     bool scad_library_beside = false;
     std::string command_line;
@@ -66,6 +71,26 @@ constexpr int64_t kMaxOwnFileBytes = 64 << 20;
 constexpr size_t kSceneHeadBytes = 64 << 10;
 
 std::string sidecarPath(const GenCommandOptions& o) { return (o.output.empty() ? o.scad : o.output) + ".scene.json"; }
+
+/// The model's key beside it: MODEL.key.txt and MODEL.key.brf for MODEL.stl
+/// (or the .scad when no model file is written).
+std::pair<std::string, std::string> keyPaths(const GenCommandOptions& o) {
+    std::filesystem::path base(o.output.empty() ? o.scad : o.output);
+    base.replace_extension();
+    return {base.string() + ".key.txt", base.string() + ".key.brf"};
+}
+
+/// A .brf tsf wrote: Braille ASCII only (and CR, LF, form feeds), beside a
+/// key text tsf wrote.
+bool isTsfKeyBrf(const std::string& brf_path) {
+    std::filesystem::path text(brf_path);
+    text.replace_extension(".txt");
+    std::error_code ec;
+    if (!std::filesystem::exists(text, ec) || !isTsfModelKey(readFileHead(text.string(), 64))) return false;
+    for (const char c : readFileBytes(brf_path, kMaxOwnFileBytes))
+        if (!((c >= 0x20 && c <= 0x5F) || c == '\r' || c == '\n' || c == '\f')) return false;
+    return true;
+}
 
 ScadOptions scadOptions(const GenCommandOptions& o) {
     ScadOptions so;
@@ -113,6 +138,10 @@ void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
     if (so.write_parameter_sets && !o.scad.empty())
         outputs.push_back({scad_paths[1], "the OpenSCAD parameter sets written beside --scad"});
     if (!o.no_sidecar) outputs.push_back({sidecarPath(o), "the scene sidecar (--no-scene leaves it out)"});
+    if (!o.no_key) {
+        outputs.push_back({keyPaths(o).first, "the model's key (--no-key leaves it out)"});
+        outputs.push_back({keyPaths(o).second, "the model's braille key (--no-key leaves it out)"});
+    }
     checkOutputPaths({{o.gen.input, "the input"}}, outputs);
     if (o.force) return;
     if (so.write_parameter_sets && !o.scad.empty())
@@ -120,6 +149,14 @@ void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
                           "choose another --scad name");
     if (!o.no_sidecar)
         refuseForeignFile(sidecarPath(o), isTsfScene, "the scene sidecar", "give --no-scene", kSceneHeadBytes);
+    if (!o.no_key) {
+        refuseForeignFile(keyPaths(o).first, isTsfModelKey, "the model's key", "give --no-key");
+        std::error_code ec;
+        if (std::filesystem::exists(keyPaths(o).second, ec) && !isTsfKeyBrf(keyPaths(o).second))
+            throw InputError(keyPaths(o).second, 0, 0,
+                             "exists and was not written by tsf; it would be replaced by the model's braille key. Give "
+                             "--force to replace it, or give --no-key");
+    }
 }
 
 // Grids above this many cells print progress lines without being asked.
@@ -347,6 +384,22 @@ void runGen(GenCommandOptions o) {
         writeSceneJson(scene, sidecar, model ? &*model : nullptr);
         summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
     }
+    if (!o.no_key && (!o.output.empty() || !o.scad.empty())) {
+        // The key for a reader: what the model shows, its values and
+        // heights, how to find north, in words and in braille.
+        timer.begin("writing key");
+        ModelKeyFacts facts;
+        facts.input_name = std::filesystem::path(o.gen.input).filename().string();
+        facts.field_how = field.how;
+        facts.version = TSF_VERSION;
+        const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
+        const auto [text_path, brf_path] = keyPaths(o);
+        writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });
+        const std::string brf = brailleReadyFile(key, scene.params.legend.table);
+        writeFileAtomically(brf_path, [&](std::ostream& out) { out << brf; });
+        summary.outputs.push_back({text_path, "key, plain text for a screen reader"});
+        summary.outputs.push_back({brf_path, "key in braille (" + scene.params.legend.table + ", BRF, 40 x 25) for an embosser"});
+    }
     std::optional<PrintCheckReport> printed;
     if (o.print_check) {
         timer.begin("print check");
@@ -384,6 +437,9 @@ void addGenCommand(CLI::App& app) {
                     "Also draw the model to this PNG: framed to fill it, coloured by height, north arrow, scale bar "
                     "and size in mm; with --mirror the underside beside the top (drawn by tsf, no OpenSCAD needed)");
     cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
+    cmd->add_flag("--no-key", opts->no_key,
+                  "Leave out the model's key (MODEL.key.txt for a screen reader, MODEL.key.brf for an embosser: what "
+                  "the model shows, its values and heights, how to find north)");
     cmd->add_flag("--keep-unprintable", opts->keep_unprintable,
                   "Write the model even when its self-check finds walls thinner than the nozzle (they would not print)");
     cmd->add_flag("--verify-full", opts->verify_full,

@@ -10,6 +10,7 @@
 //   mesh      gen/mesh/: the direct mesher, parts, halves, the preview picture
 //   mesh_io   gen/mesh_io/: STL, OFF, OBJ, 3MF read and written
 //   scad      gen/scad/: the OpenSCAD emitter
+//   key       gen/key/: the model's key in text and braille (beside scad)
 //   verify    verify/: the self-check of a mesh, and against a Scene
 //   runners   runners/: external tools (OpenSCAD engines, PrusaSlicer)
 //   pipeline  pipeline/: library entry points (a verified model from a Scene)
@@ -32,7 +33,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-enum class Layer { Base, Field, Readers, Geometry, Model, Mesh, MeshIo, Scad, Verify, Runners, Pipeline, Haptics, App, Tests, Unknown };
+enum class Layer { Base, Field, Readers, Geometry, Model, Mesh, MeshIo, Scad, Key, Verify, Runners, Pipeline, Haptics, App, Tests, Unknown };
 
 const char* name(Layer l) {
     switch (l) {
@@ -44,6 +45,7 @@ const char* name(Layer l) {
         case Layer::Mesh: return "mesh (gen/mesh)";
         case Layer::MeshIo: return "mesh files (gen/mesh_io)";
         case Layer::Scad: return "scad (gen/scad)";
+        case Layer::Key: return "key (gen/key)";
         case Layer::Verify: return "verify";
         case Layer::Runners: return "runners";
         case Layer::Pipeline: return "pipeline";
@@ -61,7 +63,7 @@ Layer layerOf(const std::string& path) {
     static const std::vector<std::pair<std::string, Layer>> prefixes = {
         {"gen/util/", Layer::Base},        {"gen/field/", Layer::Field}, {"gen/readers/", Layer::Readers},
         {"gen/geometry/", Layer::Geometry}, {"gen/model/", Layer::Model}, {"gen/mesh/", Layer::Mesh},
-        {"gen/mesh_io/", Layer::MeshIo},   {"gen/scad/", Layer::Scad},   {"verify/", Layer::Verify},
+        {"gen/mesh_io/", Layer::MeshIo},   {"gen/scad/", Layer::Scad},   {"gen/key/", Layer::Key}, {"verify/", Layer::Verify},
         {"runners/", Layer::Runners},      {"pipeline/", Layer::Pipeline}, {"haptics/", Layer::Haptics},
         {"app/", Layer::App},
         {"tests/", Layer::Tests},          {"bench/", Layer::Tests},
@@ -74,7 +76,7 @@ Layer layerOf(const std::string& path) {
 // What each layer may include besides itself.
 const std::map<Layer, std::set<Layer>> kMayInclude = [] {
     using L = Layer;
-    const std::set<L> gen = {L::Base, L::Field, L::Readers, L::Geometry, L::Model, L::Mesh, L::MeshIo, L::Scad};
+    const std::set<L> gen = {L::Base, L::Field, L::Readers, L::Geometry, L::Model, L::Mesh, L::MeshIo, L::Scad, L::Key};
     std::set<L> all_libraries = gen;
     all_libraries.insert({L::Verify, L::Runners, L::Pipeline, L::Haptics});
     return std::map<L, std::set<L>>{
@@ -86,6 +88,7 @@ const std::map<Layer, std::set<Layer>> kMayInclude = [] {
         {L::Mesh, {L::Base, L::Field, L::Geometry, L::Model}},
         {L::MeshIo, {L::Base, L::Geometry}},
         {L::Scad, {L::Base, L::Field, L::Geometry, L::Model, L::Mesh, L::MeshIo}},
+        {L::Key, {L::Base, L::Field, L::Geometry, L::Model}},
         {L::Verify, gen},
         {L::Runners, [&] { std::set<L> s = gen; s.insert(L::Verify); return s; }()},
         {L::Pipeline, [&] { std::set<L> s = gen; s.insert({L::Verify, L::Haptics}); return s; }()},

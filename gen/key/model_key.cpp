@@ -1,0 +1,143 @@
+#include "gen/key/model_key.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "gen/field/hex_grid.h"
+#include "gen/util/number_format.h"
+
+namespace tsf {
+namespace {
+
+std::string num(double v) { return formatSignificant(v, 4); }
+std::string mm(double v) { return formatSignificant(v, 3) + " mm"; }
+
+/// " airports" (with a space) or "" when no units were given.
+std::string unitsAfter(const Scene& s) { return s.params.legend.units.empty() ? "" : " " + s.params.legend.units; }
+
+std::string heightsParagraph(const Scene& s) {
+    const ValueMapping& m = s.mapping;
+    const std::string u = unitsAfter(s);
+    std::string p = "A pillar's height above the floor shows its value: " + num(m.baseline) + u + " at the floor, " +
+                    num(m.value_max) + u + " at " + mm(m.max_height_mm) + " above it. ";
+    switch (m.transfer) {
+    case Transfer::Linear: {
+        const double per_mm = (m.value_max - m.baseline) / m.max_height_mm;
+        p += "Heights are proportional to the values: each millimetre is " + num(per_mm) + u + ".";
+        break;
+    }
+    case Transfer::Sqrt:
+        p += "Heights grow with the square root of the values, so small values stay apart and large ones do not "
+             "tower: a pillar twice as high holds four times the value above the floor's.";
+        break;
+    case Transfer::Log:
+        p += "Heights follow the logarithm of the values (two powers of ten from the floor to the top): each step "
+             "up of the same height multiplies the value.";
+        break;
+    }
+    return p;
+}
+
+std::string orientationParagraph(const Scene& s) {
+    std::string p = "Finding north: ";
+    const bool tab = s.marks.tab.has_value();
+    const bool notch = (tab && s.marks.tab->has_notch) || s.marks.notch.has_value();
+    const bool triangle = (tab && s.marks.tab->has_triangle) || s.marks.triangle.has_value();
+    if (!notch && !triangle) return p + "this model was made without orientation marks.";
+    if (notch) {
+        const double depth = tab ? s.marks.tab->notch_depth_mm : s.marks.notch->depth_mm;
+        p += "a V-shaped notch " + mm(depth) + " deep is cut into the model's south-west corner, through its whole "
+             "height. Turn the model so the notch is at your near left: north is then away from you and east to your "
+             "right. ";
+    }
+    if (triangle) {
+        p += std::string("A raised right triangle stands ") + (tab ? "on a flat tab west of the pillars" : "on a flat region of the model") +
+             ", its right angle at the south-west and its longer leg running east, to your right, when the model is "
+             "turned that way.";
+        if (tab && s.marks.tab->under_triangle)
+            p += " The same triangle is raised on the tab's underside: turned over, its longer leg runs to your left, "
+                 "as the data is mirrored there.";
+    }
+    if (tab) p += " The tab holds no data.";
+    return p;
+}
+
+}  // namespace
+
+std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts& facts) {
+    std::vector<std::string> out;
+    const std::string u = unitsAfter(s);
+    out.push_back(s.params.legend.title.empty() ? "Model of " + facts.input_name : s.params.legend.title);
+    out.push_back("What it shows: " + facts.field_how + ". Made by tsf " + facts.version + " from the file " +
+                  facts.input_name + ".");
+
+    // The values as modelled (kept cells with data).
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    int64_t pits = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        if (s.kind[k] == CellKind::NoData || !std::isfinite(s.value[k])) {
+            ++pits;
+            continue;
+        }
+        lo = std::min(lo, s.value[k]);
+        hi = std::max(hi, s.value[k]);
+    }
+    std::string values = "Each hexagon is " + mm(s.pitch_mm) + " across";
+    values += s.one_to_one ? " and stands for one value of the data, at its own height. "
+                           : " and stands for the values that fell in it, as said above. ";
+    if (std::isfinite(lo))
+        values += "The values go from " + num(lo) + " to " + num(hi) + u + ".";
+    out.push_back(values);
+    out.push_back(heightsParagraph(s));
+    if (pits > 0)
+        out.push_back(std::to_string(pits) + (pits == 1 ? " cell has" : " cells have") +
+                      " no data: each is a pit " + mm(s.zMm(s.nodata_pit_units)) +
+                      " below the floor, never a value.");
+    if (s.shapes.cells_textured > 0)
+        out.push_back(std::to_string(s.shapes.cells_textured) +
+                      " cells at the floor hold no data and are there only to hold the model together: each has a "
+                      "cone-shaped dimple " + mm(s.zMm(s.shapes.dimple_units)) + " deep at its centre. They are not values.");
+    if (s.shapes.cells_tilted > 0)
+        out.push_back(std::string("Pillar tops lean: each leans the way ") +
+                      (s.params.tilt == TiltSource::Points ? "the points crowd within its hexagon"
+                                                           : "the data rises across its hexagon") +
+                      ", at most " + formatSignificant(s.params.max_slope_deg, 3) +
+                      " degrees. The height at a top's centre is its value.");
+    out.push_back(orientationParagraph(s));
+    if (s.legend) {
+        std::string p = "Braille on the plate north of the pillars reads:";
+        for (const std::string& line : s.legend->layout.text) p += " \"" + line + "\".";
+        out.push_back(p);
+    }
+    if (s.scale) {
+        std::string steps;
+        for (size_t k = 0; k < s.scale->steps.size(); ++k)
+            steps += (k == 0 ? "" : k + 1 == s.scale->steps.size() ? " and " : ", ") + num(s.scale->steps[k].value);
+        out.push_back("A tactile scale stands east of the pillars: " + std::to_string(s.scale->steps.size()) +
+                      " steps, the lowest in the south, at " + steps + u +
+                      ". Put a finger on a pillar and one on the steps to read its value.");
+    }
+    double top = 0;
+    for (int64_t t : s.top) top = std::max(top, s.zMm(t));
+    std::string size = "The pillars cover " + mm(gridWidth(s.grid, s.pitch_mm)) + " from west to east and " +
+                       mm(gridDepth(s.grid, s.pitch_mm)) + " from south to north, and stand up to " + mm(top) + " high";
+    if (s.params.bottom == Bottom::Flat)
+        size += " on a flat base " + mm(s.params.base_mm) + " thick.";
+    else
+        size += ". The underside mirrors the top: seen from below, high values are deep pockets.";
+    out.push_back(size);
+    if (s.halves)
+        out.push_back("The model prints in two halves, upper and lower, joined by pins that fit one way only.");
+    return out;
+}
+
+std::string modelKeyText(const std::vector<std::string>& paragraphs) {
+    std::string out = std::string(kModelKeyHeader) + "\n";
+    for (const std::string& p : paragraphs) out += "\n" + p + "\n";
+    return out;
+}
+
+bool isTsfModelKey(const std::string& text) { return text.rfind(std::string(kModelKeyHeader) + "\n", 0) == 0; }
+
+}  // namespace tsf
