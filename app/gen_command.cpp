@@ -282,6 +282,12 @@ void runGen(GenCommandOptions o) {
     summary.field = &field;
     if (field.grid.cellCount() > kProgressCells && !o.progress && !o.json)
         std::fprintf(stderr, "tsf: %d x %d cells, this may take a few seconds\n", field.grid.cols, field.grid.rows);
+    // A legend's units line takes the file's own units unless --units says otherwise.
+    LegendRequest& legend = o.gen.scene.legend;
+    if (!legend.title.empty() && legend.units.empty() && !field.input.units.empty()) {
+        legend.units = field.input.units;
+        summary.printer_notes.push_back("the legend's units are the file's: " + legend.units + " (--units to say otherwise)");
+    }
     timer.begin("scene");
     // STL and 3MF store float32: the z grid must be one float32 resolves.
     o.gen.scene.stored_as_float32 = model_ext == ".stl" || model_ext == ".3mf";
@@ -392,6 +398,10 @@ void runGen(GenCommandOptions o) {
         facts.input_name = std::filesystem::path(o.gen.input).filename().string();
         facts.field_how = field.how;
         facts.version = TSF_VERSION;
+        for (const ReadFact& f : field.input.facts)
+            if (f.name == "variable" || f.name == "band" || f.name == "units")
+                facts.read_facts.push_back((f.name == "band" ? std::string("Band") : f.name == "units" ? "Units" : "Variable") +
+                                           ": " + f.value);
         const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
         const auto [text_path, brf_path] = keyPaths(o);
         writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });

@@ -48,6 +48,11 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                     "Raster band to read, 1-based: a band of a multi-band GeoTIFF, a time step or level of a "
                     "NetCDF variable (tsf info lists them)")
         ->capture_default_str()->group(in);
+    cmd->add_option("--variable", o.variable,
+                    "Variable to read from a file that holds several (NetCDF, HDF5, GeoPackage rasters), by name: "
+                    "--variable pr; GDAL's own name works as the input too: 'NETCDF:\"file.nc\":pr' (tsf info "
+                    "lists them)")
+        ->group(in);
     cmd->add_option("--sample", o.sample,
                     "Raster -> hexagons: auto (mode for a class map with a colour table, else mean) | mean (of the "
                     "pixels in a hexagon) | mode (their most common value) | nearest | bilinear")

@@ -20,6 +20,7 @@ struct FieldInput {
     int64_t nodata = 0;           ///< of them without data (NaN, a placeholder, --nodata)
     double min = NAN, max = NAN, mean = NAN;  ///< over the values with data; NaN when none
     std::vector<ReadFact> facts;  ///< what the reader detected, in reading order
+    std::string units;            ///< the values' units as the file names them ("" when it does not)
 };
 
 /// Counts `values` (NaN = no data) and takes min, max and mean of the others.

@@ -27,6 +27,7 @@ struct Raster {
     /// table): a hexagon takes the class most of its pixels have, never a
     /// mean of codes (gen/field/resample.h, Method::Mode).
     bool categorical = false;
+    std::string units;           ///< the values' units as the file names them ("" when it does not)
     std::string source;          ///< file it came from, for messages and SCAD headers
     std::string kind;            ///< "csv", "pgm", "png", "esri-ascii", ...
     /// Size of one raster cell in data units (ESRI cellsize; 1 for images/CSV).

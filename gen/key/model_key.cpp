@@ -69,8 +69,9 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     std::vector<std::string> out;
     const std::string u = unitsAfter(s);
     out.push_back(s.params.legend.title.empty() ? "Model of " + facts.input_name : s.params.legend.title);
-    out.push_back("What it shows: " + facts.field_how + ". Made by tsf " + facts.version + " from the file " +
-                  facts.input_name + ".");
+    std::string shows = "What it shows: " + facts.field_how + ".";
+    for (const std::string& f : facts.read_facts) shows += " " + f + ".";
+    out.push_back(shows + " Made by tsf " + facts.version + " from the file " + facts.input_name + ".");
 
     // The values as modelled (kept cells with data).
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;

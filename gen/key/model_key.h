@@ -22,6 +22,9 @@ struct ModelKeyFacts {
     std::string input_name;  ///< the input's file name (never its folders)
     std::string field_how;   ///< how the values were made from it (HexField::how)
     std::string version;     ///< tsf's version
+    /// What was read from a file of several (its variable, band, time step,
+    /// units), one "name: value" each; said after how the values were made.
+    std::vector<std::string> read_facts;
 };
 
 /// The key's paragraphs: the first is the title line, each other a few

@@ -2,6 +2,8 @@
 // use. See gdal_reader.h and gdal/gdal_module_abi.h.
 #include "gen/readers/gdal_reader.h"
 
+#include <cctype>
+
 #include <dlfcn.h>
 #include <unistd.h>
 
@@ -79,13 +81,13 @@ const Module& module() {
     return m;
 }
 
-Raster call(const std::string& path, const std::string_view* bytes, int band) {
+Raster call(const std::string& path, const std::string_view* bytes, int band, const std::string& variable) {
     const Module& m = module();
     if (!m.read)
         throw std::runtime_error(path + ": this raster is read through GDAL, and tsf's GDAL module " + m.problem);
     Raster r;
     GdalModuleError e;
-    const GdalCall c{&path, bytes, &r, &e, band};
+    const GdalCall c{&path, bytes, &r, &e, band, &variable};
     const int status = m.read(&c);
     if (status == kGdalInputError) throw InputError(e.path, e.line, e.column, e.detail);
     if (status != kGdalOk) throw std::runtime_error(path + ": GDAL failed: " + e.detail);
@@ -94,9 +96,22 @@ Raster call(const std::string& path, const std::string_view* bytes, int band) {
 
 }  // namespace
 
-Raster readGdalRaster(const std::string& path, int band) { return call(path, nullptr, band); }
+Raster readGdalRaster(const std::string& path, int band, const std::string& variable) {
+    return call(path, nullptr, band, variable);
+}
 
-Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band) { return call(path, &bytes, band); }
+Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band, const std::string& variable) {
+    return call(path, &bytes, band, variable);
+}
+
+bool isGdalDatasetName(const std::string& path) {
+    const size_t colon = path.find(':');
+    if (colon < 2 || colon == std::string::npos || colon + 1 >= path.size()) return false;
+    for (size_t k = 0; k < colon; ++k)
+        if (!std::isalnum(static_cast<unsigned char>(path[k])) && path[k] != '_') return false;
+    // DRIVER:"file":var, or DRIVER:file:var (a second colon after the file).
+    return path[colon + 1] == '"' || path.find(':', colon + 1) != std::string::npos;
+}
 
 std::string transformCoordinates(const std::string& from, const std::string& to, std::vector<double>& x,
                                  std::vector<double>& y) {

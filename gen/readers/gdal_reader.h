@@ -42,7 +42,11 @@ namespace tsf {
 /// Reads the raster file at `path` through GDAL.
 /// `band` is 1-based (a band, a time step or a level); a band the file does
 /// not have is an InputError saying how many it has.
-Raster readGdalRaster(const std::string& path, int band = 1);
+/// `variable` picks one of a file's variables (NetCDF, HDF5, GeoPackage
+/// rasters; GDAL's subdatasets) by name; "" takes the only one, and a file
+/// of several without one is an InputError listing them. `path` may also be
+/// GDAL's own name of a variable: NETCDF:"file.nc":pr.
+Raster readGdalRaster(const std::string& path, int band = 1, const std::string& variable = "");
 
 /// Transforms points in place from CRS `from` to `to` (anything GDAL reads
 /// as user input: "EPSG:4326", a PROJ string, WKT) with PROJ, x east and y
@@ -54,6 +58,11 @@ std::string transformCoordinates(const std::string& from, const std::string& to,
 /// Same on bytes in memory (GDAL's /vsimem/); `path` names them in messages
 /// and tells GDAL the extension. Files that need a sidecar (.hdr, .prj)
 /// must be read with readGdalRaster.
-Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band = 1);
+Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band = 1, const std::string& variable = "");
+
+/// True when path is GDAL's name of a dataset inside a file rather than a
+/// file name: DRIVER:"file":variable or DRIVER:file:variable (NETCDF:,
+/// HDF5:, GPKG:), with a driver name of two or more letters.
+bool isGdalDatasetName(const std::string& path);
 
 }  // namespace tsf

@@ -34,6 +34,9 @@ HexField loadField(const FieldLoadOptions& o) {
     if (o.band < 1) throw InputError("--band " + std::to_string(o.band) + ": bands are counted from 1");
     if (!o.points.empty() && o.band != 1)
         throw InputError("--band is for rasters with several bands; a table of points has none");
+    if (!o.points.empty() && !o.variable.empty())
+        throw InputError("--variable is for files with several variables (NetCDF, HDF5); a table of points has columns: "
+                         "--points x=COL,y=COL");
     if (!o.points.empty()) {
         PointColumns cols = parsePointColumns(o.points);
         cols.delimiter = delimiter;
@@ -56,6 +59,7 @@ HexField loadField(const FieldLoadOptions& o) {
     ro.delimiter = delimiter;
     ro.decimal = o.decimal_comma ? DecimalMark::Comma : DecimalMark::Detect;
     ro.band = o.band;
+    ro.variable = o.variable;
     Raster raster = readRaster(o.input, ro);
     int64_t nodata_cells = 0;
     if (o.nodata)
@@ -69,6 +73,7 @@ HexField loadField(const FieldLoadOptions& o) {
     input.cols = raster.cols;
     input.rows = raster.rows;
     input.facts = raster.facts;
+    input.units = raster.units;
     describeValues(raster.values, input);
     std::string placeholder_note;
     if (o.nodata) {

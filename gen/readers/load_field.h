@@ -31,6 +31,7 @@ struct FieldLoadOptions {
     double bin_size = 0.0;      ///< hex pitch in data units (points); 0 = from bins
     int bins = 0;               ///< target number of hex columns (points and rasters); 0 = default
     int band = 1;               ///< rasters GDAL reads: which band (1-based)
+    std::string variable;       ///< rasters GDAL reads: which variable of a file with several ("" = the only one)
     /// raster -> hexes: auto (mode for class codes, Raster::categorical, else
     /// mean) | mean | mode | nearest | bilinear
     std::string sample = "auto";

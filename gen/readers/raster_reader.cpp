@@ -66,8 +66,9 @@ RasterFormat detectRasterFormat(std::string_view bytes, const std::string& path)
     if (ext == ".png") return RasterFormat::Png;
     if (ext == ".pgm" || ext == ".pnm") return RasterFormat::Pgm;
     if (ext == ".asc") return RasterFormat::EsriAscii;
-    for (const char* gdal_ext : {".tif", ".tiff", ".hgt", ".img", ".vrt", ".nc", ".jp2", ".bil", ".flt", ".dem",
-                                 ".dt0", ".dt1", ".dt2"})
+    for (const char* gdal_ext : {".tif", ".tiff", ".hgt", ".img", ".vrt", ".nc", ".nc4", ".cdf", ".h5", ".hdf5", ".he5",
+                                 ".hdf", ".gpkg", ".grib", ".grb", ".grb2", ".jp2", ".bil", ".flt", ".dem", ".dt0",
+                                 ".dt1", ".dt2"})
         if (ext == gdal_ext) return RasterFormat::Gdal;
     return RasterFormat::Csv;
 }
@@ -102,18 +103,27 @@ Raster parseRaster(std::string_view bytes, const std::string& path, const Raster
         case RasterFormat::Png: return parsePng(bytes, path);
         case RasterFormat::Pgm: return parsePgm(bytes, path);
         case RasterFormat::EsriAscii: return parseEsriAscii(bytes, path);
-        case RasterFormat::Gdal: return withMagicInErrors(bytes, [&] { return parseGdalRaster(bytes, path, opts.band); });
+        case RasterFormat::Gdal:
+            return withMagicInErrors(bytes, [&] { return parseGdalRaster(bytes, path, opts.band, opts.variable); });
         default: return parseCsvGrid(bytes, path, opts.delimiter, opts.decimal);
     }
 }
 
 Raster readRaster(const std::string& path, const RasterReadOptions& opts) {
     checkCsvDelimiter(opts.delimiter);
+    // GDAL's own name of a variable in a file (NETCDF:"f.nc":pr) is GDAL's to open.
+    std::error_code ec;
+    if (isGdalDatasetName(path) && !std::filesystem::exists(path, ec))
+        return readGdalRaster(path, opts.band, opts.variable);
     const std::string head = readFileHead(path, kMagicBytes);
     RasterReadOptions o = opts;
     if (o.format == RasterFormat::Auto) o.format = detectRasterFormat(head, path);
     // GDAL reads the file itself (and any sidecar: .prj, .hdr, .aux.xml).
-    if (o.format == RasterFormat::Gdal) return withMagicInErrors(head, [&] { return readGdalRaster(path, o.band); });
+    if (o.format == RasterFormat::Gdal)
+        return withMagicInErrors(head, [&] { return readGdalRaster(path, o.band, o.variable); });
+    if (!o.variable.empty())
+        throw InputError(path, 0, 0, "--variable " + o.variable + ": this file holds one set of values (--variable is for "
+                                     "files GDAL reads with several: NetCDF, HDF5, GeoPackage)");
     if (o.band != 1)
         throw InputError(path, 0, 0, "--band " + std::to_string(o.band) + ": this file has one band (--band is for "
                                      "rasters GDAL reads with several: multi-band GeoTIFF, NetCDF time steps)");

@@ -35,6 +35,9 @@ struct RasterReadOptions {
     /// Rasters GDAL reads: which band, 1-based. Other formats have one band
     /// and refuse another number.
     int band = 1;
+    /// Rasters GDAL reads: which variable of a file with several (NetCDF,
+    /// HDF5, GeoPackage); "" = the only one.
+    std::string variable;
 };
 
 /// Reads `path`. Throws InputError for a missing file or any format error.

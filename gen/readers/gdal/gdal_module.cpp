@@ -6,7 +6,10 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cpl_conv.h>
+#include <cpl_string.h>
 #include <cpl_error.h>
 #include <cpl_vsi.h>
 #include <gdal.h>
@@ -59,12 +62,161 @@ std::string crsName(OGRSpatialReferenceH srs) {
     return out;
 }
 
-Raster readDataset(const std::string& gdal_name, const std::string& path, int band_number) {
+/// A dataset inside a file (GDAL's subdataset): a NetCDF or HDF5 variable,
+/// a GeoPackage raster table.
+struct Variable {
+    std::string gdal_name;  ///< what GDAL opens: NETCDF:"file.nc":pr
+    std::string name;       ///< the variable's own name: pr
+    std::string description;///< GDAL's: "[12x33x81] precipitation_flux (32-bit floating-point)"
+};
+
+std::vector<Variable> variablesOf(GDALDatasetH ds) {
+    std::vector<Variable> out;
+    char** md = GDALGetMetadata(ds, "SUBDATASETS");
+    for (int n = 1;; ++n) {
+        const char* name = CSLFetchNameValue(md, ("SUBDATASET_" + std::to_string(n) + "_NAME").c_str());
+        if (!name) break;
+        const char* desc = CSLFetchNameValue(md, ("SUBDATASET_" + std::to_string(n) + "_DESC").c_str());
+        Variable v{name, name, desc ? desc : ""};
+        // The variable is what follows the last ':' outside quotes (NETCDF:"a:b.nc":pr, HDF5:"f.h5"://grp/x).
+        const size_t close = v.gdal_name.rfind('"');
+        const size_t colon = v.gdal_name.find(':', close == std::string::npos ? 0 : close);
+        if (colon != std::string::npos) v.name = v.gdal_name.substr(colon + 1);
+        while (!v.name.empty() && v.name.front() == '/') v.name.erase(0, 1);
+        out.push_back(std::move(v));
+    }
+    return out;
+}
+
+std::string listVariables(const std::vector<Variable>& vars) {
+    std::string out;
+    for (size_t k = 0; k < vars.size(); ++k)
+        out += (k ? "; " : "") + vars[k].name + (vars[k].description.empty() ? "" : " " + vars[k].description);
+    return out;
+}
+
+/// A CF time ("days since 1850-01-01", value 59) as a date, when the
+/// calendar is the standard one; "" otherwise.
+std::string cfDate(const std::string& units, const std::string& calendar, double value) {
+    const std::string cal = calendar.empty() ? "standard" : calendar;
+    if (cal != "standard" && cal != "gregorian" && cal != "proleptic_gregorian") return "";
+    const size_t since = units.find(" since ");
+    if (since == std::string::npos) return "";
+    const std::string unit = units.substr(0, since);
+    double seconds = 0;
+    if (unit == "days" || unit == "day" || unit == "d") seconds = value * 86400;
+    else if (unit == "hours" || unit == "hour" || unit == "h") seconds = value * 3600;
+    else if (unit == "minutes" || unit == "minute") seconds = value * 60;
+    else if (unit == "seconds" || unit == "second" || unit == "s") seconds = value;
+    else return "";
+    int y = 0, mo = 0, d = 0, hh = 0, mi = 0;
+    double ss = 0;
+    const std::string ref = units.substr(since + 7);
+    if (std::sscanf(ref.c_str(), "%d-%d-%d%*[ T]%d:%d:%lf", &y, &mo, &d, &hh, &mi, &ss) < 3) return "";
+    // Days from the civil date (proleptic Gregorian; H. Hinnant's algorithm).
+    auto daysFromCivil = [](int64_t yy, int64_t mm, int64_t dd) {
+        yy -= mm <= 2;
+        const int64_t era = (yy >= 0 ? yy : yy - 399) / 400;
+        const int64_t yoe = yy - era * 400;
+        const int64_t doy = (153 * (mm + (mm > 2 ? -3 : 9)) + 2) / 5 + dd - 1;
+        const int64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+        return era * 146097 + doe - 719468;
+    };
+    const double total = double(daysFromCivil(y, mo, d)) * 86400 + hh * 3600 + mi * 60 + ss + seconds;
+    if (!std::isfinite(total) || std::abs(total) > 1e14) return "";
+    int64_t days = int64_t(std::floor(total / 86400));
+    const double rest = total - double(days) * 86400;
+    // Civil date from days.
+    days += 719468;
+    const int64_t era = (days >= 0 ? days : days - 146096) / 146097;
+    const int64_t doe = days - era * 146097;
+    const int64_t yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    const int64_t doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    const int64_t mp = (5 * doy + 2) / 153;
+    const int64_t dd = doy - (153 * mp + 2) / 5 + 1;
+    const int64_t mm = mp < 10 ? mp + 3 : mp - 9;
+    const int64_t yy = yoe + era * 400 + (mm <= 2);
+    char buf[48];
+    if (rest < 1) std::snprintf(buf, sizeof buf, "%04lld-%02lld-%02lld", (long long)yy, (long long)mm, (long long)dd);
+    else
+        std::snprintf(buf, sizeof buf, "%04lld-%02lld-%02lld %02d:%02d", (long long)yy, (long long)mm, (long long)dd,
+                      int(rest / 3600), int(std::fmod(rest, 3600) / 60));
+    return buf;
+}
+
+/// What a NetCDF band stands for: "time = 59 days since 1850-01-01
+/// (1850-03-01)" from the band's NETCDF_DIM_* metadata and the dataset's
+/// units and calendar of those dimensions; "" when there is none.
+std::string bandCoordinates(GDALDatasetH ds, GDALRasterBandH band) {
+    std::string out;
+    char** md = GDALGetMetadata(band, nullptr);
+    for (int k = 0; md && md[k]; ++k) {
+        const std::string entry = md[k];
+        if (entry.rfind("NETCDF_DIM_", 0) != 0) continue;
+        const size_t eq = entry.find('=');
+        if (eq == std::string::npos) continue;
+        const std::string dim = entry.substr(11, eq - 11), value = entry.substr(eq + 1);
+        const char* units = GDALGetMetadataItem(ds, (dim + "#units").c_str(), nullptr);
+        const char* calendar = GDALGetMetadataItem(ds, (dim + "#calendar").c_str(), nullptr);
+        std::string what = dim + " = " + value + (units ? std::string(" ") + units : "");
+        if (units) {
+            const std::string date = cfDate(units, calendar ? calendar : "", std::atof(value.c_str()));
+            if (!date.empty()) what += " (" + date + ")";
+        }
+        out += (out.empty() ? "" : ", ") + what;
+    }
+    return out;
+}
+
+/// True when the dataset's metadata gives a coordinate variable in
+/// degrees_east and one in degrees_north (CF units of longitude, latitude).
+bool cfLonLat(GDALDatasetH ds) {
+    bool east = false, north = false;
+    char** md = GDALGetMetadata(ds, nullptr);
+    for (int k = 0; md && md[k]; ++k) {
+        const std::string entry = md[k];
+        const size_t at = entry.find("#units=");
+        if (at == std::string::npos) continue;
+        const std::string unit = entry.substr(at + 7);
+        east = east || unit == "degrees_east" || unit == "degree_east" || unit == "degrees_E";
+        north = north || unit == "degrees_north" || unit == "degree_north" || unit == "degrees_N";
+    }
+    return east && north;
+}
+
+Raster readDataset(const std::string& gdal_name, const std::string& path, int band_number,
+                   const std::string& variable = "") {
     registerDrivers();
     QuietGdal quiet;
     Dataset ds;
     ds.h = GDALOpenEx(gdal_name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
     if (!ds.h) throw InputError(path, 0, 0, "GDAL cannot read it as a raster: " + QuietGdal::lastMessage());
+    // A file of several variables (NetCDF, HDF5, GeoPackage): the one asked
+    // for, or the only one.
+    const std::vector<Variable> vars = variablesOf(ds.h);
+    if (!vars.empty()) {
+        const Variable* chosen = nullptr;
+        if (!variable.empty()) {
+            for (const Variable& v : vars)
+                if (v.name == variable || v.gdal_name == variable) chosen = &v;
+            if (!chosen)
+                throw InputError(path, 0, 0, "has no variable '" + variable + "'; it has " + std::to_string(vars.size()) +
+                                                 ": " + listVariables(vars));
+        } else if (vars.size() == 1) {
+            chosen = &vars[0];
+        } else {
+            throw InputError(path, 0, 0, "holds " + std::to_string(vars.size()) + " variables: " + listVariables(vars) +
+                                             "; choose one with --variable NAME");
+        }
+        Raster r = readDataset(chosen->gdal_name, path, band_number);
+        std::string names;
+        for (const Variable& v : vars) names += (names.empty() ? "" : ", ") + v.name;
+        r.facts.insert(r.facts.begin(), {"variable", chosen->name + (chosen->description.empty() ? "" : " " + chosen->description) +
+                                                        (vars.size() > 1 ? " (of " + names + "; --variable NAME)" : "")});
+        return r;
+    }
+    if (!variable.empty() && variable != gdal_name)
+        throw InputError(path, 0, 0, "--variable " + variable + ": it holds one dataset, not variables to choose from");
     const int cols = GDALGetRasterXSize(ds.h), rows = GDALGetRasterYSize(ds.h), bands = GDALGetRasterCount(ds.h);
     if (bands < 1) throw InputError(path, 0, 0, "has no raster band");
     checkRasterSize(path, 0, cols, rows);
@@ -82,9 +234,15 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
                                      " through GDAL " + GDALVersionInfo("RELEASE_NAME")});
     if (bands > 1) {
         std::string what = std::to_string(band_number) + " of " + std::to_string(bands);
-        if (const char* d = GDALGetDescription(band); d && *d) what += std::string(" (") + d + ")";
+        const std::string coordinates = bandCoordinates(ds.h, band);
+        if (!coordinates.empty()) what += ": " + coordinates;
+        else if (const char* d = GDALGetDescription(band); d && *d) what += std::string(" (") + d + ")";
         if (band_number == 1) what += "; --band N for another";
         r.facts.push_back({"band", what});
+    }
+    if (const char* units = GDALGetRasterUnitType(band); units && *units) {
+        r.units = units;
+        r.facts.push_back({"units", units});
     }
     // A colour table (a palette) means the values are class codes: land
     // cover, soil types. Averaging two of them invents a class.
@@ -101,7 +259,15 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
     if (has_gt && (gt[2] != 0 || gt[4] != 0)) r.facts.push_back({"note", "rotated geotransform read as north-up"});
     OGRSpatialReferenceH srs = GDALGetSpatialRef(ds.h);
     double x_scale = 1.0;  // ground width of one unit of x, in units of y
-    if (srs && OSRIsGeographic(srs)) {
+    if (!srs && has_gt && cfLonLat(ds.h)) {
+        // No CRS in the file, but CF coordinates in degrees east and north
+        // (most climate files): longitude and latitude on the sphere.
+        const double lat = gt[3] + gt[5] * rows / 2.0;
+        x_scale = std::cos(lat * kPi / 180.0);
+        r.facts.push_back({"crs", "none in the file; its coordinates are degrees east and north (CF), so longitude is "
+                                  "scaled by cos(" + formatSignificant(lat) + " deg) = " + formatSignificant(x_scale)});
+        r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h) + " degrees"});
+    } else if (srs && OSRIsGeographic(srs)) {
         const double lat = gt[3] + gt[5] * rows / 2.0;  // mean latitude, degrees
         x_scale = std::cos(lat * kPi / 180.0);
         r.facts.push_back({"crs", crsName(srs) + ", geographic: longitude scaled by cos(" + formatSignificant(lat) +
@@ -144,15 +310,27 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
 
     int has_nodata = 0;
     const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
-    for (double& v : r.values)
+    // Packed values (CF scale_factor, add_offset; GDAL's scale and offset):
+    // the stored number times the scale plus the offset is the value.
+    int has_scale = 0, has_offset = 0;
+    const double scale = GDALGetRasterScale(band, &has_scale), offset = GDALGetRasterOffset(band, &has_offset);
+    const bool unpack = (has_scale && scale != 1.0) || (has_offset && offset != 0.0);
+    for (double& v : r.values) {
         if ((has_nodata && v == nodata) || !std::isfinite(v)) v = NAN;
+        else if (unpack) v = v * (has_scale ? scale : 1.0) + (has_offset ? offset : 0.0);
+    }
     if (has_nodata) r.facts.push_back({"no-data value", formatSignificant(nodata) + " (from the file)"});
+    if (unpack)
+        r.facts.push_back({"packed", "stored values x " + formatSignificant(has_scale ? scale : 1.0) + " + " +
+                                         formatSignificant(has_offset ? offset : 0.0) + " (the file's scale and offset)"});
     return r;
 }
 
-Raster readGdalFile(const std::string& path, int band) { return readDataset(path, path, band); }
+Raster readGdalFile(const std::string& path, int band, const std::string& variable) {
+    return readDataset(path, path, band, variable);
+}
 
-Raster parseGdalBytes(std::string_view bytes, const std::string& path, int band) {
+Raster parseGdalBytes(std::string_view bytes, const std::string& path, int band, const std::string& variable) {
     registerDrivers();
     static std::atomic<unsigned> counter{0};
     std::string ext;
@@ -167,7 +345,7 @@ Raster parseGdalBytes(std::string_view bytes, const std::string& path, int band)
         std::string n;
         ~Unlink() { VSIUnlink(n.c_str()); }
     } unlink{name};
-    return readDataset(name, path, band);
+    return readDataset(name, path, band, variable);
 }
 
 }  // namespace
@@ -202,8 +380,9 @@ int guarded(GdalModuleError* error, Work work) {
 
 extern "C" __attribute__((visibility("default"))) int tsf_gdal_read(const tsf::GdalCall* call) {
     return tsf::guarded(call->error, [call] {
-        *call->raster = call->bytes ? tsf::parseGdalBytes(*call->bytes, *call->path, call->band)
-                                    : tsf::readGdalFile(*call->path, call->band);
+        const std::string variable = call->variable ? *call->variable : std::string();
+        *call->raster = call->bytes ? tsf::parseGdalBytes(*call->bytes, *call->path, call->band, variable)
+                                    : tsf::readGdalFile(*call->path, call->band, variable);
     });
 }
 

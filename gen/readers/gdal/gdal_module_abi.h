@@ -16,7 +16,7 @@ namespace tsf {
 inline constexpr const char* kGdalModuleName = "tsf-gdal.so";
 
 /// Bumped whenever GdalCall, GdalModuleError or Raster change.
-inline constexpr int kGdalModuleAbi = 4;  // 4: tsf_gdal_transform; 3: GdalCall::band; 2: Raster::categorical
+inline constexpr int kGdalModuleAbi = 5;  // 5: GdalCall::variable; 4: tsf_gdal_transform; 3: GdalCall::band; 2: Raster::categorical
 
 inline constexpr int kGdalOk = 0;
 inline constexpr int kGdalInputError = 1;  ///< error holds an InputError's parts
@@ -34,6 +34,7 @@ struct GdalCall {
     Raster* raster = nullptr;                 ///< out
     GdalModuleError* error = nullptr;         ///< out, when the result is not kGdalOk
     int band = 1;                             ///< which band, 1-based (bands, time steps, levels)
+    const std::string* variable = nullptr;    ///< which variable (subdataset) of a file with several; nullptr or "": the only one
 };
 
 /// Points from one coordinate reference system to another (PROJ, through

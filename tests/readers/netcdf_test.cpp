@@ -1,0 +1,123 @@
+// NetCDF through GDAL: a file of two variables is read by --variable (or by
+// GDAL's own name of the variable), a band is a time step with its date
+// decoded from CF metadata, the fill value is no data, packed values are
+// unpacked, the units are read; tsf gen makes one pillar per value of the
+// step asked for.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/readers/gdal_reader.h"
+#include "gen/readers/raster_reader.h"
+#include "gen/util/error.h"
+#include "tests/readers/netcdf_test_writer.h"
+#include "tests/support/files.h"
+#include "tests/support/input_error.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+std::string fact(const Raster& r, const std::string& key) {
+    for (const ReadFact& f : r.facts)
+        if (f.name == key) return f.value;
+    return "";
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::string climateFile() {
+    const auto dir = test::scratchDir("netcdf");
+    const std::string path = (dir / "climate.nc").string();
+    EXPECT_TRUE(test::writeNetCdf(path)) << "GDAL's netCDF driver (Debian libgdal32 has it)";
+    return path;
+}
+
+TEST(NetCdf, AFileOfSeveralVariablesAsksWhichAndListsThem) {
+    const std::string path = climateFile();
+    const InputError e = test::catchInputError([&] { readRaster(path); });
+    EXPECT_TRUE(has(e.what(), "holds 2 variables")) << e.what();
+    EXPECT_TRUE(has(e.what(), "pr ")) << e.what();
+    EXPECT_TRUE(has(e.what(), "tas ")) << e.what();
+    EXPECT_TRUE(has(e.what(), "--variable NAME")) << e.what();
+    RasterReadOptions o;
+    o.variable = "rain";
+    const InputError none = test::catchInputError([&] { readRaster(path, o); });
+    EXPECT_TRUE(has(none.what(), "has no variable 'rain'")) << none.what();
+}
+
+// Step 3 of pr: every value where it was written (row 0 is the north: the
+// file's latitudes ascend, GDAL turns them north-up), the fill value no
+// data, the date of the step, the units.
+TEST(NetCdf, AVariableAndATimeStepAreReadValueForValue) {
+    const std::string path = climateFile();
+    RasterReadOptions o;
+    o.variable = "pr";
+    o.band = 3;
+    for (const std::string& name : {path, "NETCDF:\"" + path + "\":pr"}) {
+        const Raster r = readRaster(name, name == path ? o : RasterReadOptions{.band = 3});
+        ASSERT_EQ(r.cols, 5);
+        ASSERT_EQ(r.rows, 4);
+        for (int row = 0; row < 4; ++row)
+            for (int col = 0; col < 5; ++col) {
+                const int lat = 3 - row;
+                if (lat == 0 && col == 0) EXPECT_TRUE(std::isnan(r.at(col, row))) << "the fill value is no data";
+                else EXPECT_DOUBLE_EQ(r.at(col, row), test::netcdfPr(2, lat, col)) << name << " " << col << "," << row;
+            }
+        EXPECT_EQ(r.units, "mm/day");
+        EXPECT_TRUE(has(fact(r, "band"), "3 of 3: time = 60 days since 2000-01-01 (2000-03-01)")) << fact(r, "band");
+        if (name == path) EXPECT_TRUE(has(fact(r, "variable"), "pr")) << fact(r, "variable");
+    }
+}
+
+TEST(NetCdf, PackedValuesAreUnpacked) {
+    const std::string path = climateFile();
+    RasterReadOptions o;
+    o.variable = "tas";
+    o.band = 2;
+    const Raster r = readRaster(path, o);
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 5; ++col) EXPECT_DOUBLE_EQ(r.at(col, row), test::netcdfTas(1, 3 - row, col));
+    EXPECT_TRUE(has(fact(r, "packed"), "x 0.5 + 200")) << fact(r, "packed");
+    EXPECT_EQ(r.units, "K");
+    EXPECT_TRUE(has(fact(r, "band"), "(2000-02-01)")) << fact(r, "band");
+}
+
+TEST(NetCdf, GdalDatasetNamesAreNotFileNames) {
+    EXPECT_TRUE(isGdalDatasetName("NETCDF:\"a.nc\":pr"));
+    EXPECT_TRUE(isGdalDatasetName("HDF5:/data/f.h5://group/x"));
+    EXPECT_TRUE(isGdalDatasetName("GPKG:tiles.gpkg:dem"));
+    EXPECT_FALSE(isGdalDatasetName("C:\\\\data\\\\a.tif"));
+    EXPECT_FALSE(isGdalDatasetName("data/a.tif"));
+    EXPECT_FALSE(isGdalDatasetName("odd:name.csv"));
+}
+
+// tsf gen: --variable pr --band 3 with cells small enough is one pillar per
+// value of step 3, the fill cell a pit; the same through GDAL's name; tsf
+// info lists the variable and the step.
+TEST(NetCdf, GenMakesOnePillarPerValueOfTheStep) {
+    const std::string path = climateFile();
+    const auto dir = std::filesystem::path(path).parent_path();
+    for (const std::string& input : {path + " --variable pr", "'NETCDF:\"" + path + "\":pr'"}) {
+        const test::RunResult r =
+            test::runTsf("gen " + input + " --band 3 --cell 5 --json -o " + (dir / "pr.stl").string(), dir);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        const auto j = nlohmann::json::parse(r.out);
+        EXPECT_TRUE(j["scene"]["one_pillar_per_value"].get<bool>()) << r.out;
+        EXPECT_EQ(j["scene"]["cells"]["with_data"].get<int>(), 19);  // 20 less the fill cell
+        EXPECT_TRUE(j["verify"]["passed"].get<bool>());
+    }
+    const test::RunResult info = test::runTsf("info " + path + " --variable tas --band 2", dir);
+    ASSERT_EQ(info.exit_code, 0) << info.output;
+    EXPECT_TRUE(has(info.out, "tas")) << info.out;
+    EXPECT_TRUE(has(info.out, "2000-02-01")) << info.out;
+    const test::RunResult bad = test::runTsf("gen " + path + " -o " + (dir / "x.stl").string(), dir);
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_TRUE(has(bad.err, "--variable NAME")) << bad.err;
+}
+
+}  // namespace
+}  // namespace tsf
