@@ -336,6 +336,7 @@ void runFeel(const FeelOptions& o) {
         if (file_mesh.triangles.empty()) throw InputError(o.gen.input + ": the mesh has no triangles to feel");
     }
     HexField field;
+    refuseBandSeries(o.gen, "feel");
     if (!from_sidecar && !from_mesh) field = loadField(o.gen);
     Scene scene;
     if (foreign_mesh) {

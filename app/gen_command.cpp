@@ -1,5 +1,7 @@
 // tsf gen: field in, model out (mesh file, OpenSCAD, scene sidecar), verified.
+#include <cctype>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -250,7 +252,7 @@ PrintCheckReport printCheck(const GenCommandOptions& o) {
     }
 }
 
-void runGen(GenCommandOptions o) {
+void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     if (o.output.empty() && o.scad.empty())
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
     const ScadOptions so = scadOptions(o);
@@ -420,10 +422,103 @@ void runGen(GenCommandOptions o) {
     if (o.json) {
         nlohmann::json j = summaryJson(summary);
         if (printed) j["print_check"] = toJson(*printed);
-        std::cout << j.dump(2) << "\n";
+        if (json_out) *json_out = std::move(j);
+        else std::cout << j.dump(2) << "\n";
     } else {
         std::cout << formatSummary(summary);
         if (printed) std::cout << "\n" << formatPrintCheck(*printed);
+    }
+}
+
+/// "pr.stl" -> "pr-band-03.stl" (the band zero-padded to `width` digits).
+std::string bandPath(const std::string& path, int band, int width) {
+    if (path.empty()) return path;
+    std::filesystem::path p(path);
+    std::string n = std::to_string(band);
+    n.insert(0, size_t(std::max(0, width - int(n.size()))), '0');
+    return (p.parent_path() / (p.stem().string() + "-band-" + n + p.extension().string())).string();
+}
+
+/// What a band stands for, short: its date when the file says one (a CF
+/// time step), else "band N".
+std::string bandLabel(const HexField& field, int band) {
+    for (const ReadFact& f : field.input.facts) {
+        if (f.name != "band") continue;
+        const size_t open = f.value.rfind('('), close = f.value.rfind(')');
+        if (open != std::string::npos && close != std::string::npos && close > open + 1 &&
+            std::isdigit(static_cast<unsigned char>(f.value[open + 1])))
+            return f.value.substr(open + 1, close - open - 1);
+    }
+    return "band " + std::to_string(band);
+}
+
+/// --band 1-12: one model per band, on one value scale (the same baseline,
+/// value at full height and transfer), so pillars of two steps compare by
+/// touch; each model's files carry its band (MODEL-band-03.stl), its legend
+/// title and key name its step.
+void runGenSeries(GenCommandOptions o) {
+    if (o.output.empty() && o.scad.empty())
+        throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
+    if (!o.gen.points.empty()) throw InputError("--band is for rasters with several bands; a table of points has none");
+    const std::vector<int> bands = o.gen.band_series;
+    // The common scale: every band's values.
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    std::vector<std::string> labels;
+    for (int b : bands) {
+        FieldLoadOptions one = o.gen;
+        one.band = b;
+        const HexField f = loadField(one);
+        for (double v : f.values)
+            if (std::isfinite(v)) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+        labels.push_back(bandLabel(f, b));
+    }
+    if (!(lo <= hi)) throw InputError(o.gen.input, 0, 0, "--band: no band of the series has data");
+    SceneParams& p = o.gen.scene;
+    switch (p.baseline_mode) {
+        case BaselineMode::Auto:
+            if (lo < 0) p.baseline_value = lo, p.baseline_mode = BaselineMode::Value;
+            else p.baseline_mode = BaselineMode::Zero;
+            break;
+        case BaselineMode::Min: p.baseline_value = lo, p.baseline_mode = BaselineMode::Value; break;
+        default: break;
+    }
+    if (!p.value_max) p.value_max = hi;
+    const int width = int(std::to_string(bands.back()).size());
+    const std::string title = p.legend.title;
+    nlohmann::json series = nlohmann::json::array();
+    for (size_t k = 0; k < bands.size(); ++k) {
+        GenCommandOptions one = o;
+        one.gen.band = bands[k];
+        one.gen.band_series.clear();
+        one.output = bandPath(o.output, bands[k], width);
+        one.scad = bandPath(o.scad, bands[k], width);
+        one.preview = bandPath(o.preview, bands[k], width);
+        // The legend names the step: where the title says {band}, else after it.
+        if (const size_t at = title.find("{band}"); at != std::string::npos)
+            one.gen.scene.legend.title = title.substr(0, at) + labels[k] + title.substr(at + 6);
+        else if (!title.empty())
+            one.gen.scene.legend.title = title + " " + labels[k];
+        if (!o.json) std::cout << (k ? "\n" : "") << "band " << bands[k] << " (" << labels[k] << "), " << k + 1 << " of "
+                               << bands.size() << "\n";
+        nlohmann::json j;
+        runGen(one, o.json ? &j : nullptr);
+        if (o.json) series.push_back({{"band", bands[k]}, {"label", labels[k]}, {"model", std::move(j)}});
+    }
+    const double baseline = p.baseline_mode == BaselineMode::Zero ? 0.0 : p.baseline_value;
+    if (o.json) {
+        std::cout << nlohmann::json{{"series", series},
+                                    {"common_scale",
+                                     {{"baseline", baseline}, {"value_max", *p.value_max}, {"values_min", lo},
+                                      {"values_max", hi}}}}
+                         .dump(2)
+                  << "\n";
+    } else {
+        std::cout << "\nseries    " << bands.size() << " models on one scale: " << formatSignificant(baseline) << " at the floor, "
+                  << formatSignificant(*p.value_max) << " at full height (the values of every band run from "
+                  << formatSignificant(lo) << " to " << formatSignificant(hi) << ")\n";
     }
 }
 
@@ -499,7 +594,8 @@ void addGenCommand(CLI::App& app) {
         opts->given.max_slope = cmd->get_option("--max-slope")->count() > 0;
         // The pieces are not the model the sidecar describes: none is written for them.
         if (opts->gen.scene.halves) opts->no_sidecar = true;
-        runGen(*opts);
+        if (!opts->gen.band_series.empty()) runGenSeries(*opts);
+        else runGen(*opts);
     });
 }
 
@@ -510,6 +606,7 @@ void addInfoCommand(CLI::App& app) {
     addGenOptions(cmd, *opts);
     cmd->add_flag("--json", *json, "Print as JSON");
     cmd->callback([opts, json] {
+        refuseBandSeries(*opts, "info");
         const HexField field = loadField(*opts);
         const Scene scene = buildScene(field, opts->scene);
         if (*json) {

@@ -1,5 +1,6 @@
 #include "app/gen_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -26,6 +27,43 @@ void parseBaseline(const std::string& text, SceneParams& p) {
 
 }  // namespace
 
+std::vector<int> parseBandSpec(const std::string& spec) {
+    constexpr size_t kMaxSeries = 10000;
+    auto bad = [&](const std::string& why) {
+        return InputError("--band " + spec + ": " + why + " (give a band, 3; a range, 1-12; or a list, 1,4,7-9)");
+    };
+    auto number = [&](const std::string& t) {
+        if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos) throw bad("'" + t + "' is not a band number");
+        const int n = std::stoi(t);
+        if (n < 1) throw bad("bands are counted from 1");
+        return n;
+    };
+    std::vector<int> out;
+    size_t at = 0;
+    while (at <= spec.size()) {
+        const size_t comma = std::min(spec.find(',', at), spec.size());
+        const std::string part = spec.substr(at, comma - at);
+        const size_t dash = part.find('-');
+        if (dash == std::string::npos) {
+            out.push_back(number(part));
+        } else {
+            const int from = number(part.substr(0, dash)), to = number(part.substr(dash + 1));
+            if (to < from) throw bad("a range runs upward");
+            if (size_t(to - from) + out.size() >= kMaxSeries) throw bad("more than 10000 bands");
+            for (int b = from; b <= to; ++b) out.push_back(b);
+        }
+        if (out.size() > kMaxSeries) throw bad("more than 10000 bands");
+        at = comma + 1;
+    }
+    return out;
+}
+
+void refuseBandSeries(const GenOptions& o, const char* command) {
+    if (!o.band_series.empty())
+        throw InputError(std::string("--band: a series of bands makes one model per band, which is tsf gen's; tsf ") +
+                         command + " reads one band (--band N)");
+}
+
 void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     if (with_input)
         cmd->add_option("input", o.input,
@@ -44,10 +82,17 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--bins", o.bins,
                     "Number of hexagon columns (points: default 30; rasters: default one per raster column, at most 1000)")
         ->check(CLI::Range(1, 100000))->group(in);
-    cmd->add_option("--band", o.band,
-                    "Raster band to read, 1-based: a band of a multi-band GeoTIFF, a time step or level of a "
-                    "NetCDF variable (tsf info lists them)")
-        ->capture_default_str()->group(in);
+    cmd->add_option_function<std::string>(
+           "--band",
+           [&o](const std::string& spec) {
+               std::vector<int> bands = parseBandSpec(spec);
+               o.band = bands.front();
+               o.band_series = bands.size() > 1 ? std::move(bands) : std::vector<int>();
+           },
+           "Raster band to read, 1-based: a band of a multi-band GeoTIFF, a time step or level of a NetCDF variable "
+           "(tsf info lists them). tsf gen: a series, 1-12 or 1,4,7, makes one model per band on one common value "
+           "scale")
+        ->default_str("1")->group(in);
     cmd->add_option("--variable", o.variable,
                     "Variable to read from a file that holds several (NetCDF, HDF5, GeoPackage rasters), by name: "
                     "--variable pr; GDAL's own name works as the input too: 'NETCDF:\"file.nc\":pr' (tsf info "

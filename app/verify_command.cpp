@@ -82,6 +82,7 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     if (!o.against.empty()) {
         GenOptions g = o.gen;
         g.input = o.against;
+        refuseBandSeries(g, "verify --against");
         // As tsf gen made it: an STL or 3MF holds a z grid float32 resolves.
         const std::string ext = lowerCaseExtension(o.model);
         g.scene.stored_as_float32 = ext == ".stl" || ext == ".3mf";

@@ -119,5 +119,40 @@ TEST(NetCdf, GenMakesOnePillarPerValueOfTheStep) {
     EXPECT_TRUE(has(bad.err, "--variable NAME")) << bad.err;
 }
 
+// --band 1-3: three models on one scale (the same floor value and value at
+// full height, from every step's values), each file named by its band, the
+// legend naming the step where the title says {band}; --band 1,3 a list.
+TEST(NetCdf, ABandSeriesIsOneModelPerStepOnOneScale) {
+    const std::string path = climateFile();
+    const auto dir = std::filesystem::path(path).parent_path();
+    const test::RunResult r = test::runTsf(
+        "gen " + path + " --variable pr --band 1-3 --title '{band}' --cell 20 --json -o " + (dir / "pr.stl").string(), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["series"].size(), 3u);
+    EXPECT_DOUBLE_EQ(j["common_scale"]["value_max"].get<double>(), test::netcdfPr(2, 3, 4));  // the largest of all steps
+    EXPECT_DOUBLE_EQ(j["common_scale"]["baseline"].get<double>(), 0.0);
+    const char* dates[3] = {"2000-01-01", "2000-02-01", "2000-03-01"};
+    for (int k = 0; k < 3; ++k) {
+        const auto& m = j["series"][size_t(k)];
+        EXPECT_EQ(m["band"], k + 1);
+        EXPECT_EQ(m["label"], dates[k]);
+        EXPECT_DOUBLE_EQ(m["model"]["scene"]["mapping"]["value_max"].get<double>(), test::netcdfPr(2, 3, 4));
+        EXPECT_TRUE(m["model"]["verify"]["passed"].get<bool>());
+        const std::string stem = (dir / ("pr-band-" + std::to_string(k + 1))).string();
+        EXPECT_TRUE(std::filesystem::exists(stem + ".stl"));
+        EXPECT_TRUE(has(test::readText(stem + ".key.txt"), std::string("\n") + dates[k] + "\n")) << "the legend's title";
+    }
+    // A list (names are zero-padded when the last band needs more digits).
+    EXPECT_EQ(test::runTsf("gen " + path + " --variable pr --band 1,3 --cell 20 -o " + (dir / "two.stl").string(), dir).exit_code, 0);
+    EXPECT_TRUE(std::filesystem::exists(dir / "two-band-3.stl"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "two-band-2.stl"));
+    // Bad series and series where one band is read are bad input.
+    for (const std::string& bad : {"3-1", "0-2", "1,,2", "x"})
+        EXPECT_EQ(test::runTsf("gen " + path + " --variable pr --band " + bad + " -o " + (dir / "bad.stl").string(), dir).exit_code, 2)
+            << bad;
+    EXPECT_EQ(test::runTsf("info " + path + " --variable pr --band 1-3", dir).exit_code, 2);
+}
+
 }  // namespace
 }  // namespace tsf
