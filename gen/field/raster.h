@@ -28,6 +28,10 @@ struct Raster {
     /// mean of codes (gen/field/resample.h, Method::Mode).
     bool categorical = false;
     std::string units;           ///< the values' units as the file names them ("" when it does not)
+    /// 1: every value is one of the file's. More: the file was too large to
+    /// read whole, and each value is the mean (or most common class) of a
+    /// block of about decimation x decimation of its pixels.
+    int decimation = 1;
     std::string source;          ///< file it came from, for messages and SCAD headers
     std::string kind;            ///< "csv", "pgm", "png", "esri-ascii", ...
     /// Size of one raster cell in data units (ESRI cellsize; 1 for images/CSV).

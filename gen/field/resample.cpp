@@ -101,6 +101,19 @@ ResampleLayout resampleLayout(int32_t raster_cols, int32_t raster_rows, int hex_
     return layout;
 }
 
+namespace {
+
+/// "the file read decimated, each value the mean of about 20 x 20 of its
+/// pixels ...; then " for a decimated raster (raster.h), "" otherwise.
+std::string decimatedPrefix(const Raster& raster) {
+    if (raster.decimation <= 1) return "";
+    return std::string("the file read decimated, each value the ") + (raster.categorical ? "most common class" : "mean") +
+           " of about " + std::to_string(raster.decimation) + " x " + std::to_string(raster.decimation) +
+           " of its pixels (it is larger than tsf reads whole); then ";
+}
+
+}  // namespace
+
 HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
     const ResampleLayout layout = resampleLayout(raster.cols, raster.rows, opts.hex_cols);
     if (raster.values.size() != size_t(raster.cols) * size_t(raster.rows))
@@ -182,8 +195,8 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
         case ResampleOptions::Method::Bilinear: what = "bilinear interpolation at each hexagon centre"; break;
         case ResampleOptions::Method::Mode: what = "most common class of the pixels in each hexagon"; break;
     }
-    field.how = what + ": " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) + " px -> " +
-                std::to_string(grid.cols) + " x " + std::to_string(grid.rows) + " hexagons, pitch " +
+    field.how = decimatedPrefix(raster) + what + ": " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
+                " px -> " + std::to_string(grid.cols) + " x " + std::to_string(grid.rows) + " hexagons, pitch " +
                 formatSignificant(p, 4) + " px";
     return field;
 }
@@ -195,8 +208,10 @@ HexField rasterOneToOne(const Raster& raster) {
     field.source = raster.source;
     field.values = raster.values;
     field.pitch_data = raster.cell_size;
-    field.one_to_one = true;
-    field.how = "one pillar per value: " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
+    // A decimated file's values are already means of its pixels: one pillar
+    // per value read, but not per value of the file.
+    field.one_to_one = raster.decimation <= 1;
+    field.how = decimatedPrefix(raster) + "one pillar per value: " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " values -> " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " hexagons (odd rows shifted half a cell east; rows are 0.866 of a cell apart, so the model is "
                 "13% shallower north-south than the grid)";

@@ -23,7 +23,15 @@
 //     of the smaller side, so the model keeps the ground's aspect;
 //     Raster::cell_size is that side, in the CRS's units (degrees of
 //     latitude for a geographic CRS);
-//   - a rotated geotransform is read as north-up (a fact says so).
+//   - a rotated geotransform is read as north-up (a fact says so);
+//   - a raster larger than 4 million values (or 20 000 a side) after that is
+//     read DECIMATED: both sides divided by the smallest whole factor that
+//     fits, each value the mean of the pixels with data in its block (the
+//     most common class for a class map), strip by strip, so memory is the
+//     result and one strip of source rows (a 40 000 x 40 000 GeoTIFF: 2000 x
+//     2000 values in about 150 MB); Raster::decimation says by how much and
+//     the field's description says the values are means. Sides up to a
+//     million pixels are read so.
 // Raster::facts names the GDAL driver, the band, the CRS, the pixel size, the
 // no-data value and any resampling; Raster::kind is "gdal/<driver>"
 // ("gdal/GTiff").

@@ -3,8 +3,10 @@
 //
 // A raster is held as doubles (8 bytes per cell), so kMaxRasterCells cells
 // take 800 MB. tsf models have at most a few hundred thousand hexagons, so a
-// larger input would only be averaged down: downsample it first (for example
-// `gdal_translate -outsize 25% 25% big.asc small.asc`).
+// larger input would only be averaged down. Rasters GDAL reads are read
+// decimated when larger than tsf holds whole (gen/readers/gdal_reader.h);
+// text formats that large are refused: downsample them first (for example
+// `gdal_translate -outsize 25% 25% big.asc small.asc`), or give GDAL the file.
 #pragma once
 
 #include <cstdint>

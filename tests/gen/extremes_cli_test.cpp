@@ -174,20 +174,6 @@ TEST_P(Extremes, EveryStageGivesAVerifiedModelOrExitTwo) {
 INSTANTIATE_TEST_SUITE_P(Fields, Extremes, ::testing::ValuesIn(extremes()),
                          [](const ::testing::TestParamInfo<Extreme>& info) { return info.param.name; });
 
-// Peak resident memory (MiB) of one run of a shell command, and its exit code.
-std::pair<int, double> runMeasured(const std::string& command) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-        ::_exit(127);
-    }
-    int status = 0;
-    struct rusage usage {};
-    if (pid < 0 || ::wait4(pid, &status, 0, &usage) != pid) return {-1, 0.0};
-    // ru_maxrss is in KiB on Linux; with sh -c it is the larger of sh and tsf.
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, double(usage.ru_maxrss) / 1024.0};
-}
-
 // The stated bound for a 2000 x 2000 grid CSV (docs/limits.md): the raster
 // (8 bytes a cell, 32 MB), the file's bytes (about 12 MB) and the resampled
 // model's mesh and self-check.
@@ -204,7 +190,7 @@ TEST(ExtremesBig, TwoThousandSquaredCellsStayWithinTheStatedMemory) {
         }
     }
     const fs::path stl = dir / "big.stl";
-    const auto [code, peak_mib] = runMeasured(std::string(TSF_BINARY) + " gen " + field.string() + " -o " +
+    const auto [code, peak_mib] = test::runMeasured(std::string(TSF_BINARY) + " gen " + field.string() + " -o " +
                                               stl.string() + " --json >" + (dir / "out.json").string() + " 2>" +
                                               (dir / "err.txt").string());
     ASSERT_EQ(code, kExitOk) << test::readText(dir / "err.txt");

@@ -13,6 +13,11 @@
 #include "tests/support/input_error.h"
 #include "tests/support/run.h"
 
+#include <cpl_string.h>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
 namespace tsf {
 namespace {
 
@@ -244,6 +249,97 @@ TEST(GdalReader, AMissingModuleIsAToolErrorNamingWhereItLooked) {
     test::writeText(dir / "f.csv", "1,2\n3,4\n");
     EXPECT_EQ(test::runCommand("TSF_GDAL_MODULE=" + nowhere + " " + TSF_BINARY + " info " +
                                (dir / "f.csv").string()).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace tsf
+
+namespace tsf {
+namespace {
+
+// A raster larger than tsf holds whole (3000 x 3000 = 9 M values) is read
+// as 1500 x 1500 means of 2 x 2 pixels: every mean exact, pixels without data
+// left out of their block's mean, a block without any no data; a class map
+// by its most common class.
+TEST(GdalReader, ALargeRasterIsReadAsBlockMeansOfItsPixelsWithData) {
+    const auto dir = test::scratchDir("gdal_large");
+    test::GeoTiffSpec spec;
+    spec.cols = spec.rows = 3000;
+    spec.nodata = -1;
+    spec.values.resize(size_t(3000) * 3000);
+    for (int r = 0; r < 3000; ++r)
+        for (int c = 0; c < 3000; ++c) spec.values[size_t(r) * 3000 + size_t(c)] = float(r + c);
+    spec.values[0] = -1;                                  // block (0, 0): one pixel without data
+    for (int k : {2, 3, 3002, 3003}) spec.values[size_t(k)] = -1;  // block (1, 0): none with data
+    const std::string path = (dir / "large.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, spec));
+    const Raster r = readRaster(path);
+    ASSERT_EQ(r.cols, 1500);
+    ASSERT_EQ(r.rows, 1500);
+    EXPECT_EQ(r.decimation, 2);
+    EXPECT_DOUBLE_EQ(r.at(0, 0), (1.0 + 1.0 + 2.0) / 3);  // pixels (0,1), (1,0), (1,1): values r + c
+    EXPECT_TRUE(std::isnan(r.at(1, 0)));
+    for (int i : {1, 700, 1499})
+        for (int j : {2, 999, 1499}) EXPECT_DOUBLE_EQ(r.at(j, i), 2.0 * i + 2.0 * j + 1.0) << j << "," << i;
+    bool said = false;
+    for (const ReadFact& f : r.facts) said = said || (f.name == "decimated" && f.value.find("3000 x 3000 px -> 1500 x 1500") == 0);
+    EXPECT_TRUE(said);
+
+    test::GeoTiffSpec classes = spec;
+    classes.classes = true;
+    classes.nodata.reset();
+    for (int r = 0; r < 3000; ++r)
+        for (int c = 0; c < 3000; ++c) classes.values[size_t(r) * 3000 + size_t(c)] = float((r % 2 == 0 && c % 2 == 0) ? 7 : 3);
+    const std::string class_path = (dir / "classes.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(class_path, classes));
+    const Raster k = readRaster(class_path);
+    ASSERT_EQ(k.cols, 1500);
+    EXPECT_DOUBLE_EQ(k.at(10, 10), 3.0);  // three pixels of 3 to one of 7: the class, never a mean
+}
+
+// A 40 000 x 40 000 GeoTIFF (tiled, sparse: a few MB on disk; 6.4 GB as
+// float32 pixels) becomes a model: read decimated strip by strip to 2000 x
+// 2000 means of 20 x 20 pixels, the summary saying so, in well under 1 GB.
+// The data is a 4000 x 4000 square of r + c in the middle; every other
+// pixel is no data, and a block's mean counts only its pixels with data.
+TEST(GdalReader, AFortyThousandSquareRasterIsReadDecimatedUnderAGigabyte) {
+    const auto dir = test::scratchDir("gdal_huge");
+    const std::string path = (dir / "huge.tif").string();
+    {
+        GDALAllRegister();
+        char** options = nullptr;
+        for (const char* kv : {"TILED=YES", "SPARSE_OK=TRUE", "COMPRESS=DEFLATE", "BIGTIFF=YES"})
+            options = CSLAddString(options, kv);
+        GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), 40000, 40000, 1, GDT_Float32, options);
+        CSLDestroy(options);
+        ASSERT_NE(ds, nullptr);
+        const double gt[6] = {500000, 10, 0, 6000000, 0, -10};
+        GDALSetGeoTransform(ds, const_cast<double*>(gt));
+        GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+        GDALSetRasterNoDataValue(band, -9999);
+        std::vector<float> v(size_t(4000) * 4000);
+        for (int r = 0; r < 4000; ++r)
+            for (int c = 0; c < 4000; ++c) v[size_t(r) * 4000 + size_t(c)] = float(r + c);
+        ASSERT_EQ(GDALRasterIO(band, GF_Write, 18000, 18000, 4000, 4000, v.data(), 4000, 4000, GDT_Float32, 0, 0), CE_None);
+        GDALClose(ds);
+    }
+    EXPECT_LT(std::filesystem::file_size(path), uint64_t(64) << 20) << "the test file stays small on disk";
+    const std::string out = (dir / "huge.stl").string();
+    const auto [code, peak_mib] = test::runMeasured(std::string(TSF_BINARY) + " gen " + path + " --json -o " + out +
+                                                    " > " + (dir / "huge.json").string() + " 2>&1");
+    ASSERT_EQ(code, 0) << test::readText(dir / "huge.json");
+    EXPECT_LT(peak_mib, 1024.0);
+    const auto j = nlohmann::json::parse(test::readText(dir / "huge.json"));
+    const std::string how = j["field"]["how"];
+    EXPECT_NE(how.find("read decimated, each value the mean of about 20 x 20 of its pixels"), std::string::npos) << how;
+    EXPECT_NE(how.find("2000 x 2000 px"), std::string::npos) << how;
+    // No value beyond the largest block mean (rows and columns 3980..3999 of
+    // the square: 2 x 3989.5), and the hexagons' means near it.
+    const double top = j["scene"]["mapping"]["value_max"].get<double>();
+    EXPECT_LE(top, 2 * 3989.5);
+    EXPECT_GT(top, 7500.0);
+    EXPECT_FALSE(j["scene"]["one_pillar_per_value"].get<bool>());
+    EXPECT_TRUE(j["verify"]["passed"].get<bool>());
 }
 
 }  // namespace

@@ -29,8 +29,9 @@ std::string fact(const Raster& r, const std::string& key) {
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+/// The test's own file (tests run in parallel, each in its own folder).
 std::string climateFile() {
-    const auto dir = test::scratchDir("netcdf");
+    const auto dir = test::scratchDir();
     const std::string path = (dir / "climate.nc").string();
     EXPECT_TRUE(test::writeNetCdf(path)) << "GDAL's netCDF driver (Debian libgdal32 has it)";
     return path;

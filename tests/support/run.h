@@ -7,7 +7,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
+#include <utility>
 
 #include "tests/support/files.h"
 
@@ -43,6 +46,21 @@ inline RunResult runCommand(const std::string& command) {
 
 /// Runs `tsf <args>` (a shell command line); stdout and stderr interleaved in output.
 inline RunResult runTsf(const std::string& args) { return runCommand(std::string(TSF_BINARY) + " " + args); }
+
+/// Runs a shell command and measures it: its exit code and its peak resident
+/// memory in MiB (ru_maxrss of the child; with sh -c, the larger of sh and
+/// the command).
+inline std::pair<int, double> runMeasured(const std::string& command) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    int status = 0;
+    struct rusage usage {};
+    if (pid < 0 || ::wait4(pid, &status, 0, &usage) != pid) return {-1, 0.0};
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, double(usage.ru_maxrss) / 1024.0};  // KiB on Linux
+}
 
 /// Runs `tsf <args>` with stdout and stderr captured apart (through files in
 /// dir); output is stdout followed by stderr.

@@ -4,6 +4,7 @@
 // that never read a GeoTIFF (about 70 ms at every start when linked).
 #include "gen/readers/gdal/gdal_module_abi.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -29,7 +30,12 @@ constexpr double kPi = 3.14159265358979323846;
 
 void registerDrivers() {
     static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
+    std::call_once(once, [] {
+        GDALAllRegister();
+        // GDAL's block cache (by default a share of the machine's memory)
+        // need hold no more than a row of tiles of the widest raster read.
+        GDALSetCacheMax64(int64_t(64) << 20);
+    });
 }
 
 // Keeps GDAL from printing on stderr while it works; its last message goes
@@ -168,6 +174,73 @@ std::string bandCoordinates(GDALDatasetH ds, GDALRasterBandH band) {
     return out;
 }
 
+/// The largest raster side GDAL is asked for (decimated reading works on
+/// strips of it, so memory is not the bound; a side beyond this is not a
+/// raster a model can be made of).
+constexpr int64_t kMaxGdalSide = 1'000'000;
+/// A raster read whole holds at most this many values (32 MB of doubles):
+/// ten times the hexagons of the largest default model; larger rasters are
+/// read decimated to it.
+constexpr int64_t kWholeReadCells = 4'000'000;
+
+/// The whole-number factor both sides are divided by so the raster holds at
+/// most kWholeReadCells values and kMaxRasterSide a side (1: read whole).
+int64_t decimationFor(int64_t cols, int64_t rows) {
+    int64_t f = 1;
+    while ((cols / f) * (rows / f) > kWholeReadCells || cols / f > kMaxRasterSide || rows / f > kMaxRasterSide) ++f;
+    return f;
+}
+
+/// Reads the band into dec_cols x dec_rows values, each the mean (categorical:
+/// the most common value, the smaller on a tie) of the source pixels with
+/// data in its block; NaN when the block has none. Works a strip of source
+/// rows at a time: memory is the result and one strip.
+void readDecimated(GDALRasterBandH band, const std::string& path, int64_t cols, int64_t rows, int64_t dec_cols,
+                   int64_t dec_rows, bool categorical, bool has_nodata, double nodata, std::vector<double>& out) {
+    out.assign(size_t(dec_cols) * size_t(dec_rows), NAN);
+    const size_t n_blocks = static_cast<size_t>(dec_cols);
+    std::vector<double> strip, sum(n_blocks), count(n_blocks);
+    std::vector<std::vector<std::pair<double, int64_t>>> classes(categorical ? n_blocks : 0);
+    std::vector<int64_t> col_block(static_cast<size_t>(cols));
+    for (int64_t x = 0; x < cols; ++x) col_block[size_t(x)] = std::min(dec_cols - 1, x * dec_cols / cols);
+    for (int64_t r = 0; r < dec_rows; ++r) {
+        const int64_t y0 = r * rows / dec_rows, y1 = std::max(y0 + 1, (r + 1) * rows / dec_rows);
+        strip.resize(size_t(cols) * size_t(y1 - y0));
+        if (GDALRasterIO(band, GF_Read, 0, int(y0), int(cols), int(y1 - y0), strip.data(), int(cols), int(y1 - y0),
+                         GDT_Float64, 0, 0) != CE_None)
+            throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
+        std::fill(sum.begin(), sum.end(), 0.0);
+        std::fill(count.begin(), count.end(), 0.0);
+        for (auto& c : classes) c.clear();
+        for (int64_t y = 0; y < y1 - y0; ++y)
+            for (int64_t x = 0; x < cols; ++x) {
+                const double v = strip[size_t(y * cols + x)];
+                if (!std::isfinite(v) || (has_nodata && v == nodata)) continue;
+                const size_t c = size_t(col_block[size_t(x)]);
+                if (categorical) {
+                    auto& list = classes[c];
+                    auto it = std::find_if(list.begin(), list.end(), [v](const auto& e) { return e.first == v; });
+                    if (it == list.end()) list.emplace_back(v, 1);
+                    else ++it->second;
+                } else {
+                    sum[c] += v;
+                    count[c] += 1;
+                }
+            }
+        for (size_t c = 0; c < size_t(dec_cols); ++c) {
+            double& o = out[size_t(r) * size_t(dec_cols) + c];
+            if (categorical) {
+                std::pair<double, int64_t> best{NAN, 0};
+                for (const auto& e : classes[c])
+                    if (e.second > best.second || (e.second == best.second && e.first < best.first)) best = e;
+                if (best.second > 0) o = best.first;
+            } else if (count[c] > 0) {
+                o = sum[c] / count[c];
+            }
+        }
+    }
+}
+
 /// True when the dataset's metadata gives a coordinate variable in
 /// degrees_east and one in degrees_north (CF units of longitude, latitude).
 bool cfLonLat(GDALDatasetH ds) {
@@ -219,7 +292,10 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         throw InputError(path, 0, 0, "--variable " + variable + ": it holds one dataset, not variables to choose from");
     const int cols = GDALGetRasterXSize(ds.h), rows = GDALGetRasterYSize(ds.h), bands = GDALGetRasterCount(ds.h);
     if (bands < 1) throw InputError(path, 0, 0, "has no raster band");
-    checkRasterSize(path, 0, cols, rows);
+    if (int64_t(cols) > kMaxGdalSide || int64_t(rows) > kMaxGdalSide)
+        throw InputError(path, 0, 0, "is " + std::to_string(cols) + " x " + std::to_string(rows) +
+                                         " pixels; tsf reads rasters up to " + std::to_string(kMaxGdalSide) +
+                                         " pixels a side (decimated when larger than it holds whole)");
     if (band_number < 1 || band_number > bands)
         throw InputError(path, 0, 0,
                          "--band " + std::to_string(band_number) + ": it has " + std::to_string(bands) +
@@ -286,30 +362,49 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
 
     // Square pixels on the ground: stretch the shorter side of the pixel.
     const double ground_w = px_w * x_scale;
-    int out_cols = cols, out_rows = rows;
-    if (ground_w > px_h) out_cols = int(std::lround(cols * ground_w / px_h));
-    else out_rows = int(std::lround(rows * px_h / ground_w));
-    checkRasterSize(path, 0, out_cols, out_rows);
-    r.cell_size = std::min(ground_w, px_h);
+    int64_t out_cols = cols, out_rows = rows;
+    if (ground_w > px_h) out_cols = std::llround(double(cols) * ground_w / px_h);
+    else out_rows = std::llround(double(rows) * px_h / ground_w);
     r.x_origin = gt[0];
     r.y_origin = gt[3] + gt[5] * rows;
-    if (out_cols != cols || out_rows != rows)
-        r.facts.push_back({"resampled", std::to_string(cols) + " x " + std::to_string(rows) + " -> " +
-                                            std::to_string(out_cols) + " x " + std::to_string(out_rows) +
-                                            " square pixels (nearest) to keep the ground's aspect"});
-
-    r.cols = out_cols;
-    r.rows = out_rows;
-    r.values.assign(size_t(out_cols) * size_t(out_rows), 0.0);
-    GDALRasterIOExtraArg extra;
-    INIT_RASTERIO_EXTRA_ARG(extra);
-    extra.eResampleAlg = GRIORA_NearestNeighbour;
-    if (GDALRasterIOEx(band, GF_Read, 0, 0, cols, rows, r.values.data(), out_cols, out_rows, GDT_Float64, 0, 0,
-                       &extra) != CE_None)
-        throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
-
     int has_nodata = 0;
     const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
+
+    // Larger than tsf holds whole: read decimated, each value the mean (the
+    // most common class) of a block of pixels, strip by strip.
+    const int64_t f = decimationFor(out_cols, out_rows);
+    if (f > 1) {
+        const int64_t dec_cols = (out_cols + f - 1) / f, dec_rows = (out_rows + f - 1) / f;
+        checkRasterSize(path, 0, dec_cols, dec_rows);
+        readDecimated(band, path, cols, rows, dec_cols, dec_rows, r.categorical, has_nodata != 0, nodata, r.values);
+        r.cols = int32_t(dec_cols);
+        r.rows = int32_t(dec_rows);
+        r.cell_size = std::min(ground_w, px_h) * double(out_cols) / double(dec_cols);
+        r.decimation = int(f);
+        r.facts.push_back({"decimated", std::to_string(cols) + " x " + std::to_string(rows) + " px -> " +
+                                            std::to_string(dec_cols) + " x " + std::to_string(dec_rows) + " values, each the " +
+                                            (r.categorical ? "most common class" : "mean") + " of the pixels with data in a block of about " +
+                                            formatSignificant(double(cols) / double(dec_cols), 3) + " x " +
+                                            formatSignificant(double(rows) / double(dec_rows), 3) +
+                                            " (the file is larger than tsf reads whole)"});
+    } else {
+        checkRasterSize(path, 0, out_cols, out_rows);
+        r.cell_size = std::min(ground_w, px_h);
+        if (out_cols != cols || out_rows != rows)
+            r.facts.push_back({"resampled", std::to_string(cols) + " x " + std::to_string(rows) + " -> " +
+                                                std::to_string(out_cols) + " x " + std::to_string(out_rows) +
+                                                " square pixels (nearest) to keep the ground's aspect"});
+        r.cols = int32_t(out_cols);
+        r.rows = int32_t(out_rows);
+        r.values.assign(size_t(out_cols) * size_t(out_rows), 0.0);
+        GDALRasterIOExtraArg extra;
+        INIT_RASTERIO_EXTRA_ARG(extra);
+        extra.eResampleAlg = GRIORA_NearestNeighbour;
+        if (GDALRasterIOEx(band, GF_Read, 0, 0, cols, rows, r.values.data(), int(out_cols), int(out_rows), GDT_Float64,
+                           0, 0, &extra) != CE_None)
+            throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
+    }
+
     // Packed values (CF scale_factor, add_offset; GDAL's scale and offset):
     // the stored number times the scale plus the offset is the value.
     int has_scale = 0, has_offset = 0;
