@@ -338,7 +338,17 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
                 highest_bottom = std::max(highest_bottom, h + pit);
                 lowest_top = std::min(lowest_top, h - pit + s.mirror_thickness_units);
             }
-            const int64_t grow = std::max<int64_t>(0, halvesSlabUnits(s.z_snap_mm) - (lowest_top - highest_bottom));
+            // The pins go where the pillars have room for them on both sides
+            // of the cut (material there anyway: placeHalves); only when no
+            // three pillars have, the slab grows to hold them everywhere.
+            // At least the orientation tab's room: it lies across the cut, as
+            // thick as the base (at least kTabMinThicknessMm) on each side,
+            // in every pillar it may stand against (orientation_tab.h); and
+            // no pillar ends at the cut (it would vanish from one half).
+            const int64_t tab_room =
+                2 * std::max({base_units, snapUnits(kTabMinThicknessMm, s.z_snap_mm), int64_t(1)});
+            const int64_t want = std::max(params.halves_slab_units.value_or(0), tab_room);
+            const int64_t grow = std::max<int64_t>(0, want - (lowest_top - highest_bottom));
             s.mirror_thickness_units += grow;
             s.nodata_pit_units = std::min(flat_pit, (s.mirror_thickness_units - 1) / 2);
             SceneHalves halves;
@@ -379,7 +389,31 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         s.notes.push_back(note.str());
     }
     placeMarks(s);
-    if (s.halves) placeHalves(s);
+    if (s.halves) {
+        const int64_t full = halvesSlabUnits(s.z_snap_mm);
+        const bool last_try = params.halves_slab_units && *params.halves_slab_units >= full;
+        if (!placeHalves(s, /*or_throw=*/last_try)) {
+            // A try of the search below: the caller sees no halves.
+            if (params.halves_slab_units) {
+                s.halves.reset();
+                return s;
+            }
+            // No three pillars have room for the pins in the model's own
+            // slab: the thinnest slab that gives them room, between it
+            // (fails) and one that holds the pins everywhere (never fails
+            // for want of room), to kHalvesSlabSearchMm.
+            int64_t lo = s.halves->slab_top_units - s.halves->slab_bottom_units, hi = full;
+            const int64_t step = std::max<int64_t>(1, snapUnits(kHalvesSlabSearchMm, s.z_snap_mm));
+            SceneParams trial = params;
+            while (hi - lo > step) {
+                trial.halves_slab_units = (lo + hi) / 2;
+                if (buildScene(field, trial).halves) hi = *trial.halves_slab_units;
+                else lo = *trial.halves_slab_units;
+            }
+            trial.halves_slab_units = hi;
+            return buildScene(field, trial);
+        }
+    }
     if (params.structural_texture && params.halves)
         s.notes.push_back("structural cells are left level on a model cut into halves (the cut and the pin "
                           "holes are drawn on level cells): give --no-texture-structural to silence this");

@@ -124,6 +124,11 @@ struct SceneParams {
     ScaleRequest scale;
     // --- support-free halves (gen/model/features/halves.h); mirrored only ---
     bool halves = false;           ///< cut the mirrored model into two halves that print without supports
+    /// Halves: the slab every pillar crosses is grown to at least this many
+    /// z units. Unset, buildScene tries the model's own slab first (the pins
+    /// in pillars with room for them), then the thinnest slab that gives
+    /// three pillars room, found by bisection (to kHalvesSlabSearchMm).
+    std::optional<int64_t> halves_slab_units;
     // --- what the model is written as ---
     /// The model file stores float32 coordinates (STL, 3MF): a z grid finer
     /// than float32 resolves at the model's height is made coarser (the

@@ -23,6 +23,9 @@ inline constexpr double kHoleDepthMm = 3.0;
 inline constexpr double kHoleConeRatio = 1.1;
 /// Material above a hole's cone tip, mm (two nozzle widths).
 inline constexpr double kHoleRoofMm = 0.8;
+/// How closely buildScene finds the thinnest slab that gives three pillars
+/// room for the pins, mm (a layer of a fine printer).
+inline constexpr double kHalvesSlabSearchMm = 0.1;
 /// Material between a hole and the model's outer wall, mm (five perimeters
 /// of a 0.4 mm nozzle).
 inline constexpr double kHoleEdgeMarginMm = 2.0;

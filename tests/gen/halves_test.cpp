@@ -65,17 +65,57 @@ TEST(PinLayout, ScaleneClearOfTheEdgeAndTheMarks) {
             }
 }
 
-TEST(Halves, EveryPillarCrossesTheSlabWithRoomForTheHoles) {
+// Every pillar crosses the cut; every pillar a hole reaches into has room
+// for it on both sides of the cut (the hole, its cone and a roof), checked
+// from the hole's centre and the cells' own spans; and the slab grew no more
+// than the full pin slab (the pins sit in material that is there anyway).
+TEST(Halves, EveryPillarCrossesTheCutAndTheHolesHaveRoomWhereTheyAre) {
     const Scene s = hillWithHalves();
     const SceneHalves& h = *s.halves;
     const int64_t roof = int64_t(std::ceil(kHoleRoofMm / s.z_snap_mm));
+    const auto centres = holeCentresMm(s);
+    const double reaches = h.pins.hole_vertex_radius_mm + s.pitch_mm / kSqrt3;  // the disc can touch the hexagon
+    size_t reached = 0;
     for (size_t k = 0; k < s.keptCount(); ++k) {
-        EXPECT_LE(s.bottom[k] + h.hole_apex_units + roof, h.split_units);
-        EXPECT_GE(s.top[k] - h.hole_apex_units - roof, h.split_units);
+        EXPECT_LT(s.bottom[k], h.split_units);
+        EXPECT_GT(s.top[k], h.split_units);
+        const Vec3 p = s.point(hexCentre(s.grid, s.col[k], s.row[k]), 0);
+        bool near = false;
+        for (const auto& [x, y] : centres) near = near || std::hypot(p.x - x, p.y - y) <= reaches;
+        if (!near) continue;
+        ++reached;
+        EXPECT_LE(s.bottom[k] + h.hole_apex_units + roof, h.split_units) << "cell " << k;
+        EXPECT_GE(s.top[k] - h.hole_apex_units - roof, h.split_units) << "cell " << k;
     }
+    EXPECT_GE(reached, size_t(kPinCount));
+    EXPECT_LE(h.thickness_grown_units, halvesSlabUnits(s.z_snap_mm));
     EXPECT_NEAR(s.zMm(h.hole_depth_units), kHoleDepthMm, s.z_snap_mm);
     EXPECT_GE(s.zMm(h.hole_apex_units - h.hole_depth_units), h.pins.hole_vertex_radius_mm);  // cone steeper than 45 deg
     EXPECT_NEAR(h.pins.hole_radius_mm - h.pins.pin_radius_mm, kPinClearanceMm, 1e-12);
+}
+
+// The slab every pillar crosses grows only as much as three pillars need for
+// the pins, at least the orientation tab's room (twice the base) - never the
+// full pin slab under every pillar when less will do. On a ramp the pillars
+// of middle height reach far to both sides of the cut: the slab stays the
+// tab's room. Where every pillar but one is
+// low, the cut (above the high one's bottom) leaves the low ones no room
+// above it: only the full slab will do.
+TEST(Halves, TheSlabGrowsOnlyAsMuchAsThePinsNeed) {
+    SceneParams p = test::smallParams(Bottom::Mirrored, Cull::None);
+    p.max_height_mm = 20;
+    p.pitch_mm = 6.0;
+    p.halves = true;
+    const Scene ramp = buildScene(test::fieldFromFunction(16, 14, [](int c, int) { return double(c); }), p);
+    ASSERT_TRUE(ramp.halves);
+    const int64_t tab_room = 2 * int64_t(std::llround(p.base_mm / ramp.z_snap_mm));
+    EXPECT_EQ(ramp.halves->slab_top_units - ramp.halves->slab_bottom_units, tab_room);
+    EXPECT_LT(tab_room, halvesSlabUnits(ramp.z_snap_mm));
+    const Scene spike =
+        buildScene(test::fieldFromFunction(16, 14, [](int c, int r) { return c == 15 && r == 13 ? 10.0 : 1.0; }), p);
+    ASSERT_TRUE(spike.halves);
+    EXPECT_GE(spike.halves->slab_top_units - spike.halves->slab_bottom_units,
+              halvesSlabUnits(spike.z_snap_mm) - int64_t(std::ceil(kHalvesSlabSearchMm / spike.z_snap_mm)));
 }
 
 // Volume of one hole from its radius alone: a regular 16-gon of circumradius

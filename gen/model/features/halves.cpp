@@ -31,7 +31,7 @@ struct Candidate {
 // reach within `reach_mm` of the centre (centre distance up to reach_mm plus
 // the circumradius) is kept and drawn as a plain hexagon (no mark face), so
 // the disc of radius reach_mm lies inside the model and clear of the marks.
-std::vector<Candidate> holeCandidates(const Scene& s, double reach_mm) {
+std::vector<Candidate> holeCandidates(const Scene& s, double reach_mm, double hole_mm, int64_t room_units) {
     const double circumradius = s.pitch_mm / kSqrt3;
     const double limit = reach_mm + circumradius;
     const int32_t rows = int32_t(std::ceil(limit / (s.pitch_mm * kSqrt3 / 2))) + 1;
@@ -42,13 +42,18 @@ std::vector<Candidate> holeCandidates(const Scene& s, double reach_mm) {
         const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
         const double cx = latticeX(c, s.pitch_mm), cy = latticeY(c, s.pitch_mm);
         bool clear = true;
+        const int64_t cut = s.halves->split_units;
         for (int32_t dr = -rows; dr <= rows && clear; ++dr)
             for (int32_t dc = -cols; dc <= cols && clear; ++dc) {
                 const int32_t nc = s.col[k] + dc, nr = s.row[k] + dr;
                 const LatticePoint n = hexCentre(s.grid, nc, nr);
-                if (std::hypot(latticeX(n, s.pitch_mm) - cx, latticeY(n, s.pitch_mm) - cy) > limit) continue;
+                const double d = std::hypot(latticeX(n, s.pitch_mm) - cx, latticeY(n, s.pitch_mm) - cy);
+                if (d > limit) continue;
                 const int32_t other = s.keptAt(nc, nr);
                 clear = other >= 0 && (s.drawn_by_face.empty() || !s.drawn_by_face[size_t(other)]);
+                // A pillar the hole reaches into has room for it on both sides of the cut.
+                if (clear && d <= hole_mm + circumradius)
+                    clear = cut - s.bottom[size_t(other)] >= room_units && s.top[size_t(other)] - cut >= room_units;
             }
         if (clear) out.push_back({int32_t(k), c, cx, cy});
     }
@@ -88,7 +93,7 @@ bool isChiralLayout(const std::vector<std::pair<double, double>>& c, double tole
     return std::fabs(cross) / std::max({d[0], d[1], d[2]}) > 2 * tolerance_mm;
 }
 
-void placeHalves(Scene& s) {
+bool placeHalves(Scene& s, bool or_throw) {
     assert(s.halves && "buildScene sets the cut before the holes");
     SceneHalves& h = *s.halves;
     h.pins = pinGeometry();
@@ -104,7 +109,10 @@ void placeHalves(Scene& s) {
         throw InputError(m.str());
     }
     const double reach = g.hole_vertex_radius_mm + kHoleEdgeMarginMm;
-    const std::vector<Candidate> all = holeCandidates(s, reach);
+    h.hole_depth_units = unitsUp(g.hole_depth_mm, s.z_snap_mm);
+    h.hole_apex_units = unitsUp(g.hole_depth_mm + g.cone_mm, s.z_snap_mm);
+    const int64_t room = h.hole_apex_units + unitsUp(kHoleRoofMm, s.z_snap_mm);
+    const std::vector<Candidate> all = holeCandidates(s, reach, g.hole_vertex_radius_mm, room);
     // At most this many candidates are tried three at a time (evenly spread
     // over the model): 120 choose 3 = 280 840 triangles, a few milliseconds.
     constexpr size_t kMaxTried = 120;
@@ -131,6 +139,7 @@ void placeHalves(Scene& s) {
             }
         }
     if (!found) {
+        if (!or_throw) return false;
         std::ostringstream m;
         m.precision(3);
         m << "--halves: the model has no room for " << kPinCount << " pin holes in a scalene triangle (each hole needs a "
@@ -142,9 +151,7 @@ void placeHalves(Scene& s) {
         h.hole_cells.push_back(tried[n].kept);
         h.hole_centres.push_back(tried[n].centre);
     }
-    h.hole_depth_units = unitsUp(g.hole_depth_mm, s.z_snap_mm);
-    h.hole_apex_units = unitsUp(g.hole_depth_mm + g.cone_mm, s.z_snap_mm);
-    assert(h.split_units - h.slab_bottom_units >= h.hole_apex_units && h.slab_top_units - h.split_units >= h.hole_apex_units);
+    return true;
 }
 
 std::vector<PlanarPoint> holeRing(const Scene& s, size_t n) {

@@ -51,12 +51,17 @@ double halvesSlabMm();
 /// Pin and hole sizes for kPinDiameterMm and kPinClearanceMm.
 PinGeometry pinGeometry();
 
-/// Decides the cut and the holes of a mirrored Scene whose thickness already
-/// leaves the common slab (buildScene does both when params.halves is set).
-/// Throws InputError when the model cannot take the pins, saying what to
-/// change (cells smaller than a hole, too little room clear of the edge and
-/// the marks for three holes in a scalene triangle).
-void placeHalves(Scene& scene);
+/// Decides the holes of a mirrored Scene with its cut (buildScene does both
+/// when params.halves is set). A hole goes where every pillar it reaches
+/// has room for it on both sides of the cut - the hole, its cone and a roof
+/// above, below the cut and above it - in material that is there anyway:
+/// the pillars are as thick as the mirror, and those of middle height reach
+/// far to both sides. False when no three such places make a scalene
+/// triangle (the caller may grow the slab every pillar crosses, so all have
+/// room, and try again); with or_throw, an InputError instead, saying what
+/// to change (cells smaller than a hole, too little room clear of the edge
+/// and the marks). Cells smaller than a hole always throw.
+bool placeHalves(Scene& scene, bool or_throw = true);
 
 /// The ring of hole `h` (kHoleSides points, counter-clockwise from above, in
 /// lattice coordinates; Scene::point snaps them to the 1 um grid).
