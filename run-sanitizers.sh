@@ -35,7 +35,8 @@ stamp() { date +%s; }
 t_start=$(stamp)
 
 fuzzers=(csv_grid_fuzzer point_csv_fuzzer pgm_fuzzer png_fuzzer esri_ascii_fuzzer stl_fuzzer three_mf_fuzzer
-         obj_fuzzer off_fuzzer scene_json_fuzzer openscad_messages_fuzzer replay_csv_fuzzer falcon_packet_fuzzer)
+         obj_fuzzer off_fuzzer scene_json_fuzzer openscad_messages_fuzzer replay_csv_fuzzer falcon_packet_fuzzer
+         cf_time_fuzzer)
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export LSAN_OPTIONS=suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0

@@ -70,6 +70,7 @@ TEST(NetCdf, AVariableAndATimeStepAreReadValueForValue) {
             }
         EXPECT_EQ(r.units, "mm/day");
         EXPECT_TRUE(has(fact(r, "band"), "3 of 3: time = 60 days since 2000-01-01 (2000-03-01)")) << fact(r, "band");
+        EXPECT_EQ(fact(r, "bands"), "1: 2000-01-01; 2: 2000-02-01; 3: 2000-03-01");  // every step, to choose from
         if (name == path) EXPECT_TRUE(has(fact(r, "variable"), "pr")) << fact(r, "variable");
     }
 }
@@ -149,7 +150,7 @@ TEST(NetCdf, ABandSeriesIsOneModelPerStepOnOneScale) {
     EXPECT_TRUE(std::filesystem::exists(dir / "two-band-3.stl"));
     EXPECT_FALSE(std::filesystem::exists(dir / "two-band-2.stl"));
     // Bad series and series where one band is read are bad input.
-    for (const std::string& bad : {"3-1", "0-2", "1,,2", "x"})
+    for (const char* bad : {"3-1", "0-2", "1,,2", "x"})
         EXPECT_EQ(test::runTsf("gen " + path + " --variable pr --band " + bad + " -o " + (dir / "bad.stl").string(), dir).exit_code, 2)
             << bad;
     EXPECT_EQ(test::runTsf("info " + path + " --variable pr --band 1-3", dir).exit_code, 2);

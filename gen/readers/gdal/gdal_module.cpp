@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "gen/util/error.h"
+#include "gen/readers/cf_time.h"
 #include "gen/readers/raster_limits.h"
 #include "gen/util/number_format.h"
 
@@ -99,55 +100,6 @@ std::string listVariables(const std::vector<Variable>& vars) {
     for (size_t k = 0; k < vars.size(); ++k)
         out += (k ? "; " : "") + vars[k].name + (vars[k].description.empty() ? "" : " " + vars[k].description);
     return out;
-}
-
-/// A CF time ("days since 1850-01-01", value 59) as a date, when the
-/// calendar is the standard one; "" otherwise.
-std::string cfDate(const std::string& units, const std::string& calendar, double value) {
-    const std::string cal = calendar.empty() ? "standard" : calendar;
-    if (cal != "standard" && cal != "gregorian" && cal != "proleptic_gregorian") return "";
-    const size_t since = units.find(" since ");
-    if (since == std::string::npos) return "";
-    const std::string unit = units.substr(0, since);
-    double seconds = 0;
-    if (unit == "days" || unit == "day" || unit == "d") seconds = value * 86400;
-    else if (unit == "hours" || unit == "hour" || unit == "h") seconds = value * 3600;
-    else if (unit == "minutes" || unit == "minute") seconds = value * 60;
-    else if (unit == "seconds" || unit == "second" || unit == "s") seconds = value;
-    else return "";
-    int y = 0, mo = 0, d = 0, hh = 0, mi = 0;
-    double ss = 0;
-    const std::string ref = units.substr(since + 7);
-    if (std::sscanf(ref.c_str(), "%d-%d-%d%*[ T]%d:%d:%lf", &y, &mo, &d, &hh, &mi, &ss) < 3) return "";
-    // Days from the civil date (proleptic Gregorian; H. Hinnant's algorithm).
-    auto daysFromCivil = [](int64_t yy, int64_t mm, int64_t dd) {
-        yy -= mm <= 2;
-        const int64_t era = (yy >= 0 ? yy : yy - 399) / 400;
-        const int64_t yoe = yy - era * 400;
-        const int64_t doy = (153 * (mm + (mm > 2 ? -3 : 9)) + 2) / 5 + dd - 1;
-        const int64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-        return era * 146097 + doe - 719468;
-    };
-    const double total = double(daysFromCivil(y, mo, d)) * 86400 + hh * 3600 + mi * 60 + ss + seconds;
-    if (!std::isfinite(total) || std::abs(total) > 1e14) return "";
-    int64_t days = int64_t(std::floor(total / 86400));
-    const double rest = total - double(days) * 86400;
-    // Civil date from days.
-    days += 719468;
-    const int64_t era = (days >= 0 ? days : days - 146096) / 146097;
-    const int64_t doe = days - era * 146097;
-    const int64_t yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
-    const int64_t doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    const int64_t mp = (5 * doy + 2) / 153;
-    const int64_t dd = doy - (153 * mp + 2) / 5 + 1;
-    const int64_t mm = mp < 10 ? mp + 3 : mp - 9;
-    const int64_t yy = yoe + era * 400 + (mm <= 2);
-    char buf[48];
-    if (rest < 1) std::snprintf(buf, sizeof buf, "%04lld-%02lld-%02lld", (long long)yy, (long long)mm, (long long)dd);
-    else
-        std::snprintf(buf, sizeof buf, "%04lld-%02lld-%02lld %02d:%02d", (long long)yy, (long long)mm, (long long)dd,
-                      int(rest / 3600), int(std::fmod(rest, 3600) / 60));
-    return buf;
 }
 
 /// What a NetCDF band stands for: "time = 59 days since 1850-01-01
@@ -315,6 +267,17 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         else if (const char* d = GDALGetDescription(band); d && *d) what += std::string(" (") + d + ")";
         if (band_number == 1) what += "; --band N for another";
         r.facts.push_back({"band", what});
+        // Every band's step (the first kListedBands), so a reader can choose.
+        constexpr int kListedBands = 24;
+        std::string all;
+        for (int b = 1; b <= std::min(bands, kListedBands); ++b) {
+            const std::string c = bandCoordinates(ds.h, GDALGetRasterBand(ds.h, b));
+            const size_t open = c.rfind('('), close = c.rfind(')');
+            const std::string label = open != std::string::npos && close > open ? c.substr(open + 1, close - open - 1) : c;
+            if (label.empty()) break;
+            all += (all.empty() ? "" : "; ") + std::to_string(b) + ": " + label;
+        }
+        if (!all.empty()) r.facts.push_back({"bands", all + (bands > kListedBands ? "; ... (" + std::to_string(bands) + " in all)" : "")});
     }
     if (const char* units = GDALGetRasterUnitType(band); units && *units) {
         r.units = units;
