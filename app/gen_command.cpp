@@ -28,6 +28,7 @@
 #include "pipeline/verified_model.h"
 #include "gen/key/braille_ready_file.h"
 #include "gen/key/model_key.h"
+#include "gen/readers/cf_time.h"
 #include "gen/util/atomic_file.h"
 #include "gen/util/file_bytes.h"
 #include "gen/util/number_format.h"
@@ -442,13 +443,8 @@ std::string bandPath(const std::string& path, int band, int width) {
 /// What a band stands for, short: its date when the file says one (a CF
 /// time step), else "band N".
 std::string bandLabel(const HexField& field, int band) {
-    for (const ReadFact& f : field.input.facts) {
-        if (f.name != "band") continue;
-        const size_t open = f.value.rfind('('), close = f.value.rfind(')');
-        if (open != std::string::npos && close != std::string::npos && close > open + 1 &&
-            std::isdigit(static_cast<unsigned char>(f.value[open + 1])))
-            return f.value.substr(open + 1, close - open - 1);
-    }
+    for (const ReadFact& f : field.input.facts)
+        if (f.name == "band" && stepLabel(f.value) != f.value) return stepLabel(f.value);
     return "band " + std::to_string(band);
 }
 

@@ -123,11 +123,10 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
 /// inside-out mesh).
 double faceNormalZ(const Mesh& mesh, uint32_t t, double sign) {
     const auto& tri = mesh.triangles[t];
-    const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-    const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-    return len > 0 ? sign * nz / len : 0.0;
+    const Vec3& a = mesh.positions[tri[0]];
+    const Vec3 n = cross(sub(mesh.positions[tri[1]], a), sub(mesh.positions[tri[2]], a));
+    const double len = std::sqrt(dot(n, n));
+    return len > 0 ? sign * n.z / len : 0.0;
 }
 
 /// How far beside a wall the vertical probes start (mm): far below any

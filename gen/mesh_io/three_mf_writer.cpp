@@ -161,6 +161,27 @@ DWORD addPartMaterials(Lib3mfHandle& model, const std::vector<MeshPart>& parts, 
     return id;
 }
 
+/// The object's default property: material `index` of `group`.
+void setDefaultMaterial(Lib3mfHandle& object, DWORD group, DWORD index) {
+    Lib3mfHandle property;
+    checkLib3mf(NMR::lib3mf_object_createdefaultpropertyhandler(object.get(), property.out()), object.get(),
+                "lib3mf_object_createdefaultpropertyhandler");
+    checkLib3mf(NMR::lib3mf_defaultpropertyhandler_setbasematerial(property.get(), group, index), property.get(),
+                "lib3mf_defaultpropertyhandler_setbasematerial");
+}
+
+/// What both parts layouts start with: the model (title, metadata) and the
+/// parts' materials.
+struct PartsModel {
+    std::string title;
+    Lib3mfHandle model, group;
+    DWORD group_id = 0;
+    PartsModel(const std::vector<MeshPart>& parts, const MeshWriteOptions& opts) : title(printableTitle(opts.title)) {
+        startModel(model, title);
+        group_id = addPartMaterials(model, parts, group);
+    }
+};
+
 void checkParts(const std::vector<MeshPart>& parts, const std::string& path) {
     if (parts.empty()) throw InputError(path, 0, 0, "cannot write 3MF: no parts");
     for (const MeshPart& p : parts) {
@@ -171,19 +192,13 @@ void checkParts(const std::vector<MeshPart>& parts, const std::string& path) {
 
 void writePortableParts(const std::vector<MeshPart>& parts, const std::string& path, const MeshWriteOptions& opts) {
     AtomicFile file(path);
-    const std::string title = printableTitle(opts.title);
-    Lib3mfHandle model;
-    startModel(model, title);
-    Lib3mfHandle group;
-    const DWORD group_id = addPartMaterials(model, parts, group);
+    PartsModel pm(parts, opts);
+    Lib3mfHandle& model = pm.model;
+    const std::string& title = pm.title;
     std::vector<Lib3mfHandle> objects(parts.size());
     for (size_t k = 0; k < parts.size(); ++k) {
         addMeshObject(model, parts[k].mesh, printableTitle(parts[k].name), objects[k]);
-        Lib3mfHandle property;
-        checkLib3mf(NMR::lib3mf_object_createdefaultpropertyhandler(objects[k].get(), property.out()), objects[k].get(),
-                    "lib3mf_object_createdefaultpropertyhandler");
-        checkLib3mf(NMR::lib3mf_defaultpropertyhandler_setbasematerial(property.get(), group_id, DWORD(k)),
-                    property.get(), "lib3mf_defaultpropertyhandler_setbasematerial");
+        setDefaultMaterial(objects[k], pm.group_id, DWORD(k));
     }
     Lib3mfHandle assembly;
     checkLib3mf(NMR::lib3mf_model_addcomponentsobject(model.get(), assembly.out()), model.get(),
@@ -202,21 +217,15 @@ void writePrusaSlicerParts(const std::vector<MeshPart>& parts, const std::string
     const Mesh joined = joinParts(parts);
     check3mfLimits(joined, path);
     AtomicFile file(path);
-    const std::string title = printableTitle(opts.title);
-    Lib3mfHandle model;
-    startModel(model, title);
-    Lib3mfHandle group;
-    const DWORD group_id = addPartMaterials(model, parts, group);
+    PartsModel pm(parts, opts);
+    Lib3mfHandle& model = pm.model;
+    const std::string& title = pm.title;
     Lib3mfHandle object;
     addMeshObject(model, joined, title, object);
     // Each triangle its part's material (other readers then see the colours);
     // 3MF wants the object's default too: the first part's.
-    Lib3mfHandle object_default;
-    checkLib3mf(NMR::lib3mf_object_createdefaultpropertyhandler(object.get(), object_default.out()), object.get(),
-                "lib3mf_object_createdefaultpropertyhandler");
-    checkLib3mf(NMR::lib3mf_defaultpropertyhandler_setbasematerial(object_default.get(), group_id, 0),
-                object_default.get(), "lib3mf_defaultpropertyhandler_setbasematerial");
-    std::vector<DWORD> groups(joined.triangles.size(), group_id), indices;
+    setDefaultMaterial(object, pm.group_id, 0);
+    std::vector<DWORD> groups(joined.triangles.size(), pm.group_id), indices;
     indices.reserve(joined.triangles.size());
     for (size_t k = 0; k < parts.size(); ++k) indices.insert(indices.end(), parts[k].mesh.triangles.size(), DWORD(k));
     Lib3mfHandle triangle_properties;

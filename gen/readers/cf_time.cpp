@@ -95,4 +95,12 @@ std::string cfDate(const std::string& units, const std::string& calendar, double
     return buf;
 }
 
+std::string stepLabel(const std::string& description) {
+    const size_t open = description.rfind('('), close = description.rfind(')');
+    if (open != std::string::npos && close != std::string::npos && close > open + 1 &&
+        description[open + 1] >= '0' && description[open + 1] <= '9')
+        return description.substr(open + 1, close - open - 1);
+    return description;
+}
+
 }  // namespace tsf

@@ -16,4 +16,9 @@ namespace tsf {
 /// million years.
 std::string cfDate(const std::string& units, const std::string& calendar, double value);
 
+/// A band's step, short, from its description ("time = 59 days since
+/// 1850-01-01 (1850-03-01)"): the date in the last parentheses when there is
+/// one, else the description as it is.
+std::string stepLabel(const std::string& description);
+
 }  // namespace tsf

@@ -271,9 +271,7 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         constexpr int kListedBands = 24;
         std::string all;
         for (int b = 1; b <= std::min(bands, kListedBands); ++b) {
-            const std::string c = bandCoordinates(ds.h, GDALGetRasterBand(ds.h, b));
-            const size_t open = c.rfind('('), close = c.rfind(')');
-            const std::string label = open != std::string::npos && close > open ? c.substr(open + 1, close - open - 1) : c;
+            const std::string label = stepLabel(bandCoordinates(ds.h, GDALGetRasterBand(ds.h, b)));
             if (label.empty()) break;
             all += (all.empty() ? "" : "; ") + std::to_string(b) + ": " + label;
         }
