@@ -66,7 +66,7 @@
 #include "gen/util/union_find.h"
 #include "gen/model/features/halves.h"
 
-#include "gen/mesh/legend_join.h"
+#include "gen/model/features/legend_join.h"
 #include "gen/model/features/legend_plate.h"
 #include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"

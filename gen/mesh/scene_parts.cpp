@@ -3,7 +3,7 @@
 #include <map>
 
 #include "gen/mesh/direct_mesher.h"
-#include "gen/mesh/legend_join.h"
+#include "gen/model/features/legend_join.h"
 #include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"
 

@@ -21,7 +21,7 @@ void legendProbes(const Scene& s, std::vector<SurfaceProbe>& out) {
     out.push_back({"legend", "the legend plate's top (west end)", snapXy(kPlateProbeInsetMm), y, false, plate_z});
     out.push_back({"legend", "the legend plate's top (east end)", snapXy(l.plate_east_mm - kPlateProbeInsetMm), y, false,
                    plate_z});
-    // The dome's apex is a vertex of the drawn dot (gen/mesh/legend_mesh.h),
+    // The dome's apex is a vertex of the drawn dot (gen/model/features/legend_mesh.h),
     // on the 1 um grid like every coordinate of the model.
     const BrailleStandard& st = l.layout.standard;
     const double apex_z = snapXy(plate_z + st.dot_height_mm);

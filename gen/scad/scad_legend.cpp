@@ -1,6 +1,6 @@
 #include "gen/scad/scad_legend.h"
 
-#include "gen/mesh/legend_join.h"
+#include "gen/model/features/legend_join.h"
 #include "gen/mesh_io/number_text.h"
 #include "gen/model/scene.h"
 

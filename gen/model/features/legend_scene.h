@@ -1,6 +1,6 @@
 // The braille legend on the model: where it goes (placeLegend, called by
 // buildScene). The plate's outline beside the pillars is
-// gen/model/features/legend_plate.h; its solid, gen/mesh/legend_join.h.
+// gen/model/features/legend_plate.h; its solid, gen/model/features/legend_join.h.
 //
 // Placement (decided once, stored as Scene::legend): the legend stands on a
 // plate grown NORTH of the pillars, away from the orientation notch at the

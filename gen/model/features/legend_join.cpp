@@ -1,4 +1,4 @@
-#include "gen/mesh/legend_join.h"
+#include "gen/model/features/legend_join.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "gen/geometry/mesh.h"
-#include "gen/mesh/legend_mesh.h"
+#include "gen/model/features/legend_mesh.h"
 
 namespace tsf {
 
@@ -21,7 +21,7 @@ Mesh legendPlateMesh(const Scene& scene, bool dots = true);
 PlateBody legendJoinedBody(const Scene& scene, bool dots = true);
 
 /// The legend's dots alone in the model frame: one closed dome per dot on the
-/// plate's top (gen/mesh/legend_mesh.h meshLegendDots). Empty without a legend.
+/// plate's top (gen/model/features/legend_mesh.h meshLegendDots). Empty without a legend.
 Mesh legendDotsMesh(const Scene& scene);
 
 }  // namespace tsf
