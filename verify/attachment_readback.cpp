@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "gen/model/probes.h"
+#include "gen/model/attachments.h"
 #include "verify/readback.h"
 #include "gen/util/number_format.h"
 
@@ -13,24 +13,24 @@ namespace tsf {
 AttachmentReadbackResult readBackAttachments(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster,
                                              size_t max_offenders) {
     AttachmentReadbackResult r;
-    const std::vector<SurfaceProbe> probes = attachmentProbes(scene);
-    if (probes.empty()) return r;
+    const std::vector<ProbeSet> sets = sceneProbes(scene);
+    if (sets.empty()) return r;
     const auto t0 = std::chrono::steady_clock::now();
     const Bounds b = meshBounds(mesh);
     const double z_above = (std::isfinite(b.max.z) ? b.max.z : 0.0) + 1.0;
     double z_extent = 0;
-    for (const SurfaceProbe& p : probes) z_extent = std::max(z_extent, std::fabs(p.z_mm));
+    for (const ProbeSet& set : sets)
+        for (const SurfaceProbe& p : set.probes) z_extent = std::max(z_extent, std::fabs(p.z_mm));
     const double tolerance = 0.5 * scene.z_snap_mm + z_extent * kFloat32UnitRoundoff;
 
-    for (const AttachmentKind& kind : attachmentKinds()) {
+    for (const ProbeSet& set : sets) {
         Check c;
-        c.id = std::string(kind.name) + "_read_back";
-        c.title = kind.title;
+        c.id = set.name + "_read_back";
+        c.title = set.title;
         c.unit = "mm";
         size_t n = 0, surfaces = 0;
         double max_error = 0;
-        for (const SurfaceProbe& p : probes) {
-            if (p.attachment != kind.name) continue;
+        for (const SurfaceProbe& p : set.probes) {
             ++n;
             const auto hit = caster.firstHit({p.x_mm, p.y_mm, z_above}, {0, 0, -1});
             if (p.empty) {

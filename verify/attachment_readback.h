@@ -2,7 +2,7 @@
 // the tactile scale and the orientation marks where and as high as the
 // Scene says?
 //
-// Each probe of gen/model/probes.h is a vertical ray cast down from above
+// Each probe of the Scene (gen/model/attachments.h: sceneProbes) is a vertical ray cast down from above
 // the mesh: the first surface met must be at the probe's z, or nothing may
 // be met (the notch). One check per attachment the Scene has
 // ("legend_read_back", "scale_read_back", "marks_read_back"); an attachment

@@ -8,11 +8,9 @@
 #include <thread>
 
 #include "verify/detail/format.h"
-#include "gen/model/features/halves.h"
-#include "gen/model/features/top_shapes.h"
+#include "gen/model/attachments.h"
 #include "gen/model/features/marks.h"
-#include "gen/model/features/orientation_tab.h"
-#include "gen/model/features/scale.h"
+#include "gen/model/features/top_shapes.h"
 
 namespace tsf {
 namespace {
@@ -91,6 +89,15 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
     f.float32_rounding_mm = (z_extent + slope * std::sqrt(2.0) * xy_extent) * kFloat32UnitRoundoff;
     f.tolerance_mm = f.height_step_tolerance_mm + f.float32_rounding_mm;
 
+    // A cut into the flat bottom centred on a cell (a half's pin hole): the
+    // bottom there is the cut's apex.
+    const std::vector<BottomHole> holes = sceneBottomHoles(scene);
+    const auto holeApex = [&](size_t k) -> std::optional<int64_t> {
+        for (const BottomHole& h : holes)
+            if (h.centre == hexCentre(scene.grid, scene.col[k], scene.row[k])) return h.apex_units;
+        return std::nullopt;
+    };
+
     const size_t keep = options.max_offenders;
     auto measure = [&](size_t k, bool top) {
         CellReadback c;
@@ -106,9 +113,7 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
         const int64_t raise = top ? markRaiseAtCentre(scene, k) : 0;
         // A tilted top passes through its value at the centre; a structural
         // cell's dimple is lowest there and carries no value (gen/model/features/top_shapes.h).
-        c.expected_mm = scene.zMm(top                       ? centreTop(scene, k) + raise
-                                  : isHoleCell(scene, k) ? scene.halves->hole_apex_units  // a half's pin hole
-                                                         : centreBottom(scene, k));
+        c.expected_mm = scene.zMm(top ? centreTop(scene, k) + raise : holeApex(k).value_or(centreBottom(scene, k)));
         const bool no_value = raise || isStructural(scene.shapes, k);
         c.value = no_value ? std::numeric_limits<double>::quiet_NaN() : scene.value[k];
         const auto hit = top ? caster.firstHit({c.x_mm, c.y_mm, z_above}, {0, 0, -1})
@@ -247,26 +252,16 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
                 ++f.outside_cells_checked;
                 const Vec3 centre = scene.point(hexCentre(scene.grid, col, row), 0);
                 const auto hit = caster.firstHit({centre.x, centre.y, z_above}, {0, 0, -1});
-                // Under the braille legend's plate (gen/model/features/legend_scene.h) a culled cell
-                // meets the plate's top and nothing above it.
-                const bool under_plate = scene.legend && centre.y >= scene.legend->plate_south_mm &&
-                                         centre.x <= scene.legend->plate_east_mm;
-                if (under_plate && hit &&
-                    std::fabs(hit->point_mm.z - scene.zMm(scene.legend->plate_top_units)) <= scene.z_snap_mm / 2)
-                    continue;
-                // On the tactile scale's footprint (gen/model/features/scale.h) or
-                // the orientation tab (gen/model/features/orientation_tab.h) it
-                // meets their top there; on an edge between two of their levels
-                // (a riser, the triangle's side) either one's.
+                // On an attachment (gen/model/attachments.h: the legend's plate,
+                // the scale, the orientation tab) a culled cell meets its top;
+                // on an edge between two of its levels (a riser, the
+                // triangle's side) either one's.
                 bool on_attachment = false;
                 for (const double dx : {0.0, -kEdgeNudgeMm, kEdgeNudgeMm})
-                    for (const double dy : {0.0, -kEdgeNudgeMm, kEdgeNudgeMm}) {
-                        const double x = centre.x + dx, y = centre.y + dy;
-                        for (const std::optional<int64_t> top :
-                             {scene.scale ? scaleTopAt(*scene.scale, x, y) : std::nullopt, tabTopAt(scene, x, y)})
-                            on_attachment = on_attachment || (top && hit && std::fabs(hit->point_mm.z - scene.zMm(*top)) <=
-                                                                                 scene.z_snap_mm / 2);
-                    }
+                    for (const double dy : {0.0, -kEdgeNudgeMm, kEdgeNudgeMm})
+                        for (const int64_t top : attachmentTopsAt(scene, centre.x + dx, centre.y + dy))
+                            on_attachment = on_attachment ||
+                                            (hit && std::fabs(hit->point_mm.z - scene.zMm(top)) <= scene.z_snap_mm / 2);
                 if (on_attachment) continue;
                 if (!hit) continue;
                 ++f.outside_cells_hit;

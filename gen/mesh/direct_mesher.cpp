@@ -64,14 +64,10 @@
 
 #include "gen/geometry/cdt_parity.h"
 #include "gen/util/union_find.h"
-#include "gen/model/features/halves.h"
 
-#include "gen/model/features/legend_join.h"
-#include "gen/model/features/legend_plate.h"
-#include "gen/model/features/orientation_tab.h"
-#include "gen/model/features/scale.h"
-#include "gen/model/scene_check.h"
+#include "gen/model/attachments.h"
 #include "gen/model/features/top_shapes.h"
+#include "gen/model/scene_check.h"
 
 namespace tsf {
 namespace {
@@ -103,8 +99,13 @@ void runParts(unsigned parts, const Work& work) {
 
 class MeshBuilder {
 public:
-    explicit MeshBuilder(const Scene& scene)
-        : s_(scene), g_(scene.grid), flat_(scene.params.bottom == Bottom::Flat), lattice_ids_(latticeVertexIdCount(g_)) {
+    MeshBuilder(const Scene& scene, Assembly assembly)
+        : s_(scene),
+          g_(scene.grid),
+          flat_(scene.params.bottom == Bottom::Flat),
+          lattice_ids_(latticeVertexIdCount(g_)),
+          attachments_(sceneAttachments(scene, assembly)),
+          holes_(sceneBottomHoles(scene)) {
         const int64_t ids = lattice_ids_ + int64_t(s_.faces.extra.size()) + int64_t(s_.shapes.extra.size());
         first_index_.assign(size_t(ids) + 1, 0);
         const auto& faces = s_.faces.faces;
@@ -114,28 +115,15 @@ public:
                     auto& at = faces_at_[id];
                     if (std::find(at.begin(), at.end(), int32_t(f)) == at.end()) at.push_back(int32_t(f));
                 }
-        // The feet that stand against pillar walls, each over its z span:
-        // the tactile scale's (east, 0 to the floor), the orientation tab
-        // (west) and the legend's plate (north), the last two from the bed
-        // to the floor, or in a mirrored model's band.
-        for (const auto& [k, e] : scaleTouchedEdges(s_)) addFoot(k, e, {0, s_.floor_units});
-        if (s_.marks.tab)
-            for (const auto& [k, e] : s_.marks.tab->touched) addFoot(k, e, {s_.marks.tab->bottom_units, s_.marks.tab->top_units});
-        if (s_.legend) {
-            const Span band{s_.legend->plate_bottom_units, s_.legend->plate_top_units};
-            // The plate stands against a hexagon drawn by a face (a mark in the
-            // data) along the face's ring, whose points may split the edge.
-            const PlateOutline plate = legendPlateOutline(s_);
-            for (const PlateOutline::Edge& e : plate.edges) {
-                if (e.cell < 0) continue;
-                if (!drawnByFace(e.cell)) {
-                    addFoot(e.cell, e.side, band);
-                    continue;
-                }
-                const int64_t v = plate.points[e.b].lattice, w = plate.points[e.a].lattice;  // the face's direction
-                foot_ring_edges_[{v, w}] = band;
-                addFootHeights(v, band);
-                addFootHeights(w, band);
+        // The attachments' feet (gen/model/scene_attachments.h) that stand
+        // against pillar walls, each over its z span.
+        for (const Attachment& a : attachments_) {
+            for (const WallContact& c : a.walls) addFoot(c.kept, c.edge, {c.bottom_units, c.top_units});
+            for (const RingContact& c : a.ring_walls) {
+                const Span band{c.bottom_units, c.top_units};
+                foot_ring_edges_[{c.from, c.to}] = band;
+                addFootHeights(c.from, band);
+                addFootHeights(c.to, band);
             }
         }
     }
@@ -149,18 +137,7 @@ public:
         for (const PlanarFace& f : s_.faces.faces) addFace(f);
         addMergedTops();
         if (flat_) addFlatBottom();
-        if (s_.scale) {
-            const ScaleBody scale = meshScaleBody(s_, /*joined=*/true);
-            addJoinedBody(scale.mesh, scale.lattice_id);
-        }
-        if (s_.marks.tab) {
-            const TabBody tab = meshTabBody(s_, /*joined=*/true);
-            addJoinedBody(tab.mesh, tab.lattice_id);
-        }
-        if (s_.legend) {
-            const PlateBody plate = legendJoinedBody(s_);
-            addJoinedBody(plate.mesh, plate.lattice_id);
-        }
+        for (const Attachment& a : attachments_) addJoinedBody(a.joined);
         return std::move(mesh_);
     }
 
@@ -272,7 +249,7 @@ private:
                 if (!flat_ || rim) out[n++] = shaped ? cornerBottomAt(s_, size_t(c), id) : s_.bottom[size_t(c)];
             }
             if (flat_ && bottom_point_[size_t(id)]) out[n++] = 0;
-            // A foot (the scale's, the tab, the plate) meets the wall of a
+            // A foot (an attachment's contact) meets the wall of a
             // contact cell at its bottom and top (flat: 0, which the rim has,
             // and the floor).
             if (!foot_heights_.empty())
@@ -638,13 +615,12 @@ private:
         }
         cdt.insert(inner.begin(), inner.end());  // spatially sorted
         assert(cdt.number_of_vertices() == handles.size() + inner.size() && "an inner vertex on the boundary");
-        // A half's pin holes (gen/model/features/halves.h), in the flat bottom only: each
+        // The cuts into the flat bottom (a half's pin holes), in it only: each
         // ring is one more loop of constraints, so the parity below leaves
         // the hole open. A hole lies inside one cell, so no inner (corner)
         // vertex falls in it.
-        const bool holes = with_holes && s_.halves && s_.halves->kind != HalfKind::Whole;
-        for (size_t h = 0; holes && h < s_.halves->hole_centres.size(); ++h) {
-            const std::vector<uint32_t> ring = addHole(h);
+        for (size_t h = 0; with_holes && h < holes_.size(); ++h) {
+            const std::vector<uint32_t> ring = addHole(holes_[h]);
             std::vector<Cdt::Vertex_handle> hole;
             for (uint32_t index : ring) {
                 hole.push_back(cdt.insert(point(index)));
@@ -661,10 +637,9 @@ private:
         }
     }
 
-    // The span of the foot across edge e of kept cell k (the scale's,
-    // gen/model/features/scale.h: scaleTouchedEdges; the tab's,
-    // OrientationTab::touched; the legend plate's, legend_plate.h), which
-    // covers the wall there as a neighbour of that span would; none if no foot.
+    // The span of the foot across edge e of kept cell k (an attachment's
+    // WallContact), which covers the wall there as a neighbour of that span
+    // would; none if no foot.
     std::optional<Span> footAcross(size_t k, int e) const {
         if (foot_span_.empty()) return std::nullopt;
         const auto f = foot_span_.find(int64_t(k) * kHexCorners + e);
@@ -681,10 +656,12 @@ private:
             addFootHeights(hexCornerId(g_, s_.col[size_t(k)], s_.row[size_t(k)], corner), span);
     }
 
-    // A foot's own body (the scale, the tab); where it stands on a lattice
+    // An attachment's body; where it stands on a lattice
     // corner of a contact it uses the pillars' vertex there, so the two share
     // the contact's edges.
-    void addJoinedBody(const Mesh& body, const std::vector<int64_t>& lattice_id) {
+    void addJoinedBody(const JoinedBody& joined) {
+        const Mesh& body = joined.mesh;
+        const std::vector<int64_t>& lattice_id = joined.lattice_id;
         std::vector<uint32_t> index(body.positions.size());
         for (size_t v = 0; v < index.size(); ++v) {
             if (lattice_id[v] >= 0) {
@@ -701,15 +678,14 @@ private:
     // from above), the wall up to the hole's depth, and the cone to its tip.
     // Its vertices are its own: the hole lies inside one slab, away from every
     // wall (gen/model/features/halves.h), so nothing else meets them.
-    std::vector<uint32_t> addHole(size_t h) {
-        const SceneHalves& halves = *s_.halves;
-        const std::vector<PlanarPoint> ring = holeRing(s_, h);
+    std::vector<uint32_t> addHole(const BottomHole& hole) {
+        const std::vector<PlanarPoint>& ring = hole.ring;
         const uint32_t first = uint32_t(mesh_.positions.size());
         const uint32_t n = uint32_t(ring.size());
-        for (int64_t z : {int64_t(0), halves.hole_depth_units})
+        for (int64_t z : {int64_t(0), hole.depth_units})
             for (const PlanarPoint& p : ring) mesh_.positions.push_back(s_.point(p, z));
         const uint32_t apex = uint32_t(mesh_.positions.size());
-        mesh_.positions.push_back(s_.point(halves.hole_centres[h], halves.hole_apex_units));
+        mesh_.positions.push_back(s_.point(hole.centre, hole.apex_units));
         std::vector<uint32_t> bottom;
         for (uint32_t k = 0; k < n; ++k) {
             const uint32_t a0 = first + k, b0 = first + (k + 1) % n, a1 = a0 + n, b1 = b0 + n;
@@ -726,6 +702,8 @@ private:
     const HexGrid& g_;
     const bool flat_;
     const int64_t lattice_ids_;
+    const std::vector<Attachment> attachments_;  // what stands against the pillars (gen/model/attachments.h)
+    const std::vector<BottomHole> holes_;        // holes into the flat bottom
     std::vector<uint32_t> first_index_;  // planar vertex id -> first mesh vertex index
     std::unordered_map<int64_t, std::vector<int32_t>> faces_at_;  // planar vertex id -> faces with it on a ring
     std::unordered_map<int64_t, int64_t> next_on_rim_;            // flat: rim edges
@@ -742,10 +720,10 @@ private:
 
 }  // namespace
 
-Mesh meshScene(const Scene& scene) {
+Mesh meshScene(const Scene& scene, Assembly assembly) {
     checkScene(scene);
     if (scene.keptCount() == 0) return {};
-    return MeshBuilder(scene).build();
+    return MeshBuilder(scene, assembly).build();
 }
 
 }  // namespace tsf

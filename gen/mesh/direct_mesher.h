@@ -10,10 +10,11 @@
 //     (the outline of the kept region) with the same sparse interior vertices;
 //   - a vertical wall wherever a neighbour's z interval does not cover this
 //     cell's (only where heights differ; outer walls on the kept region's rim);
-//   - the bodies that stand against the outer walls (the tactile scale, the
-//     orientation tab, the braille legend's plate): each covers the walls it
-//     touches from 0 to the floor as a neighbour would, and shares their
-//     lattice corners, so no boolean operation joins them.
+//   - the Scene's attachments (gen/model/attachments.h: bodies that stand
+//     against the outer walls, whichever feature made them): each covers the
+//     walls it touches over its z span as a neighbour would, and shares their
+//     lattice corners, so no boolean operation joins them; and its cuts
+//     (holes into the flat bottom).
 // Every corner line is split at every height that meets it, so there are no
 // T-junctions; vertices are identified by lattice id and snapped height, never
 // by comparing floats. The result is closed, 2-manifold, outward-oriented
@@ -22,12 +23,15 @@
 
 #include "gen/geometry/mesh.h"
 #include "gen/model/scene.h"
+#include "gen/model/scene_attachments.h"
 
 namespace tsf {
 
 /// Mesh the Scene. An empty Scene (no kept cells) gives an empty Mesh. A
 /// Scene that breaks the invariants the mesher builds on (gen/model/scene_check.h;
 /// buildScene never makes one) is a tsf::InputError.
-Mesh meshScene(const Scene& scene);
+/// With Assembly::Parts only what stays with the pillars is joined to them
+/// (gen/mesh/scene_parts.h draws the rest as parts of their own).
+Mesh meshScene(const Scene& scene, Assembly assembly = Assembly::OnePiece);
 
 }  // namespace tsf

@@ -1,11 +1,12 @@
 #include "gen/mesh/scene_parts.h"
 
+#include <algorithm>
 #include <map>
+#include <string>
+#include <utility>
 
 #include "gen/mesh/direct_mesher.h"
-#include "gen/model/features/legend_join.h"
-#include "gen/model/features/orientation_tab.h"
-#include "gen/model/features/scale.h"
+#include "gen/model/attachments.h"
 
 namespace tsf {
 namespace {
@@ -42,8 +43,8 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
     std::vector<MeshPart> parts;
     if (scene.keptCount() == 0) return parts;
     // The pillars: the same Scene with every raised face brought down to its
-    // region (the raise is the marks part), with the legend's plate but not
-    // its dots (the legend part).
+    // region (the raise is the marks part), with what of the attachments
+    // stays with them (the legend's plate, not its dots).
     Scene level = scene;
     std::vector<const PlanarFace*> raised;
     for (size_t k = 0; k < scene.faces.faces.size(); ++k)
@@ -51,19 +52,21 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
             raised.push_back(&scene.faces.faces[k]);
             level.faces.faces[k].raise_units = 0;
         }
-    level.scale.reset();  // the scale is a part of its own, touching the pillars' east walls
-    level.marks.tab.reset();  // the tab too, touching their west walls
-    if (level.legend) level.legend->layout.dots.clear();
-    parts.push_back({"pillars", meshScene(level)});
+    parts.push_back({"pillars", meshScene(level, Assembly::Parts)});
 
-    // Every raised face (the orientation triangle in the data) or the
-    // orientation tab in one part.
-    std::vector<MeshPart> prisms;
-    for (const PlanarFace* f : raised) prisms.push_back({"", raisedFacePrism(scene, *f)});
-    if (scene.marks.tab) prisms.push_back({"", meshTabBody(scene, /*joined=*/false).mesh});
-    if (!prisms.empty()) parts.push_back({"marks", joinParts(prisms)});
-    if (scene.legend) parts.push_back({"legend", legendDotsMesh(scene)});
-    if (scene.scale) parts.push_back({"scale", meshScaleBody(scene, /*joined=*/false).mesh});
+    // Every raised face (the orientation triangle in the data) in the marks
+    // part, then each attachment's own piece in the part it names; pieces
+    // of one name are one part, in the order the names first come.
+    std::vector<std::pair<std::string, std::vector<MeshPart>>> pieces;
+    const auto add = [&](const std::string& part, Mesh mesh) {
+        auto at = std::find_if(pieces.begin(), pieces.end(), [&](const auto& p) { return p.first == part; });
+        if (at == pieces.end()) at = pieces.insert(pieces.end(), {part, {}});
+        at->second.push_back({"", std::move(mesh)});
+    };
+    for (const PlanarFace* f : raised) add("marks", raisedFacePrism(scene, *f));
+    for (Attachment& a : sceneAttachments(scene, Assembly::Parts))
+        if (!a.own_part.triangles.empty()) add(a.part, std::move(a.own_part));
+    for (auto& [name, meshes] : pieces) parts.push_back({name, joinParts(meshes)});
     return parts;
 }
 

@@ -10,6 +10,9 @@
 //   "legend"  - the braille dots, one closed dome each on the plate's top.
 //   "scale"   - the tactile scale (gen/model/features/scale.h): its foot and steps, touching
 //               the pillars' east walls from the bed to the floor.
+// Beyond the raised faces, the parts are the Scene's attachments' own
+// pieces (gen/model/attachments.h), in the part each names: a new
+// attachment becomes a part without an edit here.
 // Each part is closed, 2-manifold and outward-facing on its own, with no
 // T-junctions inside it; the parts touch (the triangle's and the domes' bases
 // lie on the pillars' top) and never overlap, and their union is the solid of

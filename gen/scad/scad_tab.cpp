@@ -12,7 +12,7 @@ void emitTabData(std::string& o, const Scene& s) {
     // meshTabBody), every face a triangle: OpenSCAD then takes each corner as
     // written, where a polygon face it must tessellate itself would have its
     // corners moved to its 2^-20 mm grid (and the union with them).
-    const TabBody body = meshTabBody(s, /*joined=*/false);
+    const JoinedBody body = meshTabBody(s, /*joined=*/false);
     o += "/* [Orientation marks] */\n"
          "// The tab west of the pillars: the notch cut into its south-west corner, the\n"
          "// triangle (right angle south-west, the longer leg east) on its top (docs/model.md).\n"

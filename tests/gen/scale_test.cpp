@@ -167,7 +167,7 @@ TEST(ScaleMesh, JoinedModelIsOneClosedSolidOfThePillarsPlusTheScaleBoxes) {
     EXPECT_NEAR(inv.volume, test::sceneVolume(s) + boxes, 1e-6 * inv.volume);
 
     // The scale alone is a closed body of its own (a part of a multi-part file).
-    const ScaleBody body = meshScaleBody(s, /*joined=*/false);
+    const JoinedBody body = meshScaleBody(s, /*joined=*/false);
     const test::Invariants own = test::checkInvariants(body.mesh);
     EXPECT_TRUE(own.closedManifold()) << own.describe();
     EXPECT_EQ(own.components, 1u);

@@ -168,6 +168,15 @@ std::vector<PlanarPoint> holeRing(const Scene& s, size_t n) {
     return ring;
 }
 
+std::vector<BottomHole> halfBottomHoles(const Scene& s) {
+    std::vector<BottomHole> holes;
+    if (!s.halves || s.halves->kind == HalfKind::Whole) return holes;
+    const SceneHalves& h = *s.halves;
+    for (size_t n = 0; n < h.hole_centres.size(); ++n)
+        holes.push_back({holeRing(s, n), h.hole_centres[n], h.hole_depth_units, h.hole_apex_units});
+    return holes;
+}
+
 std::vector<std::pair<double, double>> holeCentresMm(const Scene& s) {
     std::vector<std::pair<double, double>> out;
     if (!s.halves) return out;

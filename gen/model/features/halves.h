@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "gen/model/scene.h"
+#include "gen/model/scene_attachments.h"
 
 namespace tsf {
 
@@ -66,6 +67,10 @@ bool placeHalves(Scene& scene, bool or_throw = true);
 /// The ring of hole `h` (kHoleSides points, counter-clockwise from above, in
 /// lattice coordinates; Scene::point snaps them to the 1 um grid).
 std::vector<PlanarPoint> holeRing(const Scene& scene, size_t h);
+
+/// The pin holes into the flat bottom of a half (halfScene, kind Upper or
+/// Lower), as cuts (gen/model/scene_attachments.h); none for a whole model.
+std::vector<BottomHole> halfBottomHoles(const Scene& scene);
 
 /// True when no rotation or reflection other than the identity maps the
 /// hole centres (mm, x y) onto themselves, with `tolerance_mm` of play: three

@@ -4,11 +4,17 @@
 #include <cmath>
 
 #include "gen/model/features/legend_plate.h"
+#include "gen/util/number_format.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 
 namespace tsf {
 namespace {
+
+// How far inside the legend plate's north edge and its ends its top is
+// probed, mm: north of the braille (margins are 3 mm) and clear of the edge.
+constexpr double kPlateProbeInsetMm = 1.0;
+
 
 double snapUm(double mm) { return std::round(mm * 1000.0) / 1000.0; }
 
@@ -66,9 +72,57 @@ Mesh legendPlateMesh(const Scene& s, bool dots) {
     return meshLegendPlate(plateSpec(s, dots));
 }
 
-PlateBody legendJoinedBody(const Scene& s, bool dots) {
-    if (!s.legend || s.keptCount() == 0) return {};
-    return meshPlateBody(plateSpec(s, dots), /*joined=*/true);
+std::optional<Attachment> legendAttachment(const Scene& s, Assembly assembly) {
+    if (!s.legend || s.keptCount() == 0) return std::nullopt;
+    const SceneLegend& l = *s.legend;
+    Attachment a;
+    a.part = "legend";
+    // The plate stands against a hexagon drawn by a face (a mark in the
+    // data) along the face's ring, whose points may split the edge.
+    const PlateOutline plate = legendPlateOutline(s);
+    for (const PlateOutline::Edge& e : plate.edges) {
+        if (e.cell < 0) continue;
+        if (s.drawn_by_face.empty() || !s.drawn_by_face[size_t(e.cell)])
+            a.walls.push_back({e.cell, e.side, l.plate_bottom_units, l.plate_top_units});
+        else  // the face's direction runs against the plate's outline
+            a.ring_walls.push_back({plate.points[e.b].lattice, plate.points[e.a].lattice, l.plate_bottom_units, l.plate_top_units});
+    }
+    const bool apart = assembly == Assembly::Parts;
+    a.joined = meshPlateBody(plateSpec(s, /*dots=*/!apart), /*joined=*/true);
+    if (apart) a.own_part = legendDotsMesh(s);
+    return a;
+}
+
+std::optional<int64_t> legendTopAt(const Scene& s, double x, double y) {
+    if (!s.legend) return std::nullopt;
+    const SceneLegend& l = *s.legend;
+    if (x > l.plate_east_mm || y < l.plate_south_mm || y > l.plate_north_mm) return std::nullopt;
+    return l.plate_top_units;
+}
+
+ProbeSet legendProbes(const Scene& s) {
+    ProbeSet set{"legend", "the legend plate and every braille dot at its height", {}};
+    if (!s.legend) return set;
+    std::vector<SurfaceProbe>& out = set.probes;
+    const SceneLegend& l = *s.legend;
+    const double plate_z = s.zMm(l.plate_top_units);
+    const double y = snapXy(l.plate_north_mm - kPlateProbeInsetMm);
+    out.push_back({"the legend plate's top (west end)", snapXy(kPlateProbeInsetMm), y, false, plate_z});
+    out.push_back({"the legend plate's top (east end)", snapXy(l.plate_east_mm - kPlateProbeInsetMm), y, false,
+                   plate_z});
+    // The dome's apex is a vertex of the drawn dot (gen/model/features/legend_mesh.h),
+    // on the 1 um grid like every coordinate of the model.
+    const BrailleStandard& st = l.layout.standard;
+    const double apex_z = snapXy(plate_z + st.dot_height_mm);
+    // The facets at a dome's apex are less steep than the cone from the apex
+    // to the base's rim; twice that slope bounds them.
+    const double apex_slope = 2.0 * st.dot_height_mm / (0.5 * st.dot_base_mm);
+    for (size_t i = 0; i < l.layout.dots.size(); ++i) {
+        const LegendDot& d = l.layout.dots[i];
+        out.push_back({"braille dot " + std::to_string(i + 1) + " of " + std::to_string(l.layout.dots.size()),
+                       snapXy(d.x_mm + l.x0_mm), snapXy(d.y_mm + l.y0_mm), false, apex_z, apex_slope});
+    }
+    return set;
 }
 
 }  // namespace tsf

@@ -5,7 +5,11 @@
 #pragma once
 
 #include "gen/geometry/mesh.h"
+#include <cstdint>
+#include <optional>
+
 #include "gen/model/features/legend_mesh.h"
+#include "gen/model/scene_attachments.h"
 
 namespace tsf {
 
@@ -15,10 +19,22 @@ struct Scene;
 /// standing on it, or without them (dots = false). Empty without a legend.
 Mesh legendPlateMesh(const Scene& scene, bool dots = true);
 
-/// The same without its sides against the pillars (from 0 to their tops, or
-/// to the plate's top where a pillar is lower): the part of the joined mesh,
-/// whose lattice corners are the pillars' own vertices (lattice_id).
-PlateBody legendJoinedBody(const Scene& scene, bool dots = true);
+/// The legend as an attachment (gen/model/scene_attachments.h), part
+/// "legend": the plate stands against the pillars' walls over its z band;
+/// its body is the plate without its sides against them (from 0 to their
+/// tops, or to the plate's top where a pillar is lower), whose lattice
+/// corners are the pillars' own vertices. In one piece the dots stand on
+/// it; in parts the plate stays with the pillars and the dots are the
+/// legend's own part. None without a legend.
+std::optional<Attachment> legendAttachment(const Scene& scene, Assembly assembly);
+
+/// The legend's read-back: its plate's top north of the braille (both ends)
+/// and the apex of every braille dot (plate top + dot height, on the 1 um
+/// grid). Empty without a legend.
+ProbeSet legendProbes(const Scene& scene);
+
+/// z (units) of the legend plate's top at (x, y) mm, or none beside the plate.
+std::optional<int64_t> legendTopAt(const Scene& scene, double x_mm, double y_mm);
 
 /// The legend's dots alone in the model frame: one closed dome per dot on the
 /// plate's top (gen/model/features/legend_mesh.h meshLegendDots). Empty without a legend.

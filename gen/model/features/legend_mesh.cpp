@@ -63,7 +63,7 @@ void addDome(Builder& b, const LegendDot& d, const BrailleStandard& st, double h
 
 }  // namespace
 
-PlateBody meshPlateBody(const PlateSpec& s, bool joined) {
+JoinedBody meshPlateBody(const PlateSpec& s, bool joined) {
     assert(s.height_mm > s.bottom_mm && (!s.outline.edges.empty() || (s.x1_mm > s.x0_mm && s.y1_mm > s.y0_mm)));
     PlateOutline box;
     if (s.outline.edges.empty()) {
@@ -71,7 +71,7 @@ PlateBody meshPlateBody(const PlateSpec& s, bool joined) {
         for (uint32_t k = 0; k < 4; ++k) box.edges.push_back({k, (k + 1) % 4});
     }
     const PlateOutline& o = s.outline.edges.empty() ? box : s.outline;
-    PlateBody body;
+    JoinedBody body;
     Builder b;
     const double h = s.height_mm, z0 = s.bottom_mm;
     const uint32_t n = uint32_t(o.points.size());

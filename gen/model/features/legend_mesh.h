@@ -20,6 +20,7 @@
 #include "gen/model/features/legend.h"
 #include "gen/model/features/legend_plate.h"
 #include "gen/geometry/mesh.h"
+#include "gen/model/scene_attachments.h"
 
 namespace tsf {
 
@@ -51,11 +52,7 @@ struct PlateSpec {
 /// side_from_mm leaves out are left open, to be closed by the pillars the
 /// outline stands against (the part of a joined mesh). lattice_id[v] is the
 /// outline point's lattice id a vertex stands on, -1 for the plate's own.
-struct PlateBody {
-    Mesh mesh;
-    std::vector<int64_t> lattice_id;
-};
-PlateBody meshPlateBody(const PlateSpec& spec, bool joined);
+JoinedBody meshPlateBody(const PlateSpec& spec, bool joined);
 
 /// The plate and its dots as one closed, outward-facing, 2-manifold mesh.
 Mesh meshLegendPlate(const PlateSpec& spec);

@@ -717,4 +717,41 @@ void placeMarks(Scene& s) {
     }
 }
 
+namespace {
+
+PlanarPoint lerp(const PlanarPoint& a, const PlanarPoint& b, double t) {
+    return {a.i + t * (b.i - a.i), a.j + t * (b.j - a.j)};
+}
+
+}  // namespace
+
+ProbeSet markProbes(const Scene& s) {
+    ProbeSet set{"marks", "the orientation triangle at its height and the notch cut through", tabProbes(s)};
+    std::vector<SurfaceProbe>& out = set.probes;
+    if (const auto& t = s.marks.triangle; t && t->anchor >= 0 && size_t(t->anchor) < s.keptCount()) {
+        const double z = s.zMm(s.top[size_t(t->anchor)] + t->raise_units);
+        const PlanarPoint centroid{(t->corner.i + t->east.i + t->north.i) / 3, (t->corner.j + t->east.j + t->north.j) / 3};
+        // A fifth of the way from each corner to the centroid: inside the
+        // triangle, so a triangle moved or shrunk by more than that is missed.
+        const std::pair<const char*, PlanarPoint> places[] = {
+            {"the orientation triangle's middle", centroid},
+            {"the orientation triangle's right-angle corner", lerp(t->corner, centroid, 0.2)},
+            {"the orientation triangle's east corner", lerp(t->east, centroid, 0.2)},
+            {"the orientation triangle's north corner", lerp(t->north, centroid, 0.2)},
+        };
+        for (const auto& [what, p] : places) {
+            const Vec3 q = s.point(p, 0);
+            out.push_back({what, q.x, q.y, false, z});
+        }
+    }
+    if (const auto& n = s.marks.notch) {
+        // A quarter of the way from the V's apex to the middle of its mouth:
+        // inside the model's outline, inside the cut.
+        const PlanarPoint mouth{0.5 * (n->mouth_a.i + n->mouth_b.i), 0.5 * (n->mouth_a.j + n->mouth_b.j)};
+        const Vec3 q = s.point(lerp(n->apex, mouth, 0.25), 0);
+        out.push_back({"inside the orientation notch", q.x, q.y, true, 0});
+    }
+    return set;
+}
+
 }  // namespace tsf

@@ -41,6 +41,7 @@
 #include <cstdint>
 
 #include "gen/model/scene.h"
+#include "gen/model/scene_attachments.h"
 
 namespace tsf {
 
@@ -73,5 +74,12 @@ PlanarPoint readPoint(const Scene& scene, size_t kept);
 /// How many z snap units a mark raises the top of kept cell `kept` at its
 /// centre (the orientation triangle), 0 where no mark stands.
 int64_t markRaiseAtCentre(const Scene& scene, size_t kept);
+
+/// The marks' read-back: the orientation tab's places (tabProbes), the
+/// triangle in the data at its centroid and a fifth of the way in from each
+/// corner (its region's top + its raise), and inside the notch's V a
+/// quarter of the way from its apex to its mouth (empty: the notch cuts the
+/// whole height). Empty without marks.
+ProbeSet markProbes(const Scene& scene);
 
 }  // namespace tsf

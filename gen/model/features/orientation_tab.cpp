@@ -289,8 +289,8 @@ double tabAreaMm2(const OrientationTab& t) {
     return twice / 2;
 }
 
-TabBody meshTabBody(const Scene& s, bool joined) {
-    TabBody body;
+JoinedBody meshTabBody(const Scene& s, bool joined) {
+    JoinedBody body;
     if (!s.marks.tab) return body;
     const OrientationTab& t = *s.marks.tab;
     Mesh& m = body.mesh;
@@ -346,6 +346,20 @@ TabBody meshTabBody(const Scene& s, bool joined) {
     return body;
 }
 
+std::optional<Attachment> tabAttachment(const Scene& s, Assembly assembly) {
+    if (!s.marks.tab) return std::nullopt;
+    Attachment a;
+    a.part = "marks";
+    if (assembly == Assembly::Parts) {
+        a.own_part = meshTabBody(s, /*joined=*/false).mesh;  // touching the pillars' west walls
+        return a;
+    }
+    const OrientationTab& t = *s.marks.tab;
+    for (const auto& [k, e] : t.touched) a.walls.push_back({k, e, t.bottom_units, t.top_units});
+    a.joined = meshTabBody(s, /*joined=*/true);
+    return a;
+}
+
 void checkTab(const Scene& s, const OrientationTab& t) {
     auto bad = [](const std::string& why) { throw InputError("the orientation tab " + why); };
     if (t.outline.size() < 4 || t.joined.size() != t.outline.size()) bad("has no outline, or joined flags that do not match it");
@@ -374,6 +388,34 @@ void checkTab(const Scene& s, const OrientationTab& t) {
         if (t.joined[n] && (p.lattice < 0 || q.lattice < 0 || !corners.count(p.lattice) || !corners.count(q.lattice)))
             bad("joins a wall that is not one it touches");
     }
+}
+
+std::vector<SurfaceProbe> tabProbes(const Scene& s) {
+    std::vector<SurfaceProbe> out;
+    if (!s.marks.tab) return out;
+    const OrientationTab& t = *s.marks.tab;
+    const double floor_mm = s.zMm(t.top_units);
+    out.push_back({"the orientation tab's top", t.x_west_mm + 1.0, t.y_north_mm - 1.0, false, floor_mm});
+    if (t.has_triangle) {
+        const double z = s.zMm(t.top_units + t.triangle_raise_units);
+        const double cx = (t.triangle[0].x_mm + t.triangle[1].x_mm + t.triangle[2].x_mm) / 3;
+        const double cy = (t.triangle[0].y_mm + t.triangle[1].y_mm + t.triangle[2].y_mm) / 3;
+        const char* names[] = {"the orientation triangle's right-angle corner", "the orientation triangle's east corner",
+                               "the orientation triangle's north corner"};
+        out.push_back({"the orientation triangle's middle", cx, cy, false, z});
+        for (int n = 0; n < 3; ++n)
+            out.push_back({names[n], t.triangle[n].x_mm + 0.2 * (cx - t.triangle[n].x_mm),
+                           t.triangle[n].y_mm + 0.2 * (cy - t.triangle[n].y_mm), false, z});
+    }
+    if (t.has_notch) {
+        const double along = 1.0 / std::sqrt(2.0);
+        for (const double d : {t.notch_depth_mm - 0.3, t.notch_depth_mm + 0.3}) {
+            const bool inside = d < t.notch_depth_mm;
+            out.push_back({inside ? "inside the orientation notch, 0.3 mm short of its apex" : "the tab just beyond the notch's apex",
+                           t.x_west_mm + d * along, t.y_south_mm + d * along, inside, inside ? 0.0 : floor_mm});
+        }
+    }
+    return out;
 }
 
 }  // namespace tsf

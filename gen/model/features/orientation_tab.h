@@ -49,6 +49,7 @@
 
 #include "gen/geometry/mesh.h"
 #include "gen/model/scene.h"
+#include "gen/model/scene_attachments.h"
 
 namespace tsf {
 
@@ -95,11 +96,18 @@ double tabAreaMm2(const OrientationTab& tab);
 /// The tab as a closed solid. `joined`: without its walls against the
 /// pillars (the part of a joined mesh). lattice_id[v] is the lattice vertex
 /// id a vertex stands on (a contact's corner), -1 for the tab's own.
-struct TabBody {
-    Mesh mesh;
-    std::vector<int64_t> lattice_id;
-};
-TabBody meshTabBody(const Scene& scene, bool joined);
+JoinedBody meshTabBody(const Scene& scene, bool joined);
+
+/// The tab as an attachment (gen/model/scene_attachments.h), part "marks":
+/// it covers its touched walls over its z span. None without a tab.
+std::optional<Attachment> tabAttachment(const Scene& scene, Assembly assembly);
+
+/// The tab's places to read back: its top near its north-west corner, the
+/// triangle's middle and a point near each corner (the tab's top + the
+/// raise), and along the notch's diagonal a point 0.3 mm short of the apex
+/// (empty: the V reaches its full depth) and one 0.3 mm beyond it (the tab's
+/// top: no deeper). Empty without a tab.
+std::vector<SurfaceProbe> tabProbes(const Scene& scene);
 
 /// Checks a tab read from a file against the Scene: outline, joined edges,
 /// touched cells and their lattice corners agree. Throws InputError saying what does not.

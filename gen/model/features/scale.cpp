@@ -254,20 +254,9 @@ void placeScale(Scene& s) {
                      ". Give a larger --scale-step, or leave out --title/--units or --scale");
 }
 
-std::vector<std::pair<int32_t, int>> scaleTouchedEdges(const Scene& s) {
-    std::vector<std::pair<int32_t, int>> edges;
-    if (!s.scale) return edges;
-    const std::vector<int32_t>& c = s.scale->contacts;
-    for (size_t n = 0; n < c.size(); ++n) {
-        edges.push_back({c[n], 0});
-        if (n + 1 < c.size()) edges.push_back({c[n], 1});
-        if (n > 0) edges.push_back({c[n], 5});
-    }
-    for (const int32_t f : s.scale->fillers) edges.push_back({f, 0});
-    return edges;
-}
-
-std::optional<int64_t> scaleTopAt(const SceneScale& sc, double x, double y) {
+std::optional<int64_t> scaleTopAt(const Scene& s, double x, double y) {
+    if (!s.scale) return std::nullopt;
+    const SceneScale& sc = *s.scale;
     if (x < sc.x0_mm || x > sc.x1_mm || y < sc.y0_mm || y > sc.y1_mm) return std::nullopt;
     if (x <= sc.xs_mm) return sc.foot_top_units;
     for (const ScaleStep& st : sc.steps)
@@ -295,7 +284,7 @@ public:
         for (const ScaleStep& st : sc_.steps) ys_.push_back(st.y_north_mm);
     }
 
-    ScaleBody build() {
+    JoinedBody build() {
         const int64_t floor = sc_.foot_top_units;
         const size_t n = sc_.steps.size();
         // Bottom and the floor strip's top: the west column zipped with the steps' west column.
@@ -461,14 +450,47 @@ private:
     std::vector<WestPoint> west_;
     std::vector<double> ys_;
     std::map<std::tuple<int, size_t, int64_t>, uint32_t> ids_;
-    ScaleBody body_;
+    JoinedBody body_;
 };
 
 }  // namespace
 
-ScaleBody meshScaleBody(const Scene& s, bool joined) {
+JoinedBody meshScaleBody(const Scene& s, bool joined) {
     if (!s.scale || s.scale->steps.empty()) return {};
     return ScaleBuilder(s, joined).build();
+}
+
+std::optional<Attachment> scaleAttachment(const Scene& s, Assembly assembly) {
+    if (!s.scale) return std::nullopt;
+    Attachment a;
+    a.part = "scale";
+    if (assembly == Assembly::Parts) {
+        a.own_part = meshScaleBody(s, /*joined=*/false).mesh;  // touching the pillars' east walls
+        return a;
+    }
+    const std::vector<int32_t>& c = s.scale->contacts;
+    const auto cover = [&](int32_t k, int e) { a.walls.push_back({k, e, 0, s.floor_units}); };
+    for (size_t n = 0; n < c.size(); ++n) {
+        cover(c[n], 0);
+        if (n + 1 < c.size()) cover(c[n], 1);
+        if (n > 0) cover(c[n], 5);
+    }
+    for (const int32_t f : s.scale->fillers) cover(f, 0);
+    a.joined = meshScaleBody(s, /*joined=*/true);
+    return a;
+}
+
+ProbeSet scaleProbes(const Scene& s) {
+    ProbeSet set{"scale", "every step of the tactile scale at its value's height", {}};
+    if (!s.scale) return set;
+    std::vector<SurfaceProbe>& out = set.probes;
+    const SceneScale& sc = *s.scale;
+    out.push_back({"the scale's foot (the floor)", 0.5 * (sc.x0_mm + sc.xs_mm), 0.5 * (sc.y0_mm + sc.y1_mm),
+                   false, s.zMm(sc.foot_top_units)});
+    for (const ScaleStep& st : sc.steps)
+        out.push_back({"the step for " + formatSignificant(st.value), 0.5 * (sc.xs_mm + sc.x1_mm),
+                       0.5 * (st.y_south_mm + st.y_north_mm), false, s.zMm(st.top_units)});
+    return set;
 }
 
 }  // namespace tsf

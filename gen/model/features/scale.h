@@ -44,6 +44,7 @@
 
 #include "gen/geometry/mesh.h"
 #include "gen/model/scene.h"
+#include "gen/model/scene_attachments.h"
 
 namespace tsf {
 
@@ -83,26 +84,28 @@ std::vector<ScaleLevel> scaleLevels(const ValueMapping& mapping, double step, do
 /// rise kScaleMinRiserMm).
 std::optional<double> chooseScaleStep(const ValueMapping& mapping, double z_snap_mm);
 
-/// The hexagon edges (kept cell, edge 0..5 as in hex_grid.h) the scale's
-/// foot covers from z = 0 to the floor: each contact's east edge (0), its
-/// north-east edge (1) below a filled notch and its south-east edge (5)
-/// above one, and each filler's east edge (0).
-std::vector<std::pair<int32_t, int>> scaleTouchedEdges(const Scene& scene);
 
 /// Places the scale params.scale asks for (none when it asks for nothing).
 /// Called by buildScene after the marks, the legend and the top shapes.
 void placeScale(Scene& scene);
 
-/// z (units) of the scale's top at (x, y) mm, or none outside its footprint.
-std::optional<int64_t> scaleTopAt(const SceneScale& scale, double x_mm, double y_mm);
+/// z (units) of the scale's top at (x, y) mm, or none outside its footprint
+/// (or without a scale).
+std::optional<int64_t> scaleTopAt(const Scene& scene, double x_mm, double y_mm);
 
 /// The scale as a closed solid. `joined`: without the foot's west wall where
 /// it touches the model (the part of a joined mesh). lattice_id[v] is the
 /// lattice vertex id (hex_grid.h) a vertex stands on, -1 for the scale's own.
-struct ScaleBody {
-    Mesh mesh;
-    std::vector<int64_t> lattice_id;
-};
-ScaleBody meshScaleBody(const Scene& scene, bool joined);
+JoinedBody meshScaleBody(const Scene& scene, bool joined);
+
+/// The scale as an attachment (gen/model/scene_attachments.h), part "scale":
+/// its foot covers, from z = 0 to the floor, each contact's east edge (0),
+/// its north-east edge (1) below a filled notch and its south-east edge (5)
+/// above one, and each filler's east edge (0). None without a scale.
+std::optional<Attachment> scaleAttachment(const Scene& scene, Assembly assembly);
+
+/// The scale's read-back: the foot's floor strip and the middle of every
+/// tread. Empty without a scale.
+ProbeSet scaleProbes(const Scene& scene);
 
 }  // namespace tsf

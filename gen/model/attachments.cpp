@@ -1,0 +1,41 @@
+#include "gen/model/attachments.h"
+
+#include <optional>
+
+#include "gen/model/features/halves.h"
+#include "gen/model/features/legend_join.h"
+#include "gen/model/features/marks.h"
+#include "gen/model/features/orientation_tab.h"
+#include "gen/model/features/scale.h"
+
+namespace tsf {
+
+std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly) {
+    std::vector<Attachment> out;
+    if (scene.keptCount() == 0) return out;
+    const auto add = [&](std::optional<Attachment> a) {
+        if (a) out.push_back(std::move(*a));
+    };
+    add(tabAttachment(scene, assembly));
+    add(legendAttachment(scene, assembly));
+    add(scaleAttachment(scene, assembly));
+    return out;
+}
+
+std::vector<ProbeSet> sceneProbes(const Scene& scene) {
+    std::vector<ProbeSet> out;
+    for (ProbeSet set : {legendProbes(scene), scaleProbes(scene), markProbes(scene)})
+        if (!set.probes.empty()) out.push_back(std::move(set));
+    return out;
+}
+
+std::vector<BottomHole> sceneBottomHoles(const Scene& scene) { return halfBottomHoles(scene); }
+
+std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm) {
+    std::vector<int64_t> tops;
+    for (const auto& top : {tabTopAt(scene, x_mm, y_mm), legendTopAt(scene, x_mm, y_mm), scaleTopAt(scene, x_mm, y_mm)})
+        if (top) tops.push_back(*top);
+    return tops;
+}
+
+}  // namespace tsf

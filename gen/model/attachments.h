@@ -1,0 +1,33 @@
+// The Scene's attachments, cuts and probes (gen/model/scene_attachments.h),
+// from whichever features it has: the one place that lists the features
+// that give a body, a hole or a place to read back, so the direct mesher,
+// the parts and the read-backs draw them without naming any.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gen/model/scene.h"
+#include "gen/model/scene_attachments.h"
+
+namespace tsf {
+
+/// Every attachment of `scene` as `assembly` draws it, in a fixed order (the
+/// orientation tab, the legend, the scale). Meshing a body is
+/// deterministic: the same Scene gives the same attachments.
+std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly);
+
+/// Every hole into the flat bottom `scene` draws (a half's pin holes).
+std::vector<BottomHole> sceneBottomHoles(const Scene& scene);
+
+/// Every probe of the Scene (gen/model/scene_attachments.h), one set per
+/// read-back check, in a fixed order (the legend, the scale, the marks);
+/// sets without probes are left out.
+std::vector<ProbeSet> sceneProbes(const Scene& scene);
+
+/// The heights (z units) of the attachments' tops at (x, y) mm, the model
+/// frame: what a probe from above may meet there besides the cells. Empty
+/// beside every attachment.
+std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm);
+
+}  // namespace tsf
