@@ -1,9 +1,6 @@
 #include "gen/scad/scad_emitter.h"
 
-#include "gen/scad/scad_halves.h"
-#include "gen/scad/scad_legend.h"
-#include "gen/scad/scad_scale.h"
-#include "gen/scad/scad_tab.h"
+#include "gen/scad/scad_attachments.h"
 
 #include <algorithm>
 #include <array>
@@ -63,16 +60,13 @@ Parameters parametersOf(const Scene& s) {
 }
 
 // Library parts a strategy needs, in the order they are pasted.
-std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped, bool legend, bool scale, bool halves,
-                                      bool tab) {
+std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped,
+                                      const std::vector<ScadAttachment>& attachments) {
     std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
     if (strategy == ScadOptions::Strategy::Csg && !shaped) parts.push_back("tsf_csg.scad");
     if (marks) parts.push_back("tsf_marks.scad");
     if (shaped) parts.push_back("tsf_tilt.scad");
-    if (legend) parts.push_back("tsf_legend.scad");
-    if (scale) parts.push_back("tsf_scale.scad");
-    if (tab) parts.push_back("tsf_tab.scad");
-    if (halves) parts.push_back("tsf_halves.scad");
+    for (const ScadAttachment& a : attachments) parts.push_back(a.library_file);
     return parts;
 }
 
@@ -336,7 +330,10 @@ void emitValues(std::string& o, const Scene& s) {
     o += "];\n\n";
 }
 
-void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
+void emitCall(std::string& o, const Scene& s, const ScadOptions& opts, const std::vector<ScadAttachment>& attachments) {
+    // The features' modules wrap the terrain call, the first innermost.
+    std::string wrap;
+    for (auto a = attachments.rbegin(); a != attachments.rend(); ++a) wrap += a->call_prefix;
     o += "// ----------------------------------------------------------------- Model ---\n";
     if (!opts.inline_library) o += std::string("use <") + kScadLibraryCopyDir + "/" + kScadLibraryEntry + ">\n";
     o += "model = tsf_model(values, cell_mm = cell, max_height_mm = height, base_mm = base,\n"
@@ -345,7 +342,7 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
     if (!s.faces.empty()) o += ",\n                  faces = orientation_marks ? marks : [], mark_height_mm = mark_height";
     const bool shaped = hasShapedTops(s);
     if (shaped) o += ",\n                  shapes = tops, min_thickness_units = tops_thickness";
-    else o += halvesModelArgument(s);
+    for (const ScadAttachment& a : attachments) o += a.model_argument;
     o += ");\n";
     if (shaped) {
         o += "assert([cell, height, transfer, baseline, value_max, snap, base, mirror] == tops_made_for,\n"
@@ -353,18 +350,17 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts) {
         // The CSG strategy's prisms have level tops: a shaped model is one polyhedron.
         if (opts.strategy == ScadOptions::Strategy::Csg)
             o += "// Tilted tops are drawn as one polyhedron (the CSG strategy's prisms have level tops).\n";
-        o += tabCallPrefix(s) + scaleCallPrefix(s) + legendCallPrefix(s) + "tsf_terrain_polyhedron(model);\n";
+        o += wrap + "tsf_terrain_polyhedron(model);\n";
         return;
     }
-    o += halvesCallPrefix(s) + tabCallPrefix(s) + scaleCallPrefix(s) + legendCallPrefix(s);
+    o += wrap;
     o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
 }
 
-void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts) {
+void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts,
+                       const std::vector<ScadAttachment>& attachments) {
     const std::string dir = opts.library_dir.empty() ? scadLibraryDir() : opts.library_dir;
-    const std::vector<std::string> parts =
-        libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), s.legend.has_value(), s.scale.has_value(),
-                     s.halves.has_value(), s.marks.tab.has_value());
+    const std::vector<std::string> parts = libraryParts(opts.strategy, !s.faces.empty(), hasShapedTops(s), attachments);
     std::string list;
     for (const std::string& part : parts) list += (list.empty() ? "" : ", ") + part;
     o += "\n// ---------------------------------------------------- tsf OpenSCAD library ---\n"
@@ -407,12 +403,10 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     emitValues(o, scene);
     emitMarks(o, scene);
     emitTops(o, scene);
-    emitLegendData(o, scene);
-    emitScaleData(o, scene);
-    emitTabData(o, scene);
-    emitHalvesData(o, scene);
-    emitCall(o, scene, opts);
-    if (opts.inline_library) emitInlineLibrary(o, scene, opts);
+    const std::vector<ScadAttachment> attachments = scadAttachments(scene);
+    for (const ScadAttachment& a : attachments) o += a.data;
+    emitCall(o, scene, opts, attachments);
+    if (opts.inline_library) emitInlineLibrary(o, scene, opts, attachments);
     return o;
 }
 
@@ -455,16 +449,14 @@ std::string emitScadParameterSets(const Scene& scene) {
     half["height"] = formatShortest(p.max_height_mm / 2);
     half["base"] = formatShortest(std::max(p.base_mm / 2, p.z_step_mm));
 
-    // The orientation tab and the legend's plate stand where tsf placed them
-    // for the parameters as generated (the file asserts the tab's): the other
-    // sets leave them out (a mirrored model's plate would float over a flat one).
-    if (scene.marks.tab) {
-        all["show_orientation_tab"] = "true";
-        for (nlohmann::ordered_json* set : {&layers, &flip, &half}) (*set)["show_orientation_tab"] = "false";
-    }
-    if (scene.legend) {
-        all["braille_legend"] = "true";
-        for (nlohmann::ordered_json* set : {&layers, &flip, &half}) (*set)["braille_legend"] = "false";
+    // What stands where tsf placed it for the parameters as generated (the
+    // orientation tab, the legend's plate; the file asserts the tab's): the
+    // other sets leave it out (a mirrored model's plate would float over a
+    // flat one).
+    for (const ScadAttachment& a : scadAttachments(scene)) {
+        if (a.placed_switch.empty()) continue;
+        all[a.placed_switch] = "true";
+        for (nlohmann::ordered_json* set : {&layers, &flip, &half}) (*set)[a.placed_switch] = "false";
     }
 
     nlohmann::ordered_json sets;

@@ -18,10 +18,7 @@ void appendXy(std::string& o, const Vec3& p) {
     o += "]";
 }
 
-}  // namespace
-
 void emitHalvesData(std::string& o, const Scene& s) {
-    if (!s.halves) return;
     const SceneHalves& h = *s.halves;
     o += "/* [Halves] */\n"
          "// Which piece to draw: the whole model, or a half as it prints without supports\n"
@@ -55,10 +52,16 @@ void emitHalvesData(std::string& o, const Scene& s) {
     o += "];\n\n";
 }
 
-std::string halvesModelArgument(const Scene& s) {
-    return s.halves ? ",\n                  min_thickness_units = halves_thickness" : "";
-}
+}  // namespace
 
-std::string halvesCallPrefix(const Scene& s) { return s.halves ? "tsf_half(piece, halves) " : ""; }
+std::optional<ScadAttachment> scadHalves(const Scene& s) {
+    if (!s.halves) return std::nullopt;
+    ScadAttachment a;
+    a.library_file = "tsf_halves.scad";
+    emitHalvesData(a.data, s);
+    a.model_argument = ",\n                  min_thickness_units = halves_thickness";
+    a.call_prefix = "tsf_half(piece, halves) ";
+    return a;
+}
 
 }  // namespace tsf

@@ -3,23 +3,19 @@
 // both engines cut the very holes of tsf's own mesh.
 #pragma once
 
-#include <string>
+#include <optional>
+
+#include "gen/scad/scad_attachment.h"
 
 namespace tsf {
 
 struct Scene;
 
-/// Appends the "Halves" customizer choice (`piece`), `halves = [cut_z,
-/// depth_y, holes, hole_depth, hole_tip];` and `halves_thickness` (the grown
-/// slab, z steps) when the Scene has halves; nothing otherwise.
-void emitHalvesData(std::string& out, const Scene& scene);
-
-/// ",\n    min_thickness_units = halves_thickness" for tsf_model() when the
-/// Scene has halves (the slab grew for the pin holes), "" otherwise.
-std::string halvesModelArgument(const Scene& scene);
-
-/// "tsf_half(piece, halves) " when the Scene has halves (it prefixes the
-/// terrain call), "" otherwise.
-std::string halvesCallPrefix(const Scene& scene);
+/// The halves' piece of the file when the Scene has them: the "Halves"
+/// choice (`piece`), `halves = [cut_z, depth_y, holes, hole_depth,
+/// hole_tip];` and `halves_thickness` (the grown slab, z steps) for
+/// scad_lib/tsf_halves.scad; tsf_model() takes `min_thickness_units =
+/// halves_thickness` and tsf_half(piece, halves) wraps the terrain.
+std::optional<ScadAttachment> scadHalves(const Scene& scene);
 
 }  // namespace tsf

@@ -5,9 +5,9 @@
 #include "gen/model/scene.h"
 
 namespace tsf {
+namespace {
 
 void emitLegendData(std::string& o, const Scene& s) {
-    if (!s.legend) return;
     const Mesh plate = legendPlateMesh(s);
     o += "/* [Braille legend] */\n"
          "// Title and value range in braille on a plate north of the pillars (docs/printing.md).\n"
@@ -38,6 +38,16 @@ void emitLegendData(std::string& o, const Scene& s) {
     o += "]];\n\n";
 }
 
-std::string legendCallPrefix(const Scene& s) { return s.legend ? "tsf_with_legend(legend_plate, braille_legend) " : ""; }
+}  // namespace
+
+std::optional<ScadAttachment> scadLegend(const Scene& s) {
+    if (!s.legend) return std::nullopt;
+    ScadAttachment a;
+    a.library_file = "tsf_legend.scad";
+    emitLegendData(a.data, s);
+    a.call_prefix = "tsf_with_legend(legend_plate, braille_legend) ";
+    a.placed_switch = "braille_legend";
+    return a;
+}
 
 }  // namespace tsf

@@ -3,19 +3,18 @@
 // draw the very dots of tsf's own mesh.
 #pragma once
 
-#include <string>
+#include <optional>
+
+#include "gen/scad/scad_attachment.h"
 
 namespace tsf {
 
 struct Scene;
 
-/// Appends the "Braille legend" customizer switch and `legend_plate =
-/// [points, faces];` (mm; faces clockwise from outside, as polyhedron()
-/// wants) when the Scene has a legend; nothing otherwise.
-void emitLegendData(std::string& out, const Scene& scene);
-
-/// "tsf_with_legend(legend_plate, braille_legend) " when the Scene has a
-/// legend (it prefixes the terrain call), "" otherwise.
-std::string legendCallPrefix(const Scene& scene);
+/// The legend's piece of the file when the Scene has one: the "Braille
+/// legend" switch and `legend_plate = [points, faces];` (mm; faces clockwise
+/// from outside, as polyhedron() wants) for scad_lib/tsf_legend.scad,
+/// wrapping the terrain in tsf_with_legend(legend_plate, braille_legend).
+std::optional<ScadAttachment> scadLegend(const Scene& scene);
 
 }  // namespace tsf

@@ -6,8 +6,9 @@
 #include "gen/util/number_format.h"
 
 namespace tsf {
+namespace {
+
 void emitScaleData(std::string& o, const Scene& s) {
-    if (!s.scale) return;
     const SceneScale& sc = *s.scale;
     o += "/* [Tactile scale] */\n"
          "// A staircase east of the pillars: each tread at the height of a value (docs/model.md).\n"
@@ -38,6 +39,15 @@ void emitScaleData(std::string& o, const Scene& s) {
     o += "]];\n\n";
 }
 
-std::string scaleCallPrefix(const Scene& s) { return s.scale ? "tsf_with_scale(tactile_scale, show_scale) " : ""; }
+}  // namespace
+
+std::optional<ScadAttachment> scadScale(const Scene& s) {
+    if (!s.scale) return std::nullopt;
+    ScadAttachment a;
+    a.library_file = "tsf_scale.scad";
+    emitScaleData(a.data, s);
+    a.call_prefix = "tsf_with_scale(tactile_scale, show_scale) ";
+    return a;
+}
 
 }  // namespace tsf

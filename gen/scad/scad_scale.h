@@ -2,18 +2,18 @@
 // (gen/model/features/scale.h) as data for scad_lib/tsf_scale.scad.
 #pragma once
 
-#include <string>
+#include <optional>
+
+#include "gen/scad/scad_attachment.h"
 
 namespace tsf {
 
 struct Scene;
 
-/// Appends the "Tactile scale" customizer switch and `tactile_scale = [...];`
-/// (mm) when the Scene has a scale; nothing otherwise.
-void emitScaleData(std::string& out, const Scene& scene);
-
-/// "tsf_with_scale(tactile_scale, show_scale) " when the Scene has a scale
-/// (it prefixes the terrain call), "" otherwise.
-std::string scaleCallPrefix(const Scene& scene);
+/// The scale's piece of the file when the Scene has one: the "Tactile
+/// scale" switch and `tactile_scale = [...];` (mm) for
+/// scad_lib/tsf_scale.scad, wrapping the terrain in
+/// tsf_with_scale(tactile_scale, show_scale).
+std::optional<ScadAttachment> scadScale(const Scene& scene);
 
 }  // namespace tsf

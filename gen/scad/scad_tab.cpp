@@ -5,9 +5,9 @@
 #include "gen/util/number_format.h"
 
 namespace tsf {
+namespace {
 
 void emitTabData(std::string& o, const Scene& s) {
-    if (!s.marks.tab) return;
     // The tab as the closed body tsf meshes it (gen/model/features/orientation_tab.h:
     // meshTabBody), every face a triangle: OpenSCAD then takes each corner as
     // written, where a polygon face it must tessellate itself would have its
@@ -50,6 +50,16 @@ void emitTabData(std::string& o, const Scene& s) {
          " it wrote: set show_orientation_tab = false, or run tsf gen again to change them\");\n\n";
 }
 
-std::string tabCallPrefix(const Scene& s) { return s.marks.tab ? "tsf_with_tab(orientation_tab, show_orientation_tab) " : ""; }
+}  // namespace
+
+std::optional<ScadAttachment> scadTab(const Scene& s) {
+    if (!s.marks.tab) return std::nullopt;
+    ScadAttachment a;
+    a.library_file = "tsf_tab.scad";
+    emitTabData(a.data, s);
+    a.call_prefix = "tsf_with_tab(orientation_tab, show_orientation_tab) ";
+    a.placed_switch = "show_orientation_tab";
+    return a;
+}
 
 }  // namespace tsf

@@ -2,18 +2,18 @@
 // (gen/model/features/orientation_tab.h) as data for scad_lib/tsf_tab.scad.
 #pragma once
 
-#include <string>
+#include <optional>
+
+#include "gen/scad/scad_attachment.h"
 
 namespace tsf {
 
 struct Scene;
 
-/// Appends the "Orientation marks" customizer switch and
-/// `orientation_tab = [...];` (mm) when the Scene has a tab; nothing otherwise.
-void emitTabData(std::string& out, const Scene& scene);
-
-/// "tsf_with_tab(orientation_tab, show_orientation_tab) " when the Scene has
-/// a tab (it prefixes the terrain call), "" otherwise.
-std::string tabCallPrefix(const Scene& scene);
+/// The tab's piece of the file when the Scene has one: the "Orientation
+/// marks" switch `show_orientation_tab` and `orientation_tab = [...];` (mm)
+/// for scad_lib/tsf_tab.scad, wrapping the terrain in
+/// tsf_with_tab(orientation_tab, show_orientation_tab).
+std::optional<ScadAttachment> scadTab(const Scene& scene);
 
 }  // namespace tsf

@@ -1,0 +1,23 @@
+// What a feature adds to a generated OpenSCAD file, in one shape the emitter
+// (gen/scad/scad_emitter.h) writes without knowing which feature it is: the
+// feature's data (its customizer switch and the solid tsf placed, for its
+// scad_lib/ module), the library file that draws it, an argument to
+// tsf_model() and the module call that wraps the terrain.
+#pragma once
+
+#include <string>
+
+namespace tsf {
+
+struct ScadAttachment {
+    std::string library_file;    ///< its scad_lib/ file: "tsf_tab.scad"
+    std::string data;            ///< its customizer section and data, ending in a blank line
+    std::string model_argument;  ///< appended to the tsf_model() call ("" none)
+    std::string call_prefix;     ///< "tsf_with_tab(orientation_tab, show_orientation_tab) ": wraps the terrain call
+    /// The customizer switch that shows it, on in the "as generated"
+    /// parameter set and off in the others (it stands where tsf placed it
+    /// for the parameters as generated); "" when it has none to turn off.
+    std::string placed_switch;
+};
+
+}  // namespace tsf
