@@ -405,6 +405,8 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
             if (f.name == "variable" || f.name == "band" || f.name == "units")
                 facts.read_facts.push_back((f.name == "band" ? std::string("Band") : f.name == "units" ? "Units" : "Variable") +
                                            ": " + f.value);
+        facts.categorical = field.input.categorical;
+        facts.class_names = field.input.classes;
         const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
         const auto [text_path, brf_path] = keyPaths(o);
         writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });

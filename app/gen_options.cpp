@@ -102,6 +102,11 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                     "Raster -> hexagons: auto (mode for a class map with a colour table, else mean) | mean (of the "
                     "pixels in a hexagon) | mode (their most common value) | nearest | bilinear")
         ->check(CLI::IsMember({"auto", "mean", "mode", "nearest", "bilinear"}))->capture_default_str()->group(in);
+    cmd->add_flag("--categorical", o.categorical,
+                  "The raster's values are class codes (land cover, soil types), even without a colour table or "
+                  "class names in the file: each hexagon takes its most common class, never a mean, and the "
+                  "summary and the key list the classes")
+        ->group(in);
     cmd->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; tab space (default: detect)")->group(in);
     cmd->add_flag("--decimal-comma", o.decimal_comma,
                   "Grid CSV: read 1,5 as 1.5 (spreadsheet exports; default: detected when the delimiter is ; "

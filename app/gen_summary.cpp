@@ -4,6 +4,7 @@
 #include "gen/model/features/braille.h"
 #include "gen/model/features/halves.h"
 #include "gen/model/features/orientation_tab.h"
+#include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
 
 #include <cmath>
@@ -266,11 +267,35 @@ std::string formatSceneFacts(const Scene& s) {
     return o.str();
 }
 
+// The classes of a categorical model, a few per line: what each class
+// code stands for (the file's name) and where it stands.
+static std::string classesLine(const Scene& scene, const std::vector<RasterClass>& names) {
+    constexpr size_t kListed = 16;  // the rest are in --json and the key
+    const std::vector<SceneClass> classes = sceneClasses(scene, names);
+    std::string o = "  classes   " + std::to_string(classes.size()) +
+                    " classes, each hexagon one class (the most common of its pixels, never a mean); heights follow "
+                    "the class codes and mean no more or less:";
+    for (size_t k = 0; k < classes.size() && k < kListed; ++k)
+        o += std::string(k == 0 ? " " : "; ") + className(classes[k]) + " (" + std::to_string(classes[k].cells) +
+             " cells, " + formatFixed(classes[k].height_mm, 2) + " mm)";
+    if (classes.size() > kListed) o += "; ... " + std::to_string(classes.size() - kListed) + " more in --json and the key";
+    return o + "\n";
+}
+
 nlohmann::json summaryJson(const GenSummary& s) {
     nlohmann::json j;
     j["input"] = s.input;
     if (s.field) j["field"] = {{"how", s.field->how}, {"pitch_data_units", s.field->pitch_data}};
     if (s.scene) j["scene"] = sceneFactsJson(*s.scene);
+    if (s.scene && s.field && s.field->input.categorical) {
+        nlohmann::json classes = nlohmann::json::array();
+        for (const SceneClass& c : sceneClasses(*s.scene, s.field->input.classes))
+            classes.push_back({{"code", c.code}, {"name", c.name.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.name)},
+                               {"cells", c.cells}, {"height_mm", c.height_mm}});
+        j["classes"] = classes;
+    } else {
+        j["classes"] = nullptr;
+    }
     if (s.mesh) {
         const Bounds b = meshBounds(*s.mesh);
         j["mesh"] = {{"vertices", s.mesh->vertexCount()}, {"triangles", s.mesh->triangleCount()},
@@ -292,6 +317,7 @@ std::string formatSummary(const GenSummary& s) {
     if (s.field) o << "  input     " << s.field->how << "\n";
     for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
     if (s.scene) o << formatSceneFacts(*s.scene);
+    if (s.scene && s.field && s.field->input.categorical) o << classesLine(*s.scene, s.field->input.classes);
     if (s.mesh)
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
           << formatFixed(signedVolume(*s.mesh), 1) << " mm^3\n";

@@ -21,6 +21,10 @@ struct FieldInput {
     double min = NAN, max = NAN, mean = NAN;  ///< over the values with data; NaN when none
     std::vector<ReadFact> facts;  ///< what the reader detected, in reading order
     std::string units;            ///< the values' units as the file names them ("" when it does not)
+    /// The values are class codes (a colour table or class names in the
+    /// file, or --categorical): a hexagon takes one class, never a mean.
+    bool categorical = false;
+    std::vector<RasterClass> classes;  ///< the classes the file names, by code (empty: none named)
 };
 
 /// Counts `values` (NaN = no data) and takes min, max and mean of the others.

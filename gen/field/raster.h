@@ -19,6 +19,12 @@ struct ReadFact {
     std::string value;
 };
 
+/// A class of a categorical raster as the file names it.
+struct RasterClass {
+    double code = 0;   ///< the value the raster holds for it
+    std::string name;  ///< its name in the file ("Open water"); "" when the file gives none
+};
+
 struct Raster {
     int32_t cols = 0;
     int32_t rows = 0;
@@ -27,6 +33,9 @@ struct Raster {
     /// table): a hexagon takes the class most of its pixels have, never a
     /// mean of codes (gen/field/resample.h, Method::Mode).
     bool categorical = false;
+    /// The classes the file names (category names, or a raster attribute
+    /// table's name column), by code; empty when it names none.
+    std::vector<RasterClass> classes;
     std::string units;           ///< the values' units as the file names them ("" when it does not)
     /// 1: every value is one of the file's. More: the file was too large to
     /// read whole, and each value is the mean (or most common class) of a

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "gen/field/hex_grid.h"
+#include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
 
 namespace tsf {
@@ -87,10 +88,26 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     std::string values = "Each hexagon is " + mm(s.pitch_mm) + " across";
     values += s.one_to_one ? " and stands for one value of the data, at its own height. "
                            : " and stands for the values that fell in it, as said above. ";
-    if (std::isfinite(lo))
-        values += "The values go from " + num(lo) + " to " + num(hi) + u + ".";
-    out.push_back(values);
-    out.push_back(heightsParagraph(s));
+    if (facts.categorical) {
+        // Class codes: their range and a height per unit mean nothing; each
+        // class is told by name and height.
+        const std::vector<SceneClass> classes = sceneClasses(s, facts.class_names);
+        values += "The values are classes, not amounts: " + std::to_string(classes.size()) +
+                  (classes.size() == 1 ? " class" : " classes") +
+                  ". Each hexagon holds one class, the most common where it stands, never a mix. Each class stands "
+                  "at its own height, in the order of its code in the file; a higher pillar is not more of anything.";
+        out.push_back(values);
+        std::string list = "The classes, by height:";
+        for (size_t k = 0; k < classes.size(); ++k)
+            list += std::string(k == 0 ? " " : "; ") + "class " + className(classes[k]) + ", " + mm(classes[k].height_mm) +
+                    ", " + std::to_string(classes[k].cells) + (classes[k].cells == 1 ? " hexagon" : " hexagons");
+        out.push_back(list + ".");
+    } else {
+        if (std::isfinite(lo))
+            values += "The values go from " + num(lo) + " to " + num(hi) + u + ".";
+        out.push_back(values);
+        out.push_back(heightsParagraph(s));
+    }
     if (pits > 0)
         out.push_back(std::to_string(pits) + (pits == 1 ? " cell has" : " cells have") +
                       " no data: each is a pit " + mm(s.zMm(s.nodata_pit_units)) +

@@ -8,12 +8,13 @@
 // all, in short paragraphs, from the Scene alone (nothing is decided here):
 // what the model shows and how it was made; the values and their heights;
 // the orientation marks and how to turn the model; the legend, the scale,
-// tilts, dimples and pits; the size.
+// tilts, dimples and pits; the classes of a class map; the size.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "gen/field/raster.h"
 #include "gen/model/scene.h"
 
 namespace tsf {
@@ -25,6 +26,10 @@ struct ModelKeyFacts {
     /// What was read from a file of several (its variable, band, time step,
     /// units), one "name: value" each; said after how the values were made.
     std::vector<std::string> read_facts;
+    /// The values are class codes (FieldInput::categorical), and the names
+    /// the file gives them: the key lists every class with its height.
+    bool categorical = false;
+    std::vector<RasterClass> class_names;
 };
 
 /// The key's paragraphs: the first is the title line, each other a few

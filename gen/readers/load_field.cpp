@@ -37,6 +37,9 @@ HexField loadField(const FieldLoadOptions& o) {
     if (!o.points.empty() && !o.variable.empty())
         throw InputError("--variable is for files with several variables (NetCDF, HDF5); a table of points has columns: "
                          "--points x=COL,y=COL");
+    if (!o.points.empty() && o.categorical)
+        throw InputError("--categorical is for rasters of class codes; points are counted, summed or averaged into "
+                         "hexagons (--aggregate)");
     if (!o.points.empty()) {
         PointColumns cols = parsePointColumns(o.points);
         cols.delimiter = delimiter;
@@ -61,6 +64,10 @@ HexField loadField(const FieldLoadOptions& o) {
     ro.band = o.band;
     ro.variable = o.variable;
     Raster raster = readRaster(o.input, ro);
+    if (o.categorical && !raster.categorical) {
+        raster.categorical = true;
+        raster.facts.push_back({"values", "classes (--categorical)"});
+    }
     int64_t nodata_cells = 0;
     if (o.nodata)
         for (double& v : raster.values)
@@ -74,6 +81,8 @@ HexField loadField(const FieldLoadOptions& o) {
     input.rows = raster.rows;
     input.facts = raster.facts;
     input.units = raster.units;
+    input.categorical = raster.categorical;
+    input.classes = raster.classes;
     describeValues(raster.values, input);
     std::string placeholder_note;
     if (o.nodata) {

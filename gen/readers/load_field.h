@@ -35,6 +35,10 @@ struct FieldLoadOptions {
     /// raster -> hexes: auto (mode for class codes, Raster::categorical, else
     /// mean) | mean | mode | nearest | bilinear
     std::string sample = "auto";
+    /// The raster's values are class codes even without a colour table or
+    /// class names in the file (a CSV or PNG of codes): resampled by the
+    /// most common class, never averaged.
+    bool categorical = false;
     std::string delimiter;      ///< CSV delimiter: "," ";" "tab" "space" (or the character); "" = detect
     bool decimal_comma = false; ///< grid CSV: "1,5" is 1.5 (default: detected, gen/readers/decimal_mark.h)
     std::optional<double> nodata;  ///< rasters: this value means "no data" (e.g. -9999)

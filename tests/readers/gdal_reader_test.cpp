@@ -15,6 +15,7 @@
 
 #include <cpl_string.h>
 #include <filesystem>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -149,6 +150,83 @@ TEST(GdalReader, AClassMapIsResampledByItsMostCommonClassNeverByAMean) {
     const HexField mode = loadField(in);
     for (const double v : mode.values)
         if (!std::isnan(v)) EXPECT_TRUE(v == 41.0 || v == 90.0 || v == 95.0) << v;
+}
+
+// A land-cover map with class names but no colour table: the names make it a
+// class map, the summary and the key name every class, and no hexagon holds
+// a class the map does not have.
+TEST(GdalReader, ClassNamesMakeAClassMapAndTheSummaryAndTheKeyNameEveryClass) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = s.rows = 60;
+    s.epsg = 32633;
+    s.pixel_w = s.pixel_h = 30;
+    const float codes[4] = {11, 41, 90, 95};
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c) s.values.push_back(codes[(r / 7 + c / 5) % 4]);
+    s.byte_band = true;
+    s.category_names.assign(96, "");
+    s.category_names[11] = "Open Water";
+    s.category_names[41] = "Deciduous Forest";
+    s.category_names[90] = "Woody Wetlands";
+    s.category_names[95] = "Emergent Herbaceous Wetlands";
+    const std::string path = (dir / "landcover.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const Raster r = readGdalRaster(path);
+    EXPECT_TRUE(r.categorical);
+    ASSERT_EQ(r.classes.size(), 4u);
+    EXPECT_EQ(r.classes[2].code, 90.0);
+    EXPECT_EQ(r.classes[2].name, "Woody Wetlands");
+
+    const std::string model = (dir / "lc.stl").string();
+    const auto run = test::runTsf("gen " + path + " --bins 20 -o " + model + " --json");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+    ASSERT_TRUE(j["classes"].is_array()) << j.dump();
+    ASSERT_EQ(j["classes"].size(), 4u) << j["classes"].dump();
+    std::set<double> heights;
+    int64_t cells = 0;
+    for (const auto& c : j["classes"]) {
+        EXPECT_TRUE(c["name"].is_string()) << c.dump();
+        heights.insert(c["height_mm"].get<double>());
+        cells += c["cells"].get<int64_t>();
+    }
+    EXPECT_EQ(heights.size(), 4u) << "each class at a height of its own";
+    EXPECT_EQ(cells, j["scene"]["cells"]["with_data"].get<int64_t>());
+    EXPECT_EQ(j["classes"][3]["name"], "Emergent Herbaceous Wetlands");
+    const std::string key = test::readText(dir / "lc.key.txt");
+    for (const char* said : {"classes, not amounts: 4 classes", "class 11 Open Water", "class 41 Deciduous Forest",
+                             "class 90 Woody Wetlands", "class 95 Emergent Herbaceous Wetlands"})
+        EXPECT_NE(key.find(said), std::string::npos) << said << "\n" << key;
+    EXPECT_EQ(key.find("The values go from"), std::string::npos) << "a range of class codes means nothing\n" << key;
+}
+
+// --categorical: codes in a plain grid are a class map too; points are not.
+TEST(GdalReader, CategoricalMakesAnyRasterAClassMapAndIsRefusedForPoints) {
+    const auto dir = test::scratchDir();
+    std::string csv;
+    for (int r = 0; r < 40; ++r) {
+        for (int c = 0; c < 40; ++c) csv += std::string(c ? "," : "") + ((r / 2 + c / 2) % 2 ? "95" : "90");
+        csv += "\n";
+    }
+    test::writeText(dir / "codes.csv", csv);
+    FieldLoadOptions in;
+    in.input = (dir / "codes.csv").string();
+    in.bins = 8;
+    const HexField mean = loadField(in);
+    bool averaged = false;
+    for (const double v : mean.values) averaged = averaged || (v > 90.0 && v < 95.0);
+    EXPECT_TRUE(averaged) << "without --categorical the codes are measurements: " << mean.how;
+    in.categorical = true;
+    const HexField classes = loadField(in);
+    EXPECT_TRUE(classes.input.categorical);
+    for (const double v : classes.values)
+        if (!std::isnan(v)) EXPECT_TRUE(v == 90.0 || v == 95.0) << v << " is no class of the map";
+    test::writeText(dir / "p.csv", "x,y\n1,2\n3,4\n");
+    const auto run = test::runTsf("gen " + (dir / "p.csv").string() + " --points x=x,y=y --categorical -o " +
+                                  (dir / "p.stl").string());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find("--categorical is for rasters"), std::string::npos) << run.output;
 }
 
 TEST(GdalReader, BandChoosesWhichBandIsReadAndABandTheFileLacksIsBadInput) {

@@ -21,6 +21,10 @@ struct GeoTiffSpec {
     std::optional<double> nodata;
     bool classes = false;       ///< an 8-bit band with a colour table (a class map); values 0..255
     int bands = 1;              ///< band b (1-based) holds values + 100 * (b - 1)
+    /// Band 1's category names (index = class code; "" for a code without
+    /// one), without a colour table unless `classes` asks for one.
+    std::vector<std::string> category_names;
+    bool byte_band = false;     ///< an 8-bit band (class codes 0..255) without a colour table
 };
 
 /// Writes spec as a Float32 GeoTIFF; returns false when GDAL refuses.
@@ -28,7 +32,7 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
     GDALAllRegister();
     GDALDriverH driver = GDALGetDriverByName("GTiff");
     if (!driver) return false;
-    GDALDatasetH ds = GDALCreate(driver, path.c_str(), s.cols, s.rows, s.bands, s.classes ? GDT_Byte : GDT_Float32, nullptr);
+    GDALDatasetH ds = GDALCreate(driver, path.c_str(), s.cols, s.rows, s.bands, s.classes || s.byte_band ? GDT_Byte : GDT_Float32, nullptr);
     if (!ds) return false;
     double gt[6] = {s.west, s.pixel_w, 0, s.north, 0, -s.pixel_h};
     GDALSetGeoTransform(ds, gt);
@@ -48,6 +52,12 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
         }
         GDALSetRasterColorTable(band, table);
         GDALDestroyColorTable(table);
+    }
+    if (!s.category_names.empty()) {
+        std::vector<char*> names;
+        for (const std::string& n : s.category_names) names.push_back(const_cast<char*>(n.c_str()));
+        names.push_back(nullptr);
+        GDALSetRasterCategoryNames(band, names.data());
     }
     bool ok = true;
     for (int b = 1; b <= s.bands; ++b) {

@@ -14,6 +14,7 @@
 #include <cpl_error.h>
 #include <cpl_vsi.h>
 #include <gdal.h>
+#include <gdal_rat.h>
 #include <mutex>
 #include <ogr_srs_api.h>
 #include <sstream>
@@ -66,6 +67,43 @@ std::string crsName(OGRSpatialReferenceH srs) {
     const char* auth = OSRGetAuthorityName(srs, nullptr);
     const char* code = OSRGetAuthorityCode(srs, nullptr);
     if (auth && code) out += std::string(" (") + auth + ":" + code + ")";
+    return out;
+}
+
+/// The classes a band names: its category names (index = code, empty names
+/// skipped), else a raster attribute table's name column against its value
+/// column (or, without one, its row number). Names are trimmed and capped
+/// at 80 characters; at most kMaxClasses are kept.
+std::vector<RasterClass> classNames(GDALRasterBandH band) {
+    constexpr size_t kMaxClasses = 1024;
+    constexpr size_t kMaxNameBytes = 80;
+    std::vector<RasterClass> out;
+    auto add = [&](double code, const char* raw) {
+        if (!raw || out.size() >= kMaxClasses) return;
+        std::string name(raw);
+        for (char& c : name)
+            if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+        const size_t a = name.find_first_not_of(' '), b = name.find_last_not_of(' ');
+        if (a == std::string::npos) return;
+        name = name.substr(a, b - a + 1);
+        if (name.size() > kMaxNameBytes) name = name.substr(0, kMaxNameBytes);
+        out.push_back({code, name});
+    };
+    if (char** names = GDALGetRasterCategoryNames(band)) {
+        for (int k = 0; names[k] && out.size() < kMaxClasses; ++k) add(double(k), names[k]);
+        if (!out.empty()) return out;
+    }
+    GDALRasterAttributeTableH rat = GDALGetDefaultRAT(band);
+    if (!rat) return out;
+    const int name_col = GDALRATGetColOfUsage(rat, GFU_Name);
+    if (name_col < 0) return out;
+    int value_col = GDALRATGetColOfUsage(rat, GFU_MinMax);
+    if (value_col < 0) value_col = GDALRATGetColOfUsage(rat, GFU_Min);
+    const int rows = GDALRATGetRowCount(rat);
+    for (int row = 0; row < rows && out.size() < kMaxClasses; ++row)
+        add(value_col >= 0 ? GDALRATGetValueAsDouble(rat, row, value_col) : double(row),
+            GDALRATGetValueAsString(rat, row, name_col));
+    std::sort(out.begin(), out.end(), [](const RasterClass& x, const RasterClass& y) { return x.code < y.code; });
     return out;
 }
 
@@ -281,11 +319,26 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         r.units = units;
         r.facts.push_back({"units", units});
     }
-    // A colour table (a palette) means the values are class codes: land
-    // cover, soil types. Averaging two of them invents a class.
-    if (GDALGetRasterColorTable(band) || GDALGetRasterColorInterpretation(band) == GCI_PaletteIndex) {
+    // A colour table (a palette), category names or a raster attribute
+    // table with a name column mean the values are class codes: land cover,
+    // soil types. Averaging two of them invents a class.
+    r.classes = classNames(band);
+    const bool palette = GDALGetRasterColorTable(band) || GDALGetRasterColorInterpretation(band) == GCI_PaletteIndex;
+    if (palette || !r.classes.empty()) {
         r.categorical = true;
-        r.facts.push_back({"values", "classes (the band has a colour table)"});
+        r.facts.push_back({"values", std::string("classes (the band has ") +
+                                         (palette ? "a colour table" : "class names") + ")"});
+        if (!r.classes.empty()) {
+            std::string names;
+            for (const RasterClass& c : r.classes) {
+                if (names.size() > 400) {
+                    names += "; ...";
+                    break;
+                }
+                names += (names.empty() ? "" : "; ") + formatSignificant(c.code) + " " + c.name;
+            }
+            r.facts.push_back({"class names", std::to_string(r.classes.size()) + ": " + names});
+        }
     }
 
     // Pixel size on the ground (CRS units) and whether x is degrees of longitude.

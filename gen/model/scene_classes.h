@@ -1,0 +1,30 @@
+// The classes of a categorical model (a land-cover map, soil types): which
+// class codes its cells hold, how many cells each, at what height, and the
+// names the file gives them. Facts for the summary and the key; nothing is
+// decided here.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gen/field/raster.h"
+#include "gen/model/scene.h"
+
+namespace tsf {
+
+struct SceneClass {
+    double code = 0;       ///< the class's value in the data
+    std::string name;      ///< from the file ("" when it names none)
+    int64_t cells = 0;     ///< kept cells that hold it
+    double height_mm = 0;  ///< its height above the floor (mm, on the z grid): the value mapping's
+};
+
+/// Every class the Scene's data cells hold, by code, with its name from
+/// `names` (the file's, gen/field/raster.h) where it has one.
+std::vector<SceneClass> sceneClasses(const Scene& scene, const std::vector<RasterClass>& names);
+
+/// "11 Open water" or "11" (no name): how a person is told a class.
+std::string className(const SceneClass& c);
+
+}  // namespace tsf
