@@ -199,6 +199,18 @@ TEST(GdalReader, ClassNamesMakeAClassMapAndTheSummaryAndTheKeyNameEveryClass) {
                              "class 90 Woody Wetlands", "class 95 Emergent Herbaceous Wetlands"})
         EXPECT_NE(key.find(said), std::string::npos) << said << "\n" << key;
     EXPECT_EQ(key.find("The values go from"), std::string::npos) << "a range of class codes means nothing\n" << key;
+
+    // The same names in a raster attribute table (rows in any order).
+    s.category_names.clear();
+    s.attribute_names = {{95, "Emergent Herbaceous Wetlands"}, {11, "Open Water"}, {41, "Deciduous Forest"}, {90, "Woody Wetlands"}};
+    const std::string rat_path = (dir / "landcover_rat.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(rat_path, s));
+    const Raster rat = readGdalRaster(rat_path);
+    EXPECT_TRUE(rat.categorical);
+    ASSERT_EQ(rat.classes.size(), 4u);
+    EXPECT_EQ(rat.classes[0].code, 11.0);
+    EXPECT_EQ(rat.classes[0].name, "Open Water");
+    EXPECT_EQ(rat.classes[3].name, "Emergent Herbaceous Wetlands");
 }
 
 // --categorical: codes in a plain grid are a class map too; points are not.

@@ -4,10 +4,12 @@
 #pragma once
 
 #include <gdal.h>
+#include <gdal_rat.h>
 #include <ogr_srs_api.h>
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tsf::test {
@@ -24,6 +26,9 @@ struct GeoTiffSpec {
     /// Band 1's category names (index = class code; "" for a code without
     /// one), without a colour table unless `classes` asks for one.
     std::vector<std::string> category_names;
+    /// Band 1's raster attribute table: (class code, name) rows in a Value
+    /// and a Name column.
+    std::vector<std::pair<int, std::string>> attribute_names;
     bool byte_band = false;     ///< an 8-bit band (class codes 0..255) without a colour table
 };
 
@@ -58,6 +63,18 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
         for (const std::string& n : s.category_names) names.push_back(const_cast<char*>(n.c_str()));
         names.push_back(nullptr);
         GDALSetRasterCategoryNames(band, names.data());
+    }
+    if (!s.attribute_names.empty()) {
+        GDALRasterAttributeTableH rat = GDALCreateRasterAttributeTable();
+        GDALRATCreateColumn(rat, "Value", GFT_Integer, GFU_MinMax);
+        GDALRATCreateColumn(rat, "Name", GFT_String, GFU_Name);
+        GDALRATSetRowCount(rat, int(s.attribute_names.size()));
+        for (size_t k = 0; k < s.attribute_names.size(); ++k) {
+            GDALRATSetValueAsInt(rat, int(k), 0, s.attribute_names[k].first);
+            GDALRATSetValueAsString(rat, int(k), 1, s.attribute_names[k].second.c_str());
+        }
+        GDALSetDefaultRAT(band, rat);
+        GDALDestroyRasterAttributeTable(rat);
     }
     bool ok = true;
     for (int b = 1; b <= s.bands; ++b) {
