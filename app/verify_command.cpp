@@ -30,6 +30,7 @@ struct VerifyCommandOptions {
     bool strict = false;
     bool no_printability = false;
     bool tactile = false;
+    bool quick = false;
     double nozzle_mm = kDefaultNozzleMm;
     double layer_mm = kDefaultLayerMm;
     std::string bed;
@@ -111,6 +112,11 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     }
     vo.fail_on_warnings = o.strict;
     vo.tactile = o.tactile;
+    if (o.quick) {
+        // What tsf gen's self-check keeps above kQuickVerifyTriangles.
+        vo.self_intersections = false;
+        vo.printability = false;
+    }
 
     Mesh reference;
     if (!o.reference.empty()) {
@@ -194,6 +200,12 @@ void addVerifyCommand(CLI::App& app) {
                   "Also check the model as a hand reads it: no sharp points or knife edges, no pit or valley a "
                   "fingertip cannot reach the bottom of, and (with --scene) orientation marks of tactile size "
                   "(docs/tactile.md)")
+        ->group(print);
+    cmd->add_flag("--quick", opts->quick,
+                  "Only the checks tsf gen's self-check keeps on a model above 3 million triangles: topology, "
+                  "solid, the read-backs and --reference; no self-intersection test, no printability "
+                  "(docs/verifier.md: what each level catches)")
+        ->excludes(cmd->get_option("--tactile"))
         ->group(print);
 
     auto* out = "Output";

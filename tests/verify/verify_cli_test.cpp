@@ -148,6 +148,26 @@ TEST(VerifyCli, OverlappingShellsFromOutsideTsfAreCaught) {
     EXPECT_DOUBLE_EQ(j["mesh"]["signed_volume_mm3"].get<double>(), 600.0 + 180.0 + 288.0);
 }
 
+// --quick runs what tsf gen's self-check keeps above 3 million triangles:
+// the overlapping shells' second piece is still caught, the self-intersection
+// test says it was skipped, and printability is not run.
+TEST(VerifyCli, QuickLeavesOutTheSelfIntersectionTestAndPrintability) {
+    const auto dir = vtest::scratchDir("cli_quick");
+    Mesh m = vtest::box({0, 0, 0}, {30, 10, 2});
+    m = vtest::append(m, vtest::box({2, 2, 1}, {8, 8, 6}));
+    writeMesh(m, (dir / "two.stl").string());
+    const auto r = runTsf("verify " + (dir / "two.stl").string() + " --quick --json", dir);
+    EXPECT_EQ(r.exit_code, 1);
+    const auto j = nlohmann::json::parse(r.out);
+    std::map<std::string, std::string> status;
+    for (const auto& c : j["checks"]) status[c["id"]] = c["status"];
+    EXPECT_EQ(status["single_piece"], "fail");
+    EXPECT_EQ(status["self_intersections"], "skipped");
+    EXPECT_EQ(status.count("wall_thickness"), 0u) << "printability is not run";
+    const auto both = runTsf("verify " + (dir / "two.stl").string() + " --quick --tactile", dir);
+    EXPECT_EQ(both.exit_code, 2) << both.out << both.err;
+}
+
 // A mesh from another tool: OpenSCAD's example projection.stl (exported from
 // Blender) is a closed sphere-like shell around a second, inward-facing
 // shell. admesh 0.98 reports 2 parts and no errors; the verifier reports the
