@@ -181,6 +181,11 @@ int64_t decimationFor(int64_t cols, int64_t rows) {
     return f;
 }
 
+/// Above this many source pixels a decimated read says how far it has got
+/// on stderr (tenths of the rows): a tiled 40 000 x 40 000 file is small on
+/// disk but takes many seconds to read.
+constexpr int64_t kProgressPixels = 100'000'000;
+
 /// Reads the band into dec_cols x dec_rows values, each the mean (categorical:
 /// the most common value, the smaller on a tie) of the source pixels with
 /// data in its block; NaN when the block has none. Works a strip of source
@@ -193,7 +198,16 @@ void readDecimated(GDALRasterBandH band, const std::string& path, int64_t cols, 
     std::vector<std::vector<std::pair<double, int64_t>>> classes(categorical ? n_blocks : 0);
     std::vector<int64_t> col_block(static_cast<size_t>(cols));
     for (int64_t x = 0; x < cols; ++x) col_block[size_t(x)] = std::min(dec_cols - 1, x * dec_cols / cols);
+    const bool tell = cols * rows > kProgressPixels;
+    int said = 0;  // tenths of the rows said so far
+    if (tell)
+        std::fprintf(stderr, "tsf: reading %lld x %lld pixels of %s into %lld x %lld values\n", (long long)cols,
+                     (long long)rows, path.c_str(), (long long)dec_cols, (long long)dec_rows);
     for (int64_t r = 0; r < dec_rows; ++r) {
+        if (tell && r * 10 / dec_rows > said) {
+            said = int(r * 10 / dec_rows);
+            std::fprintf(stderr, "tsf: read %d %% of the rows\n", said * 10);
+        }
         const int64_t y0 = r * rows / dec_rows, y1 = std::max(y0 + 1, (r + 1) * rows / dec_rows);
         strip.resize(size_t(cols) * size_t(y1 - y0));
         if (GDALRasterIO(band, GF_Read, 0, int(y0), int(cols), int(y1 - y0), strip.data(), int(cols), int(y1 - y0),
