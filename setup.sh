@@ -15,7 +15,7 @@ DEPS=(
   build-essential cmake ninja-build pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
   libglm-dev libusb-1.0-0-dev libpng-dev lib3mf-dev libzip-dev
-  libcli11-dev nlohmann-json3-dev libgdal-dev liblouis-dev
+  libcli11-dev nlohmann-json3-dev libgdal-dev liblouis-dev libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   openscad admesh xvfb xauth prusa-slicer unzip
   clang-14 libclang-rt-14-dev

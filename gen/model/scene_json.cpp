@@ -916,7 +916,9 @@ void writeSceneJson(const Scene& scene, const std::string& path, const SceneMode
     // streamed one at a time: a million-cell scene never exists as a JSON tree.
     json head_json = sceneHeadJson(scene);
     if (model)
-        head_json["model"] = {{"file", model->file}, {"bytes", model->stamp.bytes}, {"fnv1a64", toHex(model->stamp.fnv1a64)}};
+        head_json["model"] = {{"file", model->file},
+                              {"bytes", model->stamp.bytes},
+                              {stampHashName(model->stamp.algorithm), toHex(model->stamp.hash)}};
     std::string head = head_json.dump(2);
     head.pop_back();  // the closing brace
     while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
@@ -939,8 +941,11 @@ std::optional<SceneModelRecord> modelRecordFromJson(const json& j) {
     r.stamp.bytes = getInt(m, "model", "bytes");
     if (r.file.empty() || r.file.find('/') != std::string::npos) fail("model.file", "expected a file name without folder");
     if (r.stamp.bytes < 0) fail("model.bytes", "must not be negative");
-    if (!parseHex64(getString(m, "model", "fnv1a64"), r.stamp.fnv1a64))
-        fail("model.fnv1a64", "expected 16 lower-case hex digits");
+    // XXH3 since tsf wrote it; FNV-1a in sidecars written before.
+    r.stamp.algorithm = m.contains("xxh3_64") || !m.contains("fnv1a64") ? StampHash::Xxh3_64 : StampHash::Fnv1a64;
+    const char* key = stampHashName(r.stamp.algorithm);
+    if (!parseHex64(getString(m, "model", key), r.stamp.hash))
+        fail(std::string("model.") + key, "expected 16 lower-case hex digits");
     return r;
 }
 
@@ -949,12 +954,12 @@ std::optional<SceneModelRecord> modelRecordFromJson(const json& j) {
 void checkSceneModelRecord(const SceneModelRecord& record, const std::string& sidecar_path,
                            const std::string& model_path) {
     if (std::filesystem::path(model_path).filename().string() != record.file) return;
-    const FileStamp now = stampFile(model_path);
+    const FileStamp now = stampFile(model_path, record.stamp.algorithm);
     if (now == record.stamp) return;
     throw InputError(sidecar_path, 0, 0,
                      "was written with another version of " + record.file + " (" + std::to_string(record.stamp.bytes) +
-                         " bytes, hash " + toHex(record.stamp.fnv1a64) + "; " + model_path + " has " +
-                         std::to_string(now.bytes) + " bytes, hash " + toHex(now.fnv1a64) +
+                         " bytes, hash " + toHex(record.stamp.hash) + "; " + model_path + " has " +
+                         std::to_string(now.bytes) + " bytes, hash " + toHex(now.hash) +
                          "): the model and its sidecar come from different runs of tsf gen (one may have been "
                          "interrupted); run tsf gen again");
 }

@@ -43,10 +43,11 @@
 //           steps [[value, top_units, y_south_mm, y_north_mm], ...],
 //           contacts [kept index], fillers [kept index]},
 //   hull [[i, j], ...], notes [...],
-//   model (optional) {file, bytes, fnv1a64}: the model file written with
+//   model (optional) {file, bytes, xxh3_64}: the model file written with
 //         this sidecar (tsf gen -o): its name without folder, its size and
-//         the FNV-1a 64 hash of its bytes as 16 hex digits
-//         (gen/util/file_stamp.h), so a sidecar from another run is refused,
+//         the XXH3-64 hash of its bytes as 16 hex digits
+//         (gen/util/file_stamp.h), so a sidecar from another run is refused
+//         (sidecars written before XXH3 hold fnv1a64, FNV-1a 64, instead),
 //   cells [{col, row, value (null = no data), top, bottom,
 //           fan (only a cell drawn as a fan): {centre_top, crossings_top [6],
 //                  centre_bottom, crossings_bottom [6] (mirrored)} planar ids,

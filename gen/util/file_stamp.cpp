@@ -3,7 +3,12 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <vector>
+
+// Header-only: the functions are compiled here, nothing to link.
+#define XXH_INLINE_ALL
+#include <xxhash.h>
 
 #include "gen/util/error.h"
 
@@ -18,20 +23,30 @@ uint64_t fnv1a64(const void* data, size_t size, uint64_t hash) {
     return hash;
 }
 
-FileStamp stampFile(const std::string& path) {
+const char* stampHashName(StampHash algorithm) { return algorithm == StampHash::Fnv1a64 ? "fnv1a64" : "xxh3_64"; }
+
+FileStamp stampFile(const std::string& path, StampHash algorithm) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) throw InputError(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
     FileStamp s;
-    s.fnv1a64 = kFnv1a64Basis;
+    s.algorithm = algorithm;
+    s.hash = kFnv1a64Basis;
+    std::unique_ptr<XXH3_state_t, decltype(&XXH3_freeState)> xxh(XXH3_createState(), &XXH3_freeState);
+    if (!xxh || XXH3_64bits_reset(xxh.get()) != XXH_OK) {
+        std::fclose(f);
+        throw InputError(path, 0, 0, "cannot start hashing the file");
+    }
     std::vector<unsigned char> buf(size_t(1) << 20);
     size_t n;
     while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) {
-        s.fnv1a64 = fnv1a64(buf.data(), n, s.fnv1a64);
+        if (algorithm == StampHash::Fnv1a64) s.hash = fnv1a64(buf.data(), n, s.hash);
+        else XXH3_64bits_update(xxh.get(), buf.data(), n);
         s.bytes += int64_t(n);
     }
     const bool failed = std::ferror(f) != 0;
     std::fclose(f);
     if (failed) throw InputError(path, 0, 0, "cannot read the file");
+    if (algorithm == StampHash::Xxh3_64) s.hash = XXH3_64bits_digest(xxh.get());
     return s;
 }
 

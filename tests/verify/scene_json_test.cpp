@@ -288,8 +288,13 @@ TEST(SceneJson, TheModelItWasWrittenWithIsRecordedAndAnotherVersionRefused) {
     vtest::writeText(dir / "model.stl", "the model's bytes");
     const SceneModelRecord written{"model.stl", stampFile((dir / "model.stl").string())};
     EXPECT_EQ(written.stamp.bytes, 17);
-    // FNV-1a 64 of "a" is 0xaf63dc4c8601ec8c (the published test vector).
+    EXPECT_EQ(written.stamp.algorithm, StampHash::Xxh3_64);
+    // FNV-1a 64 of "a" is 0xaf63dc4c8601ec8c, XXH3-64 of nothing
+    // 0x2d06800538d394c2 (the published test vectors).
     EXPECT_EQ(fnv1a64("a", 1), 0xaf63dc4c8601ec8cull);
+    vtest::writeText(dir / "empty.stl", "");
+    EXPECT_EQ(stampFile((dir / "empty.stl").string()).hash, 0x2d06800538d394c2ull);
+    EXPECT_EQ(stampFile((dir / "empty.stl").string(), StampHash::Fnv1a64).hash, kFnv1a64Basis);
     const auto sidecar = dir / "model.stl.scene.json";
     writeSceneJson(s, sidecar.string(), &written);
     std::optional<SceneModelRecord> read;
@@ -309,6 +314,20 @@ TEST(SceneJson, TheModelItWasWrittenWithIsRecordedAndAnotherVersionRefused) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("different runs of tsf gen"), std::string::npos) << e.what();
     }
+    // A sidecar written before XXH3 records FNV-1a under its own name, and
+    // the model is stamped that way to compare.
+    vtest::writeText(dir / "model.stl", "the model's bytes");
+    const SceneModelRecord older{"model.stl", stampFile((dir / "model.stl").string(), StampHash::Fnv1a64)};
+    writeSceneJson(s, sidecar.string(), &older);
+    const std::string older_text = vtest::readText(sidecar);
+    EXPECT_NE(older_text.find("\"fnv1a64\""), std::string::npos);
+    EXPECT_EQ(older_text.find("\"xxh3_64\""), std::string::npos);
+    readSceneJson(sidecar.string(), &read);
+    ASSERT_TRUE(read.has_value());
+    EXPECT_EQ(read->stamp.algorithm, StampHash::Fnv1a64);
+    EXPECT_NO_THROW(checkSceneModelRecord(*read, sidecar.string(), (dir / "model.stl").string()));
+    vtest::writeText(dir / "model.stl", "the model's bytez");
+    EXPECT_THROW(checkSceneModelRecord(*read, sidecar.string(), (dir / "model.stl").string()), InputError);
     // A sidecar without the record (older tsf, or --scad only) reads as before.
     writeSceneJson(s, sidecar.string());
     readSceneJson(sidecar.string(), &read);
