@@ -14,93 +14,16 @@
 #include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
 #include "gen/util/file_bytes.h"
+#include "gen/model/feature_records.h"
+#include "gen/model/sidecar_fields.h"
 #include "gen/model/features/marks.h"
-#include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/top_shapes.h"
 
 namespace tsf {
+
+using namespace sidecar;
+
 namespace {
-
-using nlohmann::json;
-
-json numberOrNull(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
-
-// --- reading helpers: every error names the JSON path ---------------------
-
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-    throw InputError((path.empty() ? std::string("(top level)") : path) + ": " + what);
-}
-
-const char* typeName(const json& v) { return v.type_name(); }
-
-const json& member(const json& obj, const std::string& path, const char* key) {
-    if (!obj.is_object()) fail(path, std::string("expected an object, found ") + typeName(obj));
-    const auto it = obj.find(key);
-    const std::string p = path.empty() ? key : path + "." + key;
-    if (it == obj.end()) fail(p, "missing");
-    return *it;
-}
-
-std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
-
-int64_t toInt(const json& v, const std::string& path) {
-    if (v.is_number_unsigned()) {
-        if (v.get<uint64_t>() > uint64_t(std::numeric_limits<int64_t>::max())) fail(path, "integer out of range");
-        return int64_t(v.get<uint64_t>());
-    }
-    if (v.is_number_integer()) return v.get<int64_t>();
-    fail(path, std::string("expected an integer, found ") + typeName(v));
-}
-
-int64_t getInt(const json& obj, const std::string& path, const char* key) {
-    return toInt(member(obj, path, key), join(path, key));
-}
-
-int32_t getInt32(const json& obj, const std::string& path, const char* key, int64_t lo, int64_t hi) {
-    const int64_t v = getInt(obj, path, key);
-    if (v < lo || v > hi)
-        fail(join(path, key), "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + " (got " +
-                                  std::to_string(v) + ")");
-    return int32_t(v);
-}
-
-double toNumber(const json& v, const std::string& path) {
-    if (!v.is_number()) fail(path, std::string("expected a number, found ") + typeName(v));
-    return v.get<double>();
-}
-
-double getNumber(const json& obj, const std::string& path, const char* key) {
-    return toNumber(member(obj, path, key), join(path, key));
-}
-
-double getPositive(const json& obj, const std::string& path, const char* key) {
-    const double v = getNumber(obj, path, key);
-    if (!(v > 0) || !std::isfinite(v)) fail(join(path, key), "must be a number > 0");
-    return v;
-}
-
-std::string getString(const json& obj, const std::string& path, const char* key) {
-    const json& v = member(obj, path, key);
-    if (!v.is_string()) fail(join(path, key), std::string("expected a string, found ") + typeName(v));
-    return v.get<std::string>();
-}
-
-template <class E, size_t N>
-E getEnum(const json& obj, const std::string& path, const char* key, const E (&all)[N]) {
-    const std::string s = getString(obj, path, key);
-    std::string names;
-    for (E e : all) {
-        if (s == toString(e)) return e;
-        names += std::string(names.empty() ? "" : ", ") + toString(e);
-    }
-    fail(join(path, key), "unknown value \"" + s + "\" (expected one of: " + names + ")");
-}
-
-const json& getArray(const json& obj, const std::string& path, const char* key) {
-    const json& v = member(obj, path, key);
-    if (!v.is_array()) fail(join(path, key), std::string("expected an array, found ") + typeName(v));
-    return v;
-}
 
 constexpr Transfer kTransfers[] = {Transfer::Linear, Transfer::Sqrt, Transfer::Log};
 constexpr Cull kCulls[] = {Cull::None, Cull::Hull, Cull::Concave};
@@ -225,94 +148,7 @@ json marksJson(const Marks& m) {
                          {"anchor", m.triangle->anchor}};
     else
         j["triangle"] = nullptr;
-    if (m.tab) {
-        const OrientationTab& t = *m.tab;
-        json outline = json::array(), touched = json::array(), tri = json::array();
-        for (const TabPoint& p : t.outline) outline.push_back(json::array({p.x_mm, p.y_mm, p.lattice}));
-        for (const auto& [k, e] : t.touched) touched.push_back(json::array({k, e}));
-        for (const TabPoint& p : t.triangle) tri.push_back(json::array({p.x_mm, p.y_mm}));
-        j["tab"] = {{"outline", outline},
-                    {"joined", t.joined},
-                    {"touched", touched},
-                    {"bottom_units", t.bottom_units},
-                    {"top_units", t.top_units},
-                    {"box_mm", {t.x_west_mm, t.x_east_mm, t.y_south_mm, t.y_north_mm}},
-                    {"notch", t.has_notch ? json{{"depth_mm", t.notch_depth_mm}, {"width_mm", t.notch_width_mm},
-                                                 {"opening_deg", t.notch_opening_deg}}
-                                          : json(nullptr)},
-                    {"triangle", t.has_triangle ? json{{"corners_mm", tri}, {"raise_units", t.triangle_raise_units},
-                                                       {"underside", t.under_triangle}}
-                                                : json(nullptr)}};
-    } else {
-        j["tab"] = nullptr;
-    }
     return j;
-}
-
-// The orientation tab as placed (version 6), read as recorded; checked
-// against the cells once they are read (checkTab).
-OrientationTab tabFrom(const json& t, const std::string& path) {
-    OrientationTab tab;
-    auto xy = [&](const json& v, const std::string& p, size_t n) {
-        if (!v.is_array() || v.size() != n) fail(p, "expected [x, y" + std::string(n == 3 ? ", lattice id]" : "]"));
-        TabPoint q{toNumber(v[0], p + "[0]"), toNumber(v[1], p + "[1]"), -1};
-        if (!std::isfinite(q.x_mm) || !std::isfinite(q.y_mm)) fail(p, "expected finite numbers");
-        if (n == 3) {
-            if (!v[2].is_number_integer()) fail(p + "[2]", "expected a lattice id (an integer, -1 for none)");
-            q.lattice = v[2].get<int64_t>();
-        }
-        return q;
-    };
-    const json& outline = member(t, path, "outline");
-    if (!outline.is_array() || outline.size() < 4) fail(join(path, "outline"), "expected at least four corners");
-    for (size_t n = 0; n < outline.size(); ++n)
-        tab.outline.push_back(xy(outline[n], join(path, "outline") + "[" + std::to_string(n) + "]", 3));
-    const json& joined = member(t, path, "joined");
-    if (!joined.is_array() || joined.size() != outline.size()) fail(join(path, "joined"), "expected one flag per corner");
-    for (const json& f : joined) {
-        if (!f.is_number_integer() || (f.get<int64_t>() != 0 && f.get<int64_t>() != 1)) fail(join(path, "joined"), "expected 0 or 1");
-        tab.joined.push_back(uint8_t(f.get<int64_t>()));
-    }
-    const json& touched = member(t, path, "touched");
-    if (!touched.is_array()) fail(join(path, "touched"), "expected [[kept index, edge], ...]");
-    for (const json& e : touched) {
-        if (!e.is_array() || e.size() != 2 || !e[0].is_number_integer() || !e[1].is_number_integer())
-            fail(join(path, "touched"), "expected [[kept index, edge], ...]");
-        const int64_t k = e[0].get<int64_t>(), edge = e[1].get<int64_t>();
-        if (k < 0 || k > std::numeric_limits<int32_t>::max() || edge < 0 || edge >= kHexCorners)
-            fail(join(path, "touched"), "a kept index or an edge (0..5) is out of range");
-        tab.touched.push_back({int32_t(k), int(edge)});
-    }
-    tab.bottom_units = getInt(t, path, "bottom_units");
-    tab.top_units = getInt(t, path, "top_units");
-    const json& box = member(t, path, "box_mm");
-    if (!box.is_array() || box.size() != 4) fail(join(path, "box_mm"), "expected [west, east, south, north]");
-    tab.x_west_mm = toNumber(box[0], join(path, "box_mm[0]"));
-    tab.x_east_mm = toNumber(box[1], join(path, "box_mm[1]"));
-    tab.y_south_mm = toNumber(box[2], join(path, "box_mm[2]"));
-    tab.y_north_mm = toNumber(box[3], join(path, "box_mm[3]"));
-    const json& notch = member(t, path, "notch");
-    if (!notch.is_null()) {
-        const std::string np = join(path, "notch");
-        tab.has_notch = true;
-        tab.notch_depth_mm = getNumber(notch, np, "depth_mm");
-        tab.notch_width_mm = getNumber(notch, np, "width_mm");
-        tab.notch_opening_deg = getNumber(notch, np, "opening_deg");
-    }
-    const json& tri = member(t, path, "triangle");
-    if (!tri.is_null()) {
-        const std::string tp = join(path, "triangle");
-        const json& corners = member(tri, tp, "corners_mm");
-        if (!corners.is_array() || corners.size() != 3) fail(join(tp, "corners_mm"), "expected three [x, y] corners");
-        for (size_t n = 0; n < 3; ++n) tab.triangle[n] = xy(corners[n], join(tp, "corners_mm") + "[" + std::to_string(n) + "]", 2);
-        tab.triangle_raise_units = getInt(tri, tp, "raise_units");
-        if (tab.triangle_raise_units < 1) fail(join(tp, "raise_units"), "must be at least 1");
-        const json& under = member(tri, tp, "underside");
-        if (!under.is_boolean()) fail(join(tp, "underside"), "expected true or false");
-        tab.under_triangle = under.get<bool>();
-        tab.has_triangle = true;
-    }
-    return tab;
 }
 
 PlanarPoint pointFrom(const json& obj, const std::string& path, const char* key) {
@@ -338,7 +174,6 @@ Marks marksFrom(const json& j, const std::string& path) {
         n.opening_deg = getNumber(notch, np, "opening_deg");
         m.notch = n;
     }
-    if (j.contains("tab") && !j["tab"].is_null()) m.tab = tabFrom(j["tab"], join(path, "tab"));
     const json& tri = member(j, path, "triangle");
     if (!tri.is_null()) {
         const std::string tp = join(path, "triangle");
@@ -356,187 +191,11 @@ Marks marksFrom(const json& j, const std::string& path) {
     return m;
 }
 
-// The braille legend as placed: its request (for reports), the standard its
-// dots were laid out at, the text and braille cells, every dot and the plate.
-// Read back as is: verifying a model needs no braille table and no placement.
-json legendJson(const Scene& s) {
-    const SceneLegend& l = *s.legend;
-    const BrailleStandard& st = l.layout.standard;
-    json dots = json::array();
-    for (const LegendDot& d : l.layout.dots) dots.push_back({d.x_mm, d.y_mm});
-    return {{"title", s.params.legend.title},
-            {"units", s.params.legend.units},
-            {"table", s.params.legend.table},
-            {"standard",
-             {{"name", st.name},
-              {"dot_base_mm", st.dot_base_mm},
-              {"dot_height_mm", st.dot_height_mm},
-              {"dot_pitch_mm", st.dot_pitch_mm},
-              {"cell_pitch_mm", st.cell_pitch_mm},
-              {"line_pitch_mm", st.line_pitch_mm}}},
-            {"text", l.layout.text},
-            {"cells", l.layout.cells},
-            {"dots", dots},
-            {"size_mm", {l.layout.width_mm, l.layout.depth_mm}},
-            {"origin_mm", {l.x0_mm, l.y0_mm}},
-            {"reach_row", l.reach_row},
-            {"plate_mm", {{"south", l.plate_south_mm}, {"north", l.plate_north_mm}, {"east", l.plate_east_mm}}},
-            {"plate_top_units", l.plate_top_units},
-            {"plate_bottom_units", l.plate_bottom_units}};
-}
-
-double getFinite(const json& obj, const std::string& path, const char* key) {
-    const double v = getNumber(obj, path, key);
-    if (!std::isfinite(v)) fail(join(path, key), "expected a finite number");
-    return v;
-}
-
-std::pair<double, double> getFinitePair(const json& obj, const std::string& path, const char* key) {
-    const json& a = getArray(obj, path, key);
-    const std::string p = join(path, key);
-    if (a.size() != 2) fail(p, "expected two numbers");
-    const double x = toNumber(a[0], p + "[0]"), y = toNumber(a[1], p + "[1]");
-    if (!std::isfinite(x) || !std::isfinite(y)) fail(p, "expected finite numbers");
-    return {x, y};
-}
-
-// The standards tsf lays braille out at, by the name a sidecar records.
-const BrailleStandard* knownStandard(const std::string& name) {
-    for (const BrailleStandard* st : {&kNlsSpec800})
-        if (name == st->name) return st;
-    return nullptr;
-}
-
-void readLegend(const json& l, const Scene& s, SceneLegend& out, LegendRequest& request) {
-    const std::string lp = "legend";
-    if (!l.is_object()) fail(lp, std::string("expected an object or null, found ") + typeName(l));
-    request.title = getString(l, lp, "title");
-    request.units = getString(l, lp, "units");
-    request.table = getString(l, lp, "table");
-    const json& st = member(l, lp, "standard");
-    const std::string sp = join(lp, "standard");
-    const BrailleStandard* known = knownStandard(getString(st, sp, "name"));
-    if (!known) fail(join(sp, "name"), "not a braille standard this tsf knows (" + std::string(kNlsSpec800.name) + ")");
-    BrailleStandard standard = *known;
-    standard.dot_base_mm = getPositive(st, sp, "dot_base_mm");
-    standard.dot_height_mm = getPositive(st, sp, "dot_height_mm");
-    standard.dot_pitch_mm = getPositive(st, sp, "dot_pitch_mm");
-    standard.cell_pitch_mm = getPositive(st, sp, "cell_pitch_mm");
-    standard.line_pitch_mm = getPositive(st, sp, "line_pitch_mm");
-    LegendLayout& layout = out.layout;
-    layout.standard = standard;
-    const json& text = getArray(l, lp, "text");
-    for (size_t i = 0; i < text.size(); ++i) {
-        if (!text[i].is_string()) fail(lp + ".text[" + std::to_string(i) + "]", "expected a string");
-        layout.text.push_back(text[i].get<std::string>());
-    }
-    const json& cells = getArray(l, lp, "cells");
-    for (size_t i = 0; i < cells.size(); ++i) {
-        const std::string cp = lp + ".cells[" + std::to_string(i) + "]";
-        if (!cells[i].is_array()) fail(cp, "expected an array of braille cells");
-        std::vector<uint8_t> line;
-        for (size_t k = 0; k < cells[i].size(); ++k) {
-            const int64_t v = toInt(cells[i][k], cp + "[" + std::to_string(k) + "]");
-            if (v < 0 || v > 255) fail(cp + "[" + std::to_string(k) + "]", "expected a braille cell 0..255");
-            line.push_back(uint8_t(v));
-        }
-        layout.cells.push_back(std::move(line));
-    }
-    std::tie(layout.width_mm, layout.depth_mm) = getFinitePair(l, lp, "size_mm");
-    std::tie(out.x0_mm, out.y0_mm) = getFinitePair(l, lp, "origin_mm");
-    out.reach_row = getInt32(l, lp, "reach_row", 0, std::max<int64_t>(0, int64_t(s.grid.rows) - 1));
-    const json& plate = member(l, lp, "plate_mm");
-    const std::string pp = join(lp, "plate_mm");
-    out.plate_south_mm = getFinite(plate, pp, "south");
-    out.plate_north_mm = getFinite(plate, pp, "north");
-    out.plate_east_mm = getFinite(plate, pp, "east");
-    if (!(out.plate_north_mm > out.plate_south_mm)) fail(join(pp, "north"), "must be north of the plate's south edge");
-    if (!(out.plate_east_mm > 0)) fail(join(pp, "east"), "must be east of the plate's west edge (x = 0)");
-    out.plate_top_units = getInt(l, lp, "plate_top_units");
-    // Version 7: a mirrored model's plate lies in a band; before, on the bed.
-    out.plate_bottom_units = l.contains("plate_bottom_units") ? getInt(l, lp, "plate_bottom_units") : 0;
-    if (out.plate_bottom_units >= out.plate_top_units) fail(join(lp, "plate_bottom_units"), "must be below the plate's top");
-    const double r = 0.5 * standard.dot_base_mm;
-    const json& dots = getArray(l, lp, "dots");
-    for (size_t i = 0; i < dots.size(); ++i) {
-        const std::string dp = lp + ".dots[" + std::to_string(i) + "]";
-        if (!dots[i].is_array() || dots[i].size() != 2) fail(dp, "expected [x, y]");
-        const LegendDot d{toNumber(dots[i][0], dp + "[0]"), toNumber(dots[i][1], dp + "[1]")};
-        const double x = d.x_mm + out.x0_mm, y = d.y_mm + out.y0_mm;
-        if (!(x - r >= 0 && x + r <= out.plate_east_mm && y - r >= out.plate_south_mm && y + r <= out.plate_north_mm))
-            fail(dp, "the dot does not lie on the legend's plate");
-        layout.dots.push_back(d);
-    }
-    if (layout.dots.empty()) fail(join(lp, "dots"), "a legend has at least one dot");
-}
-
-// The tactile scale as placed (written since version 4), read as recorded.
-SceneScale scaleFrom(const json& j, const Scene& s) {
-    const std::string sp = "scale";
-    if (!j.is_object()) fail(sp, std::string("expected an object, found ") + typeName(j));
-    SceneScale sc;
-    sc.step = getPositive(j, sp, "step");
-    const json& given = member(j, sp, "step_given");
-    if (!given.is_boolean()) fail(join(sp, "step_given"), "expected true or false");
-    sc.step_given = given.get<bool>();
-    sc.x0_i = getInt(j, sp, "x0_i");
-    sc.y0_j = getInt(j, sp, "y0_j");
-    sc.y1_j = getInt(j, sp, "y1_j");
-    const json& x = getArray(j, sp, "x_mm");
-    if (x.size() != 3) fail(join(sp, "x_mm"), "expected [west, steps' west, east]");
-    sc.x0_mm = toNumber(x[0], sp + ".x_mm[0]");
-    sc.xs_mm = toNumber(x[1], sp + ".x_mm[1]");
-    sc.x1_mm = toNumber(x[2], sp + ".x_mm[2]");
-    if (!(sc.x0_mm < sc.xs_mm && sc.xs_mm < sc.x1_mm)) fail(join(sp, "x_mm"), "expected three increasing x");
-    std::tie(sc.y0_mm, sc.y1_mm) = getFinitePair(j, sp, "y_mm");
-    if (!(sc.y0_mm < sc.y1_mm)) fail(join(sp, "y_mm"), "expected south < north");
-    sc.foot_top_units = getInt(j, sp, "foot_top_units");
-    const json& steps = getArray(j, sp, "steps");
-    for (size_t i = 0; i < steps.size(); ++i) {
-        const std::string p = sp + ".steps[" + std::to_string(i) + "]";
-        if (!steps[i].is_array() || steps[i].size() != 4) fail(p, "expected [value, top_units, y_south_mm, y_north_mm]");
-        ScaleStep st;
-        st.value = toNumber(steps[i][0], p + "[0]");
-        st.top_units = toInt(steps[i][1], p + "[1]");
-        st.y_south_mm = toNumber(steps[i][2], p + "[2]");
-        st.y_north_mm = toNumber(steps[i][3], p + "[3]");
-        if (!(st.y_south_mm < st.y_north_mm) || st.y_south_mm < sc.y0_mm || st.y_north_mm > sc.y1_mm)
-            fail(p, "the step does not lie on the scale");
-        sc.steps.push_back(st);
-    }
-    if (sc.steps.empty()) fail(join(sp, "steps"), "a scale has at least one step");
-    auto keptList = [&](const char* key) {
-        std::vector<int32_t> out;
-        const json& a = getArray(j, sp, key);
-        for (size_t i = 0; i < a.size(); ++i) {
-            const std::string p = sp + "." + key + "[" + std::to_string(i) + "]";
-            const int64_t k = toInt(a[i], p);
-            if (k < 0 || size_t(k) >= s.keptCount()) fail(p, "is not the index of a cell");
-            out.push_back(int32_t(k));
-        }
-        return out;
-    };
-    sc.contacts = keptList("contacts");
-    sc.fillers = keptList("fillers");
-    return sc;
-}
-
-// Everything but the cells.
-json scaleJson(const Scene& s) {
-    const SceneScale& sc = *s.scale;
-    json steps = json::array();
-    for (const ScaleStep& st : sc.steps) steps.push_back({st.value, st.top_units, st.y_south_mm, st.y_north_mm});
-    return {{"step", sc.step},         {"step_given", sc.step_given}, {"x0_i", sc.x0_i},
-            {"y0_j", sc.y0_j},         {"y1_j", sc.y1_j},             {"x_mm", {sc.x0_mm, sc.xs_mm, sc.x1_mm}},
-            {"y_mm", {sc.y0_mm, sc.y1_mm}}, {"foot_top_units", sc.foot_top_units},
-            {"steps", steps},          {"contacts", sc.contacts}, {"fillers", sc.fillers}};
-}
-
 json sceneHeadJson(const Scene& s) {
     const SceneParams& p = s.params;
     json hull = json::array();
     for (const LatticePoint& q : s.hull) hull.push_back({q.i, q.j});
-    return {
+    json head = {
         {"format", kSceneJsonFormat},
         {"version", kSceneJsonVersion},
         {"grid", {{"cols", s.grid.cols}, {"rows", s.grid.rows}}},
@@ -570,12 +229,17 @@ json sceneHeadJson(const Scene& s) {
         {"marks", marksJson(s.marks)},
         {"faces", facesJson(s)},
         {"shapes", shapesJson(s)},
-        // The braille legend and the tactile scale as placed: read back as recorded.
-        {"legend", s.legend ? legendJson(s) : json(nullptr)},
-        {"scale", s.scale ? scaleJson(s) : json(nullptr)},
         {"hull", hull},
         {"notes", s.notes},
     };
+    // The features' own records (gen/model/feature_records.h), null when
+    // the Scene has none.
+    for (const FeatureRecord& r : featureRecords()) {
+        json* at = &head;
+        for (const std::string& key : recordPath(r)) at = &(*at)[key];
+        *at = r.write(s);
+    }
+    return head;
 }
 }  // namespace
 
@@ -880,32 +544,15 @@ Scene sceneFromJson(const json& j) {
     }
     if (s.marks.triangle && size_t(s.marks.triangle->anchor) >= s.keptCount())
         fail("marks.triangle.anchor", "is not the index of a cell");
-    if (s.marks.tab) {
-        try {
-            checkTab(s, *s.marks.tab);
-        } catch (const InputError& e) {
-            fail("marks.tab", e.what());
-        }
-    }
     if (version >= 5) readFaces(j.contains("faces") ? j["faces"] : json(nullptr), s);
     else buildMarkFaces(s);  // older sidecars: the faces are built again from the marks
     readShapes(j, cells, s, version);
-    if (j.contains("legend") && !j["legend"].is_null()) {
-        // Up to version 4 the sidecar held the legend as asked for, and reading
-        // placed and translated it again (with whatever braille table was
-        // installed): such a sidecar cannot say what was printed.
-        if (version < 5)
-            fail("legend", "this sidecar (version " + std::to_string(version) +
-                               ") records the braille legend as asked for, not as placed; make the model and its "
-                               "sidecar again with this tsf (tsf gen ... --title ...)");
-        SceneLegend legend;
-        readLegend(j["legend"], s, legend, s.params.legend);
-        s.legend = std::move(legend);
-    }
-    if (j.contains("scale") && !j["scale"].is_null()) {
-        s.scale = scaleFrom(j["scale"], s);
-        s.params.scale.wanted = true;
-        if (s.scale->step_given) s.params.scale.step = s.scale->step;
+    // The features' own records (gen/model/feature_records.h), as placed.
+    for (const FeatureRecord& r : featureRecords()) {
+        const json* at = &j;
+        for (const std::string& key : recordPath(r))
+            at = at->is_object() && at->contains(key) ? &(*at)[key] : nullptr;
+        if (at && !at->is_null()) r.read(*at, r.path, int(version), s);
     }
     return s;
 }

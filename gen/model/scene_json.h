@@ -54,6 +54,9 @@
 //           shape (only a tilted or structural cell): {top_dz [6], centre_dz,
 //                  bottom_dz [6], bottom_centre_dz (mirrored), slope [x, y] mm/mm,
 //                  structural}}, ...]   -- ordered by (row, col)
+// marks.tab, legend and scale are the features' own records, each written
+// and read by its feature (gen/model/feature_records.h: the one list); the
+// sidecar places them at those members and names no feature.
 // Heights (top, bottom, floor_units, ...) are integers in z_snap_mm units;
 // lengths are millimetres; doubles are written in their shortest form that
 // reads back to the same bits, so a Scene round-trips exactly.

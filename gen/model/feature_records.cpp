@@ -1,0 +1,33 @@
+#include "gen/model/feature_records.h"
+
+#include "gen/model/features/legend_record.h"
+#include "gen/model/features/orientation_tab_record.h"
+#include "gen/model/features/scale_record.h"
+
+namespace tsf {
+
+const std::vector<FeatureRecord>& featureRecords() {
+    static const std::vector<FeatureRecord> records = {
+        {"marks.tab", tabRecord, readTabRecord},
+        {"legend", legendRecord, readLegendRecord},
+        {"scale", scaleRecord, readScaleRecord},
+    };
+    return records;
+}
+
+std::vector<std::string> recordPath(const FeatureRecord& record) {
+    std::vector<std::string> keys;
+    std::string key;
+    for (const char* c = record.path; *c; ++c) {
+        if (*c == '.') {
+            keys.push_back(key);
+            key.clear();
+        } else {
+            key += *c;
+        }
+    }
+    keys.push_back(key);
+    return keys;
+}
+
+}  // namespace tsf

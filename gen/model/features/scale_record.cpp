@@ -1,0 +1,85 @@
+// The tactile scale's record in the scene sidecar. See scale_record.h.
+#include "gen/model/features/scale_record.h"
+
+#include <tuple>
+
+#include "gen/model/sidecar_fields.h"
+
+namespace tsf {
+
+using namespace sidecar;
+
+namespace {
+
+// The tactile scale as placed (written since version 4), read as recorded.
+SceneScale scaleFrom(const json& j, const std::string& sp, const Scene& s) {
+    if (!j.is_object()) fail(sp, std::string("expected an object, found ") + typeName(j));
+    SceneScale sc;
+    sc.step = getPositive(j, sp, "step");
+    const json& given = member(j, sp, "step_given");
+    if (!given.is_boolean()) fail(join(sp, "step_given"), "expected true or false");
+    sc.step_given = given.get<bool>();
+    sc.x0_i = getInt(j, sp, "x0_i");
+    sc.y0_j = getInt(j, sp, "y0_j");
+    sc.y1_j = getInt(j, sp, "y1_j");
+    const json& x = getArray(j, sp, "x_mm");
+    if (x.size() != 3) fail(join(sp, "x_mm"), "expected [west, steps' west, east]");
+    sc.x0_mm = toNumber(x[0], sp + ".x_mm[0]");
+    sc.xs_mm = toNumber(x[1], sp + ".x_mm[1]");
+    sc.x1_mm = toNumber(x[2], sp + ".x_mm[2]");
+    if (!(sc.x0_mm < sc.xs_mm && sc.xs_mm < sc.x1_mm)) fail(join(sp, "x_mm"), "expected three increasing x");
+    std::tie(sc.y0_mm, sc.y1_mm) = getFinitePair(j, sp, "y_mm");
+    if (!(sc.y0_mm < sc.y1_mm)) fail(join(sp, "y_mm"), "expected south < north");
+    sc.foot_top_units = getInt(j, sp, "foot_top_units");
+    const json& steps = getArray(j, sp, "steps");
+    for (size_t i = 0; i < steps.size(); ++i) {
+        const std::string p = sp + ".steps[" + std::to_string(i) + "]";
+        if (!steps[i].is_array() || steps[i].size() != 4) fail(p, "expected [value, top_units, y_south_mm, y_north_mm]");
+        ScaleStep st;
+        st.value = toNumber(steps[i][0], p + "[0]");
+        st.top_units = toInt(steps[i][1], p + "[1]");
+        st.y_south_mm = toNumber(steps[i][2], p + "[2]");
+        st.y_north_mm = toNumber(steps[i][3], p + "[3]");
+        if (!(st.y_south_mm < st.y_north_mm) || st.y_south_mm < sc.y0_mm || st.y_north_mm > sc.y1_mm)
+            fail(p, "the step does not lie on the scale");
+        sc.steps.push_back(st);
+    }
+    if (sc.steps.empty()) fail(join(sp, "steps"), "a scale has at least one step");
+    auto keptList = [&](const char* key) {
+        std::vector<int32_t> out;
+        const json& a = getArray(j, sp, key);
+        for (size_t i = 0; i < a.size(); ++i) {
+            const std::string p = sp + "." + key + "[" + std::to_string(i) + "]";
+            const int64_t k = toInt(a[i], p);
+            if (k < 0 || size_t(k) >= s.keptCount()) fail(p, "is not the index of a cell");
+            out.push_back(int32_t(k));
+        }
+        return out;
+    };
+    sc.contacts = keptList("contacts");
+    sc.fillers = keptList("fillers");
+    return sc;
+}
+
+
+}  // namespace
+
+json scaleRecord(const Scene& s) {
+    if (!s.scale) return nullptr;
+    const SceneScale& sc = *s.scale;
+    json steps = json::array();
+    for (const ScaleStep& st : sc.steps) steps.push_back({st.value, st.top_units, st.y_south_mm, st.y_north_mm});
+    return {{"step", sc.step},         {"step_given", sc.step_given}, {"x0_i", sc.x0_i},
+            {"y0_j", sc.y0_j},         {"y1_j", sc.y1_j},             {"x_mm", {sc.x0_mm, sc.xs_mm, sc.x1_mm}},
+            {"y_mm", {sc.y0_mm, sc.y1_mm}}, {"foot_top_units", sc.foot_top_units},
+            {"steps", steps},          {"contacts", sc.contacts}, {"fillers", sc.fillers}};
+}
+
+
+void readScaleRecord(const json& record, const std::string& path, int /*version*/, Scene& s) {
+    s.scale = scaleFrom(record, path, s);
+    s.params.scale.wanted = true;
+    if (s.scale->step_given) s.params.scale.step = s.scale->step;
+}
+
+}  // namespace tsf

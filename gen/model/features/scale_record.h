@@ -1,0 +1,23 @@
+// The tactile scale in the scene sidecar (gen/model/scene_json.h), as placed
+// (written since version 4), read as recorded.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/model/scene.h"
+
+namespace tsf {
+
+/// {step, step_given, x0_i, y0_j, y1_j, x_mm [west, steps' west, east],
+/// y_mm [south, north], foot_top_units, steps [[value, top_units,
+/// y_south_mm, y_north_mm], ...], contacts [kept index], fillers [kept
+/// index]}; null without a scale.
+nlohmann::json scaleRecord(const Scene& scene);
+
+/// Reads a record scaleRecord wrote (FeatureRecord::read,
+/// gen/model/feature_records.h). Throws InputError naming the member's path.
+void readScaleRecord(const nlohmann::json& record, const std::string& path, int version, Scene& scene);
+
+}  // namespace tsf
