@@ -29,6 +29,11 @@ std::vector<ProbeSet> sceneProbes(const Scene& scene) {
     return out;
 }
 
+void checkAttachments(const Scene& scene) {
+    checkScale(scene);
+    checkTabInScene(scene);
+}
+
 std::vector<BottomHole> sceneBottomHoles(const Scene& scene) { return halfBottomHoles(scene); }
 
 std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm) {

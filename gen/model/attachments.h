@@ -25,6 +25,10 @@ std::vector<BottomHole> sceneBottomHoles(const Scene& scene);
 /// sets without probes are left out.
 std::vector<ProbeSet> sceneProbes(const Scene& scene);
 
+/// Checks what the mesher relies on to join each attachment without a
+/// boolean operation (each feature's own check). Throws InputError.
+void checkAttachments(const Scene& scene);
+
 /// The heights (z units) of the attachments' tops at (x, y) mm, the model
 /// frame: what a probe from above may meet there besides the cells. Empty
 /// beside every attachment.

@@ -360,6 +360,19 @@ std::optional<Attachment> tabAttachment(const Scene& s, Assembly assembly) {
     return a;
 }
 
+void checkTabInScene(const Scene& s) {
+    if (!s.marks.tab) return;
+    const OrientationTab& t = *s.marks.tab;
+    checkTab(s, t);
+    // Each wall it covers holds its whole band, so the pillar's wall goes on above and below it.
+    for (const auto& [k, e] : t.touched)
+        for (const int c : {e, (e + 1) % kHexCorners})
+            if ((!s.drawn_by_face.empty() && s.drawn_by_face[size_t(k)]) || cornerBottom(s, size_t(k), c) > t.bottom_units ||
+                cornerTop(s, size_t(k), c) < t.top_units)
+                throw InputError("scene: orientation tab: it stands against cell (" + std::to_string(s.col[size_t(k)]) +
+                                 ", " + std::to_string(s.row[size_t(k)]) + "), whose wall does not hold its z band");
+}
+
 void checkTab(const Scene& s, const OrientationTab& t) {
     auto bad = [](const std::string& why) { throw InputError("the orientation tab " + why); };
     if (t.outline.size() < 4 || t.joined.size() != t.outline.size()) bad("has no outline, or joined flags that do not match it");

@@ -109,6 +109,11 @@ std::optional<Attachment> tabAttachment(const Scene& scene, Assembly assembly);
 /// top: no deeper). Empty without a tab.
 std::vector<SurfaceProbe> tabProbes(const Scene& scene);
 
+/// Checks the Scene's tab (none: nothing): checkTab, and every wall it
+/// covers holds its whole z band. Throws InputError ("scene: orientation
+/// tab: ...").
+void checkTabInScene(const Scene& scene);
+
 /// Checks a tab read from a file against the Scene: outline, joined edges,
 /// touched cells and their lattice corners agree. Throws InputError saying what does not.
 void checkTab(const Scene& scene, const OrientationTab& tab);

@@ -493,4 +493,42 @@ ProbeSet scaleProbes(const Scene& s) {
     return set;
 }
 
+// The tactile scale as placeScale leaves it (gen/model/features/scale.h): what the mesher
+// relies on to join it without a boolean operation.
+void checkScale(const Scene& s) {
+    if (!s.scale) return;
+    const auto fail = [](const std::string& what) { throw InputError("scene: " + what); };
+    const auto cellName = [&](size_t k) {
+        return "cell (" + std::to_string(s.col[k]) + ", " + std::to_string(s.row[k]) + ")";
+    };
+    const SceneScale& sc = *s.scale;
+    if (s.params.bottom != Bottom::Flat) fail("scale: a tactile scale stands on a flat model only");
+    if (sc.steps.empty()) fail("scale: no steps");
+    if (sc.contacts.empty() || sc.fillers.size() + 1 != sc.contacts.size())
+        fail("scale: it must touch at least one cell, with one filler between each two contacts");
+    if (!(sc.x0_mm < sc.xs_mm && sc.xs_mm < sc.x1_mm && sc.y0_mm < sc.y1_mm)) fail("scale: its footprint is empty");
+    if (sc.foot_top_units != s.floor_units) fail("scale: its foot's top must be the floor");
+    int64_t below = sc.foot_top_units;
+    double south = sc.y0_mm;
+    for (const ScaleStep& st : sc.steps) {
+        if (!(st.top_units > below)) fail("scale: every step must stand above the one before it (and the floor)");
+        if (!(st.y_south_mm == south && st.y_north_mm > st.y_south_mm))
+            fail("scale: the steps must follow one another from y0 northwards");
+        below = st.top_units;
+        south = st.y_north_mm;
+    }
+    if (south != sc.y1_mm) fail("scale: the last step must end at y1");
+    for (const std::vector<int32_t>* list : {&sc.contacts, &sc.fillers})
+        for (const int32_t k : *list) {
+            if (k < 0 || size_t(k) >= s.keptCount()) fail("scale: a touched cell is not a kept cell");
+            for (int e = 0; e < kHexCorners; ++e)
+                if (cornerTop(s, size_t(k), e) < s.floor_units)
+                    fail("scale: " + cellName(size_t(k)) + " is below the floor where the foot touches it");
+        }
+    for (const int32_t k : sc.contacts)
+        if (hexCentre(s.grid, s.col[size_t(k)], s.row[size_t(k)]).i + 1 != sc.x0_i)
+            fail("scale: " + cellName(size_t(k)) + " does not touch the foot's west face");
+}
+
+
 }  // namespace tsf

@@ -104,6 +104,12 @@ JoinedBody meshScaleBody(const Scene& scene, bool joined);
 /// above one, and each filler's east edge (0). None without a scale.
 std::optional<Attachment> scaleAttachment(const Scene& scene, Assembly assembly);
 
+/// Checks the scale as placeScale leaves it (what the mesher relies on to
+/// join it without a boolean operation): steps above one another from y0
+/// to y1, contacts and fillers kept cells that rise to the floor. Throws
+/// InputError ("scene: scale: ..."); nothing without a scale.
+void checkScale(const Scene& scene);
+
 /// The scale's read-back: the foot's floor strip and the middle of every
 /// tread. Empty without a scale.
 ProbeSet scaleProbes(const Scene& scene);
