@@ -1,9 +1,8 @@
 #include "app/gen_summary.h"
 
 #include "app/printer_fit.h"
-#include "gen/model/features/braille.h"
-#include "gen/model/features/halves.h"
-#include "gen/model/features/orientation_tab.h"
+#include "gen/model/attachments.h"
+#include "gen/model/feature_records.h"
 #include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
 
@@ -42,8 +41,8 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     for (int64_t t : s.top) zmax = std::max(zmax, s.zMm(t));
     j["size_mm"] = {gridWidth(s.grid, s.pitch_mm), gridDepth(s.grid, s.pitch_mm), zmax};
     if (s.keptCount() > 0) {
-        // The footprint of everything placed: pillars, tab, scale, legend plate.
-        const SceneFootprint f = sceneFootprint(s);
+        // The footprint of everything placed: the pillars and every attachment.
+        const BoxMm f = sceneFootprint(s);
         j["footprint_mm"] = {{"west", f.x0}, {"east", f.x1}, {"south", f.y0}, {"north", f.y1}};
     }
     j["z_snap_mm"] = s.z_snap_mm;
@@ -53,21 +52,6 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     j["cull"] = toString(s.params.cull);
     j["bottom"] = toString(s.params.bottom);
     if (s.params.bottom == Bottom::Mirrored) j["mirror_thickness_mm"] = s.zMm(s.mirror_thickness_units);
-    if (s.halves) {
-        const SceneHalves& h = *s.halves;
-        nlohmann::json holes = nlohmann::json::array();
-        for (const auto& [x, y] : holeCentresMm(s)) holes.push_back({x, y});
-        j["halves"] = {{"cut_z_mm", s.zMm(h.split_units)},
-                       {"slab_mm", {s.zMm(h.slab_bottom_units), s.zMm(h.slab_top_units)}},
-                       {"thickness_grown_mm", s.zMm(h.thickness_grown_units)},
-                       {"hole_centres_mm", holes},
-                       {"hole_diameter_mm", 2 * h.pins.hole_radius_mm},
-                       {"hole_depth_mm", s.zMm(h.hole_depth_units)},
-                       {"hole_tip_mm", s.zMm(h.hole_apex_units)},
-                       {"pin_diameter_mm", 2 * h.pins.pin_radius_mm},
-                       {"pin_length_mm", h.pins.pin_length_mm},
-                       {"clearance_per_side_mm", kPinClearanceMm}};
-    }
     j["one_pillar_per_value"] = s.one_to_one;
     if (s.params.cull == Cull::Concave)
         j["concave"] = {{"cells_convex_hull", s.cells_convex}, {"volume_saved_mm3", s.volume_saved_mm3}};
@@ -92,58 +76,14 @@ nlohmann::json sceneFactsJson(const Scene& s) {
                                             planarY(s.marks.triangle->corner, s.pitch_mm)}}};
     else
         marks["triangle"] = nullptr;
-    if (s.marks.tab) {
-        const OrientationTab& t = *s.marks.tab;
-        const double w = t.x_east_mm - t.x_west_mm, d = t.y_north_mm - t.y_south_mm;
-        nlohmann::json tab = {{"box_mm", {{"west", t.x_west_mm}, {"east", t.x_east_mm}, {"south", t.y_south_mm}, {"north", t.y_north_mm}}},
-                              {"size_mm", {w, d, s.zMm(t.top_units - t.bottom_units)}},
-                              {"z_mm", {s.zMm(t.bottom_units), s.zMm(t.top_units)}},
-                              {"area_mm2", tabAreaMm2(t)},
-                              {"cells_touched", t.touched.size()}};
-        tab["notch"] = t.has_notch ? nlohmann::json{{"depth_mm", t.notch_depth_mm}, {"width_mm", t.notch_width_mm},
-                                                    {"opening_deg", t.notch_opening_deg},
-                                                    {"corner_mm", {t.x_west_mm, t.y_south_mm}}}
-                                   : nlohmann::json(nullptr);
-        tab["triangle"] = t.has_triangle ? nlohmann::json{{"leg_x_mm", t.triangle[1].x_mm - t.triangle[0].x_mm},
-                                                          {"leg_y_mm", t.triangle[2].y_mm - t.triangle[0].y_mm},
-                                                          {"height_mm", s.zMm(t.triangle_raise_units)},
-                                                          {"underside", t.under_triangle},
-                                                          {"corner_mm", {t.triangle[0].x_mm, t.triangle[0].y_mm}}}
-                                         : nlohmann::json(nullptr);
-        marks["tab"] = tab;
-    } else {
-        marks["tab"] = nullptr;
-    }
     j["marks"] = marks;
-    if (s.legend) {
-        const SceneLegend& l = *s.legend;
-        const BrailleStandard& st = l.layout.standard;
-        size_t cells = 0;
-        for (const auto& line : l.layout.cells) cells += line.size();
-        nlohmann::json lines = nlohmann::json::array();
-        for (size_t k = 0; k < l.layout.text.size(); ++k)
-            lines.push_back({{"text", l.layout.text[k]}, {"braille", brailleUnicode(l.layout.cells[k])}});
-        j["legend"] = {{"lines", lines}, {"table", s.params.legend.table}, {"cells", cells}, {"dots", l.layout.dots.size()},
-                       {"plate_mm", {{0, l.plate_south_mm}, {l.plate_east_mm, l.plate_north_mm}}},
-                       {"standard", st.name}, {"dot_base_mm", st.dot_base_mm}, {"dot_height_mm", st.dot_height_mm},
-                       {"dot_pitch_mm", st.dot_pitch_mm}, {"cell_pitch_mm", st.cell_pitch_mm},
-                       {"line_pitch_mm", st.line_pitch_mm}};
-    } else {
-        j["legend"] = nullptr;
-    }
-    if (s.scale) {
-        const SceneScale& sc = *s.scale;
-        nlohmann::json steps = nlohmann::json::array();
-        for (const ScaleStep& st : sc.steps)
-            steps.push_back({{"value", st.value}, {"top_mm", s.zMm(st.top_units)},
-                             {"height_above_floor_mm", s.zMm(st.top_units - sc.foot_top_units)}});
-        j["scale"] = {{"step", sc.step}, {"step_given", sc.step_given}, {"floor_value", s.mapping.baseline},
-                      {"floor_mm", s.zMm(sc.foot_top_units)}, {"steps", steps},
-                      {"footprint_mm", {{sc.x0_mm, sc.y0_mm}, {sc.x1_mm, sc.y1_mm}}},
-                      {"tread_mm", {sc.x1_mm - sc.xs_mm, sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm}},
-                      {"contacts", sc.contacts.size()}};
-    } else {
-        j["scale"] = nullptr;
+    // The features' own facts (gen/model/feature_records.h).
+    for (const FeatureFacts& f : featureFacts()) {
+        nlohmann::json value = f.json(s);
+        if (value.is_null() && !f.listed_when_absent) continue;
+        nlohmann::json* at = &j;
+        for (const std::string& key : factsPath(f)) at = &(*at)[key];
+        *at = std::move(value);
     }
     j["notes"] = s.notes;
     return j;
@@ -160,8 +100,8 @@ std::string formatSceneFacts(const Scene& s) {
       << toString(s.params.cull) << ")\n";
     o << "  size      " << formatFixed(w, 1) << " x " << formatFixed(d, 1) << " x " << formatFixed(zmax, 1)
       << " mm (grid box), hexagons " << formatFixed(s.pitch_mm, 2) << " mm across flats";
-    if (s.keptCount() > 0 && (s.marks.tab || s.scale || s.legend)) {
-        const SceneFootprint f = sceneFootprint(s);
+    if (s.keptCount() > 0 && !attachmentBoxes(s).empty()) {
+        const BoxMm f = sceneFootprint(s);
         o << "; " << formatFixed(f.x1 - f.x0, 1) << " x " << formatFixed(f.y1 - f.y0, 1)
           << " mm with what stands beside the pillars";
     }
@@ -184,29 +124,6 @@ std::string formatSceneFacts(const Scene& s) {
           << " mm east (x) and " << formatFixed(t.leg_y_mm, 1) << " mm north (y), right angle at ("
           << formatFixed(planarX(t.corner, s.pitch_mm), 1) << ", " << formatFixed(planarY(t.corner, s.pitch_mm), 1) << ") mm\n";
     }
-    if (s.marks.tab) {
-        const OrientationTab& t = *s.marks.tab;
-        o << "  tab       " << formatFixed(t.x_east_mm - t.x_west_mm, 1) << " x " << formatFixed(t.y_north_mm - t.y_south_mm, 1)
-          << " x " << formatFixed(s.zMm(t.top_units - t.bottom_units), 2) << " mm (" << formatFixed(tabAreaMm2(t), 0)
-          << " mm^2) west of the pillars, "
-          << (t.bottom_units == 0 ? std::string("from the bed to the floor")
-                                  : "from z = " + formatFixed(s.zMm(t.bottom_units), 2) + " to " + formatFixed(s.zMm(t.top_units), 2) + " mm")
-          << ", corner (" << formatFixed(t.x_west_mm, 1) << ", " << formatFixed(t.y_south_mm, 1)
-          << ") mm: it carries the marks and covers no data cell\n";
-        if (t.has_notch)
-            o << "  notch     V " << formatFixed(t.notch_depth_mm, 1) << " mm deep, " << formatFixed(t.notch_width_mm, 1)
-              << " mm wide, " << formatFixed(t.notch_opening_deg, 0) << " degrees, at the model's south-west corner\n";
-        if (t.has_triangle)
-            o << "  triangle  raised " << formatFixed(s.zMm(t.triangle_raise_units), 2) << " mm on the tab, legs "
-              << formatFixed(t.triangle[1].x_mm - t.triangle[0].x_mm, 1) << " mm east (x) and "
-              << formatFixed(t.triangle[2].y_mm - t.triangle[0].y_mm, 1) << " mm north (y), right angle at ("
-              << formatFixed(t.triangle[0].x_mm, 1) << ", " << formatFixed(t.triangle[0].y_mm, 1)
-              << ") mm: turn the model so the notch is at your near left, and the longer leg runs to your right"
-              << (t.under_triangle ? "; the same triangle on the tab's underside has its longer leg to your left when the "
-                                     "model is turned over, as the data is mirrored there"
-                                   : "")
-              << "\n";
-    }
     if (s.params.tilt != TiltSource::None)
         o << "  tilt      " << toString(s.params.tilt) << " x " << formatSignificant(s.params.steepness, 3) << ": "
           << s.shapes.cells_tilted << " tops tilted, at most " << formatSignificant(s.params.max_slope_deg, 3)
@@ -217,52 +134,7 @@ std::string formatSceneFacts(const Scene& s) {
         o << "  texture   " << s.shapes.cells_textured << " structural cells (kept only to hold the model together, "
           << "no data) carry a cone-shaped dimple " << formatFixed(s.zMm(s.shapes.dimple_units), 2)
           << " mm deep at the centre\n";
-    if (s.legend) {
-        const SceneLegend& l = *s.legend;
-        const BrailleStandard& st = l.layout.standard;
-        o << "  legend    braille (" << s.params.legend.table << ") on a plate " << formatFixed(l.plate_east_mm, 1) << " x "
-          << formatFixed(l.plate_north_mm - l.plate_south_mm, 1) << " mm north of the pillars, ";
-        if (s.params.bottom == Bottom::Mirrored)
-            o << "from z = " << formatFixed(s.zMm(l.plate_bottom_units), 2) << " to " << formatFixed(s.zMm(l.plate_top_units), 2)
-              << " mm (the band the pillars it stands against share), ";
-        o << l.layout.dots.size()
-          << " dots " << formatFixed(st.dot_base_mm, 2) << " mm across, " << formatFixed(st.dot_height_mm, 2) << " mm high (";
-        if (s.params.legend.layer_mm > 0)
-            o << formatSignificant(st.dot_height_mm / s.params.legend.layer_mm, 3) << " whole layers of "
-              << formatSignificant(s.params.legend.layer_mm, 3) << " mm; ";
-        o << st.name << ")\n";
-        if (s.params.legend.layer_mm <= 0)
-            o << "  note      braille dots " << formatFixed(st.dot_height_mm, 2) << " mm high print "
-              << formatFixed(printedDotHeightMm(st.dot_height_mm, 0.2), 2)
-              << " mm at 0.2 mm layers: give --layer (your printer's layer height) and the dots are made whole layers\n";
-        for (size_t k = 0; k < l.layout.text.size(); ++k)
-            o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
-    }
-    if (s.scale) {
-        const SceneScale& sc = *s.scale;
-        std::ostringstream values;
-        for (size_t k = 0; k < sc.steps.size(); ++k) values << (k ? ", " : "") << formatSignificant(sc.steps[k].value, 6);
-        o << "  scale     " << sc.steps.size() << " steps every " << formatSignificant(sc.step, 6) << (sc.step_given ? "" : " (chosen)")
-          << " east of the pillars, lowest in the south, on a foot at the floor (= " << formatSignificant(s.mapping.baseline, 6)
-          << "): " << values.str() << "; treads " << formatFixed(sc.x1_mm - sc.xs_mm, 1) << " x "
-          << formatFixed(sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm, 1) << " mm, rising "
-          << formatFixed(s.zMm(sc.steps.empty() ? 0 : sc.steps[0].top_units - sc.foot_top_units), 2) << " mm to "
-          << formatFixed(s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units), 2)
-          << " mm above the floor\n";
-    }
-    if (s.halves) {
-        const SceneHalves& h = *s.halves;
-        o << "  halves    cut at z = " << formatFixed(s.zMm(h.split_units), 2) << " mm, the middle of the slab every pillar "
-          << "crosses (" << formatFixed(s.zMm(h.slab_bottom_units), 2) << " to " << formatFixed(s.zMm(h.slab_top_units), 2)
-          << " mm";
-        if (h.thickness_grown_units > 0)
-            o << "; the thickness grew by " << formatFixed(s.zMm(h.thickness_grown_units), 2) << " mm to make room for the pins";
-        o << ")\n            " << h.hole_centres.size() << " pin holes " << formatFixed(2 * h.pins.hole_radius_mm, 2)
-          << " mm across, " << formatFixed(s.zMm(h.hole_apex_units), 2) << " mm deep to the cone's tip, at";
-        for (const auto& [x, y] : holeCentresMm(s)) o << " (" << formatFixed(x, 1) << ", " << formatFixed(y, 1) << ")";
-        o << " mm; pins " << formatFixed(2 * h.pins.pin_radius_mm, 1) << " mm x " << formatFixed(h.pins.pin_length_mm, 1)
-          << " mm, " << formatFixed(kPinClearanceMm, 2) << " mm clearance per side\n";
-    }
+    for (const FeatureFacts& f : featureFacts()) o << f.lines(s);
     for (const std::string& n : s.notes) o << "  note      " << n << "\n";
     return o.str();
 }

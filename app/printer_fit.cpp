@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "app/bed_size.h"
+#include "gen/model/attachments.h"
 #include "gen/util/error.h"
 #include "gen/field/resample.h"
 #include "gen/model/features/orientation_tab.h"
@@ -98,27 +99,11 @@ std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer) {
            " mm): pillars print as blobs of perimeters (a larger --cell, or fewer --bins)";
 }
 
-SceneFootprint sceneFootprint(const Scene& s) {
-    SceneFootprint f;
-    auto add = [&f](double x0, double x1, double y0, double y1) {
-        f.x0 = std::min(f.x0, x0), f.x1 = std::max(f.x1, x1), f.y0 = std::min(f.y0, y0), f.y1 = std::max(f.y1, y1);
-    };
-    for (size_t k = 0; k < s.keptCount(); ++k) {
-        const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
-        add(latticeX({c.i - 1, 0}, s.pitch_mm), latticeX({c.i + 1, 0}, s.pitch_mm), latticeY({0, c.j - 2}, s.pitch_mm),
-            latticeY({0, c.j + 2}, s.pitch_mm));
-    }
-    if (s.marks.tab) add(s.marks.tab->x_west_mm, s.marks.tab->x_east_mm, s.marks.tab->y_south_mm, s.marks.tab->y_north_mm);
-    if (s.scale) add(s.scale->x0_mm, s.scale->x1_mm, s.scale->y0_mm, s.scale->y1_mm);
-    if (s.legend) add(s.legend->x0_mm, s.legend->plate_east_mm, s.legend->plate_south_mm, s.legend->plate_north_mm);
-    return f;
-}
-
 bool shrinkFitToBed(const Scene& scene, const PrinterSpec& printer, GenOptions& gen) {
     if (printer.bed.empty() || gen.scene.pitch_mm > 0 || scene.keptCount() == 0) return false;
     const BedSize bed = parseBedSize(printer.bed, "--bed", /*need_height=*/false);
     const double w = bed.width_mm - 2 * kBedMarginMm, d = bed.depth_mm - 2 * kBedMarginMm;
-    const SceneFootprint f = sceneFootprint(scene);
+    const BoxMm f = sceneFootprint(scene);
     const double over_w = f.x1 - f.x0 - w, over_d = f.y1 - f.y0 - d;
     if (over_w <= 0 && over_d <= 0) return false;
     // Round the overflow up to 0.01 mm so the next fit lands inside.

@@ -51,13 +51,6 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
 /// nozzle widths; "" when they are not or no nozzle was given.
 std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer);
 
-/// x, y extent (mm) of everything a Scene places: the pillars, the
-/// orientation tab, the tactile scale, the legend's plate.
-struct SceneFootprint {
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-};
-SceneFootprint sceneFootprint(const Scene& scene);
-
 /// With --bed and the cell left to tsf: when what stands beside the pillars
 /// (the legend's plate, the tab, the scale) takes the model past the bed,
 /// shrinks the fit box by the overflow (gen.scene.fit_width_mm, fit_depth_mm)

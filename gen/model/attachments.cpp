@@ -1,5 +1,6 @@
 #include "gen/model/attachments.h"
 
+#include <algorithm>
 #include <optional>
 
 #include "gen/model/features/halves.h"
@@ -32,6 +33,27 @@ std::vector<ProbeSet> sceneProbes(const Scene& scene) {
 void checkAttachments(const Scene& scene) {
     checkScale(scene);
     checkTabInScene(scene);
+}
+
+std::vector<BoxMm> attachmentBoxes(const Scene& scene) {
+    std::vector<BoxMm> boxes;
+    for (const auto& box : {tabBoxMm(scene), legendBoxMm(scene), scaleBoxMm(scene)})
+        if (box) boxes.push_back(*box);
+    return boxes;
+}
+
+BoxMm sceneFootprint(const Scene& s) {
+    BoxMm f{1e300, -1e300, 1e300, -1e300};
+    auto add = [&f](const BoxMm& b) {
+        f.x0 = std::min(f.x0, b.x0), f.x1 = std::max(f.x1, b.x1), f.y0 = std::min(f.y0, b.y0), f.y1 = std::max(f.y1, b.y1);
+    };
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
+        add({latticeX({c.i - 1, 0}, s.pitch_mm), latticeX({c.i + 1, 0}, s.pitch_mm), latticeY({0, c.j - 2}, s.pitch_mm),
+             latticeY({0, c.j + 2}, s.pitch_mm)});
+    }
+    for (const BoxMm& b : attachmentBoxes(s)) add(b);
+    return f;
 }
 
 std::vector<BottomHole> sceneBottomHoles(const Scene& scene) { return halfBottomHoles(scene); }

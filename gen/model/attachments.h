@@ -29,6 +29,14 @@ std::vector<ProbeSet> sceneProbes(const Scene& scene);
 /// boolean operation (each feature's own check). Throws InputError.
 void checkAttachments(const Scene& scene);
 
+/// The x, y box (mm) of each attachment (what stands beside the pillars:
+/// the tab, the legend's plate, the scale); empty without any.
+std::vector<BoxMm> attachmentBoxes(const Scene& scene);
+
+/// The x, y extent (mm) of everything the Scene places: the pillars and
+/// every attachment. For a Scene without kept cells, an empty box (x0 > x1).
+BoxMm sceneFootprint(const Scene& scene);
+
 /// The heights (z units) of the attachments' tops at (x, y) mm, the model
 /// frame: what a probe from above may meet there besides the cells. Empty
 /// beside every attachment.

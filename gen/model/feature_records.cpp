@@ -1,5 +1,6 @@
 #include "gen/model/feature_records.h"
 
+#include "gen/model/features/halves_facts.h"
 #include "gen/model/features/legend_record.h"
 #include "gen/model/features/orientation_tab_record.h"
 #include "gen/model/features/scale_record.h"
@@ -15,10 +16,20 @@ const std::vector<FeatureRecord>& featureRecords() {
     return records;
 }
 
-std::vector<std::string> recordPath(const FeatureRecord& record) {
+const std::vector<FeatureFacts>& featureFacts() {
+    static const std::vector<FeatureFacts> facts = {
+        {"marks.tab", true, tabFactsJson, tabFactsLines},
+        {"legend", true, legendFactsJson, legendFactsLines},
+        {"scale", true, scaleFactsJson, scaleFactsLines},
+        {"halves", false, halvesFactsJson, halvesFactsLines},
+    };
+    return facts;
+}
+
+std::vector<std::string> dottedPath(const char* path) {
     std::vector<std::string> keys;
     std::string key;
-    for (const char* c = record.path; *c; ++c) {
+    for (const char* c = path; *c; ++c) {
         if (*c == '.') {
             keys.push_back(key);
             key.clear();

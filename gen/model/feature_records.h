@@ -1,8 +1,8 @@
-// The features' own records in the scene sidecar (gen/model/scene_json.h):
-// each feature that holds data of its own in the Scene (the orientation
-// tab, the braille legend, the tactile scale) writes and reads it in its
-// own module, and this is the one list of them, so the sidecar reads and
-// writes them without naming any.
+// The features' own records in the scene sidecar (gen/model/scene_json.h)
+// and their facts in the summary: each feature that holds data of its own
+// in the Scene (the orientation tab, the braille legend, the tactile scale,
+// the halves) writes, reads and reports it in its own modules, and these
+// are the lists of them, so the sidecar and the summary name none.
 #pragma once
 
 #include <string>
@@ -26,10 +26,30 @@ struct FeatureRecord {
     void (*read)(const nlohmann::json& record, const std::string& path, int version, Scene& scene);
 };
 
+/// What a feature says of itself in tsf gen's summary and `tsf info`
+/// (app/gen_summary.h).
+struct FeatureFacts {
+    /// Where its facts sit in the summary's scene JSON, dotted: "marks.tab".
+    const char* path;
+    /// True: the member is null when the Scene has none; false: left out.
+    bool listed_when_absent;
+    nlohmann::json (*json)(const Scene& scene);  ///< null when the Scene has none
+    std::string (*lines)(const Scene& scene);    ///< "  label     text\n" lines; "" when none
+};
+
+/// Every feature's facts, in the order the summary prints them.
+const std::vector<FeatureFacts>& featureFacts();
+
+/// A dotted path as its keys: "marks.tab" -> {"marks", "tab"}.
+std::vector<std::string> dottedPath(const char* path);
+
 /// Every feature record, in the order they are read.
 const std::vector<FeatureRecord>& featureRecords();
 
-/// A record's path as its keys: "marks.tab" -> {"marks", "tab"}.
-std::vector<std::string> recordPath(const FeatureRecord& record);
+/// A record's path as its keys.
+inline std::vector<std::string> recordPath(const FeatureRecord& record) { return dottedPath(record.path); }
+
+/// A facts entry's path as its keys.
+inline std::vector<std::string> factsPath(const FeatureFacts& facts) { return dottedPath(facts.path); }
 
 }  // namespace tsf

@@ -64,6 +64,11 @@ struct JoinedBody {
     std::vector<int64_t> lattice_id;
 };
 
+/// An x, y box in the model frame, mm.
+struct BoxMm {
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+};
+
 /// One attachment as an Assembly draws it.
 struct Attachment {
     /// The part its own piece prints as in a multi-part model ("marks",

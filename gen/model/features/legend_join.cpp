@@ -93,6 +93,12 @@ std::optional<Attachment> legendAttachment(const Scene& s, Assembly assembly) {
     return a;
 }
 
+std::optional<BoxMm> legendBoxMm(const Scene& s) {
+    if (!s.legend) return std::nullopt;
+    const SceneLegend& l = *s.legend;
+    return BoxMm{l.x0_mm, l.plate_east_mm, l.plate_south_mm, l.plate_north_mm};
+}
+
 std::optional<int64_t> legendTopAt(const Scene& s, double x, double y) {
     if (!s.legend) return std::nullopt;
     const SceneLegend& l = *s.legend;

@@ -33,6 +33,10 @@ std::optional<Attachment> legendAttachment(const Scene& scene, Assembly assembly
 /// grid). Empty without a legend.
 ProbeSet legendProbes(const Scene& scene);
 
+/// The legend's x, y box (mm): from its frame's west edge to the plate's
+/// east, the plate's south to north; none without a legend.
+std::optional<BoxMm> legendBoxMm(const Scene& scene);
+
 /// z (units) of the legend plate's top at (x, y) mm, or none beside the plate.
 std::optional<int64_t> legendTopAt(const Scene& scene, double x_mm, double y_mm);
 

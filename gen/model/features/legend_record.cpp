@@ -2,10 +2,13 @@
 #include "gen/model/features/legend_record.h"
 
 #include <algorithm>
+#include <sstream>
 #include <tuple>
 
 #include "gen/model/features/legend_scene.h"
 #include "gen/model/sidecar_fields.h"
+#include "gen/model/features/braille.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 
@@ -127,6 +130,47 @@ void readLegendRecord(const json& record, const std::string& path, int version, 
     SceneLegend legend;
     readLegend(record, path, s, legend, s.params.legend);
     s.legend = std::move(legend);
+}
+
+nlohmann::json legendFactsJson(const Scene& s) {
+    if (!(s.legend)) return nullptr;
+    const SceneLegend& l = *s.legend;
+    const BrailleStandard& st = l.layout.standard;
+    size_t cells = 0;
+    for (const auto& line : l.layout.cells) cells += line.size();
+    nlohmann::json lines = nlohmann::json::array();
+    for (size_t k = 0; k < l.layout.text.size(); ++k)
+        lines.push_back({{"text", l.layout.text[k]}, {"braille", brailleUnicode(l.layout.cells[k])}});
+    return {{"lines", lines}, {"table", s.params.legend.table}, {"cells", cells}, {"dots", l.layout.dots.size()},
+                   {"plate_mm", {{0, l.plate_south_mm}, {l.plate_east_mm, l.plate_north_mm}}},
+                   {"standard", st.name}, {"dot_base_mm", st.dot_base_mm}, {"dot_height_mm", st.dot_height_mm},
+                   {"dot_pitch_mm", st.dot_pitch_mm}, {"cell_pitch_mm", st.cell_pitch_mm},
+                   {"line_pitch_mm", st.line_pitch_mm}};
+}
+
+std::string legendFactsLines(const Scene& s) {
+    if (!(s.legend)) return "";
+    std::ostringstream o;
+    const SceneLegend& l = *s.legend;
+    const BrailleStandard& st = l.layout.standard;
+    o << "  legend    braille (" << s.params.legend.table << ") on a plate " << formatFixed(l.plate_east_mm, 1) << " x "
+      << formatFixed(l.plate_north_mm - l.plate_south_mm, 1) << " mm north of the pillars, ";
+    if (s.params.bottom == Bottom::Mirrored)
+        o << "from z = " << formatFixed(s.zMm(l.plate_bottom_units), 2) << " to " << formatFixed(s.zMm(l.plate_top_units), 2)
+          << " mm (the band the pillars it stands against share), ";
+    o << l.layout.dots.size()
+      << " dots " << formatFixed(st.dot_base_mm, 2) << " mm across, " << formatFixed(st.dot_height_mm, 2) << " mm high (";
+    if (s.params.legend.layer_mm > 0)
+        o << formatSignificant(st.dot_height_mm / s.params.legend.layer_mm, 3) << " whole layers of "
+          << formatSignificant(s.params.legend.layer_mm, 3) << " mm; ";
+    o << st.name << ")\n";
+    if (s.params.legend.layer_mm <= 0)
+        o << "  note      braille dots " << formatFixed(st.dot_height_mm, 2) << " mm high print "
+          << formatFixed(printedDotHeightMm(st.dot_height_mm, 0.2), 2)
+          << " mm at 0.2 mm layers: give --layer (your printer's layer height) and the dots are made whole layers\n";
+    for (size_t k = 0; k < l.layout.text.size(); ++k)
+        o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
+    return o.str();
 }
 
 }  // namespace tsf

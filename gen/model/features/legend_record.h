@@ -22,4 +22,12 @@ nlohmann::json legendRecord(const Scene& scene);
 /// gen/model/feature_records.h). Throws InputError naming the member's path.
 void readLegendRecord(const nlohmann::json& record, const std::string& path, int version, Scene& scene);
 
+/// Its facts for the summary's --json (FeatureFacts,
+/// gen/model/feature_records.h): its lines in text and braille, the table, the plate and the standard; null without it.
+nlohmann::json legendFactsJson(const Scene& scene);
+
+/// Its lines in the summary ("  label     text\n" each): the plate, the dots and every line in braille; ""
+/// without it.
+std::string legendFactsLines(const Scene& scene);
+
 }  // namespace tsf

@@ -346,6 +346,12 @@ JoinedBody meshTabBody(const Scene& s, bool joined) {
     return body;
 }
 
+std::optional<BoxMm> tabBoxMm(const Scene& s) {
+    if (!s.marks.tab) return std::nullopt;
+    const OrientationTab& t = *s.marks.tab;
+    return BoxMm{t.x_west_mm, t.x_east_mm, t.y_south_mm, t.y_north_mm};
+}
+
 std::optional<Attachment> tabAttachment(const Scene& s, Assembly assembly) {
     if (!s.marks.tab) return std::nullopt;
     Attachment a;

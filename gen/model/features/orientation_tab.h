@@ -98,6 +98,9 @@ double tabAreaMm2(const OrientationTab& tab);
 /// id a vertex stands on (a contact's corner), -1 for the tab's own.
 JoinedBody meshTabBody(const Scene& scene, bool joined);
 
+/// The tab's x, y box (mm); none without a tab.
+std::optional<BoxMm> tabBoxMm(const Scene& scene);
+
 /// The tab as an attachment (gen/model/scene_attachments.h), part "marks":
 /// it covers its touched walls over its z span. None without a tab.
 std::optional<Attachment> tabAttachment(const Scene& scene, Assembly assembly);

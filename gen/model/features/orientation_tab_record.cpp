@@ -3,9 +3,11 @@
 #include "gen/model/features/orientation_tab_record.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "gen/model/features/orientation_tab.h"
 #include "gen/model/sidecar_fields.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 
@@ -111,6 +113,55 @@ void readTabRecord(const json& record, const std::string& path, int /*version*/,
     } catch (const InputError& e) {
         fail(path, e.what());
     }
+}
+
+nlohmann::json tabFactsJson(const Scene& s) {
+    if (!(s.marks.tab)) return nullptr;
+    const OrientationTab& t = *s.marks.tab;
+    const double w = t.x_east_mm - t.x_west_mm, d = t.y_north_mm - t.y_south_mm;
+    nlohmann::json tab = {{"box_mm", {{"west", t.x_west_mm}, {"east", t.x_east_mm}, {"south", t.y_south_mm}, {"north", t.y_north_mm}}},
+                          {"size_mm", {w, d, s.zMm(t.top_units - t.bottom_units)}},
+                          {"z_mm", {s.zMm(t.bottom_units), s.zMm(t.top_units)}},
+                          {"area_mm2", tabAreaMm2(t)},
+                          {"cells_touched", t.touched.size()}};
+    tab["notch"] = t.has_notch ? nlohmann::json{{"depth_mm", t.notch_depth_mm}, {"width_mm", t.notch_width_mm},
+                                                {"opening_deg", t.notch_opening_deg},
+                                                {"corner_mm", {t.x_west_mm, t.y_south_mm}}}
+                               : nlohmann::json(nullptr);
+    tab["triangle"] = t.has_triangle ? nlohmann::json{{"leg_x_mm", t.triangle[1].x_mm - t.triangle[0].x_mm},
+                                                      {"leg_y_mm", t.triangle[2].y_mm - t.triangle[0].y_mm},
+                                                      {"height_mm", s.zMm(t.triangle_raise_units)},
+                                                      {"underside", t.under_triangle},
+                                                      {"corner_mm", {t.triangle[0].x_mm, t.triangle[0].y_mm}}}
+                                     : nlohmann::json(nullptr);
+    return tab;
+}
+
+std::string tabFactsLines(const Scene& s) {
+    if (!(s.marks.tab)) return "";
+    std::ostringstream o;
+    const OrientationTab& t = *s.marks.tab;
+    o << "  tab       " << formatFixed(t.x_east_mm - t.x_west_mm, 1) << " x " << formatFixed(t.y_north_mm - t.y_south_mm, 1)
+      << " x " << formatFixed(s.zMm(t.top_units - t.bottom_units), 2) << " mm (" << formatFixed(tabAreaMm2(t), 0)
+      << " mm^2) west of the pillars, "
+      << (t.bottom_units == 0 ? std::string("from the bed to the floor")
+                              : "from z = " + formatFixed(s.zMm(t.bottom_units), 2) + " to " + formatFixed(s.zMm(t.top_units), 2) + " mm")
+      << ", corner (" << formatFixed(t.x_west_mm, 1) << ", " << formatFixed(t.y_south_mm, 1)
+      << ") mm: it carries the marks and covers no data cell\n";
+    if (t.has_notch)
+        o << "  notch     V " << formatFixed(t.notch_depth_mm, 1) << " mm deep, " << formatFixed(t.notch_width_mm, 1)
+          << " mm wide, " << formatFixed(t.notch_opening_deg, 0) << " degrees, at the model's south-west corner\n";
+    if (t.has_triangle)
+        o << "  triangle  raised " << formatFixed(s.zMm(t.triangle_raise_units), 2) << " mm on the tab, legs "
+          << formatFixed(t.triangle[1].x_mm - t.triangle[0].x_mm, 1) << " mm east (x) and "
+          << formatFixed(t.triangle[2].y_mm - t.triangle[0].y_mm, 1) << " mm north (y), right angle at ("
+          << formatFixed(t.triangle[0].x_mm, 1) << ", " << formatFixed(t.triangle[0].y_mm, 1)
+          << ") mm: turn the model so the notch is at your near left, and the longer leg runs to your right"
+          << (t.under_triangle ? "; the same triangle on the tab's underside has its longer leg to your left when the "
+                                 "model is turned over, as the data is mirrored there"
+                               : "")
+          << "\n";
+    return o.str();
 }
 
 }  // namespace tsf

@@ -22,4 +22,12 @@ nlohmann::json tabRecord(const Scene& scene);
 /// gen/model/feature_records.h). Throws InputError naming the member's path.
 void readTabRecord(const nlohmann::json& record, const std::string& path, int version, Scene& scene);
 
+/// Its facts for the summary's --json (FeatureFacts,
+/// gen/model/feature_records.h): its box, size, z span, area, the cells it touches, its notch and triangle; null without it.
+nlohmann::json tabFactsJson(const Scene& scene);
+
+/// Its lines in the summary ("  label     text\n" each): its size and place, the notch and the triangle and how to turn the model; ""
+/// without it.
+std::string tabFactsLines(const Scene& scene);
+
 }  // namespace tsf

@@ -460,6 +460,11 @@ JoinedBody meshScaleBody(const Scene& s, bool joined) {
     return ScaleBuilder(s, joined).build();
 }
 
+std::optional<BoxMm> scaleBoxMm(const Scene& s) {
+    if (!s.scale) return std::nullopt;
+    return BoxMm{s.scale->x0_mm, s.scale->x1_mm, s.scale->y0_mm, s.scale->y1_mm};
+}
+
 std::optional<Attachment> scaleAttachment(const Scene& s, Assembly assembly) {
     if (!s.scale) return std::nullopt;
     Attachment a;

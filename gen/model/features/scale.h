@@ -98,6 +98,9 @@ std::optional<int64_t> scaleTopAt(const Scene& scene, double x_mm, double y_mm);
 /// lattice vertex id (hex_grid.h) a vertex stands on, -1 for the scale's own.
 JoinedBody meshScaleBody(const Scene& scene, bool joined);
 
+/// The scale's x, y box (mm): its foot and steps; none without a scale.
+std::optional<BoxMm> scaleBoxMm(const Scene& scene);
+
 /// The scale as an attachment (gen/model/scene_attachments.h), part "scale":
 /// its foot covers, from z = 0 to the floor, each contact's east edge (0),
 /// its north-east edge (1) below a filled notch and its south-east edge (5)

@@ -1,9 +1,11 @@
 // The tactile scale's record in the scene sidecar. See scale_record.h.
 #include "gen/model/features/scale_record.h"
 
+#include <sstream>
 #include <tuple>
 
 #include "gen/model/sidecar_fields.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 
@@ -80,6 +82,36 @@ void readScaleRecord(const json& record, const std::string& path, int /*version*
     s.scale = scaleFrom(record, path, s);
     s.params.scale.wanted = true;
     if (s.scale->step_given) s.params.scale.step = s.scale->step;
+}
+
+nlohmann::json scaleFactsJson(const Scene& s) {
+    if (!(s.scale)) return nullptr;
+    const SceneScale& sc = *s.scale;
+    nlohmann::json steps = nlohmann::json::array();
+    for (const ScaleStep& st : sc.steps)
+        steps.push_back({{"value", st.value}, {"top_mm", s.zMm(st.top_units)},
+                         {"height_above_floor_mm", s.zMm(st.top_units - sc.foot_top_units)}});
+    return {{"step", sc.step}, {"step_given", sc.step_given}, {"floor_value", s.mapping.baseline},
+                  {"floor_mm", s.zMm(sc.foot_top_units)}, {"steps", steps},
+                  {"footprint_mm", {{sc.x0_mm, sc.y0_mm}, {sc.x1_mm, sc.y1_mm}}},
+                  {"tread_mm", {sc.x1_mm - sc.xs_mm, sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm}},
+                  {"contacts", sc.contacts.size()}};
+}
+
+std::string scaleFactsLines(const Scene& s) {
+    if (!(s.scale)) return "";
+    std::ostringstream o;
+    const SceneScale& sc = *s.scale;
+    std::ostringstream values;
+    for (size_t k = 0; k < sc.steps.size(); ++k) values << (k ? ", " : "") << formatSignificant(sc.steps[k].value, 6);
+    o << "  scale     " << sc.steps.size() << " steps every " << formatSignificant(sc.step, 6) << (sc.step_given ? "" : " (chosen)")
+      << " east of the pillars, lowest in the south, on a foot at the floor (= " << formatSignificant(s.mapping.baseline, 6)
+      << "): " << values.str() << "; treads " << formatFixed(sc.x1_mm - sc.xs_mm, 1) << " x "
+      << formatFixed(sc.steps.empty() ? 0.0 : sc.steps[0].y_north_mm - sc.steps[0].y_south_mm, 1) << " mm, rising "
+      << formatFixed(s.zMm(sc.steps.empty() ? 0 : sc.steps[0].top_units - sc.foot_top_units), 2) << " mm to "
+      << formatFixed(s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units), 2)
+      << " mm above the floor\n";
+    return o.str();
 }
 
 }  // namespace tsf

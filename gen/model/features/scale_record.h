@@ -20,4 +20,12 @@ nlohmann::json scaleRecord(const Scene& scene);
 /// gen/model/feature_records.h). Throws InputError naming the member's path.
 void readScaleRecord(const nlohmann::json& record, const std::string& path, int version, Scene& scene);
 
+/// Its facts for the summary's --json (FeatureFacts,
+/// gen/model/feature_records.h): its step, floor, steps, footprint and treads; null without it.
+nlohmann::json scaleFactsJson(const Scene& scene);
+
+/// Its lines in the summary ("  label     text\n" each): its steps, treads and heights; ""
+/// without it.
+std::string scaleFactsLines(const Scene& scene);
+
 }  // namespace tsf
