@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
@@ -333,32 +334,10 @@ void checkFingerReach(const Mesh& m, const TriangleBvh& caster, const TactileOpt
 void checkMarks(const Scene& s, const TactileOptions& o, TactileResult& r) {
     Check c{"tactile_marks", "the orientation marks are there, of a size a fingertip recognises"};
     c.unit = "mm";
-    double notch = 0, long_leg = 0, short_leg = 0;
-    bool has_notch = false, has_triangle = false;
-    Vec3 at{0, 0, s.zMm(s.floor_units)};
-    if (s.marks.tab) {
-        const OrientationTab& t = *s.marks.tab;
-        has_notch = t.has_notch;
-        notch = t.notch_depth_mm;
-        has_triangle = t.has_triangle;
-        if (has_triangle) {
-            const double ex = std::hypot(t.triangle[1].x_mm - t.triangle[0].x_mm, t.triangle[1].y_mm - t.triangle[0].y_mm);
-            const double ny = std::hypot(t.triangle[2].x_mm - t.triangle[0].x_mm, t.triangle[2].y_mm - t.triangle[0].y_mm);
-            long_leg = std::max(ex, ny);
-            short_leg = std::min(ex, ny);
-        }
-        at = {t.x_west_mm, t.y_south_mm, at.z};
-    } else {
-        if (s.marks.notch) {
-            has_notch = true;
-            notch = s.marks.notch->depth_mm;
-        }
-        if (s.marks.triangle) {
-            has_triangle = true;
-            long_leg = std::max(s.marks.triangle->leg_x_mm, s.marks.triangle->leg_y_mm);
-            short_leg = std::min(s.marks.triangle->leg_x_mm, s.marks.triangle->leg_y_mm);
-        }
-    }
+    const PlacedMarks m = placedMarks(s);
+    const bool has_notch = m.has_notch, has_triangle = m.has_triangle;
+    const double notch = m.notch_depth_mm, long_leg = m.long_leg_mm, short_leg = m.short_leg_mm;
+    const Vec3 at{m.corner_x_mm, m.corner_y_mm, s.zMm(s.floor_units)};
     auto miss = [&](const std::string& what, double amount) {
         ++c.count;
         c.worst.push_back({at, amount, what});
@@ -378,7 +357,7 @@ void checkMarks(const Scene& s, const TactileOptions& o, TactileResult& r) {
     c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
     c.note = std::string(has_notch ? "notch " + formatFixed(notch, 1) + " mm deep" : "no notch") + ", " +
              (has_triangle ? "triangle legs " + formatFixed(long_leg, 1) + " x " + formatFixed(short_leg, 1) + " mm" : "no triangle") +
-             (s.marks.tab ? " on the orientation tab" : " in the data");
+             " " + m.where;
     c.stage = "tactile_marks";
     r.checks.push_back(std::move(c));
 }

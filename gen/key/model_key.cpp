@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "gen/field/hex_grid.h"
+#include "gen/model/features/marks.h"
 #include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
 
@@ -42,25 +43,21 @@ std::string heightsParagraph(const Scene& s) {
 
 std::string orientationParagraph(const Scene& s) {
     std::string p = "Finding north: ";
-    const bool tab = s.marks.tab.has_value();
-    const bool notch = (tab && s.marks.tab->has_notch) || s.marks.notch.has_value();
-    const bool triangle = (tab && s.marks.tab->has_triangle) || s.marks.triangle.has_value();
-    if (!notch && !triangle) return p + "this model was made without orientation marks.";
-    if (notch) {
-        const double depth = tab ? s.marks.tab->notch_depth_mm : s.marks.notch->depth_mm;
-        p += "a V-shaped notch " + mm(depth) + " deep is cut into the model's south-west corner, through its whole "
+    const PlacedMarks m = placedMarks(s);
+    if (!m.has_notch && !m.has_triangle) return p + "this model was made without orientation marks.";
+    if (m.has_notch)
+        p += "a V-shaped notch " + mm(m.notch_depth_mm) + " deep is cut into the model's south-west corner, through its whole "
              "height. Turn the model so the notch is at your near left: north is then away from you and east to your "
              "right. ";
-    }
-    if (triangle) {
-        p += std::string("A raised right triangle stands ") + (tab ? "on a flat tab west of the pillars" : "on a flat region of the model") +
+    if (m.has_triangle) {
+        p += "A raised right triangle stands " + m.triangle_place +
              ", its right angle at the south-west and its longer leg running east, to your right, when the model is "
              "turned that way.";
-        if (tab && s.marks.tab->under_triangle)
+        if (m.underside)
             p += " The same triangle is raised on the tab's underside: turned over, its longer leg runs to your left, "
                  "as the data is mirrored there.";
     }
-    if (tab) p += " The tab holds no data.";
+    if (!m.note.empty()) p += " " + m.note;
     return p;
 }
 
