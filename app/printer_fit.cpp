@@ -9,8 +9,6 @@
 #include "gen/model/attachments.h"
 #include "gen/util/error.h"
 #include "gen/field/resample.h"
-#include "gen/model/features/orientation_tab.h"
-#include "gen/model/features/scale.h"
 #include "gen/util/number_format.h"
 
 namespace tsf::cli {
@@ -31,21 +29,21 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
             throw InputError("--depth " + formatSignificant(p.fit_depth_mm, 4) + " mm does not fit the " + formatSignificant(bed.depth_mm, 4) +
                              " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side: give --depth " + formatSignificant(d, 4) +
                              " or less, or leave it out");
-        // The tactile scale stands east of the pillars (gen/model/features/scale.h),
-        // the orientation tab west of them (gen/model/features/orientation_tab.h):
+        // What stands east or west of the pillars (gen/model/attachments.h):
         // the pillars get the rest of the width.
-        const double scale_mm = p.scale.wanted ? kScaleGapMm + kScaleStepWidthMm : 0.0;
-        const double tab_mm = wantsTab(p) ? tabWidthMm(p.marks) : 0.0;
-        const double beside_mm = scale_mm + tab_mm;
+        const std::vector<SideWidth> sides = attachmentSideWidths(p);
+        double beside_mm = 0;
+        std::string beside;
+        for (const SideWidth& side : sides) {
+            beside_mm += side.width_mm;
+            beside += (beside.empty() ? "" : ", ") + side.what + " " + formatSignificant(side.width_mm, 4) + " mm";
+        }
         if (!given.width) {
             // The pillars keep at least a quarter of the width, and 20 mm.
             const bool room = w - beside_mm >= std::max(20.0, 0.25 * w);
             p.fit_width_mm = gen.fit_width_mm = room ? w - beside_mm : w;
             if (beside_mm > 0 && room)
-                notes.push_back("the pillars get " + formatSignificant(w - beside_mm, 4) + " mm of the width, " +
-                                (scale_mm > 0 ? "the tactile scale " + formatSignificant(scale_mm, 4) + " mm" : std::string()) +
-                                (scale_mm > 0 && tab_mm > 0 ? ", " : "") +
-                                (tab_mm > 0 ? "the orientation tab " + formatSignificant(tab_mm, 4) + " mm" : std::string()));
+                notes.push_back("the pillars get " + formatSignificant(w - beside_mm, 4) + " mm of the width, " + beside);
         }
         if (!given.depth) p.fit_depth_mm = gen.fit_depth_mm = d;
         if (!given.width || !given.depth)

@@ -56,6 +56,14 @@ BoxMm sceneFootprint(const Scene& s) {
     return f;
 }
 
+std::vector<SideWidth> attachmentSideWidths(const SceneParams& params) {
+    // The tactile scale east of the pillars, the orientation tab west of them.
+    std::vector<SideWidth> out;
+    if (params.scale.wanted) out.push_back({"the tactile scale", kScaleGapMm + kScaleStepWidthMm});
+    if (wantsTab(params)) out.push_back({"the orientation tab", tabWidthMm(params.marks)});
+    return out;
+}
+
 std::vector<BottomHole> sceneBottomHoles(const Scene& scene) { return halfBottomHoles(scene); }
 
 std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gen/model/scene.h"
@@ -36,6 +37,15 @@ std::vector<BoxMm> attachmentBoxes(const Scene& scene);
 /// The x, y extent (mm) of everything the Scene places: the pillars and
 /// every attachment. For a Scene without kept cells, an empty box (x0 > x1).
 BoxMm sceneFootprint(const Scene& scene);
+
+/// What stands beside the pillars east or west and takes bed width from
+/// them, before the Scene is built: the attachment's name for a person and
+/// its width (mm) for these parameters. Empty when nothing will.
+struct SideWidth {
+    std::string what;  ///< "the tactile scale"
+    double width_mm = 0;
+};
+std::vector<SideWidth> attachmentSideWidths(const SceneParams& params);
 
 /// The heights (z units) of the attachments' tops at (x, y) mm, the model
 /// frame: what a probe from above may meet there besides the cells. Empty
