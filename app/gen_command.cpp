@@ -407,6 +407,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
                                            ": " + f.value);
         facts.categorical = field.input.categorical;
         facts.class_names = field.input.classes;
+        facts.class_order = field.input.class_order;
         const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
         const auto [text_path, brf_path] = keyPaths(o);
         writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });

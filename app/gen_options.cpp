@@ -107,6 +107,11 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                   "class names in the file: each hexagon takes its most common class, never a mean, and the "
                   "summary and the key list the classes")
         ->group(in);
+    cmd->add_option("--class-order", o.class_order,
+                    "A class map's classes are ordered (soil depth classes, say), lowest first: codes or the file's "
+                    "names, separated by commas; each class stands one even step of height above the one before. "
+                    "Without it the heights follow the class codes")
+        ->group(in);
     cmd->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; tab space (default: detect)")->group(in);
     cmd->add_flag("--decimal-comma", o.decimal_comma,
                   "Grid CSV: read 1,5 as 1.5 (spreadsheet exports; default: detected when the delimiter is ; "

@@ -141,12 +141,13 @@ std::string formatSceneFacts(const Scene& s) {
 
 // The classes of a categorical model, a few per line: what each class
 // code stands for (the file's name) and where it stands.
-static std::string classesLine(const Scene& scene, const std::vector<RasterClass>& names) {
+static std::string classesLine(const Scene& scene, const FieldInput& input) {
     constexpr size_t kListed = 16;  // the rest are in --json and the key
-    const std::vector<SceneClass> classes = sceneClasses(scene, names);
+    const std::vector<SceneClass> classes = sceneClasses(scene, input.classes, input.class_order);
     std::string o = "  classes   " + std::to_string(classes.size()) +
-                    " classes, each hexagon one class (the most common of its pixels, never a mean); heights follow "
-                    "the class codes and mean no more or less:";
+                    " classes, each hexagon one class (the most common of its pixels, never a mean); " +
+                    (input.class_order.empty() ? "heights follow the class codes and mean no more or less:"
+                                               : "heights follow the order given (--class-order), one step each:");
     for (size_t k = 0; k < classes.size() && k < kListed; ++k)
         o += std::string(k == 0 ? " " : "; ") + className(classes[k]) + " (" + std::to_string(classes[k].cells) +
              " cells, " + formatFixed(classes[k].height_mm, 2) + " mm)";
@@ -161,10 +162,11 @@ nlohmann::json summaryJson(const GenSummary& s) {
     if (s.scene) j["scene"] = sceneFactsJson(*s.scene);
     if (s.scene && s.field && s.field->input.categorical) {
         nlohmann::json classes = nlohmann::json::array();
-        for (const SceneClass& c : sceneClasses(*s.scene, s.field->input.classes))
+        for (const SceneClass& c : sceneClasses(*s.scene, s.field->input.classes, s.field->input.class_order))
             classes.push_back({{"code", c.code}, {"name", c.name.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.name)},
                                {"cells", c.cells}, {"height_mm", c.height_mm}});
         j["classes"] = classes;
+        j["class_order_given"] = !s.field->input.class_order.empty();
     } else {
         j["classes"] = nullptr;
     }
@@ -189,7 +191,7 @@ std::string formatSummary(const GenSummary& s) {
     if (s.field) o << "  input     " << s.field->how << "\n";
     for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
     if (s.scene) o << formatSceneFacts(*s.scene);
-    if (s.scene && s.field && s.field->input.categorical) o << classesLine(*s.scene, s.field->input.classes);
+    if (s.scene && s.field && s.field->input.categorical) o << classesLine(*s.scene, s.field->input);
     if (s.mesh)
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
           << formatFixed(signedVolume(*s.mesh), 1) << " mm^3\n";

@@ -25,6 +25,11 @@ struct FieldInput {
     /// file, or --categorical): a hexagon takes one class, never a mean.
     bool categorical = false;
     std::vector<RasterClass> classes;  ///< the classes the file names, by code (empty: none named)
+    /// --class-order: the class codes from lowest to highest. The field's
+    /// values are then the classes' ranks (1 for class_order[0], ...), so
+    /// each class is one even step of height; empty: the values are the
+    /// codes and the heights follow them.
+    std::vector<double> class_order;
 };
 
 /// Counts `values` (NaN = no data) and takes min, max and mean of the others.

@@ -88,11 +88,15 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     if (facts.categorical) {
         // Class codes: their range and a height per unit mean nothing; each
         // class is told by name and height.
-        const std::vector<SceneClass> classes = sceneClasses(s, facts.class_names);
+        const std::vector<SceneClass> classes = sceneClasses(s, facts.class_names, facts.class_order);
         values += "The values are classes, not amounts: " + std::to_string(classes.size()) +
                   (classes.size() == 1 ? " class" : " classes") +
-                  ". Each hexagon holds one class, the most common where it stands, never a mix. Each class stands "
-                  "at its own height, in the order of its code in the file; a higher pillar is not more of anything.";
+                  ". Each hexagon holds one class, the most common where it stands, never a mix. " +
+                  (facts.class_order.empty()
+                       ? std::string("Each class stands at its own height, in the order of its code in the file; a "
+                                     "higher pillar is not more of anything.")
+                       : std::string("The classes are ordered, lowest first, as the model's maker gave them: each "
+                                     "stands one even step above the one before."));
         out.push_back(values);
         std::string list = "The classes, by height:";
         for (size_t k = 0; k < classes.size(); ++k)

@@ -30,6 +30,7 @@ struct ModelKeyFacts {
     /// the file gives them: the key lists every class with its height.
     bool categorical = false;
     std::vector<RasterClass> class_names;
+    std::vector<double> class_order;  ///< --class-order (FieldInput::class_order): the cells hold ranks
 };
 
 /// The key's paragraphs: the first is the title line, each other a few

@@ -7,19 +7,21 @@
 
 namespace tsf {
 
-std::vector<SceneClass> sceneClasses(const Scene& s, const std::vector<RasterClass>& names) {
+std::vector<SceneClass> sceneClasses(const Scene& s, const std::vector<RasterClass>& names, const std::vector<double>& order) {
     std::map<double, SceneClass> by_code;
     for (size_t k = 0; k < s.keptCount(); ++k) {
         if (s.kind[k] != CellKind::Data || !std::isfinite(s.value[k])) continue;
+        // By the cell's value: the rank with an order (so the map is by height), else the code.
         SceneClass& c = by_code[s.value[k]];
-        c.code = s.value[k];
+        const size_t rank = size_t(s.value[k]);
+        c.code = order.empty() ? s.value[k] : rank >= 1 && rank <= order.size() ? order[rank - 1] : NAN;
         ++c.cells;
-        c.height_mm = s.zMm(snapUnits(s.mapping.heightMm(c.code), s.z_snap_mm));
+        c.height_mm = s.zMm(snapUnits(s.mapping.heightMm(s.value[k]), s.z_snap_mm));
     }
     std::vector<SceneClass> out;
-    for (auto& [code, c] : by_code) {
+    for (auto& [value, c] : by_code) {
         for (const RasterClass& n : names)
-            if (n.code == code) c.name = n.name;
+            if (n.code == c.code) c.name = n.name;
         out.push_back(std::move(c));
     }
     return out;

@@ -20,9 +20,12 @@ struct SceneClass {
     double height_mm = 0;  ///< its height above the floor (mm, on the z grid): the value mapping's
 };
 
-/// Every class the Scene's data cells hold, by code, with its name from
-/// `names` (the file's, gen/field/raster.h) where it has one.
-std::vector<SceneClass> sceneClasses(const Scene& scene, const std::vector<RasterClass>& names);
+/// Every class the Scene's data cells hold, from the lowest, with its name
+/// from `names` (the file's, gen/field/raster.h) where it has one. With
+/// `order` (FieldInput::class_order) the cells hold ranks, 1 for order[0],
+/// and each class is told by its code; without, they hold the codes.
+std::vector<SceneClass> sceneClasses(const Scene& scene, const std::vector<RasterClass>& names,
+                                     const std::vector<double>& order = {});
 
 /// "11 Open water" or "11" (no name): how a person is told a class.
 std::string className(const SceneClass& c);

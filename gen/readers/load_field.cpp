@@ -1,7 +1,10 @@
 #include "gen/readers/load_field.h"
 
 #include "gen/util/error.h"
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "gen/readers/point_binning.h"
@@ -21,7 +24,71 @@ bool looksLikeNoDataPlaceholder(double v) {
            v == -1e30;
 }
 
+std::string lower(std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string trimmed(const std::string& s) {
+    const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+// --class-order: the field's class codes become their ranks, 1 for the
+// first listed. A class in the model the list leaves out has no height.
+void orderClasses(HexField& f, const std::vector<double>& order) {
+    std::vector<double> missing;
+    for (double& v : f.values) {
+        if (std::isnan(v)) continue;
+        const auto at = std::find(order.begin(), order.end(), v);
+        if (at == order.end()) {
+            if (std::find(missing.begin(), missing.end(), v) == missing.end()) missing.push_back(v);
+            continue;
+        }
+        v = double(at - order.begin() + 1);
+    }
+    if (!missing.empty()) {
+        std::sort(missing.begin(), missing.end());
+        std::string list;
+        for (const double m : missing) list += (list.empty() ? "" : ", ") + formatSignificant(m);
+        throw InputError("--class-order leaves out class" + std::string(missing.size() == 1 ? " " : "es ") + list +
+                         ", which the model holds: list every class, lowest first");
+    }
+    std::string chain;
+    for (const double c : order) chain += (chain.empty() ? "" : " < ") + formatSignificant(c);
+    f.how += "; classes in the order given (--class-order), each one step of height: " + chain;
+    f.input.class_order = order;
+}
+
 }  // namespace
+
+std::vector<double> parseClassOrder(const std::string& text, const std::vector<RasterClass>& classes) {
+    std::vector<double> order;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        item = trimmed(item);
+        if (item.empty()) throw InputError("--class-order \"" + text + "\": an empty entry (codes or names, separated by commas)");
+        double code = 0;
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (end && *end == '\0' && std::isfinite(v)) {
+            code = v;
+        } else {
+            const auto named = std::find_if(classes.begin(), classes.end(),
+                                            [&](const RasterClass& c) { return lower(c.name) == lower(item); });
+            if (named == classes.end())
+                throw InputError("--class-order: \"" + item + "\" is neither a class code nor a name the file gives its classes" +
+                                 (classes.empty() ? " (it names none)" : ""));
+            code = named->code;
+        }
+        if (std::find(order.begin(), order.end(), code) != order.end())
+            throw InputError("--class-order lists class " + formatSignificant(code) + " twice");
+        order.push_back(code);
+    }
+    if (order.empty()) throw InputError("--class-order: no class given");
+    return order;
+}
 
 HexField loadField(const FieldLoadOptions& o) {
     if (!o.delimiter.empty() && o.delimiter != "," && o.delimiter != ";" && o.delimiter != "tab" &&
@@ -37,6 +104,8 @@ HexField loadField(const FieldLoadOptions& o) {
     if (!o.points.empty() && !o.variable.empty())
         throw InputError("--variable is for files with several variables (NetCDF, HDF5); a table of points has columns: "
                          "--points x=COL,y=COL");
+    if (!o.points.empty() && !o.class_order.empty())
+        throw InputError("--class-order is for class maps; points are counted, summed or averaged into hexagons");
     if (!o.points.empty() && o.categorical)
         throw InputError("--categorical is for rasters of class codes; points are counted, summed or averaged into "
                          "hexagons (--aggregate)");
@@ -105,9 +174,15 @@ HexField loadField(const FieldLoadOptions& o) {
     pl.fit_width_mm = o.fit_width_mm;
     pl.fit_depth_mm = o.fit_depth_mm;
     pl.min_cell_mm = o.min_cell_mm;
+    if (!o.class_order.empty() && !raster.categorical)
+        throw InputError("--class-order is for class maps: the values of " + o.input +
+                         " are measurements (give --categorical if they are class codes)");
+    const std::vector<double> order =
+        o.class_order.empty() ? std::vector<double>() : parseClassOrder(o.class_order, raster.classes);
     HexField f = placeRaster(raster, pl);
     f.source = o.input;
     f.input = std::move(input);
+    if (!order.empty()) orderClasses(f, order);
     f.how += placeholder_note;
     if (o.nodata) {
         std::ostringstream s;

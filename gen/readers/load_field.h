@@ -39,6 +39,11 @@ struct FieldLoadOptions {
     /// class names in the file (a CSV or PNG of codes): resampled by the
     /// most common class, never averaged.
     bool categorical = false;
+    /// "95,90,41" or names the file gives ("Open Water,Deciduous Forest"):
+    /// the classes are ordered, lowest first; each stands one even step of
+    /// height above the one before (the values become the ranks 1..N).
+    /// Every class the model holds must be listed. Class maps only.
+    std::string class_order;
     std::string delimiter;      ///< CSV delimiter: "," ";" "tab" "space" (or the character); "" = detect
     bool decimal_comma = false; ///< grid CSV: "1,5" is 1.5 (default: detected, gen/readers/decimal_mark.h)
     std::optional<double> nodata;  ///< rasters: this value means "no data" (e.g. -9999)
@@ -59,5 +64,10 @@ struct FieldLoadOptions {
 /// ...) and no --nodata was given, a fact and HexField::how say so. Throws
 /// tsf::InputError for a missing or malformed file and for a bad option.
 HexField loadField(const FieldLoadOptions& opts);
+
+/// The class codes `text` lists (codes, or names from `classes`, matched
+/// without regard to case), in its order. Throws InputError for an empty
+/// entry, a name the file does not give, or a class listed twice.
+std::vector<double> parseClassOrder(const std::string& text, const std::vector<RasterClass>& classes);
 
 }  // namespace tsf

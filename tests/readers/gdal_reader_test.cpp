@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "gen/readers/load_field.h"
@@ -152,24 +153,33 @@ TEST(GdalReader, AClassMapIsResampledByItsMostCommonClassNeverByAMean) {
         if (!std::isnan(v)) EXPECT_TRUE(v == 41.0 || v == 90.0 || v == 95.0) << v;
 }
 
+// A land-cover map of size x size 30 m pixels (UTM 33N, 8-bit codes, no
+// colour table) in blocks of the classes `named` gives (code, name), whose
+// names are the band's category names.
+test::GeoTiffSpec landCover(int size, int block_rows, int block_cols, const std::vector<std::pair<int, std::string>>& named) {
+    test::GeoTiffSpec s;
+    s.cols = s.rows = size;
+    s.epsg = 32633;
+    s.pixel_w = s.pixel_h = 30;
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c)
+            s.values.push_back(float(named[size_t(r / block_rows + c / block_cols) % named.size()].first));
+    s.byte_band = true;
+    int top = 0;
+    for (const auto& [code, name] : named) top = std::max(top, code);
+    s.category_names.assign(size_t(top) + 1, "");
+    for (const auto& [code, name] : named) s.category_names[size_t(code)] = name;
+    return s;
+}
+
 // A land-cover map with class names but no colour table: the names make it a
 // class map, the summary and the key name every class, and no hexagon holds
 // a class the map does not have.
 TEST(GdalReader, ClassNamesMakeAClassMapAndTheSummaryAndTheKeyNameEveryClass) {
     const auto dir = test::scratchDir();
-    test::GeoTiffSpec s;
-    s.cols = s.rows = 60;
-    s.epsg = 32633;
-    s.pixel_w = s.pixel_h = 30;
-    const float codes[4] = {11, 41, 90, 95};
-    for (int r = 0; r < s.rows; ++r)
-        for (int c = 0; c < s.cols; ++c) s.values.push_back(codes[(r / 7 + c / 5) % 4]);
-    s.byte_band = true;
-    s.category_names.assign(96, "");
-    s.category_names[11] = "Open Water";
-    s.category_names[41] = "Deciduous Forest";
-    s.category_names[90] = "Woody Wetlands";
-    s.category_names[95] = "Emergent Herbaceous Wetlands";
+    test::GeoTiffSpec s = landCover(60, 7, 5,
+                                    {{11, "Open Water"}, {41, "Deciduous Forest"}, {90, "Woody Wetlands"},
+                                     {95, "Emergent Herbaceous Wetlands"}});
     const std::string path = (dir / "landcover.tif").string();
     ASSERT_TRUE(test::writeGeoTiff(path, s));
     const Raster r = readGdalRaster(path);
@@ -211,6 +221,50 @@ TEST(GdalReader, ClassNamesMakeAClassMapAndTheSummaryAndTheKeyNameEveryClass) {
     EXPECT_EQ(rat.classes[0].code, 11.0);
     EXPECT_EQ(rat.classes[0].name, "Open Water");
     EXPECT_EQ(rat.classes[3].name, "Emergent Herbaceous Wetlands");
+}
+
+// --class-order: the user says the classes are ordered; each stands one even
+// step above the one before, in the order given (codes or the file's names),
+// and every class the model holds must be listed.
+TEST(GdalReader, ClassOrderGivesEachClassOneEvenStepInTheOrderGiven) {
+    const auto dir = test::scratchDir();
+    const test::GeoTiffSpec s = landCover(40, 8, 8, {{11, "Open Water"}, {41, "Deciduous Forest"}, {90, "Woody Wetlands"}});
+    const std::string path = (dir / "lc.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const std::string model = (dir / "lc.stl").string();
+    const auto run = test::runTsf("gen " + path + " --bins 16 --height 12 --class-order \"woody wetlands,11,Deciduous Forest\" -o " +
+                                  model + " --json");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+    ASSERT_EQ(j["classes"].size(), 3u) << j.dump();
+    EXPECT_TRUE(j["class_order_given"].get<bool>());
+    // Lowest first, in the order given, 4 mm apart (12 mm over three classes).
+    const double want_code[3] = {90, 11, 41};
+    for (size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(j["classes"][k]["code"].get<double>(), want_code[k]) << j["classes"].dump();
+        EXPECT_NEAR(j["classes"][k]["height_mm"].get<double>(), 4.0 * double(k + 1), 1e-9) << j["classes"].dump();
+    }
+    EXPECT_EQ(j["classes"][0]["name"], "Woody Wetlands");
+    const std::string key = test::readText(dir / "lc.key.txt");
+    EXPECT_NE(key.find("class 90 Woody Wetlands, 4 mm"), std::string::npos) << key;
+    EXPECT_NE(key.find("one even step"), std::string::npos) << key;
+    // The model verifies against its sidecar.
+    const auto verified = test::runTsf("verify " + model + " --scene " + model + ".scene.json");
+    EXPECT_EQ(verified.exit_code, 0) << verified.output;
+
+    // A class left out, a name the file lacks, a class twice: exit 2, saying which.
+    for (const auto& [order, said] : std::vector<std::pair<std::string, std::string>>{
+             {"90,11", "leaves out class 41"}, {"90,11,Forest", "\"Forest\" is neither a class code nor a name"},
+             {"90,11,41,90", "lists class 90 twice"}}) {
+        const auto bad = test::runTsf("gen " + path + " --bins 16 --class-order \"" + order + "\" -o " + model);
+        EXPECT_EQ(bad.exit_code, 2) << order << "\n" << bad.output;
+        EXPECT_NE(bad.output.find(said), std::string::npos) << bad.output;
+    }
+    // Measurements are not classes.
+    test::writeText(dir / "m.csv", "1,2\n3,4\n");
+    const auto measured = test::runTsf("gen " + (dir / "m.csv").string() + " --class-order 1,2,3,4 -o " + model);
+    EXPECT_EQ(measured.exit_code, 2) << measured.output;
+    EXPECT_NE(measured.output.find("--class-order is for class maps"), std::string::npos) << measured.output;
 }
 
 // --categorical: codes in a plain grid are a class map too; points are not.
