@@ -206,6 +206,16 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     Scene s;
     s.grid = field.grid;
     s.params = params;
+    if (field.input.categorical && s.params.legend.wanted() && s.params.legend.range_line.empty()) {
+        // A class map's legend says how many classes it shows, not the
+        // range of their codes (the key names them).
+        std::vector<double> classes;
+        for (const double v : field.values)
+            if (!std::isnan(v)) classes.push_back(v);
+        std::sort(classes.begin(), classes.end());
+        classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
+        s.params.legend.range_line = std::to_string(classes.size()) + (classes.size() == 1 ? " class" : " classes");
+    }
     s.z_snap_mm = params.z_snap_mm;
     s.mapping = resolveMapping(field, params, s.notes);
     s.pitch_mm = resolvePitch(field.grid, params);

@@ -209,6 +209,12 @@ TEST(GdalReader, ClassNamesMakeAClassMapAndTheSummaryAndTheKeyNameEveryClass) {
                              "class 90 Woody Wetlands", "class 95 Emergent Herbaceous Wetlands"})
         EXPECT_NE(key.find(said), std::string::npos) << said << "\n" << key;
     EXPECT_EQ(key.find("The values go from"), std::string::npos) << "a range of class codes means nothing\n" << key;
+    // The braille plate says how many classes, not the range of their codes.
+    const auto titled = test::runTsf("gen " + path + " --bins 20 --title Cover -o " + (dir / "t.stl").string() + " --json");
+    ASSERT_EQ(titled.exit_code, 0) << titled.output;
+    const nlohmann::json tj = nlohmann::json::parse(titled.output.substr(titled.output.find('{')));
+    ASSERT_EQ(tj["scene"]["legend"]["lines"].size(), 2u) << tj["scene"]["legend"].dump();
+    EXPECT_EQ(tj["scene"]["legend"]["lines"][1]["text"], "4 classes");
 
     // The same names in a raster attribute table (rows in any order).
     s.category_names.clear();

@@ -72,6 +72,9 @@ struct LegendRequest {
     /// number of layers high, the fewest that reach the standard's height
     /// (a 0.48 mm dot prints 0.4 mm at 0.2 mm layers; 0.6 mm is three).
     double layer_mm = 0;
+    /// The line after the title instead of the value range (a class map's
+    /// "5 classes": a range of class codes means nothing); "" for the range.
+    std::string range_line;
     bool wanted() const { return !title.empty() || !units.empty(); }
 };
 

@@ -35,7 +35,8 @@ void placeLegend(Scene& s) {
         }
     LegendParams p;
     if (!rq.title.empty()) p.lines.push_back(rq.title);
-    if (std::isfinite(lo)) p.lines.push_back(legendRangeText(lo, hi, rq.units));
+    if (!rq.range_line.empty()) p.lines.push_back(rq.range_line);
+    else if (std::isfinite(lo)) p.lines.push_back(legendRangeText(lo, hi, rq.units));
     p.table = rq.table;
     if (rq.layer_mm > 0) {
         // Whole layers: the fewest that reach the standard's height, unless
