@@ -99,12 +99,12 @@ void runParts(unsigned parts, const Work& work) {
 
 class MeshBuilder {
 public:
-    MeshBuilder(const Scene& scene, Assembly assembly)
+    MeshBuilder(const Scene& scene, const std::vector<Attachment>& attachments)
         : s_(scene),
           g_(scene.grid),
           flat_(scene.params.bottom == Bottom::Flat),
           lattice_ids_(latticeVertexIdCount(g_)),
-          attachments_(sceneAttachments(scene, assembly)),
+          attachments_(attachments),
           holes_(sceneBottomHoles(scene)) {
         const int64_t ids = lattice_ids_ + int64_t(s_.faces.extra.size()) + int64_t(s_.shapes.extra.size());
         first_index_.assign(size_t(ids) + 1, 0);
@@ -702,7 +702,7 @@ private:
     const HexGrid& g_;
     const bool flat_;
     const int64_t lattice_ids_;
-    const std::vector<Attachment> attachments_;  // what stands against the pillars (gen/model/attachments.h)
+    const std::vector<Attachment>& attachments_;  // what stands against the pillars (gen/model/attachments.h)
     const std::vector<BottomHole> holes_;        // holes into the flat bottom
     std::vector<uint32_t> first_index_;  // planar vertex id -> first mesh vertex index
     std::unordered_map<int64_t, std::vector<int32_t>> faces_at_;  // planar vertex id -> faces with it on a ring
@@ -720,10 +720,17 @@ private:
 
 }  // namespace
 
+Mesh meshScene(const Scene& scene, const std::vector<Attachment>& attachments) {
+    checkScene(scene);
+    if (scene.keptCount() == 0) return {};
+    return MeshBuilder(scene, attachments).build();
+}
+
 Mesh meshScene(const Scene& scene, Assembly assembly) {
     checkScene(scene);
     if (scene.keptCount() == 0) return {};
-    return MeshBuilder(scene, assembly).build();
+    const std::vector<Attachment> attachments = sceneAttachments(scene, assembly);
+    return MeshBuilder(scene, attachments).build();
 }
 
 }  // namespace tsf

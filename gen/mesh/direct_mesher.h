@@ -21,6 +21,8 @@
 // (CCW from outside) and has no zero-area triangles.
 #pragma once
 
+#include <vector>
+
 #include "gen/geometry/mesh.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_attachments.h"
@@ -33,5 +35,9 @@ namespace tsf {
 /// With Assembly::Parts only what stays with the pillars is joined to them
 /// (gen/mesh/scene_parts.h draws the rest as parts of their own).
 Mesh meshScene(const Scene& scene, Assembly assembly = Assembly::OnePiece);
+
+/// The same with the Scene's attachments as sceneAttachments gave them
+/// (gen/model/attachments.h), for a caller that uses them too.
+Mesh meshScene(const Scene& scene, const std::vector<Attachment>& attachments);
 
 }  // namespace tsf

@@ -52,7 +52,10 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
             raised.push_back(&scene.faces.faces[k]);
             level.faces.faces[k].raise_units = 0;
         }
-    parts.push_back({"pillars", meshScene(level, Assembly::Parts)});
+    // What of the attachments stays with the pillars, and their own pieces,
+    // made once (they do not depend on the faces' raise).
+    std::vector<Attachment> attachments = sceneAttachments(level, Assembly::Parts);
+    parts.push_back({"pillars", meshScene(level, attachments)});
 
     // Every raised face (the orientation triangle in the data) in the marks
     // part, then each attachment's own piece in the part it names; pieces
@@ -64,7 +67,7 @@ std::vector<MeshPart> meshSceneParts(const Scene& scene) {
         at->second.push_back({"", std::move(mesh)});
     };
     for (const PlanarFace* f : raised) add("marks", raisedFacePrism(scene, *f));
-    for (Attachment& a : sceneAttachments(scene, Assembly::Parts))
+    for (Attachment& a : attachments)
         if (!a.own_part.triangles.empty()) add(a.part, std::move(a.own_part));
     for (auto& [name, meshes] : pieces) parts.push_back({name, joinParts(meshes)});
     return parts;

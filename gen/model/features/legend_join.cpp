@@ -20,7 +20,7 @@ double snapUm(double mm) { return std::round(mm * 1000.0) / 1000.0; }
 
 // The plate's outline, height and dots in the model frame; with the sides
 // where pillars stand (joined).
-PlateSpec plateSpec(const Scene& s, bool dots) {
+PlateSpec plateSpec(const Scene& s, bool dots, const PlateOutline& outline) {
     const SceneLegend& l = *s.legend;
     PlateSpec spec;
     spec.x0_mm = 0;
@@ -32,7 +32,7 @@ PlateSpec plateSpec(const Scene& s, bool dots) {
     spec.standard = l.layout.standard;
     if (dots)
         for (const LegendDot& d : l.layout.dots) spec.dots.push_back({snapUm(d.x_mm + l.x0_mm), snapUm(d.y_mm + l.y0_mm)});
-    spec.outline = legendPlateOutline(s);
+    spec.outline = outline;
     // Against a pillar at or above the plate's top no side; against a lower
     // one (a no-data pit) the side from its top up. (A mirrored model's plate
     // lies in a band every pillar it stands against holds.)
@@ -64,12 +64,12 @@ PlateSpec plateSpec(const Scene& s, bool dots) {
 
 Mesh legendDotsMesh(const Scene& s) {
     if (!s.legend) return {};
-    return meshLegendDots(plateSpec(s, true));
+    return meshLegendDots(plateSpec(s, true, legendPlateOutline(s)));
 }
 
 Mesh legendPlateMesh(const Scene& s, bool dots) {
     if (!s.legend || s.keptCount() == 0) return {};
-    return meshLegendPlate(plateSpec(s, dots));
+    return meshLegendPlate(plateSpec(s, dots, legendPlateOutline(s)));
 }
 
 std::optional<Attachment> legendAttachment(const Scene& s, Assembly assembly) {
@@ -87,9 +87,12 @@ std::optional<Attachment> legendAttachment(const Scene& s, Assembly assembly) {
         else  // the face's direction runs against the plate's outline
             a.ring_walls.push_back({plate.points[e.b].lattice, plate.points[e.a].lattice, l.plate_bottom_units, l.plate_top_units});
     }
-    const bool apart = assembly == Assembly::Parts;
-    a.joined = meshPlateBody(plateSpec(s, /*dots=*/!apart), /*joined=*/true);
-    if (apart) a.own_part = legendDotsMesh(s);
+    PlateSpec spec = plateSpec(s, /*dots=*/true, plate);
+    if (assembly == Assembly::Parts) {
+        a.own_part = meshLegendDots(spec);
+        spec.dots.clear();  // the plate stays with the pillars, the dots are the legend's part
+    }
+    a.joined = meshPlateBody(spec, /*joined=*/true);
     return a;
 }
 
