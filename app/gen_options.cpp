@@ -110,8 +110,13 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--class-order", o.class_order,
                     "A class map's classes are ordered (soil depth classes, say), lowest first: codes or the file's "
                     "names, separated by commas; each class stands one even step of height above the one before. "
-                    "Without it the heights follow the class codes")
+                    "Without it the classes stand at one height, told apart by texture")
         ->group(in);
+    cmd->add_option("--classes", o.scene.class_textures.max_textures,
+                    "A class map's textures: at most N (1-5: level, ridges east-west, dimples, ridges north-south, "
+                    "bumps), the commonest classes one each, the rarer ones sharing the last (the summary and the key "
+                    "say which)")
+        ->capture_default_str()->group(in);
     cmd->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; tab space (default: detect)")->group(in);
     cmd->add_flag("--decimal-comma", o.decimal_comma,
                   "Grid CSV: read 1,5 as 1.5 (spreadsheet exports; default: detected when the delimiter is ; "

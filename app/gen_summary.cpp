@@ -3,6 +3,7 @@
 #include "app/printer_fit.h"
 #include "gen/model/attachments.h"
 #include "gen/model/feature_records.h"
+#include "gen/model/features/top_shapes.h"
 #include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
 
@@ -37,8 +38,7 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     j["cells"] = {{"total", s.grid.cellCount()}, {"with_data", s.cells_with_data},
                   {"nonempty", s.cells_nonempty}, {"kept", s.keptCount()}, {"kept_without_data", s.cells_nodata_kept}};
     j["pitch_mm"] = s.pitch_mm;
-    double zmax = 0;
-    for (int64_t t : s.top) zmax = std::max(zmax, s.zMm(t));
+    const double zmax = s.zMm(highestPillarTop(s));
     j["size_mm"] = {gridWidth(s.grid, s.pitch_mm), gridDepth(s.grid, s.pitch_mm), zmax};
     if (s.keptCount() > 0) {
         // The footprint of everything placed: the pillars and every attachment.
@@ -92,8 +92,7 @@ nlohmann::json sceneFactsJson(const Scene& s) {
 std::string formatSceneFacts(const Scene& s) {
     std::ostringstream o;
     const double w = gridWidth(s.grid, s.pitch_mm), d = gridDepth(s.grid, s.pitch_mm);
-    double zmax = 0;
-    for (int64_t t : s.top) zmax = std::max(zmax, s.zMm(t));
+    const double zmax = s.zMm(highestPillarTop(s));
     o << "  cells     " << s.keptCount() << " kept of " << s.grid.cols << " x " << s.grid.rows << " = "
       << s.grid.cellCount() << " (" << s.cells_nonempty << " above the floor, " << s.cells_with_data - s.cells_nonempty
       << " at the floor, " << s.grid.cellCount() - s.cells_with_data << " without data; culling: "
@@ -106,7 +105,12 @@ std::string formatSceneFacts(const Scene& s) {
           << " mm with what stands beside the pillars";
     }
     o << "\n";
-    o << "  heights   " << mappingText(s) << "\n";
+    if (s.textures)
+        o << "  heights   one height for every class, " << formatFixed(s.zMm(s.textures->height_units), 2)
+          << " mm above the floor: a class map's codes are names, not amounts (--class-order stands ordered "
+             "classes at heights)\n";
+    else
+        o << "  heights   " << mappingText(s) << "\n";
     if (s.params.bottom == Bottom::Flat)
         o << "  bottom    flat, base " << formatFixed(s.params.base_mm, 2) << " mm\n";
     else
@@ -114,7 +118,8 @@ std::string formatSceneFacts(const Scene& s) {
           << " mm thick; the underside shows the negated data\n";
     o << "  z snap    " << formatSignificant(s.z_snap_mm, 4) << " mm\n";
     if (s.one_to_one)
-        o << "  values    one pillar per value: each of the " << s.cells_with_data << " values stands at its own height\n";
+        o << "  values    one pillar per value: each of the " << s.cells_with_data
+          << (s.textures ? " values is one pillar with its class's texture\n" : " values stands at its own height\n");
     if (s.marks.notch)
         o << "  notch     V " << formatFixed(s.marks.notch->depth_mm, 1) << " mm deep, " << formatFixed(s.marks.notch->width_mm, 1)
           << " mm wide, at the origin (south-west) corner, through the whole height\n";
@@ -146,11 +151,15 @@ static std::string classesLine(const Scene& scene, const FieldInput& input) {
     const std::vector<SceneClass> classes = sceneClasses(scene, input.classes, input.class_order);
     std::string o = "  classes   " + std::to_string(classes.size()) +
                     " classes, each hexagon one class (the most common of its pixels, never a mean); " +
-                    (input.class_order.empty() ? "heights follow the class codes and mean no more or less:"
-                                               : "heights follow the order given (--class-order), one step each:");
+                    (scene.textures                ? "each class a texture, commonest first:"
+                     : input.class_order.empty() ? "heights follow the class codes and mean no more or less:"
+                                                 : "heights follow the order given (--class-order), one step each:");
     for (size_t k = 0; k < classes.size() && k < kListed; ++k)
         o += std::string(k == 0 ? " " : "; ") + className(classes[k]) + " (" + std::to_string(classes[k].cells) +
-             " cells, " + formatFixed(classes[k].height_mm, 2) + " mm)";
+             " cells, " +
+             (classes[k].texture.empty() ? formatFixed(classes[k].height_mm, 2) + " mm"
+                                         : classes[k].texture + (classes[k].texture_shared ? ", shared" : "")) +
+             ")";
     if (classes.size() > kListed) o += "; ... " + std::to_string(classes.size() - kListed) + " more in --json and the key";
     return o + "\n";
 }
@@ -164,7 +173,9 @@ nlohmann::json summaryJson(const GenSummary& s) {
         nlohmann::json classes = nlohmann::json::array();
         for (const SceneClass& c : sceneClasses(*s.scene, s.field->input.classes, s.field->input.class_order))
             classes.push_back({{"code", c.code}, {"name", c.name.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.name)},
-                               {"cells", c.cells}, {"height_mm", c.height_mm}});
+                               {"cells", c.cells}, {"height_mm", c.height_mm},
+                               {"texture", c.texture.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.texture)},
+                               {"texture_shared", c.texture_shared}});
         j["classes"] = classes;
         j["class_order_given"] = !s.field->input.class_order.empty();
     } else {

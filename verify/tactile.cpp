@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "gen/model/features/class_textures.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
@@ -408,6 +409,20 @@ void checkPillars(const Scene& s, const TactileOptions& o, TactileResult& r) {
 void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r) {
     Check c{"tactile_height_steps", "neighbouring values at least a printed layer apart"};
     c.unit = "mm";
+    if (s.textures) {
+        // A class map's classes share one height and are told apart by the
+        // feel of their tops: what must be felt is the textures' relief.
+        const double relief = s.zMm(s.textures->relief_units);
+        c.status = relief + 1e-9 >= kMinFeltTextureReliefMm ? CheckStatus::Pass : CheckStatus::Warn;
+        c.count = c.status == CheckStatus::Pass ? 0 : 1;
+        c.note = "a class map: its classes stand at one height and are told apart by " +
+                 std::to_string(s.textures->textures_used) + " textures " + formatSignificant(relief, 3) +
+                 " mm deep (at least " + formatSignificant(kMinFeltTextureReliefMm, 2) + " mm is felt without searching" +
+                 (c.count ? "; larger cells give deeper textures)" : ")");
+        c.stage = "tactile_marks";
+        r.checks.push_back(std::move(c));
+        return;
+    }
     int64_t pairs = 0, close = 0;
     for (size_t k = 0; k < s.keptCount(); ++k) {
         if (s.kind[k] != CellKind::Data) continue;

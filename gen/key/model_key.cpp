@@ -6,6 +6,8 @@
 
 #include "gen/field/hex_grid.h"
 #include "gen/model/features/marks.h"
+#include "gen/model/features/top_shapes.h"
+#include "gen/model/features/class_textures.h"
 #include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
 
@@ -83,7 +85,8 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
         hi = std::max(hi, s.value[k]);
     }
     std::string values = "Each hexagon is " + mm(s.pitch_mm) + " across";
-    values += s.one_to_one ? " and stands for one value of the data, at its own height. "
+    values += s.one_to_one ? (s.textures ? " and stands for one value of the data. "
+                                         : " and stands for one value of the data, at its own height. ")
                            : " and stands for the values that fell in it, as said above. ";
     if (facts.categorical) {
         // Class codes: their range and a height per unit mean nothing; each
@@ -92,17 +95,41 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
         values += "The values are classes, not amounts: " + std::to_string(classes.size()) +
                   (classes.size() == 1 ? " class" : " classes") +
                   ". Each hexagon holds one class, the most common where it stands, never a mix. " +
-                  (facts.class_order.empty()
+                  (s.textures ? "Every class stands at one height, " + mm(s.zMm(s.textures->height_units)) +
+                                    " above the floor, and is told apart by the feel of its tops, " +
+                                    mm(s.zMm(s.textures->relief_units)) + " deep; no class is more than another."
+                   : facts.class_order.empty()
                        ? std::string("Each class stands at its own height, in the order of its code in the file; a "
                                      "higher pillar is not more of anything.")
                        : std::string("The classes are ordered, lowest first, as the model's maker gave them: each "
                                      "stands one even step above the one before."));
         out.push_back(values);
-        std::string list = "The classes, by height:";
-        for (size_t k = 0; k < classes.size(); ++k)
-            list += std::string(k == 0 ? " " : "; ") + "class " + className(classes[k]) + ", " + mm(classes[k].height_mm) +
-                    ", " + std::to_string(classes[k].cells) + (classes[k].cells == 1 ? " hexagon" : " hexagons");
-        out.push_back(list + ".");
+        if (s.textures) {
+            // One sentence per texture, the classes that have it, commonest first.
+            std::string list = "The textures:";
+            for (int t = 0; t < s.textures->textures_used; ++t) {
+                std::string who;
+                int64_t cells = 0;
+                size_t named = 0;
+                for (const SceneClass& c : classes)
+                    if (c.texture == textureName(Texture(t))) {
+                        who += std::string(named++ == 0 ? "" : ", ") + "class " + className(c);
+                        cells += c.cells;
+                    }
+                if (named == 0) continue;
+                list += std::string(t == 0 ? " " : "; ") + textureName(Texture(t)) + " (" + textureFeel(Texture(t)) +
+                        "): " + who + (named > 1 ? " (these classes share it)" : "") + ", " + std::to_string(cells) +
+                        (cells == 1 ? " hexagon" : " hexagons");
+            }
+            out.push_back(list + ".");
+        } else {
+            std::string list = "The classes, by height:";
+            for (size_t k = 0; k < classes.size(); ++k)
+                list += std::string(k == 0 ? " " : "; ") + "class " + className(classes[k]) + ", " +
+                        mm(classes[k].height_mm) + ", " + std::to_string(classes[k].cells) +
+                        (classes[k].cells == 1 ? " hexagon" : " hexagons");
+            out.push_back(list + ".");
+        }
     } else {
         if (std::isfinite(lo))
             values += "The values go from " + num(lo) + " to " + num(hi) + u + ".";
@@ -117,7 +144,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
         out.push_back(std::to_string(s.shapes.cells_textured) +
                       " cells at the floor hold no data and are there only to hold the model together: each has a "
                       "cone-shaped dimple " + mm(s.zMm(s.shapes.dimple_units)) + " deep at its centre. They are not values.");
-    if (s.shapes.cells_tilted > 0)
+    if (s.shapes.cells_tilted > 0 && s.params.tilt != TiltSource::None)
         out.push_back(std::string("Pillar tops lean: each leans the way ") +
                       (s.params.tilt == TiltSource::Points ? "the points crowd within its hexagon"
                                                            : "the data rises across its hexagon") +
@@ -137,8 +164,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
                       " steps, the lowest in the south, at " + steps + u +
                       ". Put a finger on a pillar and one on the steps to read its value.");
     }
-    double top = 0;
-    for (int64_t t : s.top) top = std::max(top, s.zMm(t));
+    const double top = s.zMm(highestPillarTop(s));
     std::string size = "The pillars cover " + mm(gridWidth(s.grid, s.pitch_mm)) + " from west to east and " +
                        mm(gridDepth(s.grid, s.pitch_mm)) + " from south to north, and stand up to " + mm(top) + " high";
     if (s.params.bottom == Bottom::Flat)

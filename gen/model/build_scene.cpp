@@ -19,6 +19,7 @@
 #include "gen/field/resample.h"
 #include "gen/model/concave_hull.h"
 #include "gen/model/convex_hull.h"
+#include "gen/model/features/class_textures.h"
 #include "gen/model/features/halves.h"
 #include "gen/model/features/legend_scene.h"
 #include "gen/model/features/marks.h"
@@ -174,13 +175,7 @@ namespace {
 // The highest z the mesh reaches, mm: tops with their tilted corners and the
 // orientation triangle, and a braille dot's height above a legend's plate.
 double highestZMm(const Scene& s) {
-    int64_t top = 0;
-    for (size_t k = 0; k < s.keptCount(); ++k) {
-        int64_t t = s.top[k];
-        if (!s.shapes.empty())
-            for (const int32_t dz : s.shapes.top_dz[k]) t = std::max(t, s.top[k] + dz);
-        top = std::max(top, t);
-    }
+    int64_t top = highestPillarTop(s);
     if (s.marks.triangle) top = std::max(top, s.top[size_t(s.marks.triangle->anchor)] + s.marks.triangle->raise_units);
     double z = s.zMm(top);
     if (s.legend) z = std::max(z, s.zMm(s.legend->plate_top_units) + s.legend->layout.standard.dot_height_mm);
@@ -229,6 +224,11 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     }
     const HexGrid& g = s.grid;
     const size_t n = size_t(g.cellCount());
+    // A class map's classes stand at one height, told apart by texture.
+    if (classTexturesApply(field, params)) {
+        s.textures = decideClassTextures(field, params, s.pitch_mm);
+        s.mapping = classTextureMapping(field, s.zMm(s.textures->height_units));
+    }
 
     // Heights above the floor, snapped once; everything below compares integers.
     std::vector<int64_t> h_units(n, 0);
@@ -427,7 +427,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     if (params.structural_texture && params.halves)
         s.notes.push_back("structural cells are left level on a model cut into halves (the cut and the pin "
                           "holes are drawn on level cells): give --no-texture-structural to silence this");
-    if (params.tilt != TiltSource::None || (params.structural_texture && !params.halves)) {
+    if (params.tilt != TiltSource::None || (params.structural_texture && !params.halves) || s.textures) {
         // Structural: a kept cell at the floor that no input value fell in (a
         // bin without points): kept only because the hull holds the model
         // together there. A raster cell always holds pixels, so at the floor
@@ -441,7 +441,17 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
                 structural[k] = s.kind[k] == CellKind::Data && h_units[idx] == 0 && field.moments[idx].n == 0 &&
                                 (s.drawn_by_face.empty() || !s.drawn_by_face[k]);
             }
-        resolveTopShapes(s, tiltSlopes(field, s, params.tilt), params.steepness, structural);
+        std::vector<PlaneSlope> slopes = tiltSlopes(field, s, params.tilt);
+        std::vector<int32_t> centre_dz;
+        if (s.textures) classTextureShapes(s, slopes, centre_dz);  // no --tilt with textures (decideClassTextures)
+        resolveTopShapes(s, slopes, s.textures ? 1.0 : params.steepness, structural, centre_dz);
+    }
+    if (s.textures) {
+        if (s.textures->relief_units * s.z_snap_mm < kMinFeltTextureReliefMm - 1e-9)
+            s.notes.push_back("the class textures rise only " + formatSignificant(s.zMm(s.textures->relief_units), 2) +
+                              " mm on cells " + formatSignificant(s.pitch_mm, 3) + " mm across, below the " +
+                              formatSignificant(kMinFeltTextureReliefMm) +
+                              " mm a finger finds without searching: larger cells (fewer --bins, a larger --cell)");
     }
     // The legend, the tab and the scale last: they stand against cells whose
     // tops (tilted or not) rise to the floor, or on a mirrored model hold

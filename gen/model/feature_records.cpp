@@ -1,5 +1,6 @@
 #include "gen/model/feature_records.h"
 
+#include "gen/model/features/class_textures_record.h"
 #include "gen/model/features/halves_facts.h"
 #include "gen/model/features/legend_record.h"
 #include "gen/model/features/orientation_tab_record.h"
@@ -12,6 +13,7 @@ const std::vector<FeatureRecord>& featureRecords() {
         {"marks.tab", tabRecord, readTabRecord},
         {"legend", legendRecord, readLegendRecord},
         {"scale", scaleRecord, readScaleRecord},
+        {"class_textures", classTexturesRecord, readClassTexturesRecord},
     };
     return records;
 }
@@ -22,6 +24,7 @@ const std::vector<FeatureFacts>& featureFacts() {
         {"legend", true, legendFactsJson, legendFactsLines},
         {"scale", true, scaleFactsJson, scaleFactsLines},
         {"halves", false, halvesFactsJson, halvesFactsLines},
+        {"class_textures", false, classTexturesFactsJson, classTexturesFactsLines},
     };
     return facts;
 }

@@ -33,6 +33,7 @@
 #include "gen/model/scene_halves.h"
 #include "gen/model/scene_marks.h"
 #include "gen/model/scene_scale.h"
+#include "gen/model/scene_textures.h"
 #include "gen/model/scene_top_shapes.h"
 
 namespace tsf {
@@ -118,6 +119,8 @@ struct SceneParams {
     double steepness = 1.0;        ///< multiplies every tilt's slope (> 0)
     double max_slope_deg = kDefaultMaxSlopeDeg;  ///< steepest a tilted top may lean, degrees from level
     bool structural_texture = false;  ///< dimple the cells kept only to hold the model together
+    // --- a class map's textures (gen/model/features/class_textures.h) ---
+    ClassTextureRequest class_textures;
     // --- braille legend (gen/model/features/legend_scene.h) ---
     LegendRequest legend;
     // --- tactile scale (gen/model/features/scale.h) ---
@@ -187,6 +190,10 @@ struct Scene {
     /// Tilted tops and the dimples of structural cells (empty: every top a
     /// level hexagon). Planar ids after the faces' (gen/model/features/top_shapes.h).
     TopShapes shapes;
+    /// A class map's classes at one height, told apart by the textures of
+    /// their tops (gen/model/features/class_textures.h); none for measurements
+    /// and for classes given an order.
+    std::optional<SceneTextures> textures;
     /// The braille legend's plate north of the pillars (gen/model/features/legend_scene.h); none unless asked for.
     std::optional<SceneLegend> legend;
     /// The tactile scale east of the pillars (gen/model/features/scale.h); none unless asked for.

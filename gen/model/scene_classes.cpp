@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 
+#include "gen/model/features/class_textures.h"
 #include "gen/util/number_format.h"
 
 namespace tsf {
@@ -16,13 +17,25 @@ std::vector<SceneClass> sceneClasses(const Scene& s, const std::vector<RasterCla
         const size_t rank = size_t(s.value[k]);
         c.code = order.empty() ? s.value[k] : rank >= 1 && rank <= order.size() ? order[rank - 1] : NAN;
         ++c.cells;
-        c.height_mm = s.zMm(snapUnits(s.mapping.heightMm(s.value[k]), s.z_snap_mm));
+        // As the cell stands: its top above the floor (mirrored: its bottom).
+        c.height_mm = s.zMm(s.params.bottom == Bottom::Mirrored ? s.bottom[k] : s.top[k] - s.floor_units);
     }
     std::vector<SceneClass> out;
     for (auto& [value, c] : by_code) {
         for (const RasterClass& n : names)
             if (n.code == c.code) c.name = n.name;
         out.push_back(std::move(c));
+    }
+    if (s.textures) {
+        std::vector<SceneClass> by_texture;
+        for (const ClassTexture& t : s.textures->classes)
+            for (SceneClass& c : out)
+                if (c.code == t.code) {
+                    c.texture = textureName(t.texture);
+                    c.texture_shared = t.shared;
+                    by_texture.push_back(std::move(c));
+                }
+        out.swap(by_texture);
     }
     return out;
 }

@@ -42,6 +42,11 @@
 //           west, east], y_mm [south, north], foot_top_units,
 //           steps [[value, top_units, y_south_mm, y_north_mm], ...],
 //           contacts [kept index], fillers [kept index]},
+//   class_textures: null | {height_units, relief_units, textures_used,
+//           classes [[code, texture name, shared, cells], ...] commonest first}
+//           (a class map's classes at one height, told apart by texture:
+//           gen/model/features/class_textures.h; the textures themselves are
+//           the cells' shapes),
 //   hull [[i, j], ...], notes [...],
 //   model (optional) {file, bytes, xxh3_64}: the model file written with
 //         this sidecar (tsf gen -o): its name without folder, its size and
@@ -54,7 +59,7 @@
 //           shape (only a tilted or structural cell): {top_dz [6], centre_dz,
 //                  bottom_dz [6], bottom_centre_dz (mirrored), slope [x, y] mm/mm,
 //                  structural}}, ...]   -- ordered by (row, col)
-// marks.tab, legend and scale are the features' own records, each written
+// marks.tab, legend, scale and class_textures are the features' own records, each written
 // and read by its feature (gen/model/feature_records.h: the one list); the
 // sidecar places them at those members and names no feature.
 // Heights (top, bottom, floor_units, ...) are integers in z_snap_mm units;

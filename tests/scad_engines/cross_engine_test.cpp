@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "engine_fixtures.h"
+#include "tests/support/fields.h"
 #include "gen/mesh/direct_mesher.h"
 #include "gen/mesh/halves_mesh.h"
 #include "gen/mesh_io/stl_reader.h"
@@ -194,6 +195,43 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) {
         return std::get<0>(info.param) + "_" + std::get<1>(info.param) + "_" + toString(std::get<2>(info.param));
     });
+
+// A class map's textures (ridges both ways, dimples, bumps, level) at one
+// height, with a pit without data and the orientation tab beside textured
+// cells: the .scad holds the class codes under the constant mapping and the
+// textures as shaped tops, and both engines draw the direct mesher's solid,
+// flat and mirrored.
+class CrossEngineClassTextures : public ::testing::TestWithParam<std::tuple<std::string, Bottom>> {};
+
+TEST_P(CrossEngineClassTextures, RendersTheSameSolidAsTheDirectMesher) {
+    const auto& [engine_name, bottom] = GetParam();
+    TSF_NEED_ENGINE(engineNamed(engine_name));
+    // Five classes in bands of different widths, so each gets its own texture.
+    HexField field = test::fieldFromFunction(9, 6, [](int c, int r) {
+        if (c == 0 && r == 0) return double(NAN);
+        return c < 3 ? 11.0 : c < 5 ? 41.0 : c < 7 ? (r < 3 ? 90.0 : 95.0) : (r < 2 ? 21.0 : 95.0);
+    });
+    field.input.categorical = true;
+    SceneParams p = test::terrainParams(bottom);
+    p.marks = MarkParams{};  // the tab, against textured walls
+    p.pitch_mm = 5.0;
+    const Scene scene = buildScene(field, p);
+    ASSERT_TRUE(scene.textures.has_value());
+    EXPECT_EQ(scene.textures->textures_used, 5);
+    ASSERT_TRUE(scene.marks.tab.has_value());
+    const fs::path dir = test::scratchDir("textures_" + engine_name + "_" + toString(bottom));
+    ScadOptions opts;
+    opts.inline_library = bottom == Bottom::Flat;
+    writeScad(scene, opts, (dir / "model.scad").string());
+    expectSameSolid(*engineNamed(engine_name).engine, scene, dir / "model.scad", dir / "model.stl");
+}
+
+INSTANTIATE_TEST_SUITE_P(EnginesBottoms, CrossEngineClassTextures,
+                         ::testing::Combine(::testing::Values("openscad", "wasm"),
+                                            ::testing::Values(Bottom::Flat, Bottom::Mirrored)),
+                         [](const auto& info) {
+                             return std::get<0>(info.param) + "_" + toString(std::get<1>(info.param));
+                         });
 
 // The braille legend: the plate and dots tsf meshes, written as data and
 // joined to the pillars by each engine, the same solid as the direct mesher's

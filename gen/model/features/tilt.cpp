@@ -84,7 +84,7 @@ std::vector<PlaneSlope> tiltSlopes(const HexField& field, const Scene& s, TiltSo
 }
 
 void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double steepness,
-                      const std::vector<uint8_t>& structural) {
+                      const std::vector<uint8_t>& structural, const std::vector<int32_t>& centre_dz) {
     TopShapes& t = s.shapes;
     const size_t n = s.keptCount();
     const bool mirrored = s.params.bottom == Bottom::Mirrored;
@@ -174,6 +174,15 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
             t.slope_y[k] = lambda * gy;
         }
     }
+
+    // Class textures' dimples and bumps: the centre moves, the corners stay.
+    if (!centre_dz.empty())
+        for (size_t k = 0; k < n; ++k) {
+            if (centre_dz[k] == 0 || s.kind[k] != CellKind::Data || t.structural[k]) continue;
+            if (!s.drawn_by_face.empty() && s.drawn_by_face[k]) continue;
+            t.top_centre_dz[k] = centre_dz[k];
+            if (mirrored) t.bottom_centre_dz[k] = centre_dz[k];
+        }
 
     // Structural cells: a cone into the top (and, mirrored, into the bottom).
     const int64_t base_units = snapUnits(s.params.base_mm, s.z_snap_mm);

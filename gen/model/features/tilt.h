@@ -41,7 +41,10 @@ std::vector<PlaneSlope> tiltSlopes(const HexField& field, const Scene& scene, Ti
 /// the dimple of each structural cell (structural: per kept cell), the
 /// mirrored thickness grown to cover the corners' steps, then the crossings
 /// (buildTopShapeGeometry). Adds a note when tilts were clamped.
+/// `centre_dz` (empty, or per kept cell, z units) raises or lowers the
+/// centre of a data cell's top (a class texture's bump or dimple; mirrored,
+/// its bottom's centre the same, so the slab keeps its thickness).
 void resolveTopShapes(Scene& scene, const std::vector<PlaneSlope>& slopes, double steepness,
-                      const std::vector<uint8_t>& structural);
+                      const std::vector<uint8_t>& structural, const std::vector<int32_t>& centre_dz = {});
 
 }  // namespace tsf

@@ -46,6 +46,19 @@ int64_t cornerTopAt(const Scene& s, size_t k, int64_t id) {
 int64_t cornerBottomAt(const Scene& s, size_t k, int64_t id) {
     return s.shapes.bottom_dz.empty() ? s.bottom[k] : cornerBottom(s, k, cornerOf(s, k, id));
 }
+int64_t highestPillarTop(const Scene& s) {
+    int64_t top = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        int64_t t = s.top[k];
+        if (!s.shapes.empty()) {
+            for (const int32_t dz : s.shapes.top_dz[k]) t = std::max(t, s.top[k] + dz);
+            t = std::max(t, s.top[k] + s.shapes.top_centre_dz[k]);
+        }
+        top = std::max(top, t);
+    }
+    return top;
+}
+
 int64_t centreTop(const Scene& s, size_t k) { return s.top[k] + (s.shapes.empty() ? 0 : s.shapes.top_centre_dz[k]); }
 int64_t centreBottom(const Scene& s, size_t k) {
     return s.bottom[k] + (s.shapes.bottom_centre_dz.empty() ? 0 : s.shapes.bottom_centre_dz[k]);

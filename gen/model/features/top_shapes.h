@@ -55,6 +55,10 @@ int64_t cornerBottomAt(const Scene& s, size_t k, int64_t id);
 int64_t centreTop(const Scene& s, size_t k);
 int64_t centreBottom(const Scene& s, size_t k);
 
+/// The highest z (units) any pillar's top reaches: its level top, or its
+/// shaped top's highest corner or centre (marks and attachments not counted).
+int64_t highestPillarTop(const Scene& s);
+
 /// Which face lies across each directed edge (v, w) of a face ring (planar ids).
 std::map<std::pair<int64_t, int64_t>, int32_t> facesOnEdges(const Scene& scene);
 
