@@ -155,7 +155,7 @@ MeshTop meshTopField(Mesh& mesh, const std::string& path) {
         for (int32_t c = 0; c < f.grid.cols; ++c) {
             const LatticePoint centre = hexCentre(f.grid, c, r);
             const auto i = int32_t(std::floor((latticeX(centre, pitch) - top.x0_mm) / top.sample_mm));
-            const auto j = int32_t(std::floor((latticeY(centre, pitch) - top.y0_mm) / top.sample_mm));
+            const auto j = int32_t(std::floor((latticeY(centre, pitch, 1.0) - top.y0_mm) / top.sample_mm));
             if (i >= 0 && j >= 0 && i < top.cols && j < top.rows) f.at(c, r) = top.z_mm[size_t(j) * size_t(top.cols) + size_t(i)];
         }
     double lowest = INFINITY;

@@ -153,6 +153,12 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "--depth", [&o, &p](double v) { p.fit_depth_mm = v; o.fit_depth_mm = v; p.fit_box_given = true; },
            "Fit the grid into this depth, mm (default 150). With --cell: the model must fit it")
         ->check(CLI::PositiveNumber)->group(model);
+    cmd->add_flag_callback(
+           "--regular-hexagons", [&o, &p] { p.true_aspect = o.true_aspect = false; },
+           "One pillar per value of a raster: regular hexagons, rows 0.866 of a cell apart, so the model is 13% "
+           "shallower north-south than the ground (default: the hexagons stretched north-south so rows stand a "
+           "cell apart and the model keeps the ground's proportions)")
+        ->group(model);
     cmd->add_option("--height", p.max_height_mm, "Height of the largest value above the floor, mm")
         ->check(CLI::NonNegativeNumber)->capture_default_str()->group(model);
     cmd->add_option("--base", p.base_mm, "Flat: base under the floor; mirrored: thinnest slab, mm")

@@ -8,6 +8,7 @@
 #include "gen/util/number_format.h"
 
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <sstream>
 
@@ -38,8 +39,9 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     j["cells"] = {{"total", s.grid.cellCount()}, {"with_data", s.cells_with_data},
                   {"nonempty", s.cells_nonempty}, {"kept", s.keptCount()}, {"kept_without_data", s.cells_nodata_kept}};
     j["pitch_mm"] = s.pitch_mm;
+    j["y_scale"] = s.y_scale;  // the hexagons' north-south stretch (1: regular)
     const double zmax = s.zMm(highestPillarTop(s));
-    j["size_mm"] = {gridWidth(s.grid, s.pitch_mm), gridDepth(s.grid, s.pitch_mm), zmax};
+    j["size_mm"] = {gridWidth(s.grid, s.pitch_mm), gridDepth(s.grid, s.pitch_mm, s.y_scale), zmax};
     if (s.keptCount() > 0) {
         // The footprint of everything placed: the pillars and every attachment.
         const BoxMm f = sceneFootprint(s);
@@ -66,14 +68,14 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     if (s.marks.notch)
         marks["notch"] = {{"depth_mm", s.marks.notch->depth_mm}, {"width_mm", s.marks.notch->width_mm},
                           {"opening_deg", s.marks.notch->opening_deg},
-                          {"apex_mm", {planarX(s.marks.notch->apex, s.pitch_mm), planarY(s.marks.notch->apex, s.pitch_mm)}}};
+                          {"apex_mm", {planarX(s.marks.notch->apex, s.pitch_mm), planarY(s.marks.notch->apex, s.pitch_mm, s.y_scale)}}};
     else
         marks["notch"] = nullptr;
     if (s.marks.triangle)
         marks["triangle"] = {{"leg_x_mm", s.marks.triangle->leg_x_mm}, {"leg_y_mm", s.marks.triangle->leg_y_mm},
                              {"height_mm", s.zMm(s.marks.triangle->raise_units)},
                              {"corner_mm", {planarX(s.marks.triangle->corner, s.pitch_mm),
-                                            planarY(s.marks.triangle->corner, s.pitch_mm)}}};
+                                            planarY(s.marks.triangle->corner, s.pitch_mm, s.y_scale)}}};
     else
         marks["triangle"] = nullptr;
     j["marks"] = marks;
@@ -91,7 +93,7 @@ nlohmann::json sceneFactsJson(const Scene& s) {
 
 std::string formatSceneFacts(const Scene& s) {
     std::ostringstream o;
-    const double w = gridWidth(s.grid, s.pitch_mm), d = gridDepth(s.grid, s.pitch_mm);
+    const double w = gridWidth(s.grid, s.pitch_mm), d = gridDepth(s.grid, s.pitch_mm, s.y_scale);
     const double zmax = s.zMm(highestPillarTop(s));
     o << "  cells     " << s.keptCount() << " kept of " << s.grid.cols << " x " << s.grid.rows << " = "
       << s.grid.cellCount() << " (" << s.cells_nonempty << " above the floor, " << s.cells_with_data - s.cells_nonempty
@@ -117,6 +119,13 @@ std::string formatSceneFacts(const Scene& s) {
         o << "  bottom    mirrored: every pillar " << formatFixed(s.zMm(s.mirror_thickness_units), 2)
           << " mm thick; the underside shows the negated data\n";
     o << "  z snap    " << formatSignificant(s.z_snap_mm, 4) << " mm\n";
+    if (s.y_scale != 1.0)
+        o << "  aspect    true: the hexagons are stretched " << formatFixed(100.0 * (s.y_scale - 1.0), 1)
+          << "% north-south so rows of pillars stand a cell apart, as the raster's rows do on the ground "
+             "(--regular-hexagons: regular ones, the model 13% shallower)\n";
+    else if (!s.params.true_aspect && s.one_to_one)
+        o << "  aspect    regular hexagons (--regular-hexagons): rows 0.866 of a cell apart, so the model is 13% "
+             "shallower north-south than the ground\n";
     if (s.one_to_one)
         o << "  values    one pillar per value: each of the " << s.cells_with_data
           << (s.textures ? " values is one pillar with its class's texture\n" : " values stands at its own height\n");
@@ -127,7 +136,7 @@ std::string formatSceneFacts(const Scene& s) {
         const OrientationTriangle& t = *s.marks.triangle;
         o << "  triangle  raised " << formatFixed(s.zMm(t.raise_units), 2) << " mm, legs " << formatFixed(t.leg_x_mm, 1)
           << " mm east (x) and " << formatFixed(t.leg_y_mm, 1) << " mm north (y), right angle at ("
-          << formatFixed(planarX(t.corner, s.pitch_mm), 1) << ", " << formatFixed(planarY(t.corner, s.pitch_mm), 1) << ") mm\n";
+          << formatFixed(planarX(t.corner, s.pitch_mm), 1) << ", " << formatFixed(planarY(t.corner, s.pitch_mm, s.y_scale), 1) << ") mm\n";
     }
     if (s.params.tilt != TiltSource::None)
         o << "  tilt      " << toString(s.params.tilt) << " x " << formatSignificant(s.params.steepness, 3) << ": "
@@ -164,11 +173,73 @@ static std::string classesLine(const Scene& scene, const FieldInput& input) {
     return o + "\n";
 }
 
+namespace {
+
+// The ground a raster covers and the model's scale on it: 1 : N east-west
+// and north-south (the same with true aspect). None when the file does not
+// say how long its units are.
+struct GroundScale {
+    double width_m = 0, depth_m = 0;
+    double east_west = 0, north_south = 0;  ///< N of 1 : N
+};
+
+std::optional<GroundScale> groundScale(const Scene& scene, const HexField& field) {
+    const FieldInput& in = field.input;
+    if (!(in.metres_per_unit > 0) || !(scene.pitch_mm > 0)) return std::nullopt;
+    GroundScale g;
+    g.width_m = in.ground_width_m;
+    g.depth_m = in.ground_depth_m;
+    const double across_m = field.pitch_data * in.metres_per_unit;  // one pitch on the ground
+    g.east_west = across_m * 1000.0 / scene.pitch_mm;
+    // Rows: a raster's own a pixel apart, a lattice's laid over the ground
+    // sqrt(3)/2 of a pitch; on the model sqrt(3)/2 of a pitch, stretched.
+    const double row_ground_m = field.rows_a_pitch_apart ? across_m : across_m * kSqrt3 / 2;
+    g.north_south = row_ground_m * 1000.0 / latticeY({0, 3}, scene.pitch_mm, scene.y_scale);
+    return g;
+}
+
+// N of a scale 1 : N as a map gives it: three significant digits, whole,
+// thousands apart ("15 000", "1 250 000"; below 1: as it is).
+std::string scaleNumber(double n) {
+    if (!(n >= 1) || !std::isfinite(n)) return formatSignificant(n, 3);
+    const double unit = std::pow(10.0, std::max(0.0, std::floor(std::log10(n)) - 2));
+    std::string digits = std::to_string(int64_t(std::llround(n / unit) * int64_t(unit)));
+    for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(size_t(at), " ");
+    return digits;
+}
+
+std::string groundLine(const GroundScale& g, const FieldInput& in) {
+    auto size = [](double m) {
+        return m >= 10000 ? formatSignificant(m / 1000, 4) + " km" : formatSignificant(m, 4) + " m";
+    };
+    std::string o = "  ground    " + size(g.width_m) + " x " + size(g.depth_m) + "; scale 1 : " +
+                    scaleNumber(g.east_west) + " (1 mm on the model is " + size(g.east_west / 1000) +
+                    " on the ground)";
+    if (std::abs(g.north_south / g.east_west - 1) > 1e-6)
+        o += ", north-south 1 : " + scaleNumber(g.north_south);
+    if (in.longitude_scale > 0)
+        o += "; longitude and latitude: a degree of longitude counted as cos(mean latitude) = " +
+             formatSignificant(in.longitude_scale, 4) + " of a degree of latitude";
+    return o + "\n";
+}
+
+}  // namespace
+
 nlohmann::json summaryJson(const GenSummary& s) {
     nlohmann::json j;
     j["input"] = s.input;
     if (s.field) j["field"] = {{"how", s.field->how}, {"pitch_data_units", s.field->pitch_data}};
     if (s.scene) j["scene"] = sceneFactsJson(*s.scene);
+    j["ground"] = nullptr;
+    if (s.scene && s.field)
+        if (const auto g = groundScale(*s.scene, *s.field))
+            j["ground"] = {{"width_m", g->width_m},
+                           {"depth_m", g->depth_m},
+                           {"scale", g->east_west},
+                           {"scale_north_south", g->north_south},
+                           {"longitude_scale", s.field->input.longitude_scale > 0
+                                                   ? nlohmann::json(s.field->input.longitude_scale)
+                                                   : nlohmann::json(nullptr)}};
     if (s.scene && s.field && s.field->input.categorical) {
         nlohmann::json classes = nlohmann::json::array();
         for (const SceneClass& c : sceneClasses(*s.scene, s.field->input.classes, s.field->input.class_order))
@@ -202,6 +273,8 @@ std::string formatSummary(const GenSummary& s) {
     if (s.field) o << "  input     " << s.field->how << "\n";
     for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
     if (s.scene) o << formatSceneFacts(*s.scene);
+    if (s.scene && s.field)
+        if (const auto g = groundScale(*s.scene, *s.field)) o << groundLine(*g, s.field->input);
     if (s.scene && s.field && s.field->input.categorical) o << classesLine(*s.scene, s.field->input);
     if (s.mesh)
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "

@@ -127,7 +127,7 @@ void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& print
         j_lo = std::min(j_lo, c.j - 2), j_hi = std::max(j_hi, c.j + 2);
     }
     const double pw = scene.keptCount() ? latticeX({i_hi - i_lo, 0}, scene.pitch_mm) : mw;
-    const double pd = scene.keptCount() ? latticeY({0, j_hi - j_lo}, scene.pitch_mm) : md;
+    const double pd = scene.keptCount() ? latticeY({0, j_hi - j_lo}, scene.pitch_mm, scene.y_scale) : md;
     const double fw = std::max(0.0, mw - pw), fd = std::max(0.0, md - pd);
     // The largest cell that fits, rounded down to 0.01 mm.
     const double scale = std::min(pw > 0 ? (w - fw) / pw : 0.0, pd > 0 ? (d - fd) / pd : 0.0);

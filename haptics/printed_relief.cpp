@@ -67,7 +67,7 @@ HeightGrid printedRelief(const Scene& scene, ReliefInfo* info) {
 HeightGrid meshRelief(const Scene& scene, const Mesh& mesh, ReliefInfo* info) {
     const Bounds b = meshBounds(mesh);
     const double width_p = std::max(gridWidth(scene.grid, 1.0), std::isfinite(b.max.x) ? b.max.x / scene.pitch_mm : 0.0);
-    const double depth_p = std::max(gridDepth(scene.grid, 1.0), std::isfinite(b.max.y) ? b.max.y / scene.pitch_mm : 0.0);
+    const double depth_p = std::max(gridDepth(scene.grid, 1.0, scene.y_scale), std::isfinite(b.max.y) ? b.max.y / scene.pitch_mm : 0.0);
     int per_pitch = kReliefSamplesPerPitch;
     const double west_p = std::isfinite(b.min.x) ? std::max(0.0, -b.min.x / scene.pitch_mm) : 0.0;
     const double south_p = std::isfinite(b.min.y) ? std::max(0.0, -b.min.y / scene.pitch_mm) : 0.0;
@@ -136,7 +136,7 @@ GridPoint reliefCellCentre(const Scene& scene, int32_t col, int32_t row, const R
     // Sample i covers [i - origin_i, i - origin_i + 1) / samples_per_pitch
     // pitches of the model frame; its centre is grid coordinate i.
     return {latticeX(c, 1.0) * info.samples_per_pitch - 0.5 + info.origin_i,
-            latticeY(c, 1.0) * info.samples_per_pitch - 0.5 + info.origin_j};
+            latticeY(c, 1.0, scene.y_scale) * info.samples_per_pitch - 0.5 + info.origin_j};
 }
 
 std::vector<SweepLine> reliefRowLines(const Scene& scene, const ReliefInfo& info, const FieldMapping& mapping) {

@@ -52,7 +52,7 @@ function _tsf_ref_span_at(ref, p, faces, spans, raise_units, shapes, rows) =
       len(e) == 1 ? _tsf_corner_span(spans, shapes, ref[0], ref[1], e[0]) : _tsf_ref_span(ref, faces, spans, raise_units);
 
 // [x, y] (mm, rounded to 1 um) of a point in lattice units.
-function _tsf_face_xy(p, cell_mm) = [_tsf_snap_xy(p[0] * cell_mm * 0.5), _tsf_snap_xy(p[1] * cell_mm / (2 * sqrt(3)))];
+function _tsf_face_xy(p, cell_mm) = [_tsf_snap_xy(p[0] * cell_mm * 0.5), _tsf_snap_xy(p[1] * cell_mm / (2 * sqrt(3)) * _tsf_y_scale())];
 
 // Every triangle of face f (top, bottom, walls), counter-clockwise from
 // outside, as a flat list of points (three per triangle). shapes: the

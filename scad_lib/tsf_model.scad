@@ -305,7 +305,10 @@ function _tsf_corner_offsets() = [[1, -1], [1, 1], [0, 2], [-1, 1], [-1, -1], [0
 // The xy grid: 1 um. Every x and y is rounded to it (same expression as tsf's Scene::point).
 function _tsf_snap_xy(mm) = round(mm / 0.001) * 0.001;
 function _tsf_lattice_x(i, cell_mm) = i * cell_mm * 0.5;
-function _tsf_lattice_y(j, cell_mm) = j * cell_mm / (2 * sqrt(3));
+function _tsf_lattice_y(j, cell_mm) = j * cell_mm / (2 * sqrt(3)) * _tsf_y_scale();
+// The lattice's north-south stretch (tsf's Scene::y_scale): $tsf_y_scale where
+// the model's file sets it (true aspect: rows one cell apart), else 1.
+function _tsf_y_scale() = is_undef($tsf_y_scale) ? 1 : $tsf_y_scale;
 function _tsf_centre_ij(col, row, rows) = [2 * col + row % 2 + 1, 3 * (rows - 1 - row) + 2];
 
 // A finite number: at most the largest double (OpenSCAD has no isfinite();

@@ -40,7 +40,7 @@ function _tsf_corner_span(spans, shapes, c, r, e) =
       is_undef(sh) ? s : [s[0] + (len(sh[2]) > 0 ? sh[2][e] : 0), s[1] + sh[0][e]];
 
 // [x, y] (mm, rounded to 1 um) of a crossing [i, j, z].
-function _tsf_cross_xy(x, cell_mm) = [_tsf_snap_xy(x[0] * cell_mm * 0.5), _tsf_snap_xy(x[1] * cell_mm / (2 * sqrt(3)))];
+function _tsf_cross_xy(x, cell_mm) = [_tsf_snap_xy(x[0] * cell_mm * 0.5), _tsf_snap_xy(x[1] * cell_mm / (2 * sqrt(3)) * _tsf_y_scale())];
 
 // A vertical wall from pl to pr (counter-clockwise around its owner) from
 // zl0 to zl1 at pl and zr0 to zr1 at pr (z steps; a side may be one point);

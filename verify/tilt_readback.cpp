@@ -30,7 +30,7 @@ TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const Tria
     const double z_above = b.max.z + kRayStartClearanceMm, z_below = b.min.z - kRayStartClearanceMm;
     const double float32_mm = std::max(std::fabs(b.max.z), std::fabs(b.min.z)) * kFloat32UnitRoundoff;
     const bool mirrored = scene.params.bottom == Bottom::Mirrored;
-    const double spoke_mm = 0.5 * scene.pitch_mm / kSqrt3;  // |d|: half the circumradius
+    const double spoke_mm = 0.5 * scene.pitch_mm / kSqrt3;  // the shortest spoke: half a regular hexagon's circumradius
     std::vector<std::pair<double, std::string>> bad;
 
     // The slope of the surface met from above (top) or below (bottom).
@@ -46,7 +46,9 @@ TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const Tria
         };
         double zc = 0;
         if (!zAt(centre.x, centre.y, zc)) return m;
-        double sx = 0, sy = 0;
+        // The least-squares plane through the centre and the six spokes'
+        // ends (a stretched lattice's spokes differ in length: hex_grid.h).
+        double sx = 0, sy = 0, mxx = 0, mxy = 0, myy = 0;
         for (int e = 0; e < kHexCorners; ++e) {
             const Vec3 corner = scene.point(hexCorner(scene.grid, c, row, e), 0);
             const double dx = 0.5 * (corner.x - centre.x), dy = 0.5 * (corner.y - centre.y);
@@ -54,10 +56,14 @@ TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const Tria
             if (!zAt(centre.x + dx, centre.y + dy, z)) return m;
             sx += (z - zc) * dx;
             sy += (z - zc) * dy;
+            mxx += dx * dx;
+            mxy += dx * dy;
+            myy += dy * dy;
         }
-        m.ok = true;
-        m.gx = sx / (3.0 * spoke_mm * spoke_mm);
-        m.gy = sy / (3.0 * spoke_mm * spoke_mm);
+        const double det = mxx * myy - mxy * mxy;
+        m.ok = det > 0;
+        m.gx = (myy * sx - mxy * sy) / det;
+        m.gy = (mxx * sy - mxy * sx) / det;
         return m;
     };
 

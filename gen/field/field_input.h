@@ -30,6 +30,11 @@ struct FieldInput {
     /// each class is one even step of height; empty: the values are the
     /// codes and the heights follow them.
     std::vector<double> class_order;
+    /// The ground the raster covers, metres (0 when the file does not say:
+    /// Raster::metres_per_unit), and how longitude was scaled (Raster::longitude_scale).
+    double ground_width_m = 0, ground_depth_m = 0;
+    double metres_per_unit = 0;
+    double longitude_scale = 0;
 };
 
 /// Counts `values` (NaN = no data) and takes min, max and mean of the others.

@@ -27,6 +27,11 @@ struct HexField {
     /// True when every cell holds one input value as read (no averaging,
     /// no interpolation, no cell repeated): one pillar per value.
     bool one_to_one = false;
+    /// The rows are a raster's rows, as far apart on the ground as its
+    /// columns (square pixels, one hexagon per pixel: rasterOneToOne), not
+    /// sqrt(3)/2 of that as a lattice laid over the ground has them; a
+    /// Scene with true aspect stretches the hexagons to match (hex_grid.h).
+    bool rows_a_pitch_apart = false;
     /// What was read from the file (filled by loadField, gen/readers/load_field.h).
     FieldInput input;
     /// Point input (gen/readers/point_binning.h): per cell, the sums of its points'

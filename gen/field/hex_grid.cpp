@@ -89,9 +89,9 @@ double gridWidth(const HexGrid& grid, double pitch) {
     return double(imax) * pitch * 0.5;
 }
 
-double gridDepth(const HexGrid& grid, double pitch) {
+double gridDepth(const HexGrid& grid, double pitch, double y_scale) {
     if (grid.cols == 0 || grid.rows == 0) return 0.0;
-    return double(3 * int64_t(grid.rows) + 1) * pitch / (2.0 * kSqrt3);
+    return latticeY({0, 3 * int64_t(grid.rows) + 1}, pitch, y_scale);
 }
 
 bool hexCellAt(const HexGrid& grid, double x, double y, int32_t& col, int32_t& row) {

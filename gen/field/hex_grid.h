@@ -8,7 +8,12 @@
 //
 // Lattice coordinates. Every centre and every corner has exact integer
 // coordinates (i, j); the model frame (x east, y north, millimetres) is
-//     x = i * pitch / 2,     y = j * pitch / (2 * sqrt(3)).
+//     x = i * pitch / 2,     y = j * pitch / (2 * sqrt(3)) * y_scale.
+// y_scale is 1 for regular hexagons (rows sqrt(3)/2 of a pitch apart);
+// kRowsAPitchApart stretches them north-south so rows stand one pitch apart,
+// as the rows of a raster with square pixels do on the ground (true aspect
+// for one pillar per value: docs/model.md). The stretch is an affine map of
+// the whole lattice, so the topology on the integers is the same.
 // The lower-left corner of the grid's bounding box is (0, 0). Topology (which
 // corner is shared by which cells) is decided on these integers only, never by
 // comparing floating-point positions.
@@ -21,6 +26,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -44,6 +50,8 @@ struct LatticePoint {
 
 inline constexpr int kHexCorners = 6;
 inline constexpr double kSqrt3 = 1.7320508075688772935;
+/// The y_scale that puts rows of hexagons one pitch apart: 2 / sqrt(3).
+inline constexpr double kRowsAPitchApart = 2.0 / kSqrt3;
 
 /// Centre of cell (col, row) in lattice coordinates. Works for cells outside
 /// the grid too (used for the ring of virtual neighbours).
@@ -66,13 +74,17 @@ LatticePoint latticeVertexPoint(const HexGrid& grid, int64_t id);
 /// outside the grid.
 void latticeVertexCells(const HexGrid& grid, int64_t id, int32_t col[3], int32_t row[3]);
 
-/// x, y (mm) of a lattice point for a given pitch (mm).
+/// x, y (mm) of a lattice point for a given pitch (mm) and north-south
+/// stretch (y_scale, see the file comment).
 inline double latticeX(const LatticePoint& p, double pitch) { return double(p.i) * pitch * 0.5; }
-inline double latticeY(const LatticePoint& p, double pitch) { return double(p.j) * pitch / (2.0 * kSqrt3); }
+inline double latticeY(const LatticePoint& p, double pitch, double y_scale) {
+    return double(p.j) * pitch / (2.0 * kSqrt3) * y_scale;
+}
 
-/// Width and depth (mm) of the grid's bounding box for a given pitch (mm).
+/// Width and depth (mm) of the grid's bounding box for a given pitch (mm)
+/// and north-south stretch.
 double gridWidth(const HexGrid& grid, double pitch);
-double gridDepth(const HexGrid& grid, double pitch);
+double gridDepth(const HexGrid& grid, double pitch, double y_scale);
 
 /// The cell whose hexagon contains (x, y), both given in units of the pitch in
 /// the model frame (x east, y north, origin at the grid's lower-left corner).
@@ -89,7 +101,15 @@ int32_t labelCellComponents(const HexGrid& grid, const std::vector<uint8_t>& mar
 /// The number of edge-connected components of the marked cells.
 int32_t componentCount(const HexGrid& grid, const std::vector<uint8_t>& marked);
 
-/// Area of one hexagon in mm^2 for a given pitch in mm.
-inline double hexArea(double pitch) { return kSqrt3 / 2.0 * pitch * pitch; }
+/// Distance (mm) from a hexagon's centre to its farthest corner, for a pitch
+/// and north-south stretch: the top corner of a stretched hexagon, a side
+/// corner of a squashed one; pitch / sqrt(3) for a regular hexagon.
+inline double hexCircumradius(double pitch, double y_scale) {
+    const double r = pitch / kSqrt3;
+    return y_scale >= 1.0 ? r * y_scale : 0.5 * std::sqrt(pitch * pitch + r * r * y_scale * y_scale);
+}
+
+/// Area of one hexagon in mm^2 for a given pitch in mm and north-south stretch.
+inline double hexArea(double pitch, double y_scale) { return kSqrt3 / 2.0 * pitch * pitch * y_scale; }
 
 }  // namespace tsf

@@ -25,6 +25,10 @@ struct RasterClass {
     std::string name;  ///< its name in the file ("Open water"); "" when the file gives none
 };
 
+/// Metres along a meridian per degree of latitude on the mean Earth sphere
+/// (radius 6 371 008.8 m, IUGG): within 0.6 % of the ellipsoid's at any latitude.
+inline constexpr double kMetresPerDegreeOfLatitude = 6371008.8 * 3.14159265358979323846 / 180.0;
+
 struct Raster {
     int32_t cols = 0;
     int32_t rows = 0;
@@ -45,6 +49,13 @@ struct Raster {
     std::string kind;            ///< "csv", "pgm", "png", "esri-ascii", ...
     /// Size of one raster cell in data units (ESRI cellsize; 1 for images/CSV).
     double cell_size = 1.0;
+    /// Metres on the ground per data unit of cell_size: a projected CRS's
+    /// linear unit, kMetresPerDegreeOfLatitude for degrees; 0 when the file
+    /// does not say (a picture, a CSV, a grid without a CRS).
+    double metres_per_unit = 0.0;
+    /// Geographic coordinates: a degree of longitude counted as this much of
+    /// a degree of latitude (cos of the mean latitude); 0 otherwise.
+    double longitude_scale = 0.0;
     /// Lower-left corner of the lower-left cell in data units (ESRI xllcorner/yllcorner).
     double x_origin = 0.0;
     double y_origin = 0.0;

@@ -26,7 +26,7 @@ struct PixelPoint {
 
 PixelPoint hexCentrePx(const ResampleLayout& layout, int32_t col, int32_t row) {
     const LatticePoint c = hexCentre(layout.grid, col, row);
-    return {layout.x0_px + latticeX(c, layout.pitch_px), layout.y0_px - latticeY(c, layout.pitch_px)};
+    return {layout.x0_px + latticeX(c, layout.pitch_px), layout.y0_px - latticeY(c, layout.pitch_px, 1.0)};
 }
 
 // Calls visit(grid index, value) for every pixel whose centre lies in a
@@ -95,7 +95,7 @@ ResampleLayout resampleLayout(int32_t raster_cols, int32_t raster_rows, int hex_
         layout.grid = {cols, int32_t(rows)};
     }
     const double width = gridWidth(layout.grid, layout.pitch_px);
-    const double depth = gridDepth(layout.grid, layout.pitch_px);
+    const double depth = gridDepth(layout.grid, layout.pitch_px, 1.0);
     layout.x0_px = 0.5 * (raster_cols - width);
     layout.y0_px = 0.5 * (raster_rows + depth);
     return layout;
@@ -211,10 +211,10 @@ HexField rasterOneToOne(const Raster& raster) {
     // A decimated file's values are already means of its pixels: one pillar
     // per value read, but not per value of the file.
     field.one_to_one = raster.decimation <= 1;
+    field.rows_a_pitch_apart = true;
     field.how = decimatedPrefix(raster) + "one pillar per value: " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " values -> " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
-                " hexagons (odd rows shifted half a cell east; rows are 0.866 of a cell apart, so the model is "
-                "13% shallower north-south than the grid)";
+                " hexagons (odd rows shifted half a cell east)";
     return field;
 }
 
@@ -228,7 +228,10 @@ HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
     }
     const HexGrid grid{raster.cols, raster.rows};
     if (pl.pitch_mm > 0) return rasterOneToOne(raster);
-    const double pitch = std::min(pl.fit_width_mm / gridWidth(grid, 1.0), pl.fit_depth_mm / gridDepth(grid, 1.0));
+    // One pillar per value: its rows a pitch apart with true aspect.
+    const double one_to_one_y_scale = pl.true_aspect ? kRowsAPitchApart : 1.0;
+    const double pitch =
+        std::min(pl.fit_width_mm / gridWidth(grid, 1.0), pl.fit_depth_mm / gridDepth(grid, 1.0, one_to_one_y_scale));
     const double min_cell_mm = std::max(kMinTactileCellMm, pl.min_cell_mm);
     if (pitch >= min_cell_mm) return rasterOneToOne(raster);
     // Too many values for pillars a finger can tell apart: the most columns
@@ -237,7 +240,7 @@ HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
     cols = std::min<int>(cols, raster.cols);
     for (; cols > 1; --cols) {
         const ResampleLayout l = resampleLayout(raster.cols, raster.rows, cols);
-        const double p = std::min(pl.fit_width_mm / gridWidth(l.grid, 1.0), pl.fit_depth_mm / gridDepth(l.grid, 1.0));
+        const double p = std::min(pl.fit_width_mm / gridWidth(l.grid, 1.0), pl.fit_depth_mm / gridDepth(l.grid, 1.0, 1.0));
         if (p >= min_cell_mm) break;
     }
     rs.hex_cols = cols;

@@ -83,9 +83,10 @@ inline constexpr double kMinTactileCellMm = 3.0;
 
 /// One hexagon per raster cell: cell (col, row) of the raster becomes hex
 /// (col, row) of the lattice (row 0 north, odd rows shifted east by half a
-/// cell), with the raster's own value. Rows of hexagons are sqrt(3)/2 of a
-/// pitch apart, so the model is that much shallower (north-south) than the
-/// grid's aspect; `how` says so. HexField::one_to_one is set.
+/// cell), with the raster's own value. Its rows are the raster's, a pixel
+/// apart on the ground like its columns (HexField::rows_a_pitch_apart): a
+/// Scene with true aspect stretches the hexagons north-south to keep that
+/// (hex_grid.h). HexField::one_to_one is set.
 HexField rasterOneToOne(const Raster& raster);
 
 /// How a raster becomes hexagons by default (tsf gen without --bins).
@@ -96,6 +97,7 @@ struct RasterPlacement {
     double fit_width_mm = 150;  ///< the box the model must fit (printer bed)
     double fit_depth_mm = 150;
     double min_cell_mm = kMinTactileCellMm;  ///< smallest default cell; never below kMinTactileCellMm (a wide nozzle raises it)
+    bool true_aspect = true;    ///< one pillar per value keeps the ground's aspect (SceneParams::true_aspect)
 };
 
 /// One pillar per value when the grid fits the box at kMinTactileCellMm or

@@ -166,7 +166,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     }
     const double top = s.zMm(highestPillarTop(s));
     std::string size = "The pillars cover " + mm(gridWidth(s.grid, s.pitch_mm)) + " from west to east and " +
-                       mm(gridDepth(s.grid, s.pitch_mm)) + " from south to north, and stand up to " + mm(top) + " high";
+                       mm(gridDepth(s.grid, s.pitch_mm, s.y_scale)) + " from south to north, and stand up to " + mm(top) + " high";
     if (s.params.bottom == Bottom::Flat)
         size += " on a flat base " + mm(s.params.base_mm) + " thick.";
     else

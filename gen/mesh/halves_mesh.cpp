@@ -14,7 +14,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // The model's depth (mm) on the 1 um grid: the line the lower half is reflected about is its middle.
-double modelDepthMm(const Scene& scene) { return snapXy(gridDepth(scene.grid, scene.pitch_mm)); }
+double modelDepthMm(const Scene& scene) { return snapXy(gridDepth(scene.grid, scene.pitch_mm, scene.y_scale)); }
 
 Mesh reflectY(const Mesh& m, double depth_mm) {
     Mesh out;

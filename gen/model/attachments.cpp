@@ -49,8 +49,8 @@ BoxMm sceneFootprint(const Scene& s) {
     };
     for (size_t k = 0; k < s.keptCount(); ++k) {
         const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
-        add({latticeX({c.i - 1, 0}, s.pitch_mm), latticeX({c.i + 1, 0}, s.pitch_mm), latticeY({0, c.j - 2}, s.pitch_mm),
-             latticeY({0, c.j + 2}, s.pitch_mm)});
+        add({latticeX({c.i - 1, 0}, s.pitch_mm), latticeX({c.i + 1, 0}, s.pitch_mm), latticeY({0, c.j - 2}, s.pitch_mm, s.y_scale),
+             latticeY({0, c.j + 2}, s.pitch_mm, s.y_scale)});
     }
     for (const BoxMm& b : attachmentBoxes(s)) add(b);
     return f;

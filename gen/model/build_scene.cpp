@@ -142,25 +142,25 @@ ValueMapping resolveMapping(const HexField& field, const SceneParams& p, std::ve
     return m;
 }
 
-double resolvePitch(const HexGrid& grid, const SceneParams& p) {
+double resolvePitch(const HexGrid& grid, const SceneParams& p, double y_scale) {
     double pitch = p.pitch_mm;
-    if (pitch == 0) pitch = std::min(p.fit_width_mm / gridWidth(grid, 1.0), p.fit_depth_mm / gridDepth(grid, 1.0));
+    if (pitch == 0) pitch = std::min(p.fit_width_mm / gridWidth(grid, 1.0), p.fit_depth_mm / gridDepth(grid, 1.0, y_scale));
     if (pitch < kMinPitchMm) {
         std::ostringstream s;
         s << "cells would be " << pitch << " mm wide; the smallest supported cell is " << kMinPitchMm
           << " mm (use fewer cells or a larger model)";
         throw InputError(s.str());
     }
-    if (gridWidth(grid, pitch) > kMaxModelMm || gridDepth(grid, pitch) > kMaxModelMm)
+    if (gridWidth(grid, pitch) > kMaxModelMm || gridDepth(grid, pitch, y_scale) > kMaxModelMm)
         throw InputError("model would be larger than 100 m; check the cell size (mm)");
     // A cell size and a box that disagree: say so rather than print a model
     // that does not fit the bed the user named.
     const double slack = 1e-9 * std::max(p.fit_width_mm, p.fit_depth_mm);
     if (p.pitch_mm > 0 && p.fit_box_given &&
-        (gridWidth(grid, pitch) > p.fit_width_mm + slack || gridDepth(grid, pitch) > p.fit_depth_mm + slack)) {
+        (gridWidth(grid, pitch) > p.fit_width_mm + slack || gridDepth(grid, pitch, y_scale) > p.fit_depth_mm + slack)) {
         std::ostringstream s;
         s.precision(4);
-        s << "--cell " << pitch << " mm makes the model " << gridWidth(grid, pitch) << " x " << gridDepth(grid, pitch)
+        s << "--cell " << pitch << " mm makes the model " << gridWidth(grid, pitch) << " x " << gridDepth(grid, pitch, y_scale)
           << " mm, larger than the " << p.fit_width_mm << " x " << p.fit_depth_mm
           << " mm box (--width/--depth); give one of them, or a smaller cell";
         throw InputError(s.str());
@@ -213,7 +213,10 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     }
     s.z_snap_mm = params.z_snap_mm;
     s.mapping = resolveMapping(field, params, s.notes);
-    s.pitch_mm = resolvePitch(field.grid, params);
+    // A raster's rows, one pillar per value, stand a pitch apart as on the
+    // ground (true aspect); a lattice laid over the ground keeps its own.
+    s.y_scale = params.true_aspect && field.rows_a_pitch_apart ? kRowsAPitchApart : 1.0;
+    s.pitch_mm = resolvePitch(field.grid, params, s.y_scale);
     s.one_to_one = field.one_to_one;
     if (s.pitch_mm < kMinTactileCellMm) {
         std::ostringstream w;
@@ -390,7 +393,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             const bool nodata = std::isnan(field.values[idx]);
             units += slab - (nodata ? (params.bottom == Bottom::Flat ? 1 : 2) * s.nodata_pit_units : 0);
         }
-        s.volume_saved_mm3 = double(units) * s.z_snap_mm * hexArea(s.pitch_mm);
+        s.volume_saved_mm3 = double(units) * s.z_snap_mm * hexArea(s.pitch_mm, s.y_scale);
         std::ostringstream note;
         note.precision(3);
         note << "concave hull: " << s.keptCount() << " cells kept, " << dropped << " fewer than the convex hull ("

@@ -52,7 +52,7 @@ double ValueMapping::valueAt(double h) const {
 double snapXy(double v) { return std::round(v / kXYSnapMm) * kXYSnapMm; }
 
 Vec3 Scene::point(const LatticePoint& p, int64_t z_units) const {
-    return {snapXy(latticeX(p, pitch_mm)), snapXy(latticeY(p, pitch_mm)), zMm(z_units)};
+    return {snapXy(latticeX(p, pitch_mm)), snapXy(latticeY(p, pitch_mm, y_scale)), zMm(z_units)};
 }
 
 Vec3 Scene::planarPoint(int64_t id, int64_t z_units) const {
@@ -63,7 +63,7 @@ Vec3 Scene::planarPoint(int64_t id, int64_t z_units) const {
 }
 
 Vec3 Scene::point(const PlanarPoint& p, int64_t z_units) const {
-    return {snapXy(planarX(p, pitch_mm)), snapXy(planarY(p, pitch_mm)), zMm(z_units)};
+    return {snapXy(planarX(p, pitch_mm)), snapXy(planarY(p, pitch_mm, y_scale)), zMm(z_units)};
 }
 
 const char* toString(Transfer t) {

@@ -100,6 +100,11 @@ struct SceneParams {
     double fit_width_mm = 150.0;   ///< used when pitch_mm == 0: the whole grid fits this box
     double fit_depth_mm = 150.0;
     bool fit_box_given = false;    ///< the fit box was asked for: with pitch_mm > 0 the model must fit it
+    /// One pillar per value of a raster (HexField::rows_a_pitch_apart): the
+    /// hexagons are stretched north-south so rows stand a pitch apart and
+    /// the model keeps the ground's proportions; false: regular hexagons,
+    /// the model sqrt(3)/2 as deep as the ground.
+    bool true_aspect = true;
     double max_height_mm = 20.0;   ///< height of the largest value above the floor
     double base_mm = 2.0;          ///< flat: base under the floor; mirrored: thinnest point of the slab
     // --- value -> height ---
@@ -163,6 +168,10 @@ struct ValueMapping {
 struct Scene {
     HexGrid grid;
     double pitch_mm = 1.0;
+    /// North-south stretch of the lattice (hex_grid.h): 1 for regular
+    /// hexagons, kRowsAPitchApart when rows stand a pitch apart to keep a
+    /// raster's ground aspect (one pillar per value, SceneParams::true_aspect).
+    double y_scale = 1.0;
     double z_snap_mm = 0.001;
     SceneParams params;     ///< as given (after validation)
     ValueMapping mapping;

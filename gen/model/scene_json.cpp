@@ -200,6 +200,7 @@ json sceneHeadJson(const Scene& s) {
         {"version", kSceneJsonVersion},
         {"grid", {{"cols", s.grid.cols}, {"rows", s.grid.rows}}},
         {"pitch_mm", s.pitch_mm},
+        {"y_scale", s.y_scale},
         {"z_snap_mm", s.z_snap_mm},
         {"params",
          {{"pitch_mm", p.pitch_mm},
@@ -213,7 +214,8 @@ json sceneHeadJson(const Scene& s) {
           {"value_max", p.value_max ? json(*p.value_max) : json(nullptr)},
           {"z_snap_mm", p.z_snap_mm},
           {"cull", toString(p.cull)},
-          {"bottom", toString(p.bottom)}}},
+          {"bottom", toString(p.bottom)},
+          {"true_aspect", p.true_aspect}}},
         {"mapping",
          {{"transfer", toString(s.mapping.transfer)},
           {"baseline", s.mapping.baseline},
@@ -461,6 +463,10 @@ Scene sceneFromJson(const json& j) {
         fail("grid", "a grid of " + std::to_string(s.grid.cellCount()) + " cells is larger than the " +
                          std::to_string(kMaxSceneJsonCells) + " a sidecar may describe");
     s.pitch_mm = getPositive(j, "", "pitch_mm");
+    if (version >= 8) {
+        s.y_scale = getPositive(j, "", "y_scale");
+        if (s.y_scale < 0.5 || s.y_scale > 2.0) fail("y_scale", "expected a stretch between 0.5 and 2");
+    }
     s.z_snap_mm = getPositive(j, "", "z_snap_mm");
 
     const json& params = member(j, "", "params");
@@ -478,6 +484,11 @@ Scene sceneFromJson(const json& j) {
     p.z_snap_mm = getPositive(params, "params", "z_snap_mm");
     p.cull = getEnum(params, "params", "cull", kCulls);
     p.bottom = getEnum(params, "params", "bottom", kBottoms);
+    if (version >= 8) {
+        const json& aspect = member(params, "params", "true_aspect");
+        if (!aspect.is_boolean()) fail("params.true_aspect", std::string("expected true or false, found ") + typeName(aspect));
+        p.true_aspect = aspect.get<bool>();
+    }
 
     const json& mapping = member(j, "", "mapping");
     s.mapping.transfer = getEnum(mapping, "mapping", "transfer", kTransfers);

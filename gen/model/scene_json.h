@@ -2,11 +2,12 @@
 // so that `tsf verify --scene` can check the model's heights without the
 // original field and options.
 //
-// Format ("format": "tsf-scene", "version": 7), one object:
-//   grid {cols, rows}, pitch_mm, z_snap_mm,
+// Format ("format": "tsf-scene", "version": 8), one object:
+//   grid {cols, rows}, pitch_mm, y_scale (version 8: the lattice's
+//   north-south stretch, gen/field/hex_grid.h; 1 before), z_snap_mm,
 //   params {pitch_mm, fit_width_mm, fit_depth_mm, max_height_mm, base_mm,
 //           transfer, baseline_mode, baseline_value, value_max (null = unset),
-//           z_snap_mm, cull, bottom}           -- enums by their CLI names (scene.h toString)
+//           z_snap_mm, cull, bottom, true_aspect (version 8)}  -- enums by their CLI names (scene.h toString)
 //   mapping {transfer, baseline, value_max, max_height_mm},
 //   floor_units, mirror_thickness_units, cells_with_data, cells_nonempty,
 //   cells_nodata_kept, nodata_pit_units, one_to_one,
@@ -90,7 +91,7 @@ inline constexpr const char* kSceneJsonFormat = "tsf-scene";
 /// as asked for, the marks' faces and the tilted tops' fans; 4: scale;
 /// 3: shapes; 2: marks, nodata_pit_units, one_to_one. 1 to 4 are still read,
 /// except a version 4 sidecar with a legend (it recorded only the request).
-inline constexpr int kSceneJsonVersion = 7;
+inline constexpr int kSceneJsonVersion = 8;
 /// Largest grid (cols * rows) a sidecar may describe: bounds the memory a
 /// malformed file can make the reader allocate (kept_index: 4 bytes a cell).
 inline constexpr int64_t kMaxSceneJsonCells = 100'000'000;

@@ -50,7 +50,7 @@ inline MarkParams withoutMarks() {
     return m;
 }
 
-/// A point in lattice coordinates (x = i * pitch / 2, y = j * pitch / (2 sqrt 3)).
+/// A point in lattice coordinates (x = i * pitch / 2, y = j * pitch / (2 sqrt 3) * y_scale).
 struct PlanarPoint {
     double i = 0, j = 0;
 };
@@ -149,8 +149,9 @@ struct PlanarFaces {
     bool empty() const { return faces.empty(); }
 };
 
-/// Position in the model frame (mm, not snapped) of a planar point.
+/// Position in the model frame (mm, not snapped) of a planar point, for a
+/// pitch and north-south stretch (hex_grid.h).
 inline double planarX(const PlanarPoint& p, double pitch) { return p.i * pitch * 0.5; }
-inline double planarY(const PlanarPoint& p, double pitch) { return p.j * pitch / (2.0 * kSqrt3); }
+inline double planarY(const PlanarPoint& p, double pitch, double y_scale) { return p.j * pitch / (2.0 * kSqrt3) * y_scale; }
 
 }  // namespace tsf

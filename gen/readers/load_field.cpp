@@ -152,6 +152,12 @@ HexField loadField(const FieldLoadOptions& o) {
     input.units = raster.units;
     input.categorical = raster.categorical;
     input.classes = raster.classes;
+    input.metres_per_unit = raster.metres_per_unit;
+    input.longitude_scale = raster.longitude_scale;
+    if (raster.metres_per_unit > 0) {
+        input.ground_width_m = double(raster.cols) * raster.cell_size * raster.metres_per_unit;
+        input.ground_depth_m = double(raster.rows) * raster.cell_size * raster.metres_per_unit;
+    }
     describeValues(raster.values, input);
     std::string placeholder_note;
     if (o.nodata) {
@@ -174,6 +180,7 @@ HexField loadField(const FieldLoadOptions& o) {
     pl.fit_width_mm = o.fit_width_mm;
     pl.fit_depth_mm = o.fit_depth_mm;
     pl.min_cell_mm = o.min_cell_mm;
+    pl.true_aspect = o.true_aspect;
     if (!o.class_order.empty() && !raster.categorical)
         throw InputError("--class-order is for class maps: the values of " + o.input +
                          " are measurements (give --categorical if they are class codes)");

@@ -54,6 +54,7 @@ struct FieldLoadOptions {
     double fit_width_mm = 150;  ///< the box the model must fit (mm)
     double fit_depth_mm = 150;
     double min_cell_mm = 3.0;   ///< smallest default cell for rasters (kMinTactileCellMm; a wide nozzle raises it)
+    bool true_aspect = true;    ///< one pillar per value keeps the ground's aspect (SceneParams::true_aspect)
 };
 
 /// Reads the input named in opts and builds its hex field (rasters are

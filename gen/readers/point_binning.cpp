@@ -99,7 +99,7 @@ HexField binPoints(const PointTable& points, const BinOptions& opts) {
         const size_t cell = size_t(grid.index(c, r));
         // Offset from the cell's centre in pitches (the frame of hexCellAt).
         const LatticePoint centre = hexCentre(grid, c, r);
-        const double dx = u - latticeX(centre, 1.0), dy = v - latticeY(centre, 1.0);
+        const double dx = u - latticeX(centre, 1.0), dy = v - latticeY(centre, 1.0, 1.0);
         if (!weighted) {
             ++count[cell];
             moments[cell].add(dx, dy);

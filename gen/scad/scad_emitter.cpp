@@ -311,8 +311,14 @@ void emitValues(std::string& o, const Scene& s) {
          "//   undef  = no pillar (outside the model)\n"
          "//   nodata = no value: a pit below the floor (inside the model)\n"
          "// Change a number and render again; write a number over undef to add a pillar.\n"
-         "nodata = \"nodata\";\n"
-         "values = [\n";
+         "nodata = \"nodata\";\n";
+    if (s.y_scale != 1.0) {
+        o += "// True aspect: the hexagons are stretched north-south by this factor, so rows of\n"
+             "// pillars stand one cell apart as the raster's rows do on the ground (1 = regular\n"
+             "// hexagons, rows 0.866 of a cell apart). Every module of the tsf library reads it.\n"
+             "$tsf_y_scale = " + formatShortest(s.y_scale) + ";\n";
+    }
+    o += "values = [\n";
     for (int32_t r = 0; r < g.rows; ++r) {
         std::string line = "    [";
         for (int32_t c = 0; c < g.cols; ++c) {

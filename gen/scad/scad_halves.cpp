@@ -32,7 +32,7 @@ void emitHalvesData(std::string& o, const Scene& s) {
          "halves = [";
     mesh_io::appendShortest(o, s.zMm(h.split_units));
     o += ", ";
-    mesh_io::appendShortest(o, std::round(gridDepth(s.grid, s.pitch_mm) / kXYSnapMm) * kXYSnapMm);
+    mesh_io::appendShortest(o, std::round(gridDepth(s.grid, s.pitch_mm, s.y_scale) / kXYSnapMm) * kXYSnapMm);
     o += ", [\n";
     for (size_t n = 0; n < h.hole_centres.size(); ++n) {
         o += "  [";

@@ -21,11 +21,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A smooth hill, 12 x 10 cells of 6 mm, with the orientation marks on (or off).
-Scene hillWithHalves(bool marks = true) {
-    const HexField f = test::fieldFromFunction(12, 10, [](int c, int r) {
+// A smooth hill, 12 x 10 cells of 6 mm, with the orientation marks on (or
+// off); `raster_rows`: its rows a pitch apart, as a raster's (true aspect).
+Scene hillWithHalves(bool marks = true, bool raster_rows = false) {
+    HexField f = test::fieldFromFunction(12, 10, [](int c, int r) {
         return 1.0 + std::sin(c * 0.5) + std::cos(r * 0.6);
     });
+    f.rows_a_pitch_apart = raster_rows;
     SceneParams p = test::smallParams(Bottom::Mirrored);
     if (marks) p.marks = MarkParams{};
     p.marks.place = MarkPlace::Data;  // the pin holes keep clear of marks in the data; the tab is outside the cells
@@ -143,6 +145,28 @@ TEST(Halves, EachHalfIsAClosedSolidWithoutOverhangAndTheirMaterialAddsUp) {
     EXPECT_NEAR(signedVolume(upper) + signedVolume(lower), expected, 1e-4 * expected);
     // The whole mirrored model in one piece overhangs; its halves do not.
     EXPECT_GT(measureOverhang(meshScene(s)).area_mm2, 0.0);
+}
+
+// On a lattice stretched north-south (true aspect) the holes stay round in
+// mm, and the halves are still closed, without overhang, and add up.
+TEST(Halves, HolesStayRoundOnAStretchedLattice) {
+    const Scene s = hillWithHalves(false, true);
+    ASSERT_EQ(s.y_scale, kRowsAPitchApart);
+    ASSERT_TRUE(s.halves);
+    for (size_t h = 0; h < s.halves->hole_centres.size(); ++h) {
+        const Vec3 c = s.point(s.halves->hole_centres[h], 0);
+        for (const PlanarPoint& q : holeRing(s, h)) {
+            const Vec3 p = s.point(q, 0);
+            EXPECT_NEAR(std::hypot(p.x - c.x, p.y - c.y), s.halves->pins.hole_vertex_radius_mm, 2e-3);
+        }
+    }
+    const Mesh upper = meshHalf(s, HalfKind::Upper), lower = meshHalf(s, HalfKind::Lower);
+    for (const Mesh* m : {&upper, &lower}) {
+        EXPECT_TRUE(test::checkInvariants(*m).closedManifold());
+        EXPECT_EQ(measureOverhang(*m).area_mm2, 0.0);
+    }
+    const double expected = test::sceneVolume(s) - 2 * kPinCount * holeVolume(s);
+    EXPECT_NEAR(signedVolume(upper) + signedVolume(lower), expected, 1e-4 * expected);
 }
 
 TEST(Halves, PinsAreClosedPrismsThatFitTheHoles) {

@@ -60,8 +60,8 @@ TEST(HexGrid, CentresAreOnePitchApartAndRowZeroIsNorth) {
     int32_t nc, nr;
     hexNeighbour(1, 1, 1, nc, nr);  // north-east
     const LatticePoint ne = hexCentre(g, nc, nr);
-    EXPECT_NEAR(std::hypot(latticeX(ne, pitch) - latticeX(a, pitch), latticeY(ne, pitch) - latticeY(a, pitch)), pitch, 1e-12);
-    EXPECT_GT(latticeY(hexCentre(g, 0, 0), pitch), latticeY(hexCentre(g, 0, 2), pitch));
+    EXPECT_NEAR(std::hypot(latticeX(ne, pitch) - latticeX(a, pitch), latticeY(ne, pitch, 1.0) - latticeY(a, pitch, 1.0)), pitch, 1e-12);
+    EXPECT_GT(latticeY(hexCentre(g, 0, 0), pitch, 1.0), latticeY(hexCentre(g, 0, 2), pitch, 1.0));
     // The bounding box starts at (0, 0) and holds every corner.
     double xmin = 1e9, ymin = 1e9, xmax = -1e9, ymax = -1e9;
     for (int r = 0; r < g.rows; ++r)
@@ -69,12 +69,12 @@ TEST(HexGrid, CentresAreOnePitchApartAndRowZeroIsNorth) {
             for (int k = 0; k < 6; ++k) {
                 const LatticePoint p = hexCorner(g, c, r, k);
                 xmin = std::min(xmin, latticeX(p, pitch)); xmax = std::max(xmax, latticeX(p, pitch));
-                ymin = std::min(ymin, latticeY(p, pitch)); ymax = std::max(ymax, latticeY(p, pitch));
+                ymin = std::min(ymin, latticeY(p, pitch, 1.0)); ymax = std::max(ymax, latticeY(p, pitch, 1.0));
             }
     EXPECT_DOUBLE_EQ(xmin, 0.0);
     EXPECT_DOUBLE_EQ(ymin, 0.0);
     EXPECT_DOUBLE_EQ(xmax, gridWidth(g, pitch));
-    EXPECT_NEAR(ymax, gridDepth(g, pitch), 1e-12);
+    EXPECT_NEAR(ymax, gridDepth(g, pitch, 1.0), 1e-12);
 }
 
 TEST(HexGrid, CellAtFindsTheCellOfEveryCentreAndRejectsOutside) {
@@ -83,7 +83,7 @@ TEST(HexGrid, CellAtFindsTheCellOfEveryCentreAndRejectsOutside) {
         for (int c = 0; c < g.cols; ++c) {
             const LatticePoint p = hexCentre(g, c, r);
             int32_t fc = -1, fr = -1;
-            ASSERT_TRUE(hexCellAt(g, latticeX(p, 1.0) + 0.2, latticeY(p, 1.0) - 0.1, fc, fr));
+            ASSERT_TRUE(hexCellAt(g, latticeX(p, 1.0) + 0.2, latticeY(p, 1.0, 1.0) - 0.1, fc, fr));
             EXPECT_EQ(fc, c);
             EXPECT_EQ(fr, r);
         }

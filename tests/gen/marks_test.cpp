@@ -49,7 +49,7 @@ void expectSoundModel(const Scene& scene, const Mesh& mesh) {
 // Volume (mm^3) of the Scene's prisms, summed independently of any mesh.
 double prismVolume(const Scene& s) {
     double v = 0;
-    for (size_t k = 0; k < s.keptCount(); ++k) v += hexArea(s.pitch_mm) * s.zMm(s.top[k] - s.bottom[k]);
+    for (size_t k = 0; k < s.keptCount(); ++k) v += hexArea(s.pitch_mm, s.y_scale) * s.zMm(s.top[k] - s.bottom[k]);
     return v;
 }
 
@@ -75,7 +75,7 @@ TEST(Notch, EveryDefaultModelHasOneAtTheSouthWestCornerAndItRemovesMaterial) {
     ASSERT_TRUE(scene.marks.notch.has_value());
     EXPECT_NEAR(scene.marks.notch->depth_mm, 6.0, 1e-9);  // 10 mm cells leave room for the full depth
     const double ax = planarX(scene.marks.notch->apex, scene.pitch_mm);
-    const double ay = planarY(scene.marks.notch->apex, scene.pitch_mm);
+    const double ay = planarY(scene.marks.notch->apex, scene.pitch_mm, scene.y_scale);
     EXPECT_LT(ax, 10.0);  // the south-west corner of a 60 x 46 mm model
     EXPECT_LT(ay, 10.0);
     const Mesh mesh = meshScene(scene);
@@ -84,7 +84,7 @@ TEST(Notch, EveryDefaultModelHasOneAtTheSouthWestCornerAndItRemovesMaterial) {
     EXPECT_LT(signedVolume(mesh), prismVolume(scene) - 0.5 * 6.0 * 6.0 * std::tan(M_PI / 6) * 2.0);
     // Nothing just inside the V, on its way from the apex to the mouth: a ray there meets nothing.
     const double mx = 0.5 * (planarX(scene.marks.notch->mouth_a, scene.pitch_mm) + planarX(scene.marks.notch->mouth_b, scene.pitch_mm));
-    const double my = 0.5 * (planarY(scene.marks.notch->mouth_a, scene.pitch_mm) + planarY(scene.marks.notch->mouth_b, scene.pitch_mm));
+    const double my = 0.5 * (planarY(scene.marks.notch->mouth_a, scene.pitch_mm, scene.y_scale) + planarY(scene.marks.notch->mouth_b, scene.pitch_mm, scene.y_scale));
     const double len = std::hypot(mx - ax, my - ay);
     EXPECT_EQ(topAt(mesh, ax + 0.5 * (mx - ax) / len, ay + 0.5 * (my - ay) / len), -INFINITY);
 }
@@ -136,9 +136,9 @@ TEST(Triangle, StandsOnTheLargestFlatRegionWithTheLongerLegEast) {
     const OrientationTriangle& t = *scene.marks.triangle;
     const double p = scene.pitch_mm;
     // Right angle at the south-west corner; x leg east, y leg north, x the longer.
-    EXPECT_NEAR(planarY(t.east, p), planarY(t.corner, p), 1e-9);
+    EXPECT_NEAR(planarY(t.east, p, scene.y_scale), planarY(t.corner, p, scene.y_scale), 1e-9);
     EXPECT_NEAR(planarX(t.north, p), planarX(t.corner, p), 1e-9);
-    const double lx = planarX(t.east, p) - planarX(t.corner, p), ly = planarY(t.north, p) - planarY(t.corner, p);
+    const double lx = planarX(t.east, p) - planarX(t.corner, p), ly = planarY(t.north, p, scene.y_scale) - planarY(t.corner, p, scene.y_scale);
     EXPECT_GT(lx, 0);
     EXPECT_GT(ly, 0);
     EXPECT_NEAR(ly / lx, kTriangleLegRatio, 1e-9);
@@ -147,9 +147,9 @@ TEST(Triangle, StandsOnTheLargestFlatRegionWithTheLongerLegEast) {
     const Mesh mesh = meshScene(scene);
     expectSoundModel(scene, mesh);
     // Raised by 1 mm inside, not outside.
-    const double cx = planarX(t.corner, p) + lx / 3, cy = planarY(t.corner, p) + ly / 3;
+    const double cx = planarX(t.corner, p) + lx / 3, cy = planarY(t.corner, p, scene.y_scale) + ly / 3;
     EXPECT_NEAR(topAt(mesh, cx, cy), scene.zMm(scene.floor_units) + 1.0, 1e-6);
-    EXPECT_NEAR(topAt(mesh, planarX(t.corner, p) - 0.5, planarY(t.corner, p) - 0.5), scene.zMm(scene.floor_units), 1e-6);
+    EXPECT_NEAR(topAt(mesh, planarX(t.corner, p) - 0.5, planarY(t.corner, p, scene.y_scale) - 0.5), scene.zMm(scene.floor_units), 1e-6);
 }
 
 TEST(Triangle, MirroredModelKeepsItOnTopAndStaysSound) {

@@ -169,8 +169,8 @@ TEST(Scene, FitsTheGridIntoTheRequestedBox) {
     p.fit_depth_mm = 50;
     const Scene s = buildScene(test::fieldFromFunction(20, 20, [](int c, int r) { return c + r; }), p);
     EXPECT_LE(gridWidth(s.grid, s.pitch_mm), 100 + 1e-9);
-    EXPECT_LE(gridDepth(s.grid, s.pitch_mm), 50 + 1e-9);
-    EXPECT_NEAR(gridDepth(s.grid, s.pitch_mm), 50, 1e-9);  // depth is the binding side here
+    EXPECT_LE(gridDepth(s.grid, s.pitch_mm, s.y_scale), 50 + 1e-9);
+    EXPECT_NEAR(gridDepth(s.grid, s.pitch_mm, s.y_scale), 50, 1e-9);  // depth is the binding side here
 }
 
 TEST(Scene, RejectsBadParametersAndEmptyFields) {

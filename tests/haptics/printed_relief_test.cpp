@@ -123,7 +123,7 @@ TEST(PrintedRelief, CulledCellsAreTheFloorNoDataCellsArePitsAndTheFootprintKeeps
     EXPECT_NEAR(info.sample_mm, scene.pitch_mm / kReliefSamplesPerPitch, 1e-12);
     // The grid covers the printed model's bounding box.
     EXPECT_NEAR(grid.cols * info.sample_mm, gridWidth(scene.grid, scene.pitch_mm), info.sample_mm);
-    EXPECT_NEAR(grid.rows * info.sample_mm, gridDepth(scene.grid, scene.pitch_mm), info.sample_mm);
+    EXPECT_NEAR(grid.rows * info.sample_mm, gridDepth(scene.grid, scene.pitch_mm, scene.y_scale), info.sample_mm);
     // Every sample is the height of the kept cell it lies in, or the floor;
     // a cell without data is the pit the print has (1 mm of the 10 mm relief).
     for (int32_t j = 0; j < grid.rows; ++j)

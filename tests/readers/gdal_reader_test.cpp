@@ -90,6 +90,76 @@ TEST(GdalReader, GeographicLongitudeIsScaledByCosLatitude) {
     EXPECT_NE(r.fact("crs").find("cos(60 deg) = 0.5"), std::string::npos) << r.fact("crs");
 }
 
+// The model's width / depth (mm, the pillars' box) from tsf gen --json.
+double modelAspect(const nlohmann::json& j) {
+    return j["scene"]["size_mm"][0].get<double>() / j["scene"]["size_mm"][1].get<double>();
+}
+
+// True aspect: one pillar per value of a projected DEM keeps the ground's
+// proportions (the hexagons stretched north-south so rows stand a cell
+// apart), and the report gives the ground's size and the scale; regular
+// hexagons are 13% shallower.
+TEST(GdalReader, OnePillarPerValueKeepsTheGroundsAspect) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = 60;
+    s.rows = 40;
+    s.epsg = 32633;
+    s.west = 500000;
+    s.north = 6000000;
+    s.pixel_w = s.pixel_h = 30;  // 1800 x 1200 m on the ground
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c) s.values.push_back(float(100 + 3 * c + 2 * r + (r * c) % 7));
+    const std::string path = (dir / "dem.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const auto run = test::runTsf("gen " + path + " --cell 2 -o " + (dir / "dem.stl").string() + " --json");
+    ASSERT_EQ(run.exit_code, test::kExitOk) << run.output;
+    const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+    EXPECT_TRUE(j["scene"]["one_pillar_per_value"].get<bool>());
+    EXPECT_NEAR(modelAspect(j) / 1.5, 1.0, 0.03) << j["scene"]["size_mm"].dump();
+    EXPECT_NEAR(j["scene"]["y_scale"].get<double>(), 2 / std::sqrt(3.0), 1e-15);
+    EXPECT_NEAR(j["ground"]["width_m"].get<double>(), 1800.0, 1e-9);
+    EXPECT_NEAR(j["ground"]["depth_m"].get<double>(), 1200.0, 1e-9);
+    // 30 m a cell, 2 mm a cell: 1 : 15 000 both ways.
+    EXPECT_NEAR(j["ground"]["scale"].get<double>(), 15000.0, 1e-6);
+    EXPECT_NEAR(j["ground"]["scale_north_south"].get<double>(), 15000.0, 1e-6);
+    EXPECT_TRUE(j["ground"]["longitude_scale"].is_null());
+    const auto text = test::runTsf("gen " + path + " --cell 2 -o " + (dir / "t.stl").string());
+    EXPECT_NE(text.output.find("scale 1 : 15 000 (1 mm on the model is 15 m on the ground)"), std::string::npos)
+        << text.output;
+    EXPECT_NE(text.output.find("aspect    true"), std::string::npos) << text.output;
+
+    const auto regular = test::runTsf("gen " + path + " --cell 2 --regular-hexagons -o " +
+                                      (dir / "regular.stl").string() + " --json");
+    ASSERT_EQ(regular.exit_code, test::kExitOk) << regular.output;
+    const nlohmann::json rj = nlohmann::json::parse(regular.output.substr(regular.output.find('{')));
+    EXPECT_NEAR(modelAspect(rj) / 1.5, 2 / std::sqrt(3.0), 0.01) << "regular hexagons: 13% shallower";
+    EXPECT_EQ(rj["scene"]["y_scale"].get<double>(), 1.0);
+    EXPECT_NEAR(rj["ground"]["scale_north_south"].get<double>(), 15000.0 * 2 / std::sqrt(3.0), 1e-6);
+}
+
+// A geographic grid: a degree of longitude at 60 degrees north is half a
+// degree of latitude on the ground, and the model keeps that aspect too.
+TEST(GdalReader, AGeographicGridKeepsTheCosLatitudeAspect) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = s.rows = 30;
+    s.epsg = 4326;
+    s.west = 10;
+    s.north = 60.15;  // mean latitude 60
+    s.pixel_w = s.pixel_h = 0.01;
+    for (int k = 0; k < s.cols * s.rows; ++k) s.values.push_back(float(k % 17));
+    const std::string path = (dir / "geo.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const auto run = test::runTsf("gen " + path + " --cell 1.5 -o " + (dir / "geo.stl").string() + " --json");
+    ASSERT_EQ(run.exit_code, test::kExitOk) << run.output;
+    const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+    EXPECT_NEAR(modelAspect(j) / 0.5, 1.0, 0.03) << j["scene"]["size_mm"].dump();
+    EXPECT_NEAR(j["ground"]["longitude_scale"].get<double>(), 0.5, 1e-3);
+    // 0.3 degrees of latitude north-south.
+    EXPECT_NEAR(j["ground"]["depth_m"].get<double>(), 0.3 * kMetresPerDegreeOfLatitude, 1.0);
+}
+
 TEST(GdalReader, LoadFieldReportsWhatWasRead) {
     const auto dir = test::scratchDir();
     test::GeoTiffSpec s = demSpec();

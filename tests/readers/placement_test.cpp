@@ -38,7 +38,7 @@ TEST(PlaceRaster, LargeGridIsResampledToTactileCellsAndSaysWhy) {
     EXPECT_FALSE(f.one_to_one);
     EXPECT_LT(f.grid.cols, 300);
     // The default box (150 x 150 mm) at >= 3 mm cells.
-    const double pitch = std::min(150.0 / gridWidth(f.grid, 1.0), 150.0 / gridDepth(f.grid, 1.0));
+    const double pitch = std::min(150.0 / gridWidth(f.grid, 1.0), 150.0 / gridDepth(f.grid, 1.0, 1.0));
     EXPECT_GE(pitch, kMinTactileCellMm);
     EXPECT_NE(f.how.find("resampled because"), std::string::npos);
 }

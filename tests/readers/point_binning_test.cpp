@@ -99,7 +99,7 @@ TEST(PointBinning, BinSizeIsThePitchInDataUnits) {
     EXPECT_EQ(total(f), 4.0);
     // 33 / 2.5 = 13.2 pitches wide: 13.2 + 0.5 -> 14 columns; 9 / 2.5 = 3.6 pitches deep.
     EXPECT_EQ(f.grid.cols, 14);
-    EXPECT_GE(gridDepth(f.grid, 2.5), 9.0);
+    EXPECT_GE(gridDepth(f.grid, 2.5, 1.0), 9.0);
     expectBruteForceAgreement(pts, opts);
 }
 

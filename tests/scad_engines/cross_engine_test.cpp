@@ -212,12 +212,14 @@ TEST_P(CrossEngineClassTextures, RendersTheSameSolidAsTheDirectMesher) {
         return c < 3 ? 11.0 : c < 5 ? 41.0 : c < 7 ? (r < 3 ? 90.0 : 95.0) : (r < 2 ? 21.0 : 95.0);
     });
     field.input.categorical = true;
+    field.rows_a_pitch_apart = true;  // a raster, one pillar per value: true aspect ($tsf_y_scale)
     SceneParams p = test::terrainParams(bottom);
     p.marks = MarkParams{};  // the tab, against textured walls
     p.pitch_mm = 5.0;
     const Scene scene = buildScene(field, p);
     ASSERT_TRUE(scene.textures.has_value());
     EXPECT_EQ(scene.textures->textures_used, 5);
+    EXPECT_EQ(scene.y_scale, kRowsAPitchApart);
     ASSERT_TRUE(scene.marks.tab.has_value());
     const fs::path dir = test::scratchDir("textures_" + engine_name + "_" + toString(bottom));
     ScadOptions opts;
@@ -227,6 +229,40 @@ TEST_P(CrossEngineClassTextures, RendersTheSameSolidAsTheDirectMesher) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EnginesBottoms, CrossEngineClassTextures,
+                         ::testing::Combine(::testing::Values("openscad", "wasm"),
+                                            ::testing::Values(Bottom::Flat, Bottom::Mirrored)),
+                         [](const auto& info) {
+                             return std::get<0>(info.param) + "_" + toString(std::get<1>(info.param));
+                         });
+
+// True aspect: a raster's rows a pitch apart, the lattice stretched
+// north-south ($tsf_y_scale in the file): tilted tops with their crossings,
+// the notch and the triangle in the data, flat and mirrored.
+class CrossEngineTrueAspect : public ::testing::TestWithParam<std::tuple<std::string, Bottom>> {};
+
+TEST_P(CrossEngineTrueAspect, RendersTheSameSolidAsTheDirectMesher) {
+    const auto& [engine_name, bottom] = GetParam();
+    TSF_NEED_ENGINE(engineNamed(engine_name));
+    HexField field = test::smallTerrain();
+    field.rows_a_pitch_apart = true;
+    SceneParams p = test::terrainParams(bottom);
+    p.marks = MarkParams{};
+    p.marks.place = MarkPlace::Data;
+    p.pitch_mm = 6.0;
+    p.tilt = TiltSource::Gradient;
+    p.steepness = 3.0;
+    const Scene scene = buildScene(field, p);
+    EXPECT_EQ(scene.y_scale, kRowsAPitchApart);
+    ASSERT_TRUE(scene.marks.notch.has_value());
+    EXPECT_GT(scene.shapes.cells_tilted, 10);
+    const fs::path dir = test::scratchDir("aspect_" + engine_name + "_" + toString(bottom));
+    ScadOptions opts;
+    opts.inline_library = bottom == Bottom::Mirrored;
+    writeScad(scene, opts, (dir / "model.scad").string());
+    expectSameSolid(*engineNamed(engine_name).engine, scene, dir / "model.scad", dir / "model.stl");
+}
+
+INSTANTIATE_TEST_SUITE_P(EnginesBottoms, CrossEngineTrueAspect,
                          ::testing::Combine(::testing::Values("openscad", "wasm"),
                                             ::testing::Values(Bottom::Flat, Bottom::Mirrored)),
                          [](const auto& info) {

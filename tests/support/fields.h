@@ -68,8 +68,8 @@ inline double sceneVolume(const Scene& s) {
         for (int e = 0; e < 6; ++e) {
             const LatticePoint a = hexCorner(s.grid, s.col[k], s.row[k], e);
             const LatticePoint b = hexCorner(s.grid, s.col[k], s.row[k], (e + 1) % 6);
-            const double ax = snap(double(a.i) * s.pitch_mm / 2), ay = snap(double(a.j) * s.pitch_mm / (2 * std::sqrt(3.0)));
-            const double bx = snap(double(b.i) * s.pitch_mm / 2), by = snap(double(b.j) * s.pitch_mm / (2 * std::sqrt(3.0)));
+            const double ax = snap(double(a.i) * s.pitch_mm / 2), ay = snap(double(a.j) * s.pitch_mm / (2 * std::sqrt(3.0)) * s.y_scale);
+            const double bx = snap(double(b.i) * s.pitch_mm / 2), by = snap(double(b.j) * s.pitch_mm / (2 * std::sqrt(3.0)) * s.y_scale);
             area2 += ax * by - bx * ay;
         }
         volume += area2 / 2 * double(s.top[k] - s.bottom[k]) * s.z_snap_mm;

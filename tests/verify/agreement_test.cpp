@@ -251,7 +251,7 @@ TEST(Agreement, PillarRaisedByTenMicronsFailsThereWithTheRaiseMeasured) {
     // 0.01 mm times a hexagon is far inside the volume tolerance: only the
     // distance can see this difference.
     // (Corners are snapped to 1 um, so the hexagon's area is right to ~1e-3.)
-    EXPECT_NEAR(r.figures.volume_difference_mm3, hexArea(s.pitch_mm) * 0.01, 1e-3 * hexArea(s.pitch_mm) * 0.01);
+    EXPECT_NEAR(r.figures.volume_difference_mm3, hexArea(s.pitch_mm, s.y_scale) * 0.01, 1e-3 * hexArea(s.pitch_mm, s.y_scale) * 0.01);
     EXPECT_EQ(volumeStatus(r), CheckStatus::Pass);
 }
 
@@ -271,7 +271,7 @@ TEST(Agreement, MissingPillarFailsByItsHeight) {
     // pillar is farther than `height` from the floor straight below it.
     EXPECT_LE(r.figures.hausdorff_from_reference_mm, height_mm + 1e-9);
     EXPECT_GE(r.figures.hausdorff_from_reference_mm, std::min(height_mm, s.pitch_mm / 2) - r.figures.hausdorff_error_bound_mm);
-    EXPECT_NEAR(r.figures.volume_difference_mm3, -hexArea(s.pitch_mm) * height_mm, 1e-3 * hexArea(s.pitch_mm) * height_mm);
+    EXPECT_NEAR(r.figures.volume_difference_mm3, -hexArea(s.pitch_mm, s.y_scale) * height_mm, 1e-3 * hexArea(s.pitch_mm, s.y_scale) * height_mm);
 }
 
 TEST(Agreement, CopyShiftedByTenMicronsFailsByTheShift) {

@@ -113,7 +113,7 @@ void classTextureShapes(const Scene& s, std::vector<PlaneSlope>& slopes, std::ve
     centre_dz.assign(s.keptCount(), 0);
     if (!s.textures) return;
     const double relief_mm = s.zMm(s.textures->relief_units);
-    const double row_spacing_mm = s.pitch_mm * kSqrt3 / 2.0;
+    const double row_spacing_mm = latticeY({0, 3}, s.pitch_mm, s.y_scale);  // rows are 3 lattice j apart
     for (size_t k = 0; k < s.keptCount(); ++k) {
         if (s.kind[k] != CellKind::Data) continue;
         if (!s.drawn_by_face.empty() && s.drawn_by_face[k]) continue;

@@ -32,7 +32,7 @@ struct Candidate {
 // the circumradius) is kept and drawn as a plain hexagon (no mark face), so
 // the disc of radius reach_mm lies inside the model and clear of the marks.
 std::vector<Candidate> holeCandidates(const Scene& s, double reach_mm, double hole_mm, int64_t room_units) {
-    const double circumradius = s.pitch_mm / kSqrt3;
+    const double circumradius = hexCircumradius(s.pitch_mm, s.y_scale);
     const double limit = reach_mm + circumradius;
     const int32_t rows = int32_t(std::ceil(limit / (s.pitch_mm * kSqrt3 / 2))) + 1;
     const int32_t cols = int32_t(std::ceil(limit / s.pitch_mm)) + 1;
@@ -40,14 +40,14 @@ std::vector<Candidate> holeCandidates(const Scene& s, double reach_mm, double ho
     for (size_t k = 0; k < s.keptCount(); ++k) {
         if (s.kind[k] != CellKind::Data) continue;
         const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
-        const double cx = latticeX(c, s.pitch_mm), cy = latticeY(c, s.pitch_mm);
+        const double cx = latticeX(c, s.pitch_mm), cy = latticeY(c, s.pitch_mm, s.y_scale);
         bool clear = true;
         const int64_t cut = s.halves->split_units;
         for (int32_t dr = -rows; dr <= rows && clear; ++dr)
             for (int32_t dc = -cols; dc <= cols && clear; ++dc) {
                 const int32_t nc = s.col[k] + dc, nr = s.row[k] + dr;
                 const LatticePoint n = hexCentre(s.grid, nc, nr);
-                const double d = std::hypot(latticeX(n, s.pitch_mm) - cx, latticeY(n, s.pitch_mm) - cy);
+                const double d = std::hypot(latticeX(n, s.pitch_mm) - cx, latticeY(n, s.pitch_mm, s.y_scale) - cy);
                 if (d > limit) continue;
                 const int32_t other = s.keptAt(nc, nr);
                 clear = other >= 0 && (s.drawn_by_face.empty() || !s.drawn_by_face[size_t(other)]);
@@ -157,8 +157,9 @@ bool placeHalves(Scene& s, bool or_throw) {
 std::vector<PlanarPoint> holeRing(const Scene& s, size_t n) {
     const SceneHalves& h = *s.halves;
     const LatticePoint c = h.hole_centres[n];
-    // mm -> lattice coordinates (hex_grid.h: x = i p / 2, y = j p / (2 sqrt 3)).
-    const double per_i = s.pitch_mm / 2, per_j = s.pitch_mm / (2 * kSqrt3);
+    // mm -> lattice coordinates (hex_grid.h: x = i p / 2, y = j p / (2 sqrt 3) y_scale):
+    // round in mm however the lattice is stretched.
+    const double per_i = s.pitch_mm / 2, per_j = s.pitch_mm / (2 * kSqrt3) * s.y_scale;
     std::vector<PlanarPoint> ring;
     for (int k = 0; k < kHoleSides; ++k) {
         const double a = 2 * kPi * (k + 0.5) / kHoleSides;

@@ -42,9 +42,12 @@ struct Xy {
     double x = 0, y = 0;
 };
 
-Xy toMm(const PlanarPoint& p, double pitch) { return {planarX(p, pitch), planarY(p, pitch)}; }
-Xy toMm(const LatticePoint& p, double pitch) { return {latticeX(p, pitch), latticeY(p, pitch)}; }
-PlanarPoint toPlanar(const Xy& p, double pitch) { return {p.x / (pitch * 0.5), p.y * (2.0 * kSqrt3) / pitch}; }
+// Lattice coordinates <-> mm in the Scene's frame (its pitch and north-south stretch).
+Xy toMm(const Scene& s, const PlanarPoint& p) { return {planarX(p, s.pitch_mm), planarY(p, s.pitch_mm, s.y_scale)}; }
+Xy toMm(const Scene& s, const LatticePoint& p) { return {latticeX(p, s.pitch_mm), latticeY(p, s.pitch_mm, s.y_scale)}; }
+PlanarPoint toPlanar(const Scene& s, const Xy& p) {
+    return {p.x / (s.pitch_mm * 0.5), p.y * (2.0 * kSqrt3) / (s.pitch_mm * s.y_scale)};
+}
 PlanarPoint toPlanar(const LatticePoint& p) { return {double(p.i), double(p.j)}; }
 
 double dist(const Xy& a, const Xy& b) { return std::hypot(a.x - b.x, a.y - b.y); }
@@ -79,7 +82,7 @@ bool segmentsCross(const Xy& a, const Xy& b, const Xy& c, const Xy& d) {
 // Do the hexagon of a cell and the triangle abc (ccw) overlap with positive area?
 bool hexMeetsTriangle(const Scene& s, int32_t c, int32_t r, const Xy& a, const Xy& b, const Xy& t) {
     Xy h[kHexCorners];
-    for (int k = 0; k < kHexCorners; ++k) h[k] = toMm(hexCorner(s.grid, c, r, k), s.pitch_mm);
+    for (int k = 0; k < kHexCorners; ++k) h[k] = toMm(s, hexCorner(s.grid, c, r, k));
     const Xy tri[3] = {a, b, t};
     for (const Xy& p : h)
         if (insideTriangle(p, a, b, t)) return true;
@@ -104,7 +107,7 @@ LatticePoint originCorner(const Scene& s) {
     for (size_t k = 0; k < s.keptCount(); ++k)
         for (int e = 0; e < kHexCorners; ++e) {
             const LatticePoint p = hexCorner(s.grid, s.col[k], s.row[k], e);
-            const Xy m = toMm(p, s.pitch_mm);
+            const Xy m = toMm(s, p);
             const double score = m.x + m.y;
             if (score < best_score - 1e-9 || (score < best_score + 1e-9 && m.x < best_x)) {
                 best_score = score;
@@ -120,7 +123,7 @@ LatticePoint originCorner(const Scene& s) {
 std::vector<int32_t> cellsNear(const Scene& s, const Xy& at, double radius_mm) {
     std::vector<int32_t> out;
     for (size_t k = 0; k < s.keptCount(); ++k)
-        if (dist(at, toMm(hexCentre(s.grid, s.col[k], s.row[k]), s.pitch_mm)) <= radius_mm) out.push_back(int32_t(k));
+        if (dist(at, toMm(s, hexCentre(s.grid, s.col[k], s.row[k]))) <= radius_mm) out.push_back(int32_t(k));
     return out;
 }
 
@@ -160,7 +163,7 @@ double polygonArea(const std::vector<Xy>& poly) {
 
 std::vector<Xy> hexPolygon(const Scene& s, size_t k) {
     std::vector<Xy> h;
-    for (int e = 0; e < kHexCorners; ++e) h.push_back(toMm(hexCorner(s.grid, s.col[k], s.row[k], e), s.pitch_mm));
+    for (int e = 0; e < kHexCorners; ++e) h.push_back(toMm(s, hexCorner(s.grid, s.col[k], s.row[k], e)));
     return h;
 }
 
@@ -170,7 +173,7 @@ std::vector<Xy> hexPolygon(const Scene& s, size_t k) {
 // kReadEdgeMm inside the hexagon. Empty if no point is clear enough.
 constexpr double kReadEdgeMm = 0.4;
 std::optional<Xy> notchReadPoint(const Scene& s, size_t k, const Xy& apex, const Xy& m1, const Xy& m2) {
-    const Xy c = toMm(hexCentre(s.grid, s.col[k], s.row[k]), s.pitch_mm);
+    const Xy c = toMm(s, hexCentre(s.grid, s.col[k], s.row[k]));
     if (triangleDistance(c, apex, m1, m2) >= kMarkClearanceMm) return c;
     const std::vector<Xy> hex = hexPolygon(s, k);
     std::optional<Xy> best;
@@ -243,7 +246,7 @@ void placeNotch(Scene& s) {
                           " mm are too small to cut a notch into without thin slivers (use larger cells)");
         return;
     }
-    const Xy o = toMm(originCorner(s), s.pitch_mm);
+    const Xy o = toMm(s, originCorner(s));
     const std::vector<int32_t> near = cellsNear(s, o, notchReach(s, mp.notch_depth_mm) + mp.notch_depth_mm);
     // Into the model towards the north-east; the direction is turned (up to
     // 30 degrees either way) when that lets the V go deeper between the
@@ -279,9 +282,9 @@ void placeNotch(Scene& s) {
     Xy apex, m1, m2;
     notchTriangle(s, o, best_bisector, best_opening, best_depth, apex, m1, m2);
     Notch n;
-    n.apex = toPlanar(apex, s.pitch_mm);
-    n.mouth_a = toPlanar(m1, s.pitch_mm);
-    n.mouth_b = toPlanar(m2, s.pitch_mm);
+    n.apex = toPlanar(s, apex);
+    n.mouth_a = toPlanar(s, m1);
+    n.mouth_b = toPlanar(s, m2);
     n.depth_mm = best_depth;
     n.width_mm = 2.0 * best_depth * std::tan(best_opening / 2.0 * M_PI / 180.0);
     n.opening_deg = best_opening;
@@ -354,15 +357,15 @@ std::vector<int32_t> stepsToEdge(const Scene& s, const std::vector<int32_t>& lab
 // hexagon outside its region (a lower bound: centre distance - circumradius).
 double clearanceMm(const Scene& s, const std::vector<int32_t>& label, size_t k, int32_t steps) {
     const int32_t reach = steps + 2;
-    const Xy c = toMm(hexCentre(s.grid, s.col[k], s.row[k]), s.pitch_mm);
+    const Xy c = toMm(s, hexCentre(s.grid, s.col[k], s.row[k]));
     double best = INFINITY;
     for (int32_t r = s.row[k] - reach; r <= s.row[k] + reach; ++r)
         for (int32_t cc = s.col[k] - reach; cc <= s.col[k] + reach; ++cc) {
             const int32_t o = s.keptAt(cc, r);
             if (o >= 0 && label[size_t(o)] == label[k]) continue;
-            best = std::min(best, dist(c, toMm(hexCentre(s.grid, cc, r), s.pitch_mm)));
+            best = std::min(best, dist(c, toMm(s, hexCentre(s.grid, cc, r))));
         }
-    return best - s.pitch_mm / kSqrt3;
+    return best - hexCircumradius(s.pitch_mm, s.y_scale);
 }
 
 // The boundary loop (counter-clockwise, lattice ids) of a set of kept cells,
@@ -400,14 +403,14 @@ std::vector<int32_t> triangleHost(const Scene& s, const std::vector<int32_t>& la
     for (int32_t r = s.row[anchor] - reach; r <= s.row[anchor] + reach; ++r)
         for (int32_t c = s.col[anchor] - reach; c <= s.col[anchor] + reach; ++c) {
             const int32_t o = s.keptAt(c, r);
-            if (dist(centre, toMm(hexCentre(s.grid, c, r), s.pitch_mm)) > radius_mm) continue;
+            if (dist(centre, toMm(s, hexCentre(s.grid, c, r))) > radius_mm) continue;
             if (o < 0 || label[size_t(o)] != label[anchor]) return {};
             host.push_back(o);
         }
     if (host.empty()) return {};
     // No pillar centre on the triangle's edge: its height is read there.
     for (int32_t k : host) {
-        const Xy p = toMm(hexCentre(s.grid, s.col[size_t(k)], s.row[size_t(k)]), s.pitch_mm);
+        const Xy p = toMm(s, hexCentre(s.grid, s.col[size_t(k)], s.row[size_t(k)]));
         for (int e = 0; e < 3; ++e)
             if (segmentDistance(p, tri[e], tri[(e + 1) % 3]) < kReadPointClearanceMm) return {};
     }
@@ -416,7 +419,7 @@ std::vector<int32_t> triangleHost(const Scene& s, const std::vector<int32_t>& la
     const std::vector<int64_t> loop = outline(s, host, in);
     if (loop.empty()) return {};
     std::vector<Xy> poly;
-    for (int64_t id : loop) poly.push_back(toMm(latticeVertexPoint(s.grid, id), s.pitch_mm));
+    for (int64_t id : loop) poly.push_back(toMm(s, latticeVertexPoint(s.grid, id)));
     for (size_t n = 0; n < poly.size(); ++n) {
         const Xy& a = poly[n];
         const Xy& b = poly[(n + 1) % poly.size()];
@@ -454,7 +457,7 @@ void placeTriangle(Scene& s) {
     for (int32_t ki : order) {
         const size_t k = size_t(ki);
         const double clear = clearanceMm(s, label, k, steps[k]);
-        const Xy c = toMm(hexCentre(s.grid, s.col[k], s.row[k]), s.pitch_mm);
+        const Xy c = toMm(s, hexCentre(s.grid, s.col[k], s.row[k]));
         for (double leg = mp.triangle_leg_mm; leg >= mp.triangle_min_leg_mm - 1e-9; leg -= 0.5) {
             if (leg <= best_leg) break;
             const double lx = leg, ly = kTriangleLegRatio * leg;
@@ -467,12 +470,12 @@ void placeTriangle(Scene& s) {
             // The host grows ring by ring until the triangle keeps its margin
             // (triangleHost refuses a host that leaves the region).
             for (int ring = 0; ring < 3 && host.empty(); ++ring)
-                host = triangleHost(s, label, k, c, circum + s.pitch_mm / kSqrt3 + ring * s.pitch_mm, tri, margin);
+                host = triangleHost(s, label, k, c, circum + hexCircumradius(s.pitch_mm, s.y_scale) + ring * s.pitch_mm, tri, margin);
             if (host.empty()) continue;
             OrientationTriangle t;
-            t.corner = toPlanar(tri[0], s.pitch_mm);
-            t.east = toPlanar(tri[1], s.pitch_mm);
-            t.north = toPlanar(tri[2], s.pitch_mm);
+            t.corner = toPlanar(s, tri[0]);
+            t.east = toPlanar(s, tri[1]);
+            t.north = toPlanar(s, tri[2]);
             t.leg_x_mm = lx;
             t.leg_y_mm = ly;
             t.raise_units = std::max<int64_t>(1, snapUnits(mp.triangle_height_mm, s.z_snap_mm));
@@ -610,7 +613,7 @@ void buildMarkFaces(Scene& s) {
 
     if (s.marks.notch) {
         const Notch& n = *s.marks.notch;
-        const Xy apex = toMm(n.apex, s.pitch_mm), m1 = toMm(n.mouth_a, s.pitch_mm), m2 = toMm(n.mouth_b, s.pitch_mm);
+        const Xy apex = toMm(s, n.apex), m1 = toMm(s, n.mouth_a), m2 = toMm(s, n.mouth_b);
         if (!(n.depth_mm > 0 && n.depth_mm <= 1000)) throw InputError("orientation notch: depth_mm must be in (0, 1000]");
         const std::vector<int32_t> near = cellsNear(s, apex, dist(apex, m1) + 2 * s.pitch_mm);
         const std::vector<int32_t> cut = cellsMeeting(s, near, apex, m1, m2);
@@ -624,7 +627,7 @@ void buildMarkFaces(Scene& s) {
         std::vector<std::vector<Cdt::Face_handle>> per_cell(cut.size());
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
             const PlanarPoint c = centroid(f);
-            const Xy cm = toMm(c, s.pitch_mm);
+            const Xy cm = toMm(s, c);
             if (insideTriangle(cm, apex, m1, m2)) continue;
             int32_t col, row;
             if (!hexCellAt(s.grid, c.i * 0.5, c.j / (2.0 * kSqrt3), col, row)) continue;
@@ -637,7 +640,7 @@ void buildMarkFaces(Scene& s) {
             s.drawn_by_face[size_t(cut[n2])] = 1;
             fb.addFace(cut[n2], 0, per_cell[n2], {cut[n2]});
             const std::optional<Xy> at = notchReadPoint(s, size_t(cut[n2]), apex, m1, m2);
-            s.faces.faces.back().read_point = toPlanar(*at, s.pitch_mm);
+            s.faces.faces.back().read_point = toPlanar(s, *at);
         }
     }
     if (s.marks.triangle) {
@@ -647,13 +650,13 @@ void buildMarkFaces(Scene& s) {
         // The host: the anchor's flat region cells the triangle lies over, plus one ring.
         const std::vector<int32_t> label = flatRegions(s);
         if (label[size_t(t.anchor)] < 0) throw InputError("orientation triangle: its anchor cell is not on a flat region");
-        const Xy tri[3] = {toMm(t.corner, s.pitch_mm), toMm(t.east, s.pitch_mm), toMm(t.north, s.pitch_mm)};
+        const Xy tri[3] = {toMm(s, t.corner), toMm(s, t.east), toMm(s, t.north)};
         const Xy c{(tri[0].x + tri[1].x + tri[2].x) / 3, (tri[0].y + tri[1].y + tri[2].y) / 3};
         const double circum = std::max({dist(c, tri[0]), dist(c, tri[1]), dist(c, tri[2])});
         const double margin = kTriangleMarginMm;
         std::vector<int32_t> host;
         for (int ring = 0; ring < 3 && host.empty(); ++ring)
-            host = triangleHost(s, label, size_t(t.anchor), c, circum + s.pitch_mm / kSqrt3 + ring * s.pitch_mm, tri, margin);
+            host = triangleHost(s, label, size_t(t.anchor), c, circum + hexCircumradius(s.pitch_mm, s.y_scale) + ring * s.pitch_mm, tri, margin);
         if (host.empty()) throw InputError("orientation triangle: it does not fit its flat region");
         std::vector<uint8_t> in(s.keptCount(), 0);
         for (int32_t k : host) in[size_t(k)] = 1;
@@ -675,7 +678,7 @@ void buildMarkFaces(Scene& s) {
         std::vector<Cdt::Face_handle> host_tris, tri_tris;
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
             if (f->info() % 2 == 1) host_tris.push_back(f);
-            else if (insideTriangle(toMm(centroid(f), s.pitch_mm), tri[0], tri[1], tri[2])) tri_tris.push_back(f);
+            else if (insideTriangle(toMm(s, centroid(f)), tri[0], tri[1], tri[2])) tri_tris.push_back(f);
         }
         for (int32_t k : host) s.drawn_by_face[size_t(k)] = 1;
         fb.addFace(t.anchor, 0, host_tris, host);
@@ -695,8 +698,8 @@ PlanarPoint readPoint(const Scene& s, size_t kept) {
 int64_t markRaiseAtCentre(const Scene& s, size_t kept) {
     if (!s.marks.triangle) return 0;
     const OrientationTriangle& t = *s.marks.triangle;
-    const Xy p = toMm(hexCentre(s.grid, s.col[kept], s.row[kept]), s.pitch_mm);
-    return insideTriangle(p, toMm(t.corner, s.pitch_mm), toMm(t.east, s.pitch_mm), toMm(t.north, s.pitch_mm))
+    const Xy p = toMm(s, hexCentre(s.grid, s.col[kept], s.row[kept]));
+    return insideTriangle(p, toMm(s, t.corner), toMm(s, t.east), toMm(s, t.north))
                ? t.raise_units
                : 0;
 }

@@ -165,7 +165,7 @@ void placeScale(Scene& s) {
                 if (j >= c.j - 1 && j <= c.j + 1) return true;
             return false;
         };
-        const double unit_y_mm = s.pitch_mm / (2.0 * kSqrt3);  // one lattice j step
+        const double unit_y_mm = latticeY({0, 1}, s.pitch_mm, s.y_scale);  // one lattice j step
         need_mm = n * kScaleTreadMm;
         auto yOf = [&](int64_t j) { return s.point(LatticePoint{i_east, j}, 0).y; };
         for (const Candidate& start : cand) {

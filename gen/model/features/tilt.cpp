@@ -54,7 +54,7 @@ PlaneSlope gradientSlope(const HexField& field, const Scene& s, size_t k) {
         const double v = field.at(nc, nr);
         if (std::isnan(v)) continue;
         const LatticePoint o = hexCentre(s.grid, nc, nr);
-        const double dx = double(o.i - c.i) * s.pitch_mm * 0.5, dy = double(o.j - c.j) * s.pitch_mm / (2.0 * kSqrt3);
+        const double dx = double(o.i - c.i) * s.pitch_mm * 0.5, dy = latticeY({0, o.j - c.j}, s.pitch_mm, s.y_scale);
         const double dh = s.mapping.heightMm(v) - hc;
         mxx += dx * dx;
         mxy += dx * dy;
@@ -122,7 +122,7 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
         int64_t lo[kHexCorners], hi[kHexCorners];
         for (int e = 0; e < kHexCorners; ++e) {
             const LatticePoint p = hexCorner(s.grid, s.col[k], s.row[k], e);
-            const double dx = double(p.i - c.i) * s.pitch_mm * 0.5, dy = double(p.j - c.j) * s.pitch_mm / (2.0 * kSqrt3);
+            const double dx = double(p.i - c.i) * s.pitch_mm * 0.5, dy = latticeY({0, p.j - c.j}, s.pitch_mm, s.y_scale);
             want[e] = (gx * dx + gy * dy) * unit_per_mm;
             lo[e] = -h;                  // no corner below the floor
             hi[e] = ceiling_units - h;   // nor above the height range

@@ -368,18 +368,23 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         // (most climate files): longitude and latitude on the sphere.
         const double lat = gt[3] + gt[5] * rows / 2.0;
         x_scale = std::cos(lat * kPi / 180.0);
+        r.metres_per_unit = kMetresPerDegreeOfLatitude;
+        r.longitude_scale = x_scale;
         r.facts.push_back({"crs", "none in the file; its coordinates are degrees east and north (CF), so longitude is "
                                   "scaled by cos(" + formatSignificant(lat) + " deg) = " + formatSignificant(x_scale)});
         r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h) + " degrees"});
     } else if (srs && OSRIsGeographic(srs)) {
         const double lat = gt[3] + gt[5] * rows / 2.0;  // mean latitude, degrees
         x_scale = std::cos(lat * kPi / 180.0);
+        r.metres_per_unit = kMetresPerDegreeOfLatitude;
+        r.longitude_scale = x_scale;
         r.facts.push_back({"crs", crsName(srs) + ", geographic: longitude scaled by cos(" + formatSignificant(lat) +
                                       " deg) = " + formatSignificant(x_scale)});
         r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h) + " degrees"});
     } else if (srs) {
         char* unit = nullptr;
-        OSRGetLinearUnits(srs, &unit);
+        const double metres = OSRGetLinearUnits(srs, &unit);
+        if (OSRIsProjected(srs) && metres > 0 && std::isfinite(metres)) r.metres_per_unit = metres;
         const std::string u = unit ? unit : "units";
         r.facts.push_back({"crs", crsName(srs) + (OSRIsProjected(srs) ? ", projected: true aspect" : "")});
         r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h) + " " + u});
