@@ -231,6 +231,9 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     if (classTexturesApply(field, params)) {
         s.textures = decideClassTextures(field, params, s.pitch_mm);
         s.mapping = classTextureMapping(field, s.zMm(s.textures->height_units));
+        // The braille legend names the classes by texture where they fit.
+        if (s.params.legend.wanted() && s.params.legend.key_lines.empty())
+            s.params.legend.key_lines = classTextureLegendLines(*s.textures, field.input.classes);
     }
 
     // Heights above the floor, snapped once; everything below compares integers.

@@ -247,6 +247,15 @@ TEST(ClassTextures, TheCommandLineSaysEachClassesTextureAndVerifiesItAsATactileG
     EXPECT_EQ(tactile.exit_code, test::kExitOk) << tactile.output;
     EXPECT_NE(tactile.output.find("told apart by 3 textures 1 mm deep"), std::string::npos) << tactile.output;
 
+    // The braille plate names the classes by texture, each on a line of its own.
+    const auto titled = test::runTsf("gen " + in + " --categorical --cell 14 --classes 3 --title Cover -o " +
+                                     (dir / "titled.stl").string() + " --json");
+    ASSERT_EQ(titled.exit_code, test::kExitOk) << titled.output;
+    const nlohmann::json tj = nlohmann::json::parse(titled.output.substr(titled.output.find('{')));
+    std::vector<std::string> lines;
+    for (const auto& l : tj["scene"]["legend"]["lines"]) lines.push_back(l["text"].get<std::string>());
+    EXPECT_EQ(lines, (std::vector<std::string>{"Cover", "4 classes", "level: 4", "ridges east-west: 2", "dimples: 8, 9"}));
+
     const auto bad = test::runTsf("gen " + in + " --categorical --classes 9 -o " + model);
     EXPECT_EQ(bad.exit_code, test::kExitBadInput) << bad.output;
     EXPECT_NE(bad.output.find("--classes must be 1 to 5"), std::string::npos) << bad.output;

@@ -290,6 +290,11 @@ TEST(GdalReader, ClassNamesMakeAClassMapAndTheSummaryAndTheKeyNameEveryClass) {
     const nlohmann::json tj = nlohmann::json::parse(titled.output.substr(titled.output.find('{')));
     ASSERT_EQ(tj["scene"]["legend"]["lines"].size(), 2u) << tj["scene"]["legend"].dump();
     EXPECT_EQ(tj["scene"]["legend"]["lines"][1]["text"], "4 classes");
+    // "ridges north-south: Emergent Herbaceous Wetlands" is wider than the
+    // plate: the classes are named in the key files only, and the summary says so.
+    bool said = false;
+    for (const auto& n : tj["scene"]["notes"]) said = said || n.get<std::string>().find("names the classes only in the key") != std::string::npos;
+    EXPECT_TRUE(said) << tj["scene"]["notes"].dump();
 
     // The same names in a raster attribute table (rows in any order).
     s.category_names.clear();

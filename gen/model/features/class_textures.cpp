@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "gen/util/error.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 
@@ -100,6 +101,22 @@ ValueMapping classTextureMapping(const HexField& field, double height_mm) {
     m.baseline = std::isfinite(lowest) && lowest - 1 < lowest ? std::floor(lowest) - 1 : std::nextafter(lowest, -INFINITY);
     m.value_max = m.baseline;
     return m;
+}
+
+std::vector<std::string> classTextureLegendLines(const SceneTextures& t, const std::vector<RasterClass>& names) {
+    std::vector<std::string> lines;
+    for (int k = 0; k < t.textures_used; ++k) {
+        std::string who;
+        for (const ClassTexture& c : t.classes) {
+            if (int(c.texture) != k) continue;
+            std::string name = formatSignificant(c.code);
+            for (const RasterClass& n : names)
+                if (n.code == c.code && !n.name.empty()) name = n.name;
+            who += (who.empty() ? "" : ", ") + name;
+        }
+        if (!who.empty()) lines.push_back(std::string(textureName(Texture(k))) + ": " + who);
+    }
+    return lines;
 }
 
 const ClassTexture* classTexture(const SceneTextures& t, double code) {

@@ -68,6 +68,11 @@ SceneTextures decideClassTextures(const HexField& field, const SceneParams& para
 /// file stays a table of class codes.
 ValueMapping classTextureMapping(const HexField& field, double height_mm);
 
+/// One line per texture for the braille legend: "ridges east-west: Open
+/// Water", the classes that share it after one another ("bumps: 21, 22, 31"),
+/// each class by the file's name for it (`names`), else its code.
+std::vector<std::string> classTextureLegendLines(const SceneTextures& textures, const std::vector<RasterClass>& names);
+
 /// The texture of class `code`; none when the Scene has no such class.
 const ClassTexture* classTexture(const SceneTextures& textures, double code);
 

@@ -75,6 +75,10 @@ struct LegendRequest {
     /// The line after the title instead of the value range (a class map's
     /// "5 classes": a range of class codes means nothing); "" for the range.
     std::string range_line;
+    /// Lines after the range that the plate shows only when every one fits
+    /// on one braille line (a class map's classes and their textures); when
+    /// one does not, none is shown and the key files name them.
+    std::vector<std::string> key_lines;
     bool wanted() const { return !title.empty() || !units.empty(); }
 };
 

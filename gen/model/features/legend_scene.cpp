@@ -49,7 +49,30 @@ void placeLegend(Scene& s) {
     p.max_cells = std::max(1, int(std::floor((width - 2 * p.margin_mm - st.dot_base_mm - st.dot_pitch_mm) /
                                               st.cell_pitch_mm)) + 1);
     SceneLegend l;
-    l.layout = layoutLegend(p);
+    if (!rq.key_lines.empty()) {
+        // The key's lines only when each one stays one braille line.
+        LegendParams with = p;
+        size_t lines = 0;
+        for (const std::string& line : with.lines) lines += !line.empty();
+        for (const std::string& line : rq.key_lines) {
+            with.lines.push_back(line);
+            lines += !line.empty();
+        }
+        bool one_line_each = true;
+        try {
+            l.layout = layoutLegend(with);
+            one_line_each = l.layout.text.size() == lines;
+        } catch (const InputError&) {
+            one_line_each = false;  // a word of theirs is wider than the plate
+        }
+        if (!one_line_each) {
+            l.layout = layoutLegend(p);
+            s.notes.push_back("the legend names the classes only in the key files: a class's line is wider than "
+                              "the plate (" + std::to_string(p.max_cells) + " braille cells)");
+        }
+    } else {
+        l.layout = layoutLegend(p);
+    }
     if (l.layout.dots.empty()) return;
     // The plate reaches south over the culled corners to row `reach`, the
     // first row (from the north) whose kept cells span kPlateHoldFraction of
