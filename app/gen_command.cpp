@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "app/gen_options.h"
 #include "app/gen_summary.h"
+#include "app/ground_scale.h"
 #include "app/halves_output.h"
 #include "app/input_report.h"
 #include "app/stage_timer.h"
@@ -408,6 +409,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         facts.categorical = field.input.categorical;
         facts.class_names = field.input.classes;
         facts.class_order = field.input.class_order;
+        if (const auto g = groundScale(scene, field)) facts.ground = groundSentence(*g);
         const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
         const auto [text_path, brf_path] = keyPaths(o);
         writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });

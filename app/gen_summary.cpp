@@ -1,5 +1,6 @@
 #include "app/gen_summary.h"
 
+#include "app/ground_scale.h"
 #include "app/printer_fit.h"
 #include "gen/model/attachments.h"
 #include "gen/model/feature_records.h"
@@ -172,58 +173,6 @@ static std::string classesLine(const Scene& scene, const FieldInput& input) {
     if (classes.size() > kListed) o += "; ... " + std::to_string(classes.size() - kListed) + " more in --json and the key";
     return o + "\n";
 }
-
-namespace {
-
-// The ground a raster covers and the model's scale on it: 1 : N east-west
-// and north-south (the same with true aspect). None when the file does not
-// say how long its units are.
-struct GroundScale {
-    double width_m = 0, depth_m = 0;
-    double east_west = 0, north_south = 0;  ///< N of 1 : N
-};
-
-std::optional<GroundScale> groundScale(const Scene& scene, const HexField& field) {
-    const FieldInput& in = field.input;
-    if (!(in.metres_per_unit > 0) || !(scene.pitch_mm > 0)) return std::nullopt;
-    GroundScale g;
-    g.width_m = in.ground_width_m;
-    g.depth_m = in.ground_depth_m;
-    const double across_m = field.pitch_data * in.metres_per_unit;  // one pitch on the ground
-    g.east_west = across_m * 1000.0 / scene.pitch_mm;
-    // Rows: a raster's own a pixel apart, a lattice's laid over the ground
-    // sqrt(3)/2 of a pitch; on the model sqrt(3)/2 of a pitch, stretched.
-    const double row_ground_m = field.rows_a_pitch_apart ? across_m : across_m * kSqrt3 / 2;
-    g.north_south = row_ground_m * 1000.0 / latticeY({0, 3}, scene.pitch_mm, scene.y_scale);
-    return g;
-}
-
-// N of a scale 1 : N as a map gives it: three significant digits, whole,
-// thousands apart ("15 000", "1 250 000"; below 1: as it is).
-std::string scaleNumber(double n) {
-    if (!(n >= 1) || !std::isfinite(n)) return formatSignificant(n, 3);
-    const double unit = std::pow(10.0, std::max(0.0, std::floor(std::log10(n)) - 2));
-    std::string digits = std::to_string(int64_t(std::llround(n / unit) * int64_t(unit)));
-    for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(size_t(at), " ");
-    return digits;
-}
-
-std::string groundLine(const GroundScale& g, const FieldInput& in) {
-    auto size = [](double m) {
-        return m >= 10000 ? formatSignificant(m / 1000, 4) + " km" : formatSignificant(m, 4) + " m";
-    };
-    std::string o = "  ground    " + size(g.width_m) + " x " + size(g.depth_m) + "; scale 1 : " +
-                    scaleNumber(g.east_west) + " (1 mm on the model is " + size(g.east_west / 1000) +
-                    " on the ground)";
-    if (std::abs(g.north_south / g.east_west - 1) > 1e-6)
-        o += ", north-south 1 : " + scaleNumber(g.north_south);
-    if (in.longitude_scale > 0)
-        o += "; longitude and latitude: a degree of longitude counted as cos(mean latitude) = " +
-             formatSignificant(in.longitude_scale, 4) + " of a degree of latitude";
-    return o + "\n";
-}
-
-}  // namespace
 
 nlohmann::json summaryJson(const GenSummary& s) {
     nlohmann::json j;

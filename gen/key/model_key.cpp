@@ -171,6 +171,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
         size += " on a flat base " + mm(s.params.base_mm) + " thick.";
     else
         size += ". The underside mirrors the top: seen from below, high values are deep pockets.";
+    if (!facts.ground.empty()) size += " " + facts.ground;
     out.push_back(size);
     if (s.halves)
         out.push_back("The model prints in two halves, upper and lower, joined by pins that fit one way only.");

@@ -31,6 +31,9 @@ struct ModelKeyFacts {
     bool categorical = false;
     std::vector<RasterClass> class_names;
     std::vector<double> class_order;  ///< --class-order (FieldInput::class_order): the cells hold ranks
+    /// The ground the model shows and its scale, one sentence; "" when the
+    /// file does not say how long its units are.
+    std::string ground;
 };
 
 /// The key's paragraphs: the first is the title line, each other a few

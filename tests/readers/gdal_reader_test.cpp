@@ -128,6 +128,8 @@ TEST(GdalReader, OnePillarPerValueKeepsTheGroundsAspect) {
     EXPECT_NE(text.output.find("scale 1 : 15 000 (1 mm on the model is 15 m on the ground)"), std::string::npos)
         << text.output;
     EXPECT_NE(text.output.find("aspect    true"), std::string::npos) << text.output;
+    const std::string key = test::readText(dir / "t.key.txt");
+    EXPECT_NE(key.find("The model shows 1800 m by 1200 m of ground at a scale of 1 : 15 000"), std::string::npos) << key;
 
     const auto regular = test::runTsf("gen " + path + " --cell 2 --regular-hexagons -o " +
                                       (dir / "regular.stl").string() + " --json");
