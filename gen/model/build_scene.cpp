@@ -450,7 +450,12 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         std::vector<PlaneSlope> slopes = tiltSlopes(field, s, params.tilt);
         std::vector<int32_t> centre_dz;
         if (s.textures) classTextureShapes(s, slopes, centre_dz);  // no --tilt with textures (decideClassTextures)
-        resolveTopShapes(s, slopes, s.textures ? 1.0 : params.steepness, structural, centre_dz);
+        // Nothing to shape (a raster's cells are never structural, and no
+        // tilt or texture was asked for): every top stays a level hexagon,
+        // with no per-cell shape lists to build, check and carry.
+        const bool any = params.tilt != TiltSource::None || s.textures ||
+                         std::any_of(structural.begin(), structural.end(), [](uint8_t b) { return b != 0; });
+        if (any) resolveTopShapes(s, slopes, s.textures ? 1.0 : params.steepness, structural, centre_dz);
     }
     if (s.textures) {
         if (s.textures->relief_units * s.z_snap_mm < kMinFeltTextureReliefMm - 1e-9)
