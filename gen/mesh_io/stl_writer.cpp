@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <future>
 #include <limits>
 #include <ostream>
 #include <vector>
@@ -27,6 +28,8 @@ constexpr size_t kFacetBytes = 50;
 // Facets serialised per write() call: large enough to amortise the call,
 // small enough to stay in cache (~200 KB).
 constexpr size_t kFacetsPerChunk = 4096;
+// Binary STL: facets converted per block (~800 KB), two blocks in flight.
+constexpr size_t kBinaryFacetsPerBlock = 16384;
 
 struct FloatTriangle {
     std::array<std::array<float, 3>, 3> corners;
@@ -94,24 +97,38 @@ void writeStlBinary(const Mesh& mesh, std::ostream& out, const std::string& titl
     putUint32(count, static_cast<uint32_t>(mesh.triangles.size()));
     out.write(reinterpret_cast<const char*>(count), sizeof count);
 
-    std::vector<unsigned char> chunk(kFacetsPerChunk * kFacetBytes);
-    size_t used = 0;
-    for (const auto& tri : mesh.triangles) {
-        const FloatTriangle f = floatTriangle(mesh, tri);
-        unsigned char* dst = chunk.data() + used;
-        for (int k = 0; k < 3; ++k) putFloat(dst + 4 * k, f.normal[k]);
-        for (int c = 0; c < 3; ++c) {
-            for (int k = 0; k < 3; ++k) putFloat(dst + 12 + 12 * c + 4 * k, f.corners[c][k]);
+    // Facets [first, first + count) as STL bytes into dst.
+    auto convert = [&mesh](size_t first, size_t count, unsigned char* dst) {
+        for (size_t t = first; t < first + count; ++t, dst += kFacetBytes) {
+            const FloatTriangle f = floatTriangle(mesh, mesh.triangles[t]);
+            for (int k = 0; k < 3; ++k) putFloat(dst + 4 * k, f.normal[k]);
+            for (int c = 0; c < 3; ++c)
+                for (int k = 0; k < 3; ++k) putFloat(dst + 12 + 12 * c + 4 * k, f.corners[c][k]);
+            dst[48] = 0;
+            dst[49] = 0;
         }
-        dst[48] = 0;
-        dst[49] = 0;
-        used += kFacetBytes;
-        if (used == chunk.size()) {
-            out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(used));
-            used = 0;
-        }
+    };
+    const size_t total = mesh.triangles.size();
+    std::array<std::vector<unsigned char>, 2> chunks;
+    for (auto& c : chunks) c.resize(std::min(total, kBinaryFacetsPerBlock) * kFacetBytes);
+    // The next chunk is converted on a second thread while this one is
+    // written (and hashed, and copied by the kernel): a large model's
+    // conversion is then off the writing path.
+    std::future<void> next;
+    auto start = [&](size_t first, size_t slot) {
+        const size_t count = std::min(kBinaryFacetsPerBlock, total - first);
+        if (total > 2 * kBinaryFacetsPerBlock)
+            next = std::async(std::launch::async, convert, first, count, chunks[slot].data());
+        else
+            convert(first, count, chunks[slot].data());
+    };
+    if (total > 0) start(0, 0);
+    for (size_t first = 0, slot = 0; first < total; first += kBinaryFacetsPerBlock, slot ^= 1) {
+        if (next.valid()) next.get();
+        const size_t count = std::min(kBinaryFacetsPerBlock, total - first);
+        if (first + count < total) start(first + count, slot ^ 1);
+        out.write(reinterpret_cast<const char*>(chunks[slot].data()), static_cast<std::streamsize>(count * kFacetBytes));
     }
-    if (used > 0) out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(used));
 }
 
 void writeStlAscii(const Mesh& mesh, std::ostream& out, const std::string& title) {

@@ -1,6 +1,8 @@
 // Scene <-> JSON sidecar. See scene_json.h.
 #include "gen/model/scene_json.h"
 
+#include <charconv>
+
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -70,6 +72,34 @@ json fanJson(const Scene& s, size_t k) {
         f["crossings_bottom"] = crossings(t.crossing_bottom);
     }
     return f;
+}
+
+// True when kept cell k is written without "fan" or "shape" (cellJson).
+bool plainCell(const Scene& s, size_t k) {
+    const TopShapes& t = s.shapes;
+    if (t.empty()) return true;
+    if (!t.shaped.empty() && t.shaped[k]) return false;
+    bool any = t.top_centre_dz[k] != 0 || t.structural[k];
+    for (int32_t dz : t.top_dz[k]) any = any || dz != 0;
+    return !any;
+}
+
+// A plain cell's line as cellJson(...).dump() writes it (members in
+// nlohmann's key order, its number format for the value), without building
+// the object: a million-cell sidecar spends its time here.
+void appendPlainCell(std::string& out, const Scene& s, size_t k) {
+    char buf[24];
+    auto integer = [&](const char* key, int64_t v) {
+        out += key;
+        out.append(buf, size_t(std::to_chars(buf, buf + sizeof buf, v).ptr - buf));
+    };
+    integer("{\"bottom\":", s.bottom[k]);
+    integer(",\"col\":", s.col[k]);
+    integer(",\"row\":", s.row[k]);
+    integer(",\"top\":", s.top[k]);
+    out += ",\"value\":";
+    out += std::isnan(s.value[k]) ? std::string("null") : json(s.value[k]).dump();
+    out += '}';
 }
 
 json cellJson(const Scene& s, size_t k) {
@@ -583,7 +613,17 @@ void writeSceneJson(const Scene& scene, const std::string& path, const SceneMode
     writeFileAtomically(path, [&](std::ostream& out) {
         out << head << ",\n  \"cells\": [";
         const size_t n = scene.keptCount();
-        for (size_t k = 0; k < n; ++k) out << (k ? ",\n    " : "\n    ") << cellJson(scene, k).dump();
+        std::string block;
+        for (size_t k = 0; k < n; ++k) {
+            block += k ? ",\n    " : "\n    ";
+            if (plainCell(scene, k)) appendPlainCell(block, scene, k);
+            else block += cellJson(scene, k).dump();
+            if (block.size() > (size_t(1) << 20)) {
+                out << block;
+                block.clear();
+            }
+        }
+        out << block;
         out << (n == 0 ? "]\n}\n" : "\n  ]\n}\n");
     });
 }

@@ -72,6 +72,32 @@ TEST(StlBinary, LayoutMatchesHandComputedBytes) {
     EXPECT_EQ(facet3.substr(12 + 24, 12), zero4 + zero4 + bytesOf({0x00, 0x00, 0xA0, 0x40}));  // (0,0,5)
 }
 
+// A mesh of many blocks (converted on a second thread while the one before
+// is written): every facet in its place, its corners the float32 of each
+// position, the last block short.
+TEST(StlBinary, ALargeMeshKeepsEveryFacetInItsPlace) {
+    Mesh m;
+    const size_t n = 3 * 16384 + 1234;
+    for (size_t t = 0; t < n; ++t) {
+        const double x = double(t) * 0.25, y = double(t % 977) * 0.125;
+        m.positions.push_back({x, y, 0.0});
+        m.positions.push_back({x + 1, y, 0.0});
+        m.positions.push_back({x, y + 1, 1.0 + double(t % 13)});
+        m.triangles.push_back({uint32_t(3 * t), uint32_t(3 * t + 1), uint32_t(3 * t + 2)});
+    }
+    const std::string stl = binaryStl(m);
+    ASSERT_EQ(stl.size(), 84 + 50 * n);
+    for (const size_t t : {size_t(0), size_t(16383), size_t(16384), size_t(2 * 16384 + 7), n - 1}) {
+        const std::string facet = stl.substr(84 + 50 * t, 50);
+        for (int c = 0; c < 3; ++c) {
+            const Vec3& p = m.positions[m.triangles[t][size_t(c)]];
+            EXPECT_EQ(facet.substr(12 + 12 * size_t(c), 12), leFloat(float(p.x)) + leFloat(float(p.y)) + leFloat(float(p.z)))
+                << "facet " << t << " corner " << c;
+        }
+        EXPECT_EQ(facet.substr(48, 2), bytesOf({0, 0}));
+    }
+}
+
 TEST(StlBinary, TitleStartingWithSolidIsNotMistakenForAscii) {
     const std::string stl = binaryStl(test::tetrahedron(), "solid model");
     EXPECT_NE(stl.substr(0, 5), "solid");
