@@ -26,7 +26,7 @@ std::optional<GroundScale> groundScale(const Scene& scene, const HexField& field
     g.east_west = across_m * 1000.0 / scene.pitch_mm;
     // Rows: a raster's own a pixel apart, a lattice's laid over the ground
     // sqrt(3)/2 of a pitch; on the model 3 lattice steps, stretched or not.
-    const double row_ground_m = field.rows_a_pitch_apart ? across_m : across_m * kSqrt3 / 2;
+    const double row_ground_m = field.rows_a_pitch_apart ? across_m * field.row_aspect : across_m * kSqrt3 / 2;
     g.north_south = row_ground_m * 1000.0 / latticeY({0, 3}, scene.pitch_mm, scene.y_scale);
     return g;
 }

@@ -32,6 +32,9 @@ struct HexField {
     /// sqrt(3)/2 of that as a lattice laid over the ground has them; a
     /// Scene with true aspect stretches the hexagons to match (hex_grid.h).
     bool rows_a_pitch_apart = false;
+    /// With rows_a_pitch_apart: the rows' distance on the ground over the
+    /// columns' (Raster::row_aspect): 1 for square pixels.
+    double row_aspect = 1.0;
     /// What was read from the file (filled by loadField, gen/readers/load_field.h).
     FieldInput input;
     /// Point input (gen/readers/point_binning.h): per cell, the sums of its points'

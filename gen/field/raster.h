@@ -47,8 +47,13 @@ struct Raster {
     int decimation = 1;
     std::string source;          ///< file it came from, for messages and SCAD headers
     std::string kind;            ///< "csv", "pgm", "png", "esri-ascii", ...
-    /// Size of one raster cell in data units (ESRI cellsize; 1 for images/CSV).
+    /// Size of one raster cell in data units (ESRI cellsize; 1 for images/CSV):
+    /// the distance between columns.
     double cell_size = 1.0;
+    /// The distance between rows on the ground over the distance between
+    /// columns: 1 for square pixels; a geographic grid's pixels of equal
+    /// degrees are 1 / cos(latitude) as tall as wide (gen/field/resample.h).
+    double row_aspect = 1.0;
     /// Metres on the ground per data unit of cell_size: a projected CRS's
     /// linear unit, kMetresPerDegreeOfLatitude for degrees; 0 when the file
     /// does not say (a picture, a CSV, a grid without a CRS).

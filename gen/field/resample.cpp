@@ -201,6 +201,40 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
     return field;
 }
 
+Raster squarePixels(const Raster& raster) {
+    if (std::abs(raster.row_aspect - 1.0) <= 1e-9 || raster.empty()) return raster;
+    Raster out = raster;
+    // The shorter side repeated: more rows when rows stand farther apart,
+    // more columns when they stand closer. Each new pixel takes the pixel
+    // under its centre.
+    const int64_t cols = raster.row_aspect < 1 ? std::llround(double(raster.cols) / raster.row_aspect) : raster.cols;
+    const int64_t rows = raster.row_aspect > 1 ? std::llround(double(raster.rows) * raster.row_aspect) : raster.rows;
+    // The readers' own limit on a raster (gen/readers/raster_limits.h); a
+    // file's reader squares larger ones while it reads them decimated.
+    constexpr int64_t kMaxSquaredSide = 20'000, kMaxSquaredValues = 100'000'000;
+    if (cols > kMaxSquaredSide || rows > kMaxSquaredSide || cols * rows > kMaxSquaredValues)
+        throw InputError(raster.source, 0, 0,
+                         "the raster's pixels are " + formatSignificant(raster.row_aspect, 3) +
+                             " times as tall as wide on the ground; made square they would be " + std::to_string(cols) +
+                             " x " + std::to_string(rows) + ", more than tsf holds (--bins N resamples it smaller)");
+    out.cols = int32_t(cols);
+    out.rows = int32_t(rows);
+    out.values.assign(size_t(cols) * size_t(rows), NAN);
+    for (int64_t r = 0; r < rows; ++r) {
+        const auto sr = int32_t(std::min<int64_t>(raster.rows - 1, int64_t((double(r) + 0.5) * raster.rows / double(rows))));
+        for (int64_t c = 0; c < cols; ++c) {
+            const auto sc = int32_t(std::min<int64_t>(raster.cols - 1, int64_t((double(c) + 0.5) * raster.cols / double(cols))));
+            out.values[size_t(r * cols + c)] = raster.at(sc, sr);
+        }
+    }
+    if (raster.row_aspect < 1) out.cell_size = raster.cell_size * raster.row_aspect;
+    out.row_aspect = 1.0;
+    out.facts.push_back({"resampled", std::to_string(raster.cols) + " x " + std::to_string(raster.rows) + " -> " +
+                                          std::to_string(cols) + " x " + std::to_string(rows) +
+                                          " square pixels (nearest) to keep the ground's aspect"});
+    return out;
+}
+
 HexField rasterOneToOne(const Raster& raster) {
     if (raster.empty()) throw InputError(raster.source, 0, 0, "the raster is empty");
     HexField field;
@@ -212,6 +246,7 @@ HexField rasterOneToOne(const Raster& raster) {
     // per value read, but not per value of the file.
     field.one_to_one = raster.decimation <= 1;
     field.rows_a_pitch_apart = true;
+    field.row_aspect = raster.row_aspect;
     field.how = decimatedPrefix(raster) + "one pillar per value: " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " values -> " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " hexagons (odd rows shifted half a cell east)";
@@ -220,6 +255,10 @@ HexField rasterOneToOne(const Raster& raster) {
 
 HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
     if (raster.empty()) throw InputError(raster.source, 0, 0, "the raster is empty");
+    const bool square = std::abs(raster.row_aspect - 1.0) <= 1e-9;
+    const bool stretchable = pl.true_aspect && raster.row_aspect <= kMaxStretchedRowAspect &&
+                             raster.row_aspect >= 1.0 / kMaxStretchedRowAspect;
+    if (!square && (!stretchable || pl.hex_cols > 0)) return placeRaster(squarePixels(raster), pl);
     ResampleOptions rs;
     rs.method = pl.method;
     if (pl.hex_cols > 0) {
@@ -228,14 +267,22 @@ HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
     }
     const HexGrid grid{raster.cols, raster.rows};
     if (pl.pitch_mm > 0) return rasterOneToOne(raster);
-    // One pillar per value: its rows a pitch apart with true aspect.
-    const double one_to_one_y_scale = pl.true_aspect ? kRowsAPitchApart : 1.0;
+    // One pillar per value: its rows a pitch apart with true aspect (times
+    // the pixels' shape on the ground).
+    const double one_to_one_y_scale = pl.true_aspect ? kRowsAPitchApart * raster.row_aspect : 1.0;
     const double pitch =
         std::min(pl.fit_width_mm / gridWidth(grid, 1.0), pl.fit_depth_mm / gridDepth(grid, 1.0, one_to_one_y_scale));
     const double min_cell_mm = std::max(kMinTactileCellMm, pl.min_cell_mm);
     if (pitch >= min_cell_mm) return rasterOneToOne(raster);
     // Too many values for pillars a finger can tell apart: the most columns
-    // whose cells are still min_cell_mm wide, in both directions.
+    // whose cells are still min_cell_mm wide, in both directions, over
+    // square pixels.
+    if (!square) {
+        RasterPlacement resample = pl;
+        resample.true_aspect = false;  // square pixels: no stretch to keep
+        HexField f = placeRaster(squarePixels(raster), resample);
+        return f;
+    }
     int cols = std::max(1, int(std::floor(pl.fit_width_mm / min_cell_mm - 0.5)));
     cols = std::min<int>(cols, raster.cols);
     for (; cols > 1; --cols) {

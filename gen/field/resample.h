@@ -89,6 +89,17 @@ inline constexpr double kMinTactileCellMm = 3.0;
 /// (hex_grid.h). HexField::one_to_one is set.
 HexField rasterOneToOne(const Raster& raster);
 
+/// Rows this much farther apart on the ground than columns, or this much
+/// closer (Raster::row_aspect), keep one pillar per value in stretched
+/// hexagons; beyond, the hexagons would be slivers, and the pixels are made
+/// square first (a geographic grid above 60 degrees of latitude).
+inline constexpr double kMaxStretchedRowAspect = 2.0;
+
+/// The raster with square pixels on the ground (Raster::row_aspect 1): the
+/// shorter side repeated, nearest pixel, as a resampling must have them; a
+/// "resampled" fact says so. A raster of square pixels is returned as is.
+Raster squarePixels(const Raster& raster);
+
 /// How a raster becomes hexagons by default (tsf gen without --bins).
 struct RasterPlacement {
     int hex_cols = 0;           ///< --bins; 0 = decide here
@@ -104,6 +115,10 @@ struct RasterPlacement {
 /// more (or a cell size was given); otherwise resampled to the most columns
 /// that keep cells at least kMinTactileCellMm (or min_cell_mm when larger), and `how` says from what to
 /// what and why. hex_cols > 0 always resamples to that many columns.
+/// Pixels that are not square on the ground stay one pillar per value in
+/// hexagons stretched to their shape (true aspect, within
+/// kMaxStretchedRowAspect); resampling, regular hexagons and shapes beyond
+/// that make them square first (squarePixels).
 HexField placeRaster(const Raster& raster, const RasterPlacement& placement);
 
 /// "mean", "nearest", "bilinear"; and the inverse (InputError otherwise).

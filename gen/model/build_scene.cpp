@@ -215,7 +215,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     s.mapping = resolveMapping(field, params, s.notes);
     // A raster's rows, one pillar per value, stand a pitch apart as on the
     // ground (true aspect); a lattice laid over the ground keeps its own.
-    s.y_scale = params.true_aspect && field.rows_a_pitch_apart ? kRowsAPitchApart : 1.0;
+    s.y_scale = params.true_aspect && field.rows_a_pitch_apart ? kRowsAPitchApart * field.row_aspect : 1.0;
     s.pitch_mm = resolvePitch(field.grid, params, s.y_scale);
     s.one_to_one = field.one_to_one;
     if (s.pitch_mm < kMinTactileCellMm) {

@@ -495,7 +495,7 @@ Scene sceneFromJson(const json& j) {
     s.pitch_mm = getPositive(j, "", "pitch_mm");
     if (version >= 8) {
         s.y_scale = getPositive(j, "", "y_scale");
-        if (s.y_scale < 0.5 || s.y_scale > 2.0) fail("y_scale", "expected a stretch between 0.5 and 2");
+        if (s.y_scale < 0.25 || s.y_scale > 4.0) fail("y_scale", "expected a stretch between 0.25 and 4");
     }
     s.z_snap_mm = getPositive(j, "", "z_snap_mm");
 

@@ -156,7 +156,7 @@ HexField loadField(const FieldLoadOptions& o) {
     input.longitude_scale = raster.longitude_scale;
     if (raster.metres_per_unit > 0) {
         input.ground_width_m = double(raster.cols) * raster.cell_size * raster.metres_per_unit;
-        input.ground_depth_m = double(raster.rows) * raster.cell_size * raster.metres_per_unit;
+        input.ground_depth_m = double(raster.rows) * raster.cell_size * raster.row_aspect * raster.metres_per_unit;
     }
     describeValues(raster.values, input);
     std::string placeholder_note;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gen/field/resample.h"
 #include "gen/readers/load_field.h"
 #include "gen/readers/raster_reader.h"
 #include "tests/readers/geotiff_test_writer.h"
@@ -59,7 +60,9 @@ TEST(GdalReader, ProjectedGeoTiffWithNoData) {
     EXPECT_EQ(r.fact("no-data value"), "-9999 (from the file)");
 }
 
-TEST(GdalReader, OblongPixelsAreMadeSquareOnTheGround) {
+// Oblong pixels keep their shape: one pillar per value in hexagons stretched
+// to it, and only a resampling makes them square (nearest, repeating a row).
+TEST(GdalReader, OblongPixelsAreKeptAndSquaredOnlyToResample) {
     const auto dir = test::scratchDir();
     test::GeoTiffSpec s = demSpec();
     s.epsg = 32633;
@@ -69,10 +72,22 @@ TEST(GdalReader, OblongPixelsAreMadeSquareOnTheGround) {
     ASSERT_TRUE(test::writeGeoTiff(path, s));
     const Raster r = readRaster(path);
     EXPECT_EQ(r.cols, 4);
-    EXPECT_EQ(r.rows, 6);
+    EXPECT_EQ(r.rows, 3) << "every pixel read once";
     EXPECT_EQ(r.cell_size, 30.0);
-    EXPECT_EQ(r.at(0, 1), 1.0) << "nearest neighbour repeats the row";
-    EXPECT_NE(r.fact("resampled"), "");
+    EXPECT_EQ(r.row_aspect, 2.0);
+    EXPECT_NE(r.fact("pixel shape").find("2 times as far apart"), std::string::npos) << r.fact("pixel shape");
+    const Raster square = squarePixels(r);
+    EXPECT_EQ(square.rows, 6);
+    EXPECT_EQ(square.at(0, 1), 1.0) << "nearest neighbour repeats the row";
+    EXPECT_NE(square.fact("resampled"), "");
+    RasterPlacement one;
+    one.pitch_mm = 5;
+    const HexField f = placeRaster(r, one);
+    EXPECT_TRUE(f.one_to_one);
+    EXPECT_EQ(f.grid.rows, 3);
+    EXPECT_EQ(f.row_aspect, 2.0);
+    one.true_aspect = false;  // regular hexagons: the pixels are made square first
+    EXPECT_EQ(placeRaster(r, one).grid.rows, 6);
 }
 
 TEST(GdalReader, GeographicLongitudeIsScaledByCosLatitude) {
@@ -86,7 +101,8 @@ TEST(GdalReader, GeographicLongitudeIsScaledByCosLatitude) {
     ASSERT_TRUE(test::writeGeoTiff(path, s));
     const Raster r = readRaster(path);
     EXPECT_EQ(r.cols, 4);
-    EXPECT_EQ(r.rows, 6) << "4 x 3 pixels of 0.005 x 0.01 degrees of latitude on the ground";
+    EXPECT_EQ(r.rows, 3);
+    EXPECT_NEAR(r.row_aspect, 2.0, 1e-9) << "pixels of 0.005 x 0.01 degrees of latitude on the ground";
     EXPECT_NE(r.fact("crs").find("cos(60 deg) = 0.5"), std::string::npos) << r.fact("crs");
 }
 
@@ -157,6 +173,11 @@ TEST(GdalReader, AGeographicGridKeepsTheCosLatitudeAspect) {
     ASSERT_EQ(run.exit_code, test::kExitOk) << run.output;
     const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
     EXPECT_NEAR(modelAspect(j) / 0.5, 1.0, 0.03) << j["scene"]["size_mm"].dump();
+    // One pillar per value: no row repeated to make the pixels square.
+    EXPECT_TRUE(j["scene"]["one_pillar_per_value"].get<bool>());
+    EXPECT_EQ(j["scene"]["cells"]["with_data"].get<int>(), 30 * 30);
+    EXPECT_NEAR(j["scene"]["y_scale"].get<double>(), 2 * 2 / std::sqrt(3.0), 1e-3);
+    EXPECT_NEAR(j["ground"]["scale"].get<double>(), j["ground"]["scale_north_south"].get<double>(), 1e-6);
     EXPECT_NEAR(j["ground"]["longitude_scale"].get<double>(), 0.5, 1e-3);
     // 0.3 degrees of latitude north-south.
     EXPECT_NEAR(j["ground"]["depth_m"].get<double>(), 0.3 * kMetresPerDegreeOfLatitude, 1.0);

@@ -421,20 +421,21 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
                                             formatSignificant(double(rows) / double(dec_rows), 3) +
                                             " (the file is larger than tsf reads whole)"});
     } else {
-        checkRasterSize(path, 0, out_cols, out_rows);
-        r.cell_size = std::min(ground_w, px_h);
-        if (out_cols != cols || out_rows != rows)
-            r.facts.push_back({"resampled", std::to_string(cols) + " x " + std::to_string(rows) + " -> " +
-                                                std::to_string(out_cols) + " x " + std::to_string(out_rows) +
-                                                " square pixels (nearest) to keep the ground's aspect"});
-        r.cols = int32_t(out_cols);
-        r.rows = int32_t(out_rows);
-        r.values.assign(size_t(out_cols) * size_t(out_rows), 0.0);
-        GDALRasterIOExtraArg extra;
-        INIT_RASTERIO_EXTRA_ARG(extra);
-        extra.eResampleAlg = GRIORA_NearestNeighbour;
-        if (GDALRasterIOEx(band, GF_Read, 0, 0, cols, rows, r.values.data(), int(out_cols), int(out_rows), GDT_Float64,
-                           0, 0, &extra) != CE_None)
+        // Every pixel as it is: pixels that are not square on the ground keep
+        // their shape as the raster's row aspect (one pillar per value
+        // stretches its hexagons to it; resampling squares them first:
+        // gen/field/resample.h).
+        checkRasterSize(path, 0, cols, rows);
+        r.cell_size = ground_w;
+        r.row_aspect = px_h / ground_w;
+        if (std::abs(r.row_aspect - 1.0) > 1e-9)
+            r.facts.push_back({"pixel shape", "on the ground the rows are " + formatSignificant(r.row_aspect, 4) +
+                                                  " times as far apart as the columns"});
+        r.cols = int32_t(cols);
+        r.rows = int32_t(rows);
+        r.values.assign(size_t(cols) * size_t(rows), 0.0);
+        if (GDALRasterIO(band, GF_Read, 0, 0, cols, rows, r.values.data(), int(cols), int(rows), GDT_Float64, 0, 0) !=
+            CE_None)
             throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
     }
 
