@@ -54,6 +54,9 @@ struct Raster {
     /// columns: 1 for square pixels; a geographic grid's pixels of equal
     /// degrees are 1 / cos(latitude) as tall as wide (gen/field/resample.h).
     double row_aspect = 1.0;
+    /// Rows or columns were repeated to make the pixels square (squarePixels,
+    /// gen/field/resample.h): a hexagon per pixel is then no longer one per value.
+    bool pixels_repeated = false;
     /// Metres on the ground per data unit of cell_size: a projected CRS's
     /// linear unit, kMetresPerDegreeOfLatitude for degrees; 0 when the file
     /// does not say (a picture, a CSV, a grid without a CRS).

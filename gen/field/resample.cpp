@@ -106,6 +106,8 @@ namespace {
 /// "the file read decimated, each value the mean of about 20 x 20 of its
 /// pixels ...; then " for a decimated raster (raster.h), "" otherwise.
 std::string decimatedPrefix(const Raster& raster) {
+    if (raster.pixels_repeated && raster.decimation <= 1)
+        return "the pixels made square on the ground (rows or columns repeated, nearest pixel); then ";
     if (raster.decimation <= 1) return "";
     return std::string("the file read decimated, each value the ") + (raster.categorical ? "most common class" : "mean") +
            " of about " + std::to_string(raster.decimation) + " x " + std::to_string(raster.decimation) +
@@ -229,6 +231,7 @@ Raster squarePixels(const Raster& raster) {
     }
     if (raster.row_aspect < 1) out.cell_size = raster.cell_size * raster.row_aspect;
     out.row_aspect = 1.0;
+    out.pixels_repeated = true;
     out.facts.push_back({"resampled", std::to_string(raster.cols) + " x " + std::to_string(raster.rows) + " -> " +
                                           std::to_string(cols) + " x " + std::to_string(rows) +
                                           " square pixels (nearest) to keep the ground's aspect"});
@@ -244,7 +247,7 @@ HexField rasterOneToOne(const Raster& raster) {
     field.pitch_data = raster.cell_size;
     // A decimated file's values are already means of its pixels: one pillar
     // per value read, but not per value of the file.
-    field.one_to_one = raster.decimation <= 1;
+    field.one_to_one = raster.decimation <= 1 && !raster.pixels_repeated;
     field.rows_a_pitch_apart = true;
     field.row_aspect = raster.row_aspect;
     field.how = decimatedPrefix(raster) + "one pillar per value: " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
