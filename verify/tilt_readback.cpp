@@ -30,7 +30,11 @@ TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const Tria
     const double z_above = b.max.z + kRayStartClearanceMm, z_below = b.min.z - kRayStartClearanceMm;
     const double float32_mm = std::max(std::fabs(b.max.z), std::fabs(b.min.z)) * kFloat32UnitRoundoff;
     const bool mirrored = scene.params.bottom == Bottom::Mirrored;
-    const double spoke_mm = 0.5 * scene.pitch_mm / kSqrt3;  // the shortest spoke: half a regular hexagon's circumradius
+    // The shortest spoke, half the distance to the nearest corner: a top
+    // or bottom corner of a hexagon squashed north-south, a side corner of
+    // one stretched (hex_grid.h); half the circumradius of a regular one.
+    const double r_mm = scene.pitch_mm / kSqrt3 * scene.y_scale;
+    const double spoke_mm = 0.5 * std::min(r_mm, std::hypot(0.5 * scene.pitch_mm, 0.5 * r_mm));
     std::vector<std::pair<double, std::string>> bad;
 
     // The slope of the surface met from above (top) or below (bottom).

@@ -229,7 +229,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     const size_t n = size_t(g.cellCount());
     // A class map's classes stand at one height, told apart by texture.
     if (classTexturesApply(field, params)) {
-        s.textures = decideClassTextures(field, params, s.pitch_mm);
+        s.textures = decideClassTextures(field, params, s.pitch_mm, s.y_scale);
         s.mapping = classTextureMapping(field, s.zMm(s.textures->height_units));
         // The braille legend names the classes by texture where they fit.
         if (s.params.legend.wanted() && s.params.legend.key_lines.empty())

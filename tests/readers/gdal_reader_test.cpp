@@ -156,6 +156,35 @@ TEST(GdalReader, OnePillarPerValueKeepsTheGroundsAspect) {
     EXPECT_NEAR(rj["ground"]["scale_north_south"].get<double>(), 15000.0 * 2 / std::sqrt(3.0), 1e-6);
 }
 
+// Pixels twice as wide as tall on the ground: the hexagons are squashed
+// north-south to them, one pillar per value, and a tilted model of them
+// (its tops read back over the shorter spokes) verifies, flat and mirrored.
+TEST(GdalReader, WidePixelsSquashTheHexagonsAndStillVerify) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = 20;
+    s.rows = 30;
+    s.epsg = 32633;
+    s.west = 500000;
+    s.north = 6000000;
+    s.pixel_w = 60;
+    s.pixel_h = 30;  // 1200 x 900 m on the ground
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c) s.values.push_back(float(50 + 10 * std::sin(c * 0.4) * std::cos(r * 0.3)));
+    const std::string path = (dir / "wide.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    for (const char* extra : {"", " --mirror"}) {
+        const auto run = test::runTsf("gen " + path + " --cell 5 --tilt gradient" + extra + " -o " +
+                                      (dir / "wide.stl").string() + " --json");
+        ASSERT_EQ(run.exit_code, test::kExitOk) << run.output;
+        const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+        EXPECT_TRUE(j["scene"]["one_pillar_per_value"].get<bool>());
+        EXPECT_NEAR(j["scene"]["y_scale"].get<double>(), 1 / std::sqrt(3.0), 1e-12);
+        EXPECT_NEAR(modelAspect(j) / (1200.0 / 900.0), 1.0, 0.03) << j["scene"]["size_mm"].dump();
+        EXPECT_TRUE(j["verify"]["passed"].get<bool>()) << extra;
+    }
+}
+
 // A geographic grid: a degree of longitude at 60 degrees north is half a
 // degree of latitude on the ground, and the model keeps that aspect too.
 TEST(GdalReader, AGeographicGridKeepsTheCosLatitudeAspect) {

@@ -46,7 +46,7 @@ bool classTexturesApply(const HexField& field, const SceneParams& p) {
     return field.input.categorical && field.input.class_order.empty() && p.class_textures.wanted;
 }
 
-SceneTextures decideClassTextures(const HexField& field, const SceneParams& p, double pitch_mm) {
+SceneTextures decideClassTextures(const HexField& field, const SceneParams& p, double pitch_mm, double y_scale) {
     const int most = p.class_textures.max_textures;
     if (most < 1 || most > kTextureCount)
         throw InputError("--classes must be 1 to " + std::to_string(kTextureCount) + " (got " + std::to_string(most) +
@@ -77,13 +77,15 @@ SceneTextures decideClassTextures(const HexField& field, const SceneParams& p, d
     t.textures_used = int(std::min(t.classes.size(), size_t(most)));
 
     // No fan leans more than a tilted top may: a dimple's or bump's steepest
-    // triangle rises `relief` over the inradius (half the pitch), the
-    // ridges' planes over a row spacing or a pitch, gentler still. The
-    // corners round to the z grid, so a step is kept to spare (as the tilt's
-    // limit does).
-    const double max_gradient =
-        std::tan(p.max_slope_deg * std::numbers::pi / 180.0) - p.z_snap_mm / (0.5 * pitch_mm);
-    const double relief_mm = std::min(kTextureReliefMm, std::max(0.0, max_gradient) * 0.5 * pitch_mm);
+    // triangle rises `relief` over the distance from the centre to the
+    // nearest edge (half the pitch; less to the slanted edges of a hexagon
+    // squashed north-south, hex_grid.h), the ridges' planes over a row
+    // spacing or a pitch, no steeper. The corners round to the z grid, so a
+    // step is kept to spare (as the tilt's limit does).
+    const double h = pitch_mm / kSqrt3 * y_scale;  // centre to the top corner
+    const double inradius = std::min(0.5 * pitch_mm, pitch_mm * h / std::hypot(pitch_mm, h));
+    const double max_gradient = std::tan(p.max_slope_deg * std::numbers::pi / 180.0) - p.z_snap_mm / inradius;
+    const double relief_mm = std::min(kTextureReliefMm, std::max(0.0, max_gradient) * inradius);
     t.relief_units = std::max<int64_t>(1, int64_t(std::floor(relief_mm / p.z_snap_mm + 1e-9)));
     t.height_units = std::max(snapUnits(kTextureHeightMm, p.z_snap_mm), t.relief_units + 1);
     return t;

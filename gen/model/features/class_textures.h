@@ -56,10 +56,10 @@ bool classTexturesApply(const HexField& field, const SceneParams& params);
 
 /// The textures of a class map's classes (classTexturesApply), by the
 /// field's cell counts, commonest first (ties: the smaller code), and the
-/// relief the cells allow at `pitch_mm`. Throws InputError when the model
+/// relief the cells allow at `pitch_mm` and the lattice's `y_scale`. Throws InputError when the model
 /// asks for what textures cannot be combined with (--tilt, --halves, a
 /// height scale) or max_textures is out of range, saying what to change.
-SceneTextures decideClassTextures(const HexField& field, const SceneParams& params, double pitch_mm);
+SceneTextures decideClassTextures(const HexField& field, const SceneParams& params, double pitch_mm, double y_scale);
 
 /// The value -> height mapping of a textured class map: every class at
 /// `height_mm` above the floor. It is the constant mapping (value_max =
