@@ -250,7 +250,8 @@ HexField rasterOneToOne(const Raster& raster) {
     field.one_to_one = raster.decimation <= 1 && !raster.pixels_repeated;
     field.rows_a_pitch_apart = true;
     field.row_aspect = raster.row_aspect;
-    field.how = decimatedPrefix(raster) + "one pillar per value: " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
+    field.how = decimatedPrefix(raster) + (raster.pixels_repeated ? "one pillar per square pixel: " : "one pillar per value: ") +
+                std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " values -> " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " hexagons (odd rows shifted half a cell east)";
     return field;
@@ -283,8 +284,7 @@ HexField placeRaster(const Raster& raster, const RasterPlacement& pl) {
     if (!square) {
         RasterPlacement resample = pl;
         resample.true_aspect = false;  // square pixels: no stretch to keep
-        HexField f = placeRaster(squarePixels(raster), resample);
-        return f;
+        return placeRaster(squarePixels(raster), resample);
     }
     int cols = std::max(1, int(std::floor(pl.fit_width_mm / min_cell_mm - 0.5)));
     cols = std::min<int>(cols, raster.cols);

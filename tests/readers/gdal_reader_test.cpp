@@ -87,7 +87,10 @@ TEST(GdalReader, OblongPixelsAreKeptAndSquaredOnlyToResample) {
     EXPECT_EQ(f.grid.rows, 3);
     EXPECT_EQ(f.row_aspect, 2.0);
     one.true_aspect = false;  // regular hexagons: the pixels are made square first
-    EXPECT_EQ(placeRaster(r, one).grid.rows, 6);
+    const HexField regular = placeRaster(r, one);
+    EXPECT_EQ(regular.grid.rows, 6);
+    EXPECT_FALSE(regular.one_to_one) << "a repeated row is not one pillar per value";
+    EXPECT_NE(regular.how.find("one pillar per square pixel"), std::string::npos) << regular.how;
 }
 
 TEST(GdalReader, GeographicLongitudeIsScaledByCosLatitude) {
