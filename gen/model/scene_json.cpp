@@ -74,14 +74,18 @@ json fanJson(const Scene& s, size_t k) {
     return f;
 }
 
+// True when kept cell k has a "shape" member: offsets of its own (a tilt,
+// a dimple or bump, a structural cell). Needs non-empty shapes.
+bool hasShapeRecord(const TopShapes& t, size_t k) {
+    bool any = t.top_centre_dz[k] != 0 || t.structural[k];
+    for (int32_t dz : t.top_dz[k]) any = any || dz != 0;
+    return any;
+}
+
 // True when kept cell k is written without "fan" or "shape" (cellJson).
 bool plainCell(const Scene& s, size_t k) {
     const TopShapes& t = s.shapes;
-    if (t.empty()) return true;
-    if (!t.shaped.empty() && t.shaped[k]) return false;
-    bool any = t.top_centre_dz[k] != 0 || t.structural[k];
-    for (int32_t dz : t.top_dz[k]) any = any || dz != 0;
-    return !any;
+    return t.empty() || (!isShaped(t, k) && !hasShapeRecord(t, k));
 }
 
 // A plain cell's line as cellJson(...).dump() writes it (members in
@@ -107,10 +111,8 @@ json cellJson(const Scene& s, size_t k) {
               {"bottom", s.bottom[k]}};
     const TopShapes& t = s.shapes;
     if (t.empty()) return c;
-    bool any = t.top_centre_dz[k] != 0 || t.structural[k];
-    for (int32_t dz : t.top_dz[k]) any = any || dz != 0;
-    if (!t.shaped.empty() && t.shaped[k]) c["fan"] = fanJson(s, k);
-    if (!any) return c;
+    if (isShaped(t, k)) c["fan"] = fanJson(s, k);
+    if (!hasShapeRecord(t, k)) return c;
     json shape = {{"top_dz", t.top_dz[k]}, {"centre_dz", t.top_centre_dz[k]}, {"slope", {t.slope_x[k], t.slope_y[k]}},
                   {"structural", bool(t.structural[k])}};
     if (!t.bottom_dz.empty()) {

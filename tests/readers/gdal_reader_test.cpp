@@ -114,19 +114,27 @@ double modelAspect(const nlohmann::json& j) {
     return j["scene"]["size_mm"][0].get<double>() / j["scene"]["size_mm"][1].get<double>();
 }
 
+// A cols x rows UTM 33N raster (EPSG:32633) of px_w x px_h m pixels; the
+// caller fills its values.
+test::GeoTiffSpec utmSpec(int cols, int rows, double px_w, double px_h) {
+    test::GeoTiffSpec s;
+    s.cols = cols;
+    s.rows = rows;
+    s.epsg = 32633;
+    s.west = 500000;
+    s.north = 6000000;
+    s.pixel_w = px_w;
+    s.pixel_h = px_h;
+    return s;
+}
+
 // True aspect: one pillar per value of a projected DEM keeps the ground's
 // proportions (the hexagons stretched north-south so rows stand a cell
 // apart), and the report gives the ground's size and the scale; regular
 // hexagons are 13% shallower.
 TEST(GdalReader, OnePillarPerValueKeepsTheGroundsAspect) {
     const auto dir = test::scratchDir();
-    test::GeoTiffSpec s;
-    s.cols = 60;
-    s.rows = 40;
-    s.epsg = 32633;
-    s.west = 500000;
-    s.north = 6000000;
-    s.pixel_w = s.pixel_h = 30;  // 1800 x 1200 m on the ground
+    test::GeoTiffSpec s = utmSpec(60, 40, 30, 30);  // 1800 x 1200 m on the ground
     for (int r = 0; r < s.rows; ++r)
         for (int c = 0; c < s.cols; ++c) s.values.push_back(float(100 + 3 * c + 2 * r + (r * c) % 7));
     const std::string path = (dir / "dem.tif").string();
@@ -164,14 +172,7 @@ TEST(GdalReader, OnePillarPerValueKeepsTheGroundsAspect) {
 // (its tops read back over the shorter spokes) verifies, flat and mirrored.
 TEST(GdalReader, WidePixelsSquashTheHexagonsAndStillVerify) {
     const auto dir = test::scratchDir();
-    test::GeoTiffSpec s;
-    s.cols = 20;
-    s.rows = 30;
-    s.epsg = 32633;
-    s.west = 500000;
-    s.north = 6000000;
-    s.pixel_w = 60;
-    s.pixel_h = 30;  // 1200 x 900 m on the ground
+    test::GeoTiffSpec s = utmSpec(20, 30, 60, 30);  // 1200 x 900 m on the ground
     for (int r = 0; r < s.rows; ++r)
         for (int c = 0; c < s.cols; ++c) s.values.push_back(float(50 + 10 * std::sin(c * 0.4) * std::cos(r * 0.3)));
     const std::string path = (dir / "wide.tif").string();
