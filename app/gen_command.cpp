@@ -14,6 +14,7 @@
 #include "app/gen_summary.h"
 #include "app/ground_scale.h"
 #include "app/halves_output.h"
+#include "app/tiles_output.h"
 #include "app/input_report.h"
 #include "app/stage_timer.h"
 #include "app/preview.h"
@@ -270,6 +271,21 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         throw InputError(o.parts ? "--parts" : "--print-check", 0, 0,
                          "--halves writes each piece to a file of its own (MODEL-upper, MODEL-lower, MODEL-pins); "
                          "leave out --parts and --print-check and run tsf print-check on each piece");
+    if (o.printer.tile) {
+        if (o.printer.bed.empty())
+            throw InputError("--tile", 0, 0, "--tile cuts the model into tiles that fit the bed: give --bed WIDTHxDEPTH");
+        if (o.output.empty())
+            throw InputError("--tile", 0, 0, "--tile writes each tile to a file of its own: give -o MODEL.stl|.3mf|.off|.obj");
+        const char* other = o.parts ? "--parts" : o.print_check ? "--print-check" : !o.scad.empty() ? "--scad" : nullptr;
+        if (other)
+            throw InputError(other, 0, 0,
+                             std::string("--tile writes each tile to a file of its own (MODEL-tile-ROW-COL); leave out ") + other +
+                                 (o.print_check ? " and run tsf print-check on the tiles (it sums their time and filament)"
+                                                : ": the tiles are not drawn in OpenSCAD or as parts yet"));
+        if (o.gen.scene.halves || o.gen.scene.bottom == Bottom::Mirrored)
+            throw InputError(o.gen.scene.halves ? "--halves" : "--mirror", 0, 0,
+                             "--tile cuts a flat model: leave out --mirror and --halves");
+    }
     if (o.print_check && model_ext != ".stl" && model_ext != ".3mf")
         throw InputError(o.output.empty() ? "--print-check" : o.output, 0, 0,
                          "--print-check slices the model file: give -o MODEL.stl or -o MODEL.3mf");
@@ -311,7 +327,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     if (o.printer.nozzle_mm > 0) rq.verify_options.nozzle_mm = o.printer.nozzle_mm;
     if (o.printer.layer_mm > 0) rq.verify_options.layer_mm = o.printer.layer_mm;
     rq.on_mesh = [&](const Mesh& mesh) {
-        checkFitsBed(mesh, scene, o.printer);
+        if (!o.printer.tile) checkFitsBed(mesh, scene, o.printer);
         if (rq.verify && !rq.verify_full && mesh.triangleCount() > kQuickVerifyTriangles)
             std::fprintf(stderr, "tsf: %zu triangles: verifying topology and heights only (--verify-full for all checks)\n",
                          mesh.triangleCount());
@@ -326,6 +342,26 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         std::cerr << "tsf: the " << e.piece() << " failed verification; nothing was written. "
                      "Please report this with the input file.\n";
         throw CLI::RuntimeError(kExitCheckFailed);
+    }
+    std::optional<VerifiedTiles> tiles;
+    if (o.printer.tile) {
+        const BedSize bed = parseBedSize(o.printer.bed, "--bed", /*need_height=*/false);
+        ModelRequest trq = rq;
+        trq.on_mesh = nullptr;
+        try {
+            tiles = makeVerifiedTiles(field, scene, bed.width_mm - 2 * kBedMarginMm, bed.depth_mm - 2 * kBedMarginMm,
+                                      trq, [&](const std::string& stage) { timer.begin(stage.c_str()); });
+        } catch (const ModelVerificationFailed& e) {
+            timer.end();
+            std::cerr << e.report();
+            std::cerr << "tsf: the " << e.piece() << " failed verification; nothing was written. "
+                         "Please report this with the input file.\n";
+            throw CLI::RuntimeError(kExitCheckFailed);
+        }
+        for (const VerifiedTile& t : tiles->tiles)
+            if (tilePath(o.output, t.scene.tile->place) == o.gen.input)
+                throw InputError(o.output, 0, 0, "a tile would be written over the input: give another -o");
+        summarizeTiles(*tiles, summary);
     }
     const Mesh& mesh = made.mesh;
     summary.mesh = &mesh;
@@ -353,6 +389,8 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         wo.title = "tsf " TSF_VERSION " " + std::filesystem::path(o.gen.input).filename().string();
         if (halves) {
             writeHalves(*halves, o.output, wo, summary);
+        } else if (tiles) {
+            writeTiles(*tiles, o.output, wo, summary);
         } else if (o.parts) {
             wo.parts_layout = o.parts_layout == "prusaslicer" ? MeshWriteOptions::PartsLayout::PrusaSlicer
                                                               : MeshWriteOptions::PartsLayout::Portable;
@@ -368,8 +406,11 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     if (!o.preview.empty()) {
         timer.begin("drawing preview");
         if (halves) writeModelPreview(halvesSideBySide(*halves), o.preview, false);
+        else if (tiles) writeModelPreview(tilesApart(*tiles), o.preview, false);
         else writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
-        summary.outputs.push_back({o.preview, halves ? "preview picture of the pieces as they print" : "preview picture"});
+        summary.outputs.push_back({o.preview, halves ? "preview picture of the pieces as they print"
+                                              : tiles ? "preview picture of the tiles, drawn apart"
+                                                      : "preview picture"});
     }
     if (!o.scad.empty()) {
         timer.begin("writing OpenSCAD");
@@ -565,7 +606,7 @@ void addGenCommand(CLI::App& app) {
     auto* printer = "Printer (docs/printing.md)";
     cmd->add_option("--bed", opts->printer.bed,
                     "Bed WIDTHxDEPTH, mm: the model is fitted into it less 5 mm on each side (unless --width/--depth); "
-                    "a larger model is refused")
+                    "a larger model is refused (or cut into tiles: --tile)")
         ->group(printer);
     cmd->add_option("--nozzle", opts->printer.nozzle_mm,
                     "Nozzle diameter, mm: raster cells at least 4 nozzle widths; thin walls flagged")
@@ -573,6 +614,11 @@ void addGenCommand(CLI::App& app) {
     cmd->add_option("--layer", opts->printer.layer_mm,
                     "Layer height, mm (0.01 to 1): heights snap to whole layers (unless --snap)")
         ->check(CLI::Range(0.01, 1.0))->group(printer);
+    cmd->add_flag("--tile", opts->printer.tile,
+                  "With --bed: keep the model's size and cut it into tiles that each fit the bed, written as "
+                  "MODEL-tile-ROW-COL.ext, joined by dovetail teeth, each with its place pitted into its underside; "
+                  "each tile and the assembly verified (docs/printing.md)")
+        ->group(printer);
     cmd->add_flag("--parts", opts->parts,
                   "Write the 3MF as one object made of parts - pillars (with the notch), marks (the raised "
                   "triangle), legend (the braille dots) - so a slicer can give each its own colour or material; "
@@ -594,7 +640,7 @@ void addGenCommand(CLI::App& app) {
         opts->given.snap = cmd->get_option("--snap")->count() > 0;
         opts->given.max_slope = cmd->get_option("--max-slope")->count() > 0;
         // The pieces are not the model the sidecar describes: none is written for them.
-        if (opts->gen.scene.halves) opts->no_sidecar = true;
+        if (opts->gen.scene.halves || opts->printer.tile) opts->no_sidecar = true;
         if (!opts->gen.band_series.empty()) runGenSeries(*opts);
         else runGen(*opts);
     });

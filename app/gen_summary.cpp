@@ -212,6 +212,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
     for (const auto& [stage, ms] : s.timings_ms) j["timings_ms"][stage] = ms;
     if (!s.verify.is_null()) j["verify"] = s.verify;
     if (!s.halves.is_null()) j["halves"] = s.halves;
+    if (!s.tiles.is_null()) j["tiles"] = s.tiles;
     j["printer"] = s.printer_notes;
     return j;
 }
@@ -229,7 +230,7 @@ std::string formatSummary(const GenSummary& s) {
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
           << formatFixed(signedVolume(*s.mesh), 1) << " mm^3\n";
     if (!s.verify_text.empty()) o << s.verify_text;
-    o << s.supports_text << s.halves_text;
+    o << s.supports_text << s.halves_text << s.tiles_text;
     for (const auto& [path, what] : s.outputs) o << "  wrote     " << path << " (" << what << ")\n";
     if (!s.timings_ms.empty()) {
         o << "  time     ";

@@ -24,6 +24,8 @@ struct GenSummary {
     std::vector<std::string> printer_notes;  ///< what --bed, --nozzle, --layer changed (printer_fit.h)
     nlohmann::json halves;   ///< --halves: the pieces, their checks and figures (halves_output.h); null otherwise
     std::string halves_text;
+    nlohmann::json tiles;    ///< --tile: the tiles, their checks and the assembly's (tiles_output.h); null otherwise
+    std::string tiles_text;
     std::string supports_text;  ///< a one-piece mirrored model: the supports it needs
 };
 

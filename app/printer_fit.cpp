@@ -21,11 +21,15 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
         if (!(w > 0) || !(d > 0))
             throw InputError("--bed " + printer.bed + ": a bed must be larger than twice the " + formatSignificant(kBedMarginMm, 4) +
                              " mm margin kept on each side");
-        if (given.width && p.fit_width_mm > w)
+        if (printer.tile) {
+            notes.push_back("cut into tiles that each fit the " + formatSignificant(bed.width_mm, 4) + " x " +
+                            formatSignificant(bed.depth_mm, 4) + " mm bed less " + formatSignificant(kBedMarginMm, 4) +
+                            " mm on each side (--tile)");
+        } else if (given.width && p.fit_width_mm > w)
             throw InputError("--width " + formatSignificant(p.fit_width_mm, 4) + " mm does not fit the " + formatSignificant(bed.width_mm, 4) +
                              " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side: give --width " + formatSignificant(w, 4) +
                              " or less, or leave it out");
-        if (given.depth && p.fit_depth_mm > d)
+        if (given.depth && p.fit_depth_mm > d && !printer.tile)
             throw InputError("--depth " + formatSignificant(p.fit_depth_mm, 4) + " mm does not fit the " + formatSignificant(bed.depth_mm, 4) +
                              " mm bed less " + formatSignificant(kBedMarginMm, 4) + " mm on each side: give --depth " + formatSignificant(d, 4) +
                              " or less, or leave it out");
@@ -38,15 +42,15 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
             beside_mm += side.width_mm;
             beside += (beside.empty() ? "" : ", ") + side.what + " " + formatSignificant(side.width_mm, 4) + " mm";
         }
-        if (!given.width) {
+        if (!given.width && !printer.tile) {
             // The pillars keep at least a quarter of the width, and 20 mm.
             const bool room = w - beside_mm >= std::max(20.0, 0.25 * w);
             p.fit_width_mm = gen.fit_width_mm = room ? w - beside_mm : w;
             if (beside_mm > 0 && room)
                 notes.push_back("the pillars get " + formatSignificant(w - beside_mm, 4) + " mm of the width, " + beside);
         }
-        if (!given.depth) p.fit_depth_mm = gen.fit_depth_mm = d;
-        if (!given.width || !given.depth)
+        if (!given.depth && !printer.tile) p.fit_depth_mm = gen.fit_depth_mm = d;
+        if ((!given.width || !given.depth) && !printer.tile)
             notes.push_back("fitted into " + formatSignificant(p.fit_width_mm, 4) + " x " + formatSignificant(p.fit_depth_mm, 4) + " mm: the " +
                             formatSignificant(bed.width_mm, 4) + " x " + formatSignificant(bed.depth_mm, 4) + " mm bed less " + formatSignificant(kBedMarginMm, 4) +
                             " mm on each side");
@@ -98,7 +102,7 @@ std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer) {
 }
 
 bool shrinkFitToBed(const Scene& scene, const PrinterSpec& printer, GenOptions& gen) {
-    if (printer.bed.empty() || gen.scene.pitch_mm > 0 || scene.keptCount() == 0) return false;
+    if (printer.bed.empty() || printer.tile || gen.scene.pitch_mm > 0 || scene.keptCount() == 0) return false;
     const BedSize bed = parseBedSize(printer.bed, "--bed", /*need_height=*/false);
     const double w = bed.width_mm - 2 * kBedMarginMm, d = bed.depth_mm - 2 * kBedMarginMm;
     const BoxMm f = sceneFootprint(scene);

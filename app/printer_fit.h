@@ -6,8 +6,8 @@
 //     kBedMarginMm on every side (room for the slicer's skirt and for taking
 //     the print off); a --width or --depth larger than that is refused. A
 //     model that still does not fit (a --cell too large) is refused after
-//     meshing, with the largest --cell that fits. tsf does not tile a model
-//     over several prints.
+//     meshing, with the largest --cell that fits. With --tile the model keeps
+//     its size and is cut into tiles that each fit (gen/model/features/tiles.h).
 //   - --nozzle: a pillar narrower than kCellNozzleWidths nozzle widths is a
 //     blob of perimeters, not a hexagon; the default cell for rasters is at
 //     least that wide (never below the 3 mm tactile minimum), and narrower
@@ -35,6 +35,7 @@ struct PrinterSpec {
     std::string bed;       ///< --bed "WxD" as given; "" = no bed
     double nozzle_mm = 0;  ///< --nozzle; 0 = not given
     double layer_mm = 0;   ///< --layer; 0 = not given
+    bool tile = false;     ///< --tile: a model larger than the bed is cut into tiles (gen/model/features/tiles.h), not fitted
 };
 
 /// Which model options the user gave himself (the printer never overrides them).

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "gen/model/features/halves.h"
+#include "gen/model/features/tiles.h"
 #include "gen/model/features/legend_join.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/orientation_tab.h"
@@ -64,7 +65,11 @@ std::vector<SideWidth> attachmentSideWidths(const SceneParams& params) {
     return out;
 }
 
-std::vector<BottomHole> sceneBottomHoles(const Scene& scene) { return halfBottomHoles(scene); }
+std::vector<BottomHole> sceneBottomHoles(const Scene& scene) {
+    std::vector<BottomHole> holes = halfBottomHoles(scene);
+    for (BottomHole& h : tileBottomHoles(scene)) holes.push_back(std::move(h));
+    return holes;
+}
 
 std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm) {
     std::vector<int64_t> tops;

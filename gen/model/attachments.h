@@ -18,7 +18,7 @@ namespace tsf {
 /// deterministic: the same Scene gives the same attachments.
 std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly);
 
-/// Every hole into the flat bottom `scene` draws (a half's pin holes).
+/// Every hole into the flat bottom `scene` draws (a half's pin holes, a tile's code pits).
 std::vector<BottomHole> sceneBottomHoles(const Scene& scene);
 
 /// Every probe of the Scene (gen/model/scene_attachments.h), one set per

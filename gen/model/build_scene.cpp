@@ -25,6 +25,7 @@
 #include "gen/model/features/marks.h"
 #include "gen/model/features/orientation_tab.h"
 #include "gen/model/features/scale.h"
+#include "gen/model/features/tiles.h"
 #include "gen/model/features/tilt.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/util/error.h"
@@ -295,6 +296,13 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             keep.swap(concave);
         }
     }
+    if (!params.tile_cells.empty()) {
+        // One tile of a tiled model: its share of the cells the whole keeps
+        // (gen/model/features/tiles.h made it one piece).
+        if (params.tile_cells.size() != n) throw InputError("a tile's cell list does not match the grid");
+        for (size_t idx = 0; idx < n; ++idx) keep[idx] = keep[idx] && params.tile_cells[idx];
+        if (componentCount(g, keep) != 1) throw InputError("a tile of the model is not one piece");
+    }
     assert(componentCount(g, keep) == 1);
 
     const int64_t base_units = snapUnits(params.base_mm, s.z_snap_mm);
@@ -430,6 +438,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             return buildScene(field, trial);
         }
     }
+    // A tile's code pits go under level tops, so before the dimples.
+    if (params.tile_place) placeTileCode(s);
     if (params.structural_texture && params.halves)
         s.notes.push_back("structural cells are left level on a model cut into halves (the cut and the pin "
                           "holes are drawn on level cells): give --no-texture-structural to silence this");
@@ -445,7 +455,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             for (size_t k = 0; k < kept; ++k) {
                 const size_t idx = size_t(g.index(s.col[k], s.row[k]));
                 structural[k] = s.kind[k] == CellKind::Data && h_units[idx] == 0 && field.moments[idx].n == 0 &&
-                                (s.drawn_by_face.empty() || !s.drawn_by_face[k]);
+                                (s.drawn_by_face.empty() || !s.drawn_by_face[k]) &&
+                                (params.level_cells.empty() || !params.level_cells[idx]) && !isTileCodeCell(s, k);
             }
         std::vector<PlaneSlope> slopes = tiltSlopes(field, s, params.tilt);
         std::vector<int32_t> centre_dz;

@@ -34,6 +34,7 @@
 #include "gen/model/scene_marks.h"
 #include "gen/model/scene_scale.h"
 #include "gen/model/scene_textures.h"
+#include "gen/model/scene_tiles.h"
 #include "gen/model/scene_top_shapes.h"
 
 namespace tsf {
@@ -137,6 +138,16 @@ struct SceneParams {
     /// in pillars with room for them), then the thinnest slab that gives
     /// three pillars room, found by bisection (to kHalvesSlabSearchMm).
     std::optional<int64_t> halves_slab_units;
+    // --- one tile of a model cut into tiles (gen/model/features/tiles.h) ---
+    /// Non-empty (one entry per grid cell): of the cells the culling keeps,
+    /// only these; the tile must be one piece.
+    std::vector<uint8_t> tile_cells;
+    /// With tile_cells: the tile's place, pitted into its bottom as its code.
+    std::optional<TilePlace> tile_place;
+    /// Non-empty (one entry per grid cell): cells whose tops stay level
+    /// (no structural dimple): the whole model of a tiling keeps level the
+    /// cells its tiles' code pits are under, as the tiles do.
+    std::vector<uint8_t> level_cells;
     // --- what the model is written as ---
     /// The model file stores float32 coordinates (STL, 3MF): a z grid finer
     /// than float32 resolves at the model's height is made coarser (the
@@ -209,6 +220,8 @@ struct Scene {
     std::optional<SceneScale> scale;
     /// The cut into two support-free halves and the pin holes (gen/model/features/halves.h); none unless asked for.
     std::optional<SceneHalves> halves;
+    /// The tile of a tiled model this Scene draws, and its code (gen/model/features/tiles.h); none for a whole model.
+    std::optional<SceneTile> tile;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)

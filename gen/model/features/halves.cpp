@@ -1,5 +1,6 @@
 // Support-free halves: the cut, the pin layout, the halves as Scenes. See halves.h.
 #include "gen/model/features/halves.h"
+#include "gen/model/features/bottom_hole_ring.h"
 
 #include <algorithm>
 #include <cassert>
@@ -155,18 +156,7 @@ bool placeHalves(Scene& s, bool or_throw) {
 }
 
 std::vector<PlanarPoint> holeRing(const Scene& s, size_t n) {
-    const SceneHalves& h = *s.halves;
-    const LatticePoint c = h.hole_centres[n];
-    // mm -> lattice coordinates (hex_grid.h: x = i p / 2, y = j p / (2 sqrt 3) y_scale):
-    // round in mm however the lattice is stretched.
-    const double per_i = s.pitch_mm / 2, per_j = s.pitch_mm / (2 * kSqrt3) * s.y_scale;
-    std::vector<PlanarPoint> ring;
-    for (int k = 0; k < kHoleSides; ++k) {
-        const double a = 2 * kPi * (k + 0.5) / kHoleSides;
-        ring.push_back({double(c.i) + h.pins.hole_vertex_radius_mm * std::cos(a) / per_i,
-                        double(c.j) + h.pins.hole_vertex_radius_mm * std::sin(a) / per_j});
-    }
-    return ring;
+    return bottomHoleRing(s, s.halves->hole_centres[n], s.halves->pins.hole_vertex_radius_mm);
 }
 
 std::vector<BottomHole> halfBottomHoles(const Scene& s) {

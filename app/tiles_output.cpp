@@ -1,0 +1,96 @@
+// The tiles of `tsf gen --tile`. See tiles_output.h.
+#include "app/tiles_output.h"
+
+#include <filesystem>
+
+#include "app/commands.h"
+#include "gen/util/number_format.h"
+
+namespace tsf::cli {
+
+std::string tilePath(const std::string& output, const TilePlace& t) {
+    const std::filesystem::path p(output);
+    return ((p.parent_path() / p.stem()).string()) + "-tile-" + std::to_string(t.row + 1) + "-" + std::to_string(t.col + 1) +
+           p.extension().string();
+}
+
+void summarizeTiles(const VerifiedTiles& v, GenSummary& summary) {
+    const TileLayout& L = v.layout;
+    nlohmann::json j;
+    j["rows"] = L.rows;
+    j["cols"] = L.cols;
+    j["count"] = v.tiles.size();
+    j["teeth"] = L.teeth;
+    j["seams"] = L.seams;
+    j["tooth_neck_cells"] = L.tooth_cells;
+    std::string text = "  tiles     " + std::to_string(v.tiles.size()) + " tiles in " + std::to_string(L.rows) + " rows x " +
+                       std::to_string(L.cols) + " columns (row 1 north, column 1 west), cut along the hexagons' edges: every pillar whole, "
+                       "in one tile; " + std::to_string(L.teeth) + " dovetail teeth on " + std::to_string(L.seams) +
+                       " seams (teeth east and south, sockets west and north)\n";
+    nlohmann::json list = nlohmann::json::array();
+    for (const VerifiedTile& t : v.tiles) {
+        const Bounds b = meshBounds(t.model.mesh);
+        const SceneTile& st = *t.scene.tile;
+        nlohmann::json one = {{"row", st.place.row + 1},
+                              {"col", st.place.col + 1},
+                              {"cells", t.scene.keptCount()},
+                              {"size_mm", {b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z}},
+                              {"volume_mm3", signedVolume(t.model.mesh)},
+                              {"marks", t.scene.marks.tab.has_value() || !t.scene.faces.faces.empty()},
+                              {"code_pits", st.code_cells.size()},
+                              {"code_pit_diameter_mm", 2 * st.pit_radius_mm}};
+        if (t.model.report) one["verify"] = toJson(*t.model.report);
+        list.push_back(one);
+        text += "            tile " + std::to_string(st.place.row + 1) + "-" + std::to_string(st.place.col + 1) + ": " +
+                formatFixed(b.max.x - b.min.x, 1) + " x " + formatFixed(b.max.y - b.min.y, 1) + " x " + formatFixed(b.max.z - b.min.z, 1) +
+                " mm, " + std::to_string(t.scene.keptCount()) + " cells" +
+                (st.code_cells.empty() ? ", no room for its code"
+                                       : ", code: " + std::to_string(st.code_cells.size()) + " pits on the underside") +
+                (one["marks"].get<bool>() ? ", carries the orientation marks" : "") + (t.model.report ? ", verified" : "") + "\n";
+    }
+    j["tiles"] = list;
+    if (v.assembly) {
+        nlohmann::json checks = nlohmann::json::array();
+        for (const Check& c : v.assembly->checks) checks.push_back({{"id", c.id}, {"status", toString(c.status)}, {"note", c.note}});
+        const TilesCheckFigures& f = v.assembly->figures;
+        j["assembly"] = {{"checks", checks},
+                         {"whole_volume_mm3", f.whole_volume_mm3},
+                         {"tiles_volume_mm3", f.tiles_volume_mm3},
+                         {"code_pits_volume_mm3", f.pits_volume_mm3},
+                         {"volume_error_mm3", f.volume_error_mm3}};
+        text += "  assembly  put together the tiles are the model: every cell in one tile at its height, volume within " +
+                formatSignificant(std::fabs(f.volume_error_mm3), 2) + " mm^3 of the model's less the code pits; every tile fits the bed";
+        for (const Check& c : v.assembly->checks)
+            if (c.status == CheckStatus::Warn) text += "; " + c.note;
+        text += "\n";
+    }
+    text += "  code      each tile's place is pitted into its underside as an L: a corner pit, then one pit per column "
+            "number going east and one per row number going south (turned over about the west-east axis: north)\n";
+    summary.tiles = j;
+    summary.tiles_text = text;
+}
+
+void writeTiles(const VerifiedTiles& v, const std::string& output, const MeshWriteOptions& wo, GenSummary& summary) {
+    nlohmann::json files = nlohmann::json::array();
+    for (const VerifiedTile& t : v.tiles) {
+        const std::string path = tilePath(output, t.scene.tile->place);
+        writeMesh(t.model.mesh, path, wo);
+        summary.outputs.push_back({path, "tile " + tileName(t.scene.tile->place)});
+        files.push_back(path);
+    }
+    summary.tiles["files"] = files;
+}
+
+Mesh tilesApart(const VerifiedTiles& v) {
+    constexpr double kGapMm = 8;
+    Mesh m;
+    for (const VerifiedTile& t : v.tiles) {
+        const double dx = kGapMm * t.scene.tile->place.col, dy = -kGapMm * t.scene.tile->place.row;
+        const uint32_t base = uint32_t(m.positions.size());
+        for (const Vec3& p : t.model.mesh.positions) m.positions.push_back({p.x + dx, p.y + dy, p.z});
+        for (const auto& tri : t.model.mesh.triangles) m.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+    }
+    return m;
+}
+
+}  // namespace tsf::cli

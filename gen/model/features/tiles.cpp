@@ -1,0 +1,422 @@
+// See tiles.h.
+#include "gen/model/features/tiles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "gen/model/features/bottom_hole_ring.h"
+#include "gen/util/error.h"
+#include "gen/util/number_format.h"
+
+namespace tsf {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+BoxMm emptyBox() { return {kInf, -kInf, kInf, -kInf}; }
+
+void grow(BoxMm& b, const BoxMm& o) {
+    b.x0 = std::min(b.x0, o.x0);
+    b.x1 = std::max(b.x1, o.x1);
+    b.y0 = std::min(b.y0, o.y0);
+    b.y1 = std::max(b.y1, o.y1);
+}
+
+BoxMm cellBox(const Scene& s, size_t k) {
+    BoxMm b = emptyBox();
+    for (int e = 0; e < kHexCorners; ++e) {
+        const Vec3 p = s.point(hexCorner(s.grid, s.col[k], s.row[k], e), 0);
+        grow(b, {p.x, p.x, p.y, p.y});
+    }
+    return b;
+}
+
+// The kept cells the orientation marks are drawn on or stand against: they
+// stay in one tile.
+std::vector<int32_t> markCells(const Scene& s) {
+    std::vector<int32_t> out;
+    for (size_t k = 0; k < s.drawn_by_face.size(); ++k)
+        if (s.drawn_by_face[k]) out.push_back(int32_t(k));
+    if (s.marks.tab)
+        for (const auto& [k, e] : s.marks.tab->touched) out.push_back(k);
+    if (s.marks.triangle && s.marks.triangle->anchor >= 0) out.push_back(s.marks.triangle->anchor);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+// One try of the tiling with `rows` x `cols` tiles.
+class Tiler {
+public:
+    Tiler(const Scene& s, int32_t rows, int32_t cols, const BoxMm& all, const std::vector<BoxMm>& cell_boxes)
+        : s_(s), rows_(rows), cols_(cols), tile_(s.keptCount(), 0), boxes_(cell_boxes) {
+        const double tw = (all.x1 - all.x0) / cols, td = (all.y1 - all.y0) / rows;
+        for (size_t k = 0; k < s.keptCount(); ++k) {
+            const Vec3 c = s.point(hexCentre(s.grid, s.col[k], s.row[k]), 0);
+            const int32_t tc = std::clamp(int32_t(std::floor((c.x - all.x0) / tw)), 0, cols - 1);
+            const int32_t tr = std::clamp(int32_t(std::floor((all.y1 - c.y) / td)), 0, rows - 1);
+            tile_[k] = tr * cols + tc;
+        }
+        k_ = std::max(1, int(std::lround(kToothMm / s.pitch_mm)));
+    }
+
+    int32_t tileOf(int32_t c, int32_t r) const {
+        const int32_t k = s_.keptAt(c, r);
+        return k < 0 ? -1 : tile_[size_t(k)];
+    }
+
+    // The marks' cells go to the tile most of them are in.
+    int32_t gatherMarks(const std::vector<int32_t>& marks) {
+        if (marks.empty()) return -1;
+        std::map<int32_t, int> count;
+        for (int32_t k : marks) ++count[tile_[size_t(k)]];
+        int32_t best = count.begin()->first;
+        for (const auto& [t, n] : count)
+            if (n > count[best]) best = t;
+        for (int32_t k : marks) tile_[size_t(k)] = best;
+        protected_.assign(s_.keptCount(), 0);
+        for (int32_t k : marks) protected_[size_t(k)] = 1;
+        return best;
+    }
+
+    // Cells cut off from the rest of their tile join a neighbouring tile.
+    void makeTilesWhole() {
+        const HexGrid& g = s_.grid;
+        for (int pass = 0; pass < 64; ++pass) {
+            bool changed = false;
+            for (int32_t t = 0; t < rows_ * cols_; ++t) {
+                std::vector<uint8_t> mask(size_t(g.cellCount()), 0);
+                bool any = false;
+                for (size_t k = 0; k < s_.keptCount(); ++k)
+                    if (tile_[k] == t) mask[size_t(g.index(s_.col[k], s_.row[k]))] = any = 1;
+                if (!any) continue;
+                std::vector<int32_t> label;
+                const int32_t n = labelCellComponents(g, mask, label);
+                if (n <= 1) continue;
+                std::vector<int64_t> size(size_t(n), 0);
+                for (int32_t l : label)
+                    if (l >= 0) ++size[size_t(l)];
+                // The largest piece stays; one containing the marks stays too.
+                int32_t keep = int32_t(std::max_element(size.begin(), size.end()) - size.begin());
+                for (size_t k = 0; k < s_.keptCount(); ++k)
+                    if (!protected_.empty() && protected_[k] && tile_[k] == t)
+                        keep = label[size_t(g.index(s_.col[k], s_.row[k]))];
+                for (size_t k = 0; k < s_.keptCount(); ++k) {
+                    if (tile_[k] != t || label[size_t(g.index(s_.col[k], s_.row[k]))] == keep) continue;
+                    for (int e = 0; e < kHexCorners; ++e) {
+                        const int32_t o = s_.keptNeighbour(k, e);
+                        if (o >= 0 && tile_[size_t(o)] != t) {
+                            tile_[k] = tile_[size_t(o)];
+                            changed = true;
+                            break;
+                        }
+                    }
+                }
+            }
+            if (!changed) return;
+        }
+    }
+
+    bool oneTileWhole(int32_t t) const {
+        const HexGrid& g = s_.grid;
+        std::vector<uint8_t> mask(size_t(g.cellCount()), 0);
+        bool any = false;
+        for (size_t k = 0; k < s_.keptCount(); ++k)
+            if (tile_[k] == t) mask[size_t(g.index(s_.col[k], s_.row[k]))] = any = 1;
+        return !any || componentCount(g, mask) == 1;
+    }
+
+    // Moves `cells` to tile `to` unless it leaves `from` or `to` in pieces or
+    // touches a mark.
+    bool tryTooth(const std::vector<int32_t>& cells, int32_t from, int32_t to) {
+        for (int32_t k : cells)
+            if (tile_[size_t(k)] != from || (!protected_.empty() && protected_[size_t(k)])) return false;
+        for (int32_t k : cells) tile_[size_t(k)] = to;
+        if (oneTileWhole(from) && oneTileWhole(to)) return true;
+        for (int32_t k : cells) tile_[size_t(k)] = from;
+        return false;
+    }
+
+    // Teeth of the west tile into the east one, along the seam between them.
+    void verticalSeam(int32_t west, int32_t east) {
+        std::map<int32_t, int32_t> seam_col;  // lattice row -> first east cell touching the west tile
+        for (size_t k = 0; k < s_.keptCount(); ++k) {
+            if (tile_[k] != east) continue;
+            if (tileOf(s_.col[k] - 1, s_.row[k]) != west) continue;
+            auto [at, fresh] = seam_col.emplace(s_.row[k], s_.col[k]);
+            if (!fresh) at->second = std::min(at->second, s_.col[k]);
+        }
+        if (seam_col.empty()) return;
+        ++seams_;
+        const int32_t reach = 2 * k_;  // rows each side a tooth needs, its holders included
+        std::vector<int32_t> centres;
+        for (const auto& [r, c] : seam_col) {
+            bool room = true;
+            for (int32_t dr = -reach; dr <= reach && room; ++dr) room = seam_col.count(r + dr) > 0;
+            if (room) centres.push_back(r);
+        }
+        placeTeeth(centres, [&](int32_t rt) {
+            std::vector<int32_t> cells;
+            for (int32_t dr = -(2 * k_ - 1); dr <= 2 * k_ - 1; ++dr)
+                for (int32_t u = 0; u < 2 * k_; ++u) {
+                    const int32_t r = rt + dr, c = seam_col.at(r) + u;
+                    const int32_t kk = s_.keptAt(c, r);
+                    const bool neck = u < k_ && std::abs(dr) <= k_ - 1, head = u >= k_;
+                    if (kk < 0 || tile_[size_t(kk)] != east) return std::vector<int32_t>();  // a hole: no tooth
+                    if (neck || head) cells.push_back(kk);
+                }
+            return cells;
+        }, west, east);
+    }
+
+    // Teeth of the north tile into the south one.
+    void horizontalSeam(int32_t north, int32_t south) {
+        std::map<int32_t, int32_t> first_row;  // lattice column -> first south row touching the north tile
+        for (size_t k = 0; k < s_.keptCount(); ++k) {
+            if (tile_[k] != south) continue;
+            const int32_t ne = s_.keptNeighbour(k, 1), nw = s_.keptNeighbour(k, 2);
+            if (!((ne >= 0 && tile_[size_t(ne)] == north) || (nw >= 0 && tile_[size_t(nw)] == north))) continue;
+            auto [at, fresh] = first_row.emplace(s_.col[k], s_.row[k]);
+            if (!fresh) at->second = std::min(at->second, s_.row[k]);
+        }
+        if (first_row.empty()) return;
+        ++seams_;
+        const int32_t reach = 2 * k_ + 1;  // columns each side a tooth needs, its holders included
+        std::vector<int32_t> centres;
+        for (const auto& [c, r] : first_row) {
+            bool room = true;
+            for (int32_t dc = -reach; dc <= reach && room; ++dc) {
+                const auto at = first_row.find(c + dc);
+                room = at != first_row.end() && at->second == r;
+            }
+            if (room) centres.push_back(c);
+        }
+        placeTeeth(centres, [&](int32_t ct) {
+            const int32_t r0 = first_row.at(ct);
+            const int32_t it = 2 * ct + (r0 & 1);  // half pitches from the west
+            std::vector<int32_t> cells;
+            for (int32_t d = 0; d < 2 * k_; ++d) {
+                const int32_t r = r0 + d;
+                for (int32_t c = ct - 2 * k_ - 1; c <= ct + 2 * k_ + 1; ++c) {
+                    const int32_t di = std::abs(2 * c + (r & 1) - it);
+                    const bool neck = d < k_ && di <= 2 * k_ - 1, head = d >= k_ && di <= 4 * k_ - 3;
+                    const bool holder = d < k_ && di > 2 * k_ - 1 && di <= 4 * k_ - 1;
+                    if (!neck && !head && !holder) continue;
+                    const int32_t kk = s_.keptAt(c, r);
+                    if (kk < 0 || tile_[size_t(kk)] != south) return std::vector<int32_t>();
+                    if (neck || head) cells.push_back(kk);
+                }
+            }
+            return cells;
+        }, north, south);
+    }
+
+    // Up to two teeth, at a third and two thirds of the seam's candidate places.
+    template <class Cells>
+    void placeTeeth(const std::vector<int32_t>& centres, Cells cellsAt, int32_t from_tile, int32_t into_tile) {
+        const int32_t before = teeth_;
+        placeTeethOn(centres, cellsAt, from_tile, into_tile);
+        bare_ += teeth_ == before;
+    }
+    template <class Cells>
+    void placeTeethOn(const std::vector<int32_t>& centres, Cells cellsAt, int32_t from_tile, int32_t into_tile) {
+        if (centres.empty()) return;
+        const size_t n = centres.size();
+        std::vector<size_t> wanted = n >= size_t(8 * k_ + 2) ? std::vector<size_t>{n / 3, (2 * n) / 3} : std::vector<size_t>{n / 2};
+        int32_t last = std::numeric_limits<int32_t>::min() / 2;
+        for (size_t w : wanted) {
+            const int32_t at = centres[w];
+            if (at - last < 4 * k_ + 2) continue;
+            const std::vector<int32_t> cells = cellsAt(at);
+            if (cells.empty()) continue;
+            if (tryTooth(cells, into_tile, from_tile)) {
+                ++teeth_;
+                last = at;
+            }
+        }
+    }
+
+    void teeth() {
+        for (int32_t r = 0; r < rows_; ++r)
+            for (int32_t c = 0; c + 1 < cols_; ++c) verticalSeam(r * cols_ + c, r * cols_ + c + 1);
+        for (int32_t r = 0; r + 1 < rows_; ++r)
+            for (int32_t c = 0; c < cols_; ++c) horizontalSeam(r * cols_ + c, (r + 1) * cols_ + c);
+    }
+
+    TileLayout layout(int32_t marks_tile, const std::vector<BoxMm>& attached) const {
+        TileLayout L;
+        L.rows = rows_;
+        L.cols = cols_;
+        L.teeth = teeth_;
+        L.seams = seams_;
+        L.bare_seams = bare_;
+        L.marks_tile = marks_tile;
+        L.tooth_cells = k_;
+        L.boxes.assign(size_t(rows_ * cols_), emptyBox());
+        L.cells.assign(size_t(rows_ * cols_), 0);
+        L.tile_of_cell.assign(size_t(s_.grid.cellCount()), -1);
+        for (size_t k = 0; k < s_.keptCount(); ++k) {
+            const int32_t t = tile_[k];
+            L.tile_of_cell[size_t(s_.grid.index(s_.col[k], s_.row[k]))] = t;
+            grow(L.boxes[size_t(t)], boxes_[k]);
+            ++L.cells[size_t(t)];
+        }
+        if (marks_tile >= 0)
+            for (const BoxMm& b : attached) grow(L.boxes[size_t(marks_tile)], b);
+        return L;
+    }
+
+private:
+    const Scene& s_;
+    int32_t rows_, cols_;
+    std::vector<int32_t> tile_;  // per kept cell
+    const std::vector<BoxMm>& boxes_;
+    std::vector<uint8_t> protected_;
+    int k_ = 1;
+    int32_t teeth_ = 0, seams_ = 0, bare_ = 0;
+};
+
+bool fits(const TileLayout& L, double w, double d) {
+    for (const BoxMm& b : L.boxes)
+        if (b.x0 <= b.x1 && (b.x1 - b.x0 > w + 1e-9 || b.y1 - b.y0 > d + 1e-9)) return false;
+    return true;
+}
+
+}  // namespace
+
+TileLayout planTiles(const Scene& s, const std::vector<BoxMm>& attached, double w, double d) {
+    if (s.params.bottom != Bottom::Flat || s.legend || s.scale || s.halves || s.textures || s.params.tilt != TiltSource::None)
+        throw InputError("--tile cuts a flat model with level tops, without a legend or a scale (not yet with --mirror, "
+                         "--tilt, class textures, --title, --units or --scale)");
+    if (s.keptCount() == 0) throw InputError("--tile: the model has no cells");
+    std::vector<BoxMm> cell_boxes(s.keptCount());
+    BoxMm all = emptyBox();
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        cell_boxes[k] = cellBox(s, k);
+        grow(all, cell_boxes[k]);
+    }
+    BoxMm everything = all;
+    for (const BoxMm& b : attached) grow(everything, b);
+    const std::vector<int32_t> marks = markCells(s);
+    const int32_t min_cols = std::max(1, int32_t(std::ceil((everything.x1 - everything.x0) / w - 1e-9)));
+    const int32_t min_rows = std::max(1, int32_t(std::ceil((everything.y1 - everything.y0) / d - 1e-9)));
+    if (s.pitch_mm * 4 > std::min(w, d))
+        throw InputError("--tile: cells " + formatSignificant(s.pitch_mm, 3) + " mm across are too large to tile a " +
+                         formatSignificant(w, 4) + " x " + formatSignificant(d, 4) + " mm bed: a smaller --cell");
+    for (int32_t n = min_cols * min_rows; n <= kMaxTileCount; ++n)
+        for (int32_t cols = min_cols; cols <= n; ++cols) {
+            if (n % cols != 0 || n / cols < min_rows) continue;
+            const int32_t rows = n / cols;
+            // The tiles split the box of everything: the tab's tile (it goes
+            // with the marks) has fewer cells.
+            Tiler t(s, rows, cols, everything, cell_boxes);
+            const int32_t marks_tile = t.gatherMarks(marks);
+            t.makeTilesWhole();
+            t.teeth();
+            TileLayout L = t.layout(marks_tile, attached);
+            if (fits(L, w, d)) return L;
+        }
+    throw InputError("--tile: no tiling into at most " + std::to_string(kMaxTileCount) + " tiles fits the " +
+                     formatSignificant(w, 4) + " x " + formatSignificant(d, 4) + " mm bed: a smaller model (--width, --cell)");
+}
+
+SceneParams tileParams(const Scene& whole, const TileLayout& L, int32_t tile) {
+    SceneParams p = whole.params;
+    // The whole model's z grid (a float32 file's coarser one included) and
+    // size: the tile is the same model, cut.
+    p.z_snap_mm = whole.z_snap_mm;
+    p.pitch_mm = whole.pitch_mm;
+    p.fit_box_given = false;
+    p.tile_cells.assign(L.tile_of_cell.size(), 0);
+    for (size_t idx = 0; idx < L.tile_of_cell.size(); ++idx) p.tile_cells[idx] = L.tile_of_cell[idx] == tile;
+    p.tile_place = TilePlace{tile / L.cols, tile % L.cols, L.rows, L.cols};
+    if (tile != L.marks_tile) {
+        const MarkPlace place = p.marks.place;
+        p.marks = withoutMarks();
+        p.marks.place = place;
+    }
+    return p;
+}
+
+void placeTileCode(Scene& s) {
+    SceneTile t;
+    t.place = *s.params.tile_place;
+    const double narrowest = s.pitch_mm * std::min(1.0, s.y_scale);
+    double radius = std::min(kTileCodePitRadiusMm, 0.3 * narrowest);
+    if (radius < kTileCodeMinPitRadiusMm) radius = std::min(kTileCodeMinPitRadiusMm, 0.5 * narrowest - 0.2);
+    const int64_t wall = std::max<int64_t>(1, snapUnits(kTileCodePitWallMm, s.z_snap_mm));
+    const int64_t apex = wall + std::max<int64_t>(1, int64_t(std::ceil(kHoleConeRatio * radius / s.z_snap_mm - 1e-9)));
+    const int64_t roof = snapUnits(kTileCodeRoofMm, s.z_snap_mm);
+    // Pits a fingertip tells apart: at least 3 mm between centres.
+    const int32_t east_step = std::max(1, int32_t(std::ceil(3.0 / s.pitch_mm - 1e-9)));
+    const double row_mm = s.pitch_mm * kSqrt3 / 2 * s.y_scale;
+    const int32_t south_step = 2 * std::max(1, int32_t(std::ceil(3.0 / (2 * row_mm) - 1e-9)));
+    const auto usable = [&](int32_t k) {
+        return k >= 0 && s.kind[size_t(k)] == CellKind::Data && s.bottom[size_t(k)] == 0 &&
+               (s.drawn_by_face.empty() || !s.drawn_by_face[size_t(k)]) && s.top[size_t(k)] - roof >= apex;
+    };
+    const auto codeAt = [&](size_t corner) {
+        std::vector<int32_t> cells{int32_t(corner)};
+        for (int32_t e = 1; e <= t.place.col + 1; ++e) cells.push_back(s.keptAt(s.col[corner] + e * east_step, s.row[corner]));
+        for (int32_t n = 1; n <= t.place.row + 1; ++n) cells.push_back(s.keptAt(s.col[corner], s.row[corner] + n * south_step));
+        for (int32_t k : cells)
+            if (!usable(k)) return std::vector<int32_t>();
+        return cells;
+    };
+    // The L nearest the tile's middle.
+    double cx = 0, cy = 0;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const Vec3 p = s.point(hexCentre(s.grid, s.col[k], s.row[k]), 0);
+        cx += p.x;
+        cy += p.y;
+    }
+    cx /= double(std::max<size_t>(1, s.keptCount()));
+    cy /= double(std::max<size_t>(1, s.keptCount()));
+    std::vector<std::pair<double, size_t>> order;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        const Vec3 p = s.point(hexCentre(s.grid, s.col[k] + (t.place.col + 1) * east_step / 2, s.row[k] + (t.place.row + 1) * south_step / 2), 0);
+        order.push_back({std::hypot(p.x - cx, p.y - cy), k});
+    }
+    std::sort(order.begin(), order.end());
+    if (radius >= 0.3)
+        for (const auto& [dist, k] : order) {
+            std::vector<int32_t> cells = codeAt(k);
+            if (cells.empty()) continue;
+            t.code_cells = std::move(cells);
+            t.pit_radius_mm = radius;
+            for (int32_t c : t.code_cells) {
+                const LatticePoint centre = hexCentre(s.grid, s.col[size_t(c)], s.row[size_t(c)]);
+                t.code_pits.push_back({bottomHoleRing(s, centre, radius), centre, wall, apex});
+            }
+            break;
+        }
+    if (t.code_cells.empty())
+        s.notes.push_back("tile " + tileName(t.place) + " has no room for its code (" + std::to_string(t.place.col + t.place.row + 3) +
+                          " pits under cells at least " + formatSignificant(s.zMm(apex + roof), 2) +
+                          " mm thick): its place is in its file name only");
+    s.tile = std::move(t);
+}
+
+bool isTileCodeCell(const Scene& s, size_t k) {
+    return s.tile && std::find(s.tile->code_cells.begin(), s.tile->code_cells.end(), int32_t(k)) != s.tile->code_cells.end();
+}
+
+std::vector<BottomHole> tileBottomHoles(const Scene& s) { return s.tile ? s.tile->code_pits : std::vector<BottomHole>(); }
+
+double bottomHoleVolumeMm3(const Scene& s, const BottomHole& h) {
+    double area = 0;
+    for (size_t n = 0; n < h.ring.size(); ++n) {
+        const Vec3 a = s.point(h.ring[n], 0), b = s.point(h.ring[(n + 1) % h.ring.size()], 0);
+        area += a.x * b.y - b.x * a.y;
+    }
+    area = std::fabs(area) / 2;
+    return area * s.zMm(h.depth_units) + area * s.zMm(h.apex_units - h.depth_units) / 3;
+}
+
+std::string tileName(const TilePlace& p) {
+    return "row " + std::to_string(p.row + 1) + ", column " + std::to_string(p.col + 1);
+}
+
+}  // namespace tsf

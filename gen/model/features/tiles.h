@@ -1,0 +1,87 @@
+// Tiles: a model larger than the printer's bed, cut into pieces that each
+// fit it and go together one way only.
+//
+// The cut runs along the hexagons' edges, never through a pillar: every kept
+// cell goes to exactly one tile, at its own height, so the tiles put
+// together are the untiled model's cells (verify/tiles_check.h proves it).
+// A tile is a Scene of its own, built from the same field with the whole
+// model's parameters and mapping, of its cells only (SceneParams::tile_cells).
+//
+// The tiling (planTiles): the fewest rows x columns of tiles whose
+// footprints each fit the bed, split at equal distances in x and y by cell
+// centres (rows from the north, columns from the west), then:
+//   - registration: along every seam, dovetail teeth made of whole cells.
+//     A tooth of the west (or north) tile reaches into its east (or south)
+//     neighbour by a neck k cells long and a head as long and twice as wide
+//     (k = kToothMm / pitch, at least 1): the neighbour's cells beside the
+//     neck hold the head, so the two tiles come apart only upwards, and each
+//     tile has teeth on its east and south sides and sockets on its west
+//     and north sides: a tile turned about cannot be put in. Teeth sit at a
+//     third and two thirds of a seam, clear of its ends;
+//   - the orientation marks (the notch, the triangle, the tab) stay whole in
+//     one tile; a tile that would fall apart gives its loose cells to a
+//     neighbour.
+//
+// The code (placeTileCode): each tile's place is pitted into its flat
+// bottom as an L of cone-topped pits under cell centres, read from the
+// underside: a corner pit, then one pit per column number going east (column
+// 1: one pit) and one per row number going south (row 1: one pit). The L is
+// chiral, so it also says which way the tile is turned. The pits print face
+// down without a bridge (a one-layer wall and a cone steeper than 45
+// degrees) and keep kTileCodeRoofMm of material under the cell's top.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gen/model/scene.h"
+#include "gen/model/scene_attachments.h"
+
+namespace tsf {
+
+/// The smallest neck of a dovetail tooth, mm (k cells, k = round(kToothMm / pitch), at least 1).
+inline constexpr double kToothMm = 4.0;
+
+struct TileLayout {
+    int32_t rows = 0, cols = 0;         ///< tile rows (north to south) and columns (west to east)
+    std::vector<int32_t> tile_of_cell;  ///< per grid cell: row * cols + col, -1 for a cell not kept
+    std::vector<BoxMm> boxes;           ///< per tile: its footprint (cells and what it carries), mm; x0 > x1 when empty
+    std::vector<int64_t> cells;         ///< per tile: how many cells
+    int32_t teeth = 0;                  ///< dovetail teeth placed
+    int32_t seams = 0;                  ///< pairs of neighbouring tiles
+    int32_t bare_seams = 0;             ///< seams too short or too ragged for a tooth
+    int32_t marks_tile = -1;            ///< the tile carrying the orientation marks (-1: none)
+    int32_t tooth_cells = 1;            ///< k: a tooth's neck length in cells
+};
+
+/// Cuts `whole` (a flat model with level tops, no legend or scale) into the fewest
+/// tiles that each fit width_mm x depth_mm; `attached`: the boxes of what
+/// stands beside the pillars (attachmentBoxes: the orientation tab), which
+/// go with the tile of the marks. Throws InputError when no tiling into at
+/// most kMaxTileCount tiles fits.
+inline constexpr int32_t kMaxTileCount = 400;
+TileLayout planTiles(const Scene& whole, const std::vector<BoxMm>& attached, double width_mm, double depth_mm);
+
+/// The parameters buildScene draws tile `tile` of `layout` with: the whole
+/// model's (its mapping, snap and marks), its cells only, its place; the
+/// orientation marks only on layout.marks_tile.
+SceneParams tileParams(const Scene& whole, const TileLayout& layout, int32_t tile);
+
+/// Pits a tile Scene's code into its bottom (Scene::tile); buildScene calls
+/// it when SceneParams::tile_place is set. Adds a note when the tile has no
+/// room for it.
+void placeTileCode(Scene& scene);
+
+/// True when kept cell k of a tile Scene has a code pit under it (its top stays level).
+bool isTileCodeCell(const Scene& scene, size_t k);
+
+/// The code pits of a tile Scene as cuts into its bottom; none otherwise.
+std::vector<BottomHole> tileBottomHoles(const Scene& scene);
+
+/// The volume of a cut into the bottom (its prism and cone), mm^3.
+double bottomHoleVolumeMm3(const Scene& scene, const BottomHole& hole);
+
+/// "row 2, column 3" for people (rows and columns from 1).
+std::string tileName(const TilePlace& place);
+
+}  // namespace tsf

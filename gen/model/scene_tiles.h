@@ -1,0 +1,38 @@
+// One tile of a model cut into tiles as the Scene holds it: data only.
+// Where the cut comes from is gen/model/features/tiles.h.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gen/model/scene_attachments.h"
+
+namespace tsf {
+
+/// A tile's code pit: a cone-topped hole into the bottom under a cell
+/// centre, mm. Straight for one layer, then a cone at least 45 degrees
+/// steep (kHoleConeRatio), so it prints face down without a bridge.
+inline constexpr double kTileCodePitRadiusMm = 1.0;
+inline constexpr double kTileCodePitWallMm = 0.2;
+/// Material kept between a code pit's tip and the cell's top, mm.
+inline constexpr double kTileCodeRoofMm = 0.6;
+/// The smallest pit a fingertip finds on the underside, mm (radius).
+inline constexpr double kTileCodeMinPitRadiusMm = 0.5;
+
+/// Where a tile lies in the tiling: rows from the north, columns from the
+/// west, both from 0 (people read them from 1: MODEL-tile-ROW-COL).
+struct TilePlace {
+    int32_t row = 0, col = 0;
+    int32_t rows = 1, cols = 1;
+};
+
+/// The tile a Scene draws and its code: pits in its bottom, an L of cell
+/// centres read from the underside (gen/model/features/tiles.h).
+struct SceneTile {
+    TilePlace place;
+    std::vector<int32_t> code_cells;    ///< kept cells with a pit: the corner, then the east arm, then the south arm
+    std::vector<BottomHole> code_pits;  ///< one per code cell
+    double pit_radius_mm = 0;           ///< 0: no room for the code (a note says so)
+};
+
+}  // namespace tsf
