@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/bed_size.h"
 #include "app/commands.h"
@@ -13,7 +14,7 @@ namespace tsf::cli {
 namespace {
 
 struct PrintCheckOptions {
-    std::string model;
+    std::vector<std::string> models;
     SlicerSettings slicer;
     std::string bed;
     bool json = false;
@@ -26,17 +27,28 @@ void runPrintCheckCommand(const PrintCheckOptions& o) {
         s.bed_width_mm = bed.width_mm;
         s.bed_depth_mm = bed.depth_mm;
     }
-    PrintCheckReport report;
+    std::vector<PrintCheckReport> reports;
     try {
-        report = runPrintCheck(o.model, s);
+        for (const std::string& model : o.models) reports.push_back(runPrintCheck(model, s));
     } catch (const SlicerError& e) {
         std::cerr << "tsf: error: " << e.what() << "\n";
         throw CLI::RuntimeError(kExitToolFailed);
     }
-    if (o.json)
-        std::cout << toJson(report).dump(2) << "\n";
-    else
-        std::cout << formatPrintCheck(report);
+    if (reports.size() == 1) {
+        if (o.json) std::cout << toJson(reports[0]).dump(2) << "\n";
+        else std::cout << formatPrintCheck(reports[0]);
+    } else {
+        // The pieces of one model (tiles, halves and pins): each, and the sum.
+        const PrintCheckTotal total = sumPrintChecks(reports);
+        if (o.json) {
+            nlohmann::json pieces = nlohmann::json::array();
+            for (const PrintCheckReport& r : reports) pieces.push_back(toJson(r));
+            std::cout << nlohmann::json{{"pieces", pieces}, {"total", toJson(total)}}.dump(2) << "\n";
+        } else {
+            for (const PrintCheckReport& r : reports) std::cout << formatPrintCheck(r);
+            std::cout << formatPrintCheckTotal(total);
+        }
+    }
     std::cout.flush();
 }
 
@@ -53,9 +65,13 @@ void addPrintCheckCommand(CLI::App& app) {
         "Examples:\n"
         "  tsf print-check model.stl\n"
         "  tsf print-check model.3mf --layer 0.1 --nozzle 0.6 --bed 250x210 --json\n"
+        "  tsf print-check europe-tile-*.stl           # each tile, and the sum\n"
         "Exit codes: 0 the report was made (read it: it does not judge), 2 bad input (unreadable model,\n"
         "larger than the bed, bad option), 3 PrusaSlicer is missing or failed.");
-    cmd->add_option("model", opts->model, "Model to slice: STL or 3MF (mm)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("models", opts->models,
+                    "Model to slice: STL or 3MF (mm); several (the tiles of --tile, the halves and pins of --halves): "
+                    "each is reported and their time and filament summed")
+        ->required()->check(CLI::ExistingFile);
     cmd->add_option("--layer", opts->slicer.layer_mm, "Layer height, mm")
         ->check(CLI::Range(0.01, 2.0))->capture_default_str();
     cmd->add_option("--nozzle", opts->slicer.nozzle_mm, "Nozzle diameter, mm")

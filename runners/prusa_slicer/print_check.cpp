@@ -123,4 +123,45 @@ nlohmann::json toJson(const PrintCheckReport& r) {
             {"with_supports", sliceJson(r.supported)}};
 }
 
+PrintCheckTotal sumPrintChecks(const std::vector<PrintCheckReport>& reports) {
+    PrintCheckTotal t;
+    for (const PrintCheckReport& r : reports) {
+        ++t.pieces;
+        t.print_time_s += r.plain.print_time_s;
+        t.filament_mm += r.plain.filament_mm;
+        t.filament_cm3 += r.plain.filament_cm3;
+        t.filament_g += r.plain.filament_g;
+        const GcodeSummary& as_printed = r.supportsNeeded() ? r.supported : r.plain;
+        t.supported_time_s += as_printed.print_time_s;
+        t.supported_filament_g += as_printed.filament_g;
+        t.pieces_needing_supports += r.supportsNeeded();
+    }
+    return t;
+}
+
+std::string formatPrintCheckTotal(const PrintCheckTotal& t) {
+    std::ostringstream o;
+    o << "total: " << t.pieces << " pieces printed one after another\n";
+    o << "  print time:        " << formatDuration(t.print_time_s) << "\n";
+    o << "  filament:          " << fixed(t.filament_mm / 1000.0, 2) << " m = " << fixed(t.filament_cm3, 2) << " cm3 = "
+      << fixed(t.filament_g, 1) << " g\n";
+    if (t.pieces_needing_supports > 0)
+        o << "  supports:          " << t.pieces_needing_supports << " of the pieces need them; with them "
+          << formatDuration(t.supported_time_s) << " and " << fixed(t.supported_filament_g, 1) << " g\n";
+    else
+        o << "  supports:          none needed by any piece\n";
+    return o.str();
+}
+
+nlohmann::json toJson(const PrintCheckTotal& t) {
+    return {{"pieces", t.pieces},
+            {"print_time_s", numberOrNull(t.print_time_s)},
+            {"filament_mm", numberOrNull(t.filament_mm)},
+            {"filament_cm3", numberOrNull(t.filament_cm3)},
+            {"filament_g", numberOrNull(t.filament_g)},
+            {"pieces_needing_supports", t.pieces_needing_supports},
+            {"with_supports_where_needed", {{"print_time_s", numberOrNull(t.supported_time_s)},
+                                            {"filament_g", numberOrNull(t.supported_filament_g)}}}};
+}
+
 }  // namespace tsf

@@ -51,4 +51,17 @@ std::string formatPrintCheck(const PrintCheckReport& report);
 /// Every figure for programs (mm, cm3, g, s).
 nlohmann::json toJson(const PrintCheckReport& report);
 
+/// The pieces of one model printed one after another (tiles, halves and
+/// pins): time and filament summed, each without supports, and with them
+/// where a piece needs them.
+struct PrintCheckTotal {
+    size_t pieces = 0;
+    double print_time_s = 0, filament_mm = 0, filament_cm3 = 0, filament_g = 0;  ///< without supports
+    double supported_time_s = 0, supported_filament_g = 0;  ///< each piece with supports where it needs them
+    size_t pieces_needing_supports = 0;
+};
+PrintCheckTotal sumPrintChecks(const std::vector<PrintCheckReport>& reports);
+std::string formatPrintCheckTotal(const PrintCheckTotal& total);
+nlohmann::json toJson(const PrintCheckTotal& total);
+
 }  // namespace tsf
