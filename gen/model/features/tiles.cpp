@@ -119,6 +119,51 @@ public:
         }
     }
 
+    // A tile far smaller than the others (a corner of the outline) joins the
+    // neighbour it shares the longest seam with, when the two still fit the
+    // bed with room for the teeth: fewer, fuller tiles. Returns the marks'
+    // tile, which may have joined another.
+    int32_t mergeSmallTiles(double w, double d, int32_t marks_tile, const std::vector<BoxMm>& attached) {
+        const int32_t n = rows_ * cols_;
+        const double room = (2 * k_ + 1) * s_.pitch_mm;
+        for (bool merged = true; merged;) {
+            merged = false;
+            std::vector<int64_t> count(size_t(n), 0);
+            for (int32_t t : tile_) ++count[size_t(t)];
+            int64_t used = 0, total = 0;
+            for (int64_t c : count) used += c > 0, total += c;
+            const double mean = double(total) / double(std::max<int64_t>(1, used));
+            for (int32_t t = 0; t < n && !merged; ++t) {
+                if (count[size_t(t)] == 0 || double(count[size_t(t)]) >= 0.3 * mean) continue;
+                std::map<int32_t, int64_t> shared;  // neighbouring tile -> edges in common
+                for (size_t k = 0; k < s_.keptCount(); ++k) {
+                    if (tile_[k] != t) continue;
+                    for (int e = 0; e < kHexCorners; ++e) {
+                        const int32_t o = s_.keptNeighbour(k, e);
+                        if (o >= 0 && tile_[size_t(o)] != t) ++shared[tile_[size_t(o)]];
+                    }
+                }
+                std::vector<std::pair<int64_t, int32_t>> order;
+                for (const auto& [o, edges] : shared) order.push_back({-edges, o});
+                std::sort(order.begin(), order.end());
+                for (const auto& [minus_edges, o] : order) {
+                    BoxMm box = emptyBox();
+                    for (size_t k = 0; k < s_.keptCount(); ++k)
+                        if (tile_[k] == t || tile_[k] == o) grow(box, boxes_[k]);
+                    if (t == marks_tile || o == marks_tile)
+                        for (const BoxMm& b : attached) grow(box, b);
+                    if (box.x1 - box.x0 > w - room || box.y1 - box.y0 > d - room) continue;
+                    for (int32_t& x : tile_)
+                        if (x == t) x = o;
+                    if (marks_tile == t) marks_tile = o;
+                    merged = true;
+                    break;
+                }
+            }
+        }
+        return marks_tile;
+    }
+
     bool oneTileWhole(int32_t t) const {
         const HexGrid& g = s_.grid;
         std::vector<uint8_t> mask(size_t(g.cellCount()), 0);
@@ -312,8 +357,9 @@ TileLayout planTiles(const Scene& s, const std::vector<BoxMm>& attached, double 
             // The tiles split the box of everything: the tab's tile (it goes
             // with the marks) has fewer cells.
             Tiler t(s, rows, cols, everything, cell_boxes);
-            const int32_t marks_tile = t.gatherMarks(marks);
+            int32_t marks_tile = t.gatherMarks(marks);
             t.makeTilesWhole();
+            marks_tile = t.mergeSmallTiles(w, d, marks_tile, attached);
             t.teeth();
             TileLayout L = t.layout(marks_tile, attached);
             if (fits(L, w, d)) return L;

@@ -1,0 +1,68 @@
+// tsf gen --bed WxD --tile: the bundled airports on a 100 x 100 mm bed come
+// out as tiles that each fit, each verified, the assembly verified, listed
+// in the summary; what --tile cannot do yet is refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/mesh_io/mesh_reader.h"
+#include "tests/support/files.h"
+#include "tests/support/mesh_invariants.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+TEST(TilesCli, BundledAirportsOnASmallBed) {
+    const auto dir = test::scratchDir();
+    const auto r = test::runTsf("gen " + test::sourcePath("examples/airports-europe.csv") +
+                                    " --points x=lon,y=lat --bins 40 --bed 100x100 --tile --json -o " + (dir / "eu.stl").string() +
+                                    " --preview " + (dir / "tiles.png").string(),
+                                dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const auto& t = j["tiles"];
+    ASSERT_TRUE(t.is_object());
+    EXPECT_GE(t["count"].get<int>(), 4);  // 173 x 123 mm on a 90 x 90 mm printable area
+    EXPECT_GT(t["teeth"].get<int>(), 0);
+    for (const auto& c : t["assembly"]["checks"]) EXPECT_EQ(c["status"], "pass") << c.dump();
+    EXPECT_FALSE(std::filesystem::exists(dir / "eu.stl"));  // the one piece is not written
+    EXPECT_FALSE(std::filesystem::exists(dir / "eu.stl.scene.json"));
+    ASSERT_EQ(t["files"].size(), t["tiles"].size());
+    int with_marks = 0;
+    for (size_t n = 0; n < t["tiles"].size(); ++n) {
+        const auto& one = t["tiles"][n];
+        const std::string expected_name =
+            "eu-tile-" + std::to_string(one["row"].get<int>()) + "-" + std::to_string(one["col"].get<int>()) + ".stl";
+        EXPECT_EQ(std::filesystem::path(t["files"][n].get<std::string>()).filename().string(), expected_name);
+        EXPECT_EQ(one["verify"]["passed"], true) << expected_name;
+        with_marks += one["marks"].get<bool>();
+        const Mesh m = readMesh(t["files"][n].get<std::string>());
+        EXPECT_TRUE(test::checkInvariants(m).closedManifold()) << expected_name;
+        const Bounds b = meshBounds(m);
+        EXPECT_LE(b.max.x - b.min.x, 90.0 + 1e-3) << expected_name;
+        EXPECT_LE(b.max.y - b.min.y, 90.0 + 1e-3) << expected_name;
+        EXPECT_EQ(one["code_pits"].get<int>(), one["row"].get<int>() + one["col"].get<int>() + 1) << expected_name;
+    }
+    EXPECT_EQ(with_marks, 1);
+    EXPECT_TRUE(std::filesystem::exists(dir / "tiles.png"));
+}
+
+TEST(TilesCli, RefusedWhereItCannotCutYet) {
+    const auto dir = test::scratchDir();
+    const std::string in = test::sourcePath("examples/airports-europe.csv") + " --points x=lon,y=lat --bins 40 ";
+    const std::string out = " -o " + (dir / "eu.stl").string();
+    for (const std::string& extra : {std::string("--tile"), std::string("--bed 100x100 --tile --mirror"),
+                                     std::string("--bed 100x100 --tile --scad ") + (dir / "eu.scad").string(),
+                                     std::string("--bed 100x100 --tile --title Airports")}) {
+        const auto r = test::runTsf("gen " + in + extra + out, dir);
+        EXPECT_EQ(r.exit_code, test::kExitBadInput) << extra << "\n" << r.out << r.err;
+        EXPECT_NE(r.err.find("--tile"), std::string::npos) << extra << "\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "eu-tile-1-1.stl")) << extra;
+    }
+}
+
+}  // namespace
+}  // namespace tsf
