@@ -171,5 +171,38 @@ TEST(PrintCheckCli, TheCalibrationCouponPrintsInUnderAnHour) {
     EXPECT_GT(j["print_time_s"].get<double>(), 600.0) << "a real piece, not an empty one: " << j.dump();
 }
 
+// The tiles of tsf gen --tile checked together: each piece reported, and
+// the total is the sum of the pieces' own figures.
+TEST(PrintCheckCli, TilesAreEachReportedAndSummed) {
+    REQUIRE_SLICER();
+    const auto dir = test::scratchDir();
+    std::string csv;
+    for (int r = 0; r < 12; ++r) {
+        for (int c = 0; c < 24; ++c) csv += (c ? "," : "") + std::to_string((c * 3 + r * 5) % 7 + 1);
+        csv += "\n";
+    }
+    test::writeText(dir / "field.csv", csv);
+    const auto gen = test::runTsf("gen " + (dir / "field.csv").string() +
+                                      " --cell 4 --height 4 --bed 70x70 --tile --json -o " + (dir / "m.stl").string(),
+                                  dir);
+    ASSERT_EQ(gen.exit_code, 0) << gen.out << gen.err;
+    const auto files = nlohmann::json::parse(gen.out)["tiles"]["files"];
+    ASSERT_GE(files.size(), 2u);
+    std::string args;
+    for (const auto& f : files) args += f.get<std::string>() + " ";
+    const auto j = printCheck(args + "--bed 70x70", dir);
+    ASSERT_EQ(j["pieces"].size(), files.size()) << j.dump(2);
+    double time = 0, grams = 0;
+    for (const auto& p : j["pieces"]) {
+        EXPECT_EQ(p["supports_needed"], false) << p["model"];  // flat tiles, code pits printed face down
+        time += p["print_time_s"].get<double>();
+        grams += p["filament_g"].get<double>();
+    }
+    EXPECT_EQ(j["total"]["pieces"], files.size());
+    EXPECT_NEAR(j["total"]["print_time_s"].get<double>(), time, 1e-6);
+    EXPECT_NEAR(j["total"]["filament_g"].get<double>(), grams, 1e-6);
+    EXPECT_EQ(j["total"]["pieces_needing_supports"], 0);
+}
+
 }  // namespace
 }  // namespace tsf
