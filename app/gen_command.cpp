@@ -451,6 +451,15 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         facts.class_names = field.input.classes;
         facts.class_order = field.input.class_order;
         if (const auto g = groundScale(scene, field)) facts.ground = groundSentence(*g);
+        if (tiles)
+            facts.assembly = "The model prints in " + std::to_string(tiles->tiles.size()) + " tiles, in " +
+                             std::to_string(tiles->layout.rows) + " rows from north to south and " +
+                             std::to_string(tiles->layout.cols) +
+                             " columns from west to east. Each tile has teeth on its east and south edges that lock into "
+                             "the next tile when it is lowered onto them from above, so the tiles fit one way only. "
+                             "Under each tile, pits form an L: a corner pit, then one pit for each column number "
+                             "going east, and one for each row number going south. The orientation marks are on the "
+                             "tile at the model's south-west corner.";
         const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
         const auto [text_path, brf_path] = keyPaths(o);
         writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });

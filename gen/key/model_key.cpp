@@ -175,6 +175,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     out.push_back(size);
     if (s.halves)
         out.push_back("The model prints in two halves, upper and lower, joined by pins that fit one way only.");
+    if (!facts.assembly.empty()) out.push_back(facts.assembly);
     return out;
 }
 

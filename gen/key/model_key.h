@@ -34,6 +34,9 @@ struct ModelKeyFacts {
     /// The ground the model shows and its scale, one sentence; "" when the
     /// file does not say how long its units are.
     std::string ground;
+    /// How the printed pieces go together (the tiles of a model larger than
+    /// the bed), one paragraph; "" for a model in one piece.
+    std::string assembly;
 };
 
 /// The key's paragraphs: the first is the title line, each other a few

@@ -48,6 +48,9 @@ TEST(TilesCli, BundledAirportsOnASmallBed) {
     }
     EXPECT_EQ(with_marks, 1);
     EXPECT_TRUE(std::filesystem::exists(dir / "tiles.png"));
+    // The key tells a reader how the tiles go together.
+    const std::string key = test::readText(dir / "eu.key.txt");
+    EXPECT_NE(key.find("The model prints in " + std::to_string(t["count"].get<int>()) + " tiles"), std::string::npos) << key;
 }
 
 TEST(TilesCli, RefusedWhereItCannotCutYet) {
