@@ -358,10 +358,15 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
                          "Please report this with the input file.\n";
             throw CLI::RuntimeError(kExitCheckFailed);
         }
-        for (const VerifiedTile& t : tiles->tiles)
+        if (tiles->tiles.size() == 1) {
+            // It fits the bed as it is: one piece, as without --tile.
+            summary.printer_notes.push_back("the model fits the bed: written in one piece, not tiled");
+            tiles.reset();
+        }
+        for (const VerifiedTile& t : tiles ? tiles->tiles : std::vector<VerifiedTile>())
             if (tilePath(o.output, t.scene.tile->place) == o.gen.input)
                 throw InputError(o.output, 0, 0, "a tile would be written over the input: give another -o");
-        summarizeTiles(*tiles, summary);
+        if (tiles) summarizeTiles(*tiles, summary);
     }
     const Mesh& mesh = made.mesh;
     summary.mesh = &mesh;

@@ -412,7 +412,21 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
              << s.volume_saved_mm3 / 1000.0 << " cm^3 of material";
         s.notes.push_back(note.str());
     }
-    placeMarks(s);
+    if (params.tile_marks) {
+        // A tile draws the model's marks where the model has them.
+        s.marks = {};
+        s.marks.notch = params.tile_marks->notch;
+        s.marks.triangle = params.tile_marks->triangle;
+        if (s.marks.triangle) {
+            const int32_t anchor = s.marks.triangle->anchor;
+            if (anchor < 0 || size_t(anchor) >= n || s.kept_index[size_t(anchor)] < 0)
+                throw InputError("a tile does not hold the cell its orientation triangle stands on");
+            s.marks.triangle->anchor = s.kept_index[size_t(anchor)];
+        }
+        buildMarkFaces(s);
+    } else {
+        placeMarks(s);
+    }
     if (s.halves) {
         const int64_t full = halvesSlabUnits(s.z_snap_mm);
         const bool last_try = params.halves_slab_units && *params.halves_slab_units >= full;

@@ -144,6 +144,10 @@ struct SceneParams {
     std::vector<uint8_t> tile_cells;
     /// With tile_cells: the tile's place, pitted into its bottom as its code.
     std::optional<TilePlace> tile_place;
+    /// The tile that carries marks placed in the data: the whole model's
+    /// notch and triangle (the triangle's anchor as a grid cell index), drawn
+    /// where the model has them rather than placed again on the tile's cells.
+    std::optional<Marks> tile_marks;
     /// Non-empty (one entry per grid cell): cells whose tops stay level
     /// (no structural dimple): the whole model of a tiling keeps level the
     /// cells its tiles' code pits are under, as the tiles do.

@@ -205,6 +205,40 @@ TEST(Tiles, EachTileVerifiedAndTogetherTheyAreTheModel) {
     EXPECT_NEAR(tile_pillars, model_pillars, 1e-9 * model_pillars);
 }
 
+// Marks in the data (the notch cut into the corner pillars, the triangle on
+// the largest flat region) are drawn on the tiles where the model has them,
+// each whole on one tile, and no other tile gets marks of its own.
+TEST(Tiles, MarksInTheDataStayWhereTheModelHasThem) {
+    // The hill, with a plateau in the east for the triangle.
+    const HexField f = test::fieldFromFunction(60, 36, [](int c, int r) {
+        return c > 40 && r > 8 && r < 28 ? 4.0 : 2.0 + std::sin(c * 0.2) + std::cos(r * 0.25);
+    });
+    SceneParams p = hillParams();
+    p.marks.place = MarkPlace::Data;
+    p.cull = Cull::None;
+    const Scene s = buildScene(f, p);
+    ASSERT_TRUE(s.marks.notch);
+    ASSERT_TRUE(s.marks.triangle);
+    const VerifiedTiles v = makeVerifiedTiles(f, s, kBedW, kBedD, ModelRequest{});
+    ASSERT_TRUE(v.assembly);
+    EXPECT_TRUE(v.assembly->passed());
+    int notches = 0, triangles = 0;
+    for (const VerifiedTile& t : v.tiles) {
+        if (t.scene.marks.notch) {
+            ++notches;
+            EXPECT_EQ(t.scene.marks.notch->apex.i, s.marks.notch->apex.i);
+            EXPECT_EQ(t.scene.marks.notch->apex.j, s.marks.notch->apex.j);
+        }
+        if (t.scene.marks.triangle) {
+            ++triangles;
+            EXPECT_EQ(t.scene.marks.triangle->corner.i, s.marks.triangle->corner.i);
+            EXPECT_EQ(t.scene.marks.triangle->corner.j, s.marks.triangle->corner.j);
+        }
+    }
+    EXPECT_EQ(notches, 1);
+    EXPECT_EQ(triangles, 1);
+}
+
 TEST(Tiles, TheAssemblyCheckCatchesAWrongTile) {
     const HexField f = hill();
     const Scene s = buildScene(f, hillParams());

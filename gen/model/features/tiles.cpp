@@ -67,18 +67,38 @@ public:
         return k < 0 ? -1 : tile_[size_t(k)];
     }
 
-    // The marks' cells go to the tile most of them are in.
-    int32_t gatherMarks(const std::vector<int32_t>& marks) {
+    // Each piece of the marks (the notch or the tab, the triangle when it
+    // stands elsewhere in the data) goes whole to the tile most of it is in.
+    // Returns the tile of the piece holding the tab or the notch.
+    int32_t gatherMarks(const std::vector<int32_t>& marks, int32_t triangle_anchor) {
         if (marks.empty()) return -1;
-        std::map<int32_t, int> count;
-        for (int32_t k : marks) ++count[tile_[size_t(k)]];
-        int32_t best = count.begin()->first;
-        for (const auto& [t, n] : count)
-            if (n > count[best]) best = t;
-        for (int32_t k : marks) tile_[size_t(k)] = best;
         protected_.assign(s_.keptCount(), 0);
         for (int32_t k : marks) protected_[size_t(k)] = 1;
-        return best;
+        std::vector<int32_t> piece(s_.keptCount(), -1);
+        int32_t pieces = 0, marks_tile = -1;
+        for (int32_t start : marks) {
+            if (piece[size_t(start)] >= 0) continue;
+            std::vector<int32_t> cells{start};
+            piece[size_t(start)] = pieces;
+            for (size_t n = 0; n < cells.size(); ++n)
+                for (int e = 0; e < kHexCorners; ++e) {
+                    const int32_t o = s_.keptNeighbour(size_t(cells[n]), e);
+                    if (o >= 0 && protected_[size_t(o)] && piece[size_t(o)] < 0) {
+                        piece[size_t(o)] = pieces;
+                        cells.push_back(o);
+                    }
+                }
+            ++pieces;
+            std::map<int32_t, int> count;
+            for (int32_t k : cells) ++count[tile_[size_t(k)]];
+            int32_t best = count.begin()->first;
+            for (const auto& [t, n] : count)
+                if (n > count[best]) best = t;
+            for (int32_t k : cells) tile_[size_t(k)] = best;
+            const bool triangle = std::find(cells.begin(), cells.end(), triangle_anchor) != cells.end();
+            if (!triangle || marks_tile < 0) marks_tile = best;
+        }
+        return marks_tile;
     }
 
     // Cells cut off from the rest of their tile join a neighbouring tile.
@@ -298,6 +318,7 @@ public:
         L.seams = seams_;
         L.bare_seams = bare_;
         L.marks_tile = marks_tile;
+        if (s_.marks.triangle && s_.marks.triangle->anchor >= 0) L.triangle_tile = tile_[size_t(s_.marks.triangle->anchor)];
         L.tooth_cells = k_;
         L.boxes.assign(size_t(rows_ * cols_), emptyBox());
         L.cells.assign(size_t(rows_ * cols_), 0);
@@ -357,7 +378,7 @@ TileLayout planTiles(const Scene& s, const std::vector<BoxMm>& attached, double 
             // The tiles split the box of everything: the tab's tile (it goes
             // with the marks) has fewer cells.
             Tiler t(s, rows, cols, everything, cell_boxes);
-            int32_t marks_tile = t.gatherMarks(marks);
+            int32_t marks_tile = t.gatherMarks(marks, s.marks.triangle ? s.marks.triangle->anchor : -1);
             t.makeTilesWhole();
             marks_tile = t.mergeSmallTiles(w, d, marks_tile, attached);
             t.teeth();
@@ -378,7 +399,23 @@ SceneParams tileParams(const Scene& whole, const TileLayout& L, int32_t tile) {
     p.tile_cells.assign(L.tile_of_cell.size(), 0);
     for (size_t idx = 0; idx < L.tile_of_cell.size(); ++idx) p.tile_cells[idx] = L.tile_of_cell[idx] == tile;
     p.tile_place = TilePlace{tile / L.cols, tile % L.cols, L.rows, L.cols};
-    if (tile != L.marks_tile) {
+    const bool notch_here = tile == L.marks_tile && whole.marks.notch;
+    const bool triangle_here = tile == L.triangle_tile && whole.marks.triangle;
+    if (!whole.marks.tab && (notch_here || triangle_here)) {
+        // Marks in the data: the model's own, not placed again on fewer cells.
+        Marks m;
+        if (notch_here) m.notch = whole.marks.notch;
+        if (triangle_here) {
+            m.triangle = whole.marks.triangle;
+            const size_t k = size_t(m.triangle->anchor);
+            m.triangle->anchor = int32_t(whole.grid.index(whole.col[k], whole.row[k]));
+        }
+        p.tile_marks = m;
+        return p;
+    }
+    // Marks in the data are the model's own (above) or none: a tile never
+    // places marks the model does not have.
+    if (tile != L.marks_tile || whole.params.marks.place == MarkPlace::Data) {
         const MarkPlace place = p.marks.place;
         p.marks = withoutMarks();
         p.marks.place = place;

@@ -18,8 +18,9 @@
 //     tile has teeth on its east and south sides and sockets on its west
 //     and north sides: a tile turned about cannot be put in. Teeth sit at a
 //     third and two thirds of a seam, clear of its ends;
-//   - the orientation marks (the notch, the triangle, the tab) stay whole in
-//     one tile; a tile that would fall apart gives its loose cells to a
+//   - the orientation marks (the tab, or the notch and the triangle in the
+//     data) each stay whole in one tile, drawn where the whole model has
+//     them; a tile that would fall apart gives its loose cells to a
 //     neighbour.
 //
 // The code (placeTileCode): each tile's place is pitted into its flat
@@ -50,7 +51,8 @@ struct TileLayout {
     int32_t teeth = 0;                  ///< dovetail teeth placed
     int32_t seams = 0;                  ///< pairs of neighbouring tiles
     int32_t bare_seams = 0;             ///< seams too short or too ragged for a tooth
-    int32_t marks_tile = -1;            ///< the tile carrying the orientation marks (-1: none)
+    int32_t marks_tile = -1;            ///< the tile carrying the orientation tab or the notch (-1: none)
+    int32_t triangle_tile = -1;         ///< marks in the data: the tile the triangle stands on (-1: none)
     int32_t tooth_cells = 1;            ///< k: a tooth's neck length in cells
 };
 
@@ -64,7 +66,8 @@ TileLayout planTiles(const Scene& whole, const std::vector<BoxMm>& attached, dou
 
 /// The parameters buildScene draws tile `tile` of `layout` with: the whole
 /// model's (its mapping, snap and marks), its cells only, its place; the
-/// orientation marks only on layout.marks_tile.
+/// orientation marks only on layout.marks_tile (and, marks in the data, the
+/// triangle on layout.triangle_tile), where the whole model has them.
 SceneParams tileParams(const Scene& whole, const TileLayout& layout, int32_t tile);
 
 /// Pits a tile Scene's code into its bottom (Scene::tile); buildScene calls
