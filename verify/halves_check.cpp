@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gen/model/features/bottom_hole_ring.h"
 #include "gen/model/features/halves.h"
 #include "gen/mesh/halves_mesh.h"
 #include "verify/detail/format.h"
@@ -14,17 +15,6 @@ namespace tsf {
 namespace {
 
 using detail::fmtMm;
-
-// Shoelace area (mm^2) of a hole ring as the mesher places it (snapped).
-double ringAreaMm2(const Scene& s, size_t h) {
-    const std::vector<PlanarPoint> ring = holeRing(s, h);
-    double twice = 0;
-    for (size_t n = 0; n < ring.size(); ++n) {
-        const Vec3 a = s.point(ring[n], 0), b = s.point(ring[(n + 1) % ring.size()], 0);
-        twice += a.x * b.y - b.x * a.y;
-    }
-    return std::fabs(twice) / 2;
-}
 
 // The triangles of a half in the model frame that are neither on its cut
 // face nor in a pin hole. `to_model` moves a printed vertex back.
@@ -110,8 +100,9 @@ HalvesCheckResult checkHalves(const Scene& s, const Mesh& whole, const Mesh& upp
     f.upper_volume_mm3 = signedVolume(upper);
     f.lower_volume_mm3 = signedVolume(lower);
     f.whole_volume_mm3 = signedVolume(whole);
-    const double straight = s.zMm(h.hole_depth_units), cone = s.zMm(h.hole_apex_units - h.hole_depth_units);
-    for (size_t n = 0; n < h.hole_centres.size(); ++n) f.holes_volume_mm3 += 2 * ringAreaMm2(s, n) * (straight + cone / 3);
+    for (size_t n = 0; n < h.hole_centres.size(); ++n)
+        f.holes_volume_mm3 +=
+            2 * bottomHoleVolumeMm3(s, BottomHole{holeRing(s, n), h.hole_centres[n], h.hole_depth_units, h.hole_apex_units});
     f.volume_error_mm3 = f.upper_volume_mm3 + f.lower_volume_mm3 - (f.whole_volume_mm3 - f.holes_volume_mm3);
     // Float sums over the model's triangles: a relative 1e-9 of the volume.
     const double volume_tolerance = 1e-9 * std::max(1.0, std::fabs(f.whole_volume_mm3));

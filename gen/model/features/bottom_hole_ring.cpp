@@ -20,4 +20,14 @@ std::vector<PlanarPoint> bottomHoleRing(const Scene& s, const LatticePoint& c, d
     return ring;
 }
 
+double bottomHoleVolumeMm3(const Scene& s, const BottomHole& h) {
+    double area = 0;
+    for (size_t n = 0; n < h.ring.size(); ++n) {
+        const Vec3 a = s.point(h.ring[n], 0), b = s.point(h.ring[(n + 1) % h.ring.size()], 0);
+        area += a.x * b.y - b.x * a.y;
+    }
+    area = std::fabs(area) / 2;
+    return area * s.zMm(h.depth_units) + area * s.zMm(h.apex_units - h.depth_units) / 3;
+}
+
 }  // namespace tsf

@@ -488,16 +488,6 @@ bool isTileCodeCell(const Scene& s, size_t k) {
 
 std::vector<BottomHole> tileBottomHoles(const Scene& s) { return s.tile ? s.tile->code_pits : std::vector<BottomHole>(); }
 
-double bottomHoleVolumeMm3(const Scene& s, const BottomHole& h) {
-    double area = 0;
-    for (size_t n = 0; n < h.ring.size(); ++n) {
-        const Vec3 a = s.point(h.ring[n], 0), b = s.point(h.ring[(n + 1) % h.ring.size()], 0);
-        area += a.x * b.y - b.x * a.y;
-    }
-    area = std::fabs(area) / 2;
-    return area * s.zMm(h.depth_units) + area * s.zMm(h.apex_units - h.depth_units) / 3;
-}
-
 std::string tileName(const TilePlace& p) {
     return "row " + std::to_string(p.row + 1) + ", column " + std::to_string(p.col + 1);
 }

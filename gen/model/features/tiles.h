@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "gen/model/scene.h"
+#include "gen/model/features/bottom_hole_ring.h"
 #include "gen/model/scene_attachments.h"
 
 namespace tsf {
@@ -80,9 +81,6 @@ bool isTileCodeCell(const Scene& scene, size_t k);
 
 /// The code pits of a tile Scene as cuts into its bottom; none otherwise.
 std::vector<BottomHole> tileBottomHoles(const Scene& scene);
-
-/// The volume of a cut into the bottom (its prism and cone), mm^3.
-double bottomHoleVolumeMm3(const Scene& scene, const BottomHole& hole);
 
 /// "row 2, column 3" for people (rows and columns from 1).
 std::string tileName(const TilePlace& place);
