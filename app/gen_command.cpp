@@ -460,11 +460,10 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
             facts.assembly = "The model prints in " + std::to_string(tiles->tiles.size()) + " tiles, in " +
                              std::to_string(tiles->layout.rows) + " rows from north to south and " +
                              std::to_string(tiles->layout.cols) +
-                             " columns from west to east. Each tile has teeth on its east and south edges that lock into "
-                             "the next tile when it is lowered onto them from above, so the tiles fit one way only. "
+                             " columns from west to east. Along most edges between tiles, teeth of one tile lock into "
+                             "the next when it is lowered onto them from above. "
                              "Under each tile, pits form an L: a corner pit, then one pit for each column number "
-                             "going east, and one for each row number going south. The orientation marks are on the "
-                             "tile at the model's south-west corner.";
+                             "going east, and one for each row number going south. " + tilesMarksSentence(*tiles);
         const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
         const auto [text_path, brf_path] = keyPaths(o);
         writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });

@@ -143,8 +143,8 @@ void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& print
     if (!(cell > 0))
         throw InputError(what + "; what stands beside the pillars (" + formatSignificant(fw, 4) + " x " + formatSignificant(fd, 4) +
                          " mm: the orientation tab, the scale, the legend) alone does not fit it: give a larger --bed");
-    throw InputError(what + "; give --cell " + formatSignificant(cell, 4) + " or less, or leave --cell out to fit the bed " +
-                     "(tsf does not split a model over several prints)");
+    throw InputError(what + "; give --cell " + formatSignificant(cell, 4) + " or less, or leave --cell out to fit the bed, " +
+                     "or add --tile to print it in tiles that each fit");
 }
 
 }  // namespace tsf::cli

@@ -81,6 +81,22 @@ void writeTiles(const VerifiedTiles& v, const std::string& output, const MeshWri
     summary.tiles["files"] = files;
 }
 
+std::string tilesMarksSentence(const VerifiedTiles& v) {
+    std::string tab, notch, triangle;
+    for (const VerifiedTile& t : v.tiles) {
+        const std::string name = "row " + std::to_string(t.scene.tile->place.row + 1) + ", column " +
+                                 std::to_string(t.scene.tile->place.col + 1);
+        if (t.scene.marks.tab) tab = name;
+        if (t.scene.marks.notch) notch = name;
+        if (t.scene.marks.triangle) triangle = name;
+    }
+    if (!tab.empty()) return "The orientation tab, with the notch and the triangle, is on the tile in " + tab + ".";
+    std::string out;
+    if (!notch.empty()) out += "The orientation notch is on the tile in " + notch + ".";
+    if (!triangle.empty()) out += std::string(out.empty() ? "" : " ") + "The orientation triangle is on the tile in " + triangle + ".";
+    return out.empty() ? "The model has no orientation marks." : out;
+}
+
 Mesh tilesApart(const VerifiedTiles& v) {
     constexpr double kGapMm = 8;
     Mesh m;

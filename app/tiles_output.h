@@ -21,6 +21,9 @@ void summarizeTiles(const VerifiedTiles& tiles, GenSummary& summary);
 /// Writes each tile to tilePath(output, ...) and lists them in the summary.
 void writeTiles(const VerifiedTiles& tiles, const std::string& output, const MeshWriteOptions& wo, GenSummary& summary);
 
+/// Which tiles carry the orientation marks, one sentence for the key.
+std::string tilesMarksSentence(const VerifiedTiles& tiles);
+
 /// The tiles at their places, drawn apart by a gap (an exploded view), for the preview.
 Mesh tilesApart(const VerifiedTiles& tiles);
 

@@ -119,7 +119,7 @@ TilesCheckResult checkTiles(const Scene& whole, const Mesh& whole_mesh, const st
     r.checks.push_back(makeCheck("tiles_teeth", "dovetail teeth along the seams", teeth_ok ? CheckStatus::Pass : CheckStatus::Warn,
                                  in.bare_seams,
                                  std::to_string(in.teeth) + " teeth on " + std::to_string(in.seams) + " seams" +
-                                     (teeth_ok ? "" : "; " + std::to_string(in.bare_seams) + " seams too short for one")));
+                                     (teeth_ok ? "" : "; " + std::to_string(in.bare_seams) + (in.bare_seams == 1 ? " seam" : " seams") + " too short for one")));
     return r;
 }
 

@@ -493,7 +493,18 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     // tops (tilted or not) rise to the floor, or on a mirrored model hold
     // their band; the tab and the scale keep clear of the legend's plate.
     placeLegend(s);
-    placeTab(s);
+    if (params.tile_marks && params.tile_marks->tab) {
+        // A tile carries the model's own tab (touched cells given as grid cell indices).
+        OrientationTab tab = *params.tile_marks->tab;
+        for (auto& [k, e] : tab.touched) {
+            if (k < 0 || size_t(k) >= n || s.kept_index[size_t(k)] < 0)
+                throw InputError("a tile does not hold the pillars its orientation tab stands against");
+            k = s.kept_index[size_t(k)];
+        }
+        s.marks.tab = std::move(tab);
+    } else {
+        placeTab(s);
+    }
     if (wantsTab(params) && !s.marks.tab && s.keptCount() > 0) {
         // No pillar on the west side to stand a tab against (placeTab's note
         // says why): the marks go in the data where they fit, as the thesis

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "gen/model/features/bottom_hole_ring.h"
 #include "gen/util/error.h"
@@ -14,6 +15,8 @@ namespace tsf {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Tiles that share fewer hexagon edges than this touch at a corner: no seam.
+constexpr int64_t kMinSeamEdges = 6;
 
 BoxMm emptyBox() { return {kInf, -kInf, kInf, -kInf}; }
 
@@ -118,13 +121,15 @@ public:
                 std::vector<int64_t> size(size_t(n), 0);
                 for (int32_t l : label)
                     if (l >= 0) ++size[size_t(l)];
-                // The largest piece stays; one containing the marks stays too.
-                int32_t keep = int32_t(std::max_element(size.begin(), size.end()) - size.begin());
+                // The largest piece stays, and every piece holding a mark
+                // (a mark never moves: if that leaves the tile in pieces, the
+                // tiling is refused and the next one tried).
+                std::vector<uint8_t> stays(size_t(n), 0);
+                stays[size_t(std::max_element(size.begin(), size.end()) - size.begin())] = 1;
                 for (size_t k = 0; k < s_.keptCount(); ++k)
-                    if (!protected_.empty() && protected_[k] && tile_[k] == t)
-                        keep = label[size_t(g.index(s_.col[k], s_.row[k]))];
+                    if (!protected_.empty() && protected_[k] && tile_[k] == t) stays[size_t(label[size_t(g.index(s_.col[k], s_.row[k]))])] = 1;
                 for (size_t k = 0; k < s_.keptCount(); ++k) {
-                    if (tile_[k] != t || label[size_t(g.index(s_.col[k], s_.row[k]))] == keep) continue;
+                    if (tile_[k] != t || stays[size_t(label[size_t(g.index(s_.col[k], s_.row[k]))])]) continue;
                     for (int e = 0; e < kHexCorners; ++e) {
                         const int32_t o = s_.keptNeighbour(k, e);
                         if (o >= 0 && tile_[size_t(o)] != t) {
@@ -184,6 +189,12 @@ public:
         return marks_tile;
     }
 
+    bool allTilesWhole() const {
+        for (int32_t t = 0; t < rows_ * cols_; ++t)
+            if (!oneTileWhole(t)) return false;
+        return true;
+    }
+
     bool oneTileWhole(int32_t t) const {
         const HexGrid& g = s_.grid;
         std::vector<uint8_t> mask(size_t(g.cellCount()), 0);
@@ -205,7 +216,7 @@ public:
     }
 
     // Teeth of the west tile into the east one, along the seam between them.
-    void verticalSeam(int32_t west, int32_t east) {
+    int32_t verticalSeam(int32_t west, int32_t east) {
         std::map<int32_t, int32_t> seam_col;  // lattice row -> first east cell touching the west tile
         for (size_t k = 0; k < s_.keptCount(); ++k) {
             if (tile_[k] != east) continue;
@@ -213,8 +224,7 @@ public:
             auto [at, fresh] = seam_col.emplace(s_.row[k], s_.col[k]);
             if (!fresh) at->second = std::min(at->second, s_.col[k]);
         }
-        if (seam_col.empty()) return;
-        ++seams_;
+        if (seam_col.empty()) return 0;
         const int32_t reach = 2 * k_;  // rows each side a tooth needs, its holders included
         std::vector<int32_t> centres;
         for (const auto& [r, c] : seam_col) {
@@ -222,7 +232,7 @@ public:
             for (int32_t dr = -reach; dr <= reach && room; ++dr) room = seam_col.count(r + dr) > 0;
             if (room) centres.push_back(r);
         }
-        placeTeeth(centres, [&](int32_t rt) {
+        return placeTeeth(centres, [&](int32_t rt) {
             std::vector<int32_t> cells;
             for (int32_t dr = -(2 * k_ - 1); dr <= 2 * k_ - 1; ++dr)
                 for (int32_t u = 0; u < 2 * k_; ++u) {
@@ -237,7 +247,7 @@ public:
     }
 
     // Teeth of the north tile into the south one.
-    void horizontalSeam(int32_t north, int32_t south) {
+    int32_t horizontalSeam(int32_t north, int32_t south) {
         std::map<int32_t, int32_t> first_row;  // lattice column -> first south row touching the north tile
         for (size_t k = 0; k < s_.keptCount(); ++k) {
             if (tile_[k] != south) continue;
@@ -246,8 +256,7 @@ public:
             auto [at, fresh] = first_row.emplace(s_.col[k], s_.row[k]);
             if (!fresh) at->second = std::min(at->second, s_.row[k]);
         }
-        if (first_row.empty()) return;
-        ++seams_;
+        if (first_row.empty()) return 0;
         const int32_t reach = 2 * k_ + 1;  // columns each side a tooth needs, its holders included
         std::vector<int32_t> centres;
         for (const auto& [c, r] : first_row) {
@@ -258,7 +267,7 @@ public:
             }
             if (room) centres.push_back(c);
         }
-        placeTeeth(centres, [&](int32_t ct) {
+        return placeTeeth(centres, [&](int32_t ct) {
             const int32_t r0 = first_row.at(ct);
             const int32_t it = 2 * ct + (r0 & 1);  // half pitches from the west
             std::vector<int32_t> cells;
@@ -280,10 +289,10 @@ public:
 
     // Up to two teeth, at a third and two thirds of the seam's candidate places.
     template <class Cells>
-    void placeTeeth(const std::vector<int32_t>& centres, Cells cellsAt, int32_t from_tile, int32_t into_tile) {
+    int32_t placeTeeth(const std::vector<int32_t>& centres, Cells cellsAt, int32_t from_tile, int32_t into_tile) {
         const int32_t before = teeth_;
         placeTeethOn(centres, cellsAt, from_tile, into_tile);
-        bare_ += teeth_ == before;
+        return teeth_ - before;
     }
     template <class Cells>
     void placeTeethOn(const std::vector<int32_t>& centres, Cells cellsAt, int32_t from_tile, int32_t into_tile) {
@@ -303,11 +312,31 @@ public:
         }
     }
 
+    // Every pair of tiles that share an edge is a seam (after merging, not
+    // only neighbours in the grid). A seam gets its teeth from the west (or
+    // north) tile where the grid says which that is, else whichever way
+    // finds room; a seam with none is counted bare.
     void teeth() {
-        for (int32_t r = 0; r < rows_; ++r)
-            for (int32_t c = 0; c + 1 < cols_; ++c) verticalSeam(r * cols_ + c, r * cols_ + c + 1);
-        for (int32_t r = 0; r + 1 < rows_; ++r)
-            for (int32_t c = 0; c < cols_; ++c) horizontalSeam(r * cols_ + c, (r + 1) * cols_ + c);
+        std::map<std::pair<int32_t, int32_t>, int64_t> pairs;  // -> hexagon edges in common (each counted twice)
+        for (size_t k = 0; k < s_.keptCount(); ++k)
+            for (int e = 0; e < kHexCorners; ++e) {
+                const int32_t o = s_.keptNeighbour(k, e);
+                if (o >= 0 && tile_[size_t(o)] != tile_[k])
+                    ++pairs[{std::min(tile_[k], tile_[size_t(o)]), std::max(tile_[k], tile_[size_t(o)])}];
+            }
+        for (const auto& [pair, twice] : pairs) {
+            const auto [a, b] = pair;
+            // A few edges where four tiles meet are a corner, not a seam.
+            if (twice / 2 < kMinSeamEdges) continue;
+            ++seams_;
+            const bool east = b == a + 1 && a / cols_ == b / cols_, south = b == a + cols_;
+            int32_t placed = east ? verticalSeam(a, b) : south ? horizontalSeam(a, b) : 0;
+            if (placed == 0 && !east && !south) placed = verticalSeam(a, b);
+            if (placed == 0 && !east && !south) placed = horizontalSeam(a, b);
+            if (placed == 0 && !east && !south) placed = verticalSeam(b, a);
+            if (placed == 0 && !east && !south) placed = horizontalSeam(b, a);
+            bare_ += placed == 0;
+        }
     }
 
     TileLayout layout(int32_t marks_tile, const std::vector<BoxMm>& attached) const {
@@ -371,6 +400,11 @@ TileLayout planTiles(const Scene& s, const std::vector<BoxMm>& attached, double 
     if (s.pitch_mm * 4 > std::min(w, d))
         throw InputError("--tile: cells " + formatSignificant(s.pitch_mm, 3) + " mm across are too large to tile a " +
                          formatSignificant(w, 4) + " x " + formatSignificant(d, 4) + " mm bed: a smaller --cell");
+    for (const BoxMm& b : attached)
+        if (b.x1 - b.x0 > w || b.y1 - b.y0 > d)
+            throw InputError("--tile: the orientation tab is " + formatSignificant(b.x1 - b.x0, 3) + " x " +
+                             formatSignificant(b.y1 - b.y0, 3) + " mm, larger than the " + formatSignificant(w, 4) + " x " +
+                             formatSignificant(d, 4) + " mm a tile may take on this bed: a larger --bed, or --marks-on data");
     for (int32_t n = min_cols * min_rows; n <= kMaxTileCount; ++n)
         for (int32_t cols = min_cols; cols <= n; ++cols) {
             if (n % cols != 0 || n / cols < min_rows) continue;
@@ -383,7 +417,7 @@ TileLayout planTiles(const Scene& s, const std::vector<BoxMm>& attached, double 
             marks_tile = t.mergeSmallTiles(w, d, marks_tile, attached);
             t.teeth();
             TileLayout L = t.layout(marks_tile, attached);
-            if (fits(L, w, d)) return L;
+            if (fits(L, w, d) && t.allTilesWhole()) return L;
         }
     throw InputError("--tile: no tiling into at most " + std::to_string(kMaxTileCount) + " tiles fits the " +
                      formatSignificant(w, 4) + " x " + formatSignificant(d, 4) + " mm bed: a smaller model (--width, --cell)");
@@ -399,6 +433,14 @@ SceneParams tileParams(const Scene& whole, const TileLayout& L, int32_t tile) {
     p.tile_cells.assign(L.tile_of_cell.size(), 0);
     for (size_t idx = 0; idx < L.tile_of_cell.size(); ++idx) p.tile_cells[idx] = L.tile_of_cell[idx] == tile;
     p.tile_place = TilePlace{tile / L.cols, tile % L.cols, L.rows, L.cols};
+    if (tile == L.marks_tile && whole.marks.tab) {
+        // The model's own tab, not one placed again against fewer pillars.
+        Marks m;
+        m.tab = whole.marks.tab;
+        for (auto& [k, e] : m.tab->touched) k = int32_t(whole.grid.index(whole.col[size_t(k)], whole.row[size_t(k)]));
+        p.tile_marks = m;
+        return p;
+    }
     const bool notch_here = tile == L.marks_tile && whole.marks.notch;
     const bool triangle_here = tile == L.triangle_tile && whole.marks.triangle;
     if (!whole.marks.tab && (notch_here || triangle_here)) {

@@ -16,8 +16,10 @@
 //     (k = kToothMm / pitch, at least 1): the neighbour's cells beside the
 //     neck hold the head, so the two tiles come apart only upwards, and each
 //     tile has teeth on its east and south sides and sockets on its west
-//     and north sides: a tile turned about cannot be put in. Teeth sit at a
-//     third and two thirds of a seam, clear of its ends;
+//     and north sides: a tile turned about cannot be put in. Two teeth on a
+//     seam with room for both, one otherwise; tiles meeting at a corner
+//     (fewer than six edges in common) have no seam, and a seam with no
+//     room for a tooth is counted bare (a warning of the assembly check);
 //   - the orientation marks (the tab, or the notch and the triangle in the
 //     data) each stay whole in one tile, drawn where the whole model has
 //     them; a tile that would fall apart gives its loose cells to a
