@@ -16,6 +16,10 @@ inline constexpr double kTileCodePitRadiusMm = 1.0;
 inline constexpr double kTileCodePitWallMm = 0.2;
 /// Material kept between a code pit's tip and the cell's top, mm.
 inline constexpr double kTileCodeRoofMm = 0.6;
+/// The least distance between two code pits' centres, mm: braille's dots
+/// stand 2.3-2.5 mm apart (US signage and the Marburg medium size), and a
+/// fingertip tells them apart.
+inline constexpr double kTileCodeSpacingMm = 2.4;
 /// The smallest pit a fingertip finds on the underside, mm (radius).
 inline constexpr double kTileCodeMinPitRadiusMm = 0.5;
 

@@ -474,12 +474,21 @@ void placeTileCode(Scene& s) {
     const int64_t wall = std::max<int64_t>(1, snapUnits(kTileCodePitWallMm, s.z_snap_mm));
     const int64_t apex = wall + std::max<int64_t>(1, int64_t(std::ceil(kHoleConeRatio * radius / s.z_snap_mm - 1e-9)));
     const int64_t roof = snapUnits(kTileCodeRoofMm, s.z_snap_mm);
-    // Pits a fingertip tells apart: at least 3 mm between centres.
-    const int32_t east_step = std::max(1, int32_t(std::ceil(3.0 / s.pitch_mm - 1e-9)));
+    // Pits a fingertip tells apart: at least kTileCodeSpacingMm between centres.
+    const int32_t east_step = std::max(1, int32_t(std::ceil(kTileCodeSpacingMm / s.pitch_mm - 1e-9)));
     const double row_mm = s.pitch_mm * kSqrt3 / 2 * s.y_scale;
-    const int32_t south_step = 2 * std::max(1, int32_t(std::ceil(3.0 / (2 * row_mm) - 1e-9)));
+    const int32_t south_step = 2 * std::max(1, int32_t(std::ceil(kTileCodeSpacingMm / (2 * row_mm) - 1e-9)));
+    // A pit under a cell inside the tile: its neighbours all there and
+    // holding data, so no outer wall or no-data pit comes near it.
+    const auto inside = [&](int32_t k) {
+        for (int e = 0; e < kHexCorners; ++e) {
+            const int32_t o = s.keptNeighbour(size_t(k), e);
+            if (o < 0 || s.kind[size_t(o)] != CellKind::Data) return false;
+        }
+        return true;
+    };
     const auto usable = [&](int32_t k) {
-        return k >= 0 && s.kind[size_t(k)] == CellKind::Data && s.bottom[size_t(k)] == 0 &&
+        return k >= 0 && inside(k) && s.kind[size_t(k)] == CellKind::Data && s.bottom[size_t(k)] == 0 &&
                (s.drawn_by_face.empty() || !s.drawn_by_face[size_t(k)]) && s.top[size_t(k)] - roof >= apex;
     };
     const auto codeAt = [&](size_t corner) {
