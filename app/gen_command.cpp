@@ -255,6 +255,16 @@ PrintCheckReport printCheck(const GenCommandOptions& o) {
     }
 }
 
+// A model (or piece) that fails its own checks is a bug in tsf: never hand
+// it to a printer. Prints the report and ends with kExitCheckFailed.
+[[noreturn]] void refuseUnverified(const ModelVerificationFailed& e, StageTimer& timer) {
+    timer.end();
+    std::cerr << e.report();
+    std::cerr << "tsf: the " << e.piece() << " failed verification; nothing was written. "
+                 "Please report this with the input file.\n";
+    throw CLI::RuntimeError(kExitCheckFailed);
+}
+
 void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     if (o.output.empty() && o.scad.empty())
         throw InputError("nothing to write: give -o MODEL.stl|.3mf|.off|.obj and/or --scad MODEL.scad");
@@ -336,12 +346,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     try {
         made = makeVerifiedModel(scene, rq, [&](const std::string& stage) { timer.begin(stage.c_str()); });
     } catch (const ModelVerificationFailed& e) {
-        // A model that fails its own checks is a bug in tsf: never hand it to a printer.
-        timer.end();
-        std::cerr << e.report();
-        std::cerr << "tsf: the " << e.piece() << " failed verification; nothing was written. "
-                     "Please report this with the input file.\n";
-        throw CLI::RuntimeError(kExitCheckFailed);
+        refuseUnverified(e, timer);
     }
     std::optional<VerifiedTiles> tiles;
     if (o.printer.tile) {
@@ -352,11 +357,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
             tiles = makeVerifiedTiles(field, scene, bed.width_mm - 2 * kBedMarginMm, bed.depth_mm - 2 * kBedMarginMm,
                                       trq, [&](const std::string& stage) { timer.begin(stage.c_str()); });
         } catch (const ModelVerificationFailed& e) {
-            timer.end();
-            std::cerr << e.report();
-            std::cerr << "tsf: the " << e.piece() << " failed verification; nothing was written. "
-                         "Please report this with the input file.\n";
-            throw CLI::RuntimeError(kExitCheckFailed);
+            refuseUnverified(e, timer);
         }
         if (tiles->tiles.size() == 1) {
             // It fits the bed as it is: one piece, as without --tile.
