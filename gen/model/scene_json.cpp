@@ -192,15 +192,26 @@ PlanarPoint pointFrom(const json& obj, const std::string& path, const char* key)
     return q;
 }
 
-Marks marksFrom(const json& j, const std::string& path) {
+// A mark's point lies on its model: within the grid's lattice box grown by
+// the box's own size on every side (a notch's mouth may open beyond the
+// outermost cells). Further out is no mark of this grid, and would make the
+// cells it is sought among unbounded.
+PlanarPoint markPointFrom(const json& obj, const std::string& path, const char* key, const HexGrid& g) {
+    const PlanarPoint q = pointFrom(obj, path, key);
+    const double w = 2.0 * g.cols + 2, d = 3.0 * g.rows + 2;  // the box in lattice units (hex_grid.h)
+    if (q.i < -w || q.i > 2 * w || q.j < -d || q.j > 2 * d) fail(join(path, key), "lies far outside the grid");
+    return q;
+}
+
+Marks marksFrom(const json& j, const std::string& path, const HexGrid& g) {
     Marks m;
     const json& notch = member(j, path, "notch");
     if (!notch.is_null()) {
         const std::string np = join(path, "notch");
         Notch n;
-        n.apex = pointFrom(notch, np, "apex");
-        n.mouth_a = pointFrom(notch, np, "mouth_a");
-        n.mouth_b = pointFrom(notch, np, "mouth_b");
+        n.apex = markPointFrom(notch, np, "apex", g);
+        n.mouth_a = markPointFrom(notch, np, "mouth_a", g);
+        n.mouth_b = markPointFrom(notch, np, "mouth_b", g);
         n.depth_mm = getNumber(notch, np, "depth_mm");
         n.width_mm = getNumber(notch, np, "width_mm");
         n.opening_deg = getNumber(notch, np, "opening_deg");
@@ -210,9 +221,9 @@ Marks marksFrom(const json& j, const std::string& path) {
     if (!tri.is_null()) {
         const std::string tp = join(path, "triangle");
         OrientationTriangle t;
-        t.corner = pointFrom(tri, tp, "corner");
-        t.east = pointFrom(tri, tp, "east");
-        t.north = pointFrom(tri, tp, "north");
+        t.corner = markPointFrom(tri, tp, "corner", g);
+        t.east = markPointFrom(tri, tp, "east", g);
+        t.north = markPointFrom(tri, tp, "north", g);
         t.leg_x_mm = getNumber(tri, tp, "leg_x_mm");
         t.leg_y_mm = getNumber(tri, tp, "leg_y_mm");
         t.raise_units = getInt(tri, tp, "raise_units");
@@ -495,6 +506,8 @@ Scene sceneFromJson(const json& j) {
         fail("grid", "a grid of " + std::to_string(s.grid.cellCount()) + " cells is larger than the " +
                          std::to_string(kMaxSceneJsonCells) + " a sidecar may describe");
     s.pitch_mm = getPositive(j, "", "pitch_mm");
+    // buildScene's smallest cell (scene_check.cpp): a smaller one is no model of ours.
+    if (!(s.pitch_mm >= 50 * kXYSnapMm)) fail("pitch_mm", "expected at least " + std::to_string(50 * kXYSnapMm) + " mm");
     if (version >= 8) {
         s.y_scale = getPositive(j, "", "y_scale");
         if (s.y_scale < 0.25 || s.y_scale > 4.0) fail("y_scale", "expected a stretch between 0.25 and 4");
@@ -538,7 +551,7 @@ Scene sceneFromJson(const json& j) {
         const json& one = member(j, "", "one_to_one");
         if (!one.is_boolean()) fail("one_to_one", std::string("expected true or false, found ") + typeName(one));
         s.one_to_one = one.get<bool>();
-        s.marks = marksFrom(member(j, "", "marks"), "marks");
+        s.marks = marksFrom(member(j, "", "marks"), "marks", s.grid);
     }
 
     const json& hull = getArray(j, "", "hull");

@@ -208,6 +208,28 @@ TEST(SceneJson, TheMarksFacesAndTheTiltedTopsAreRecordedAsBuiltAndReadAsRecorded
     }
 }
 
+// A sidecar's marks are placed on its own grid: a triangle or notch point far
+// outside it (an older sidecar builds the marks' faces again from them) and a
+// cell narrower than any model has are InputErrors, not an overflow.
+TEST(SceneJson, MarksFarOffTheGridAndTinyCellsAreInputErrors) {
+    const Scene s = tiltedMarkedScene(Bottom::Flat);
+    ASSERT_TRUE(s.marks.triangle.has_value());
+    nlohmann::json j = sceneToJson(s);
+    j["version"] = 4;  // faces rebuilt from the marks, as a fuzzer found
+    j.erase("faces");
+    for (const char* key : {"corner", "east", "north"}) {
+        auto far = j;
+        far["marks"]["triangle"][key][0] = 1e300;
+        expectError(far, std::string("marks.triangle.") + key + ": lies far outside the grid");
+        far = j;
+        far["marks"]["triangle"][key][1] = -4e9;
+        expectError(far, std::string("marks.triangle.") + key + ": lies far outside the grid");
+    }
+    auto tiny = j;
+    tiny["pitch_mm"] = 1e-300;
+    expectError(tiny, "pitch_mm: expected at least");
+}
+
 // The orientation tab (version 6) is recorded as placed and read as recorded:
 // the Scene read back meshes to the same solid; a tab that names a cell it
 // does not touch, or a corner away from its lattice point, is an InputError.

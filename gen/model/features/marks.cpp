@@ -399,9 +399,15 @@ std::vector<int64_t> outline(const Scene& s, const std::vector<int32_t>& cells, 
 std::vector<int32_t> triangleHost(const Scene& s, const std::vector<int32_t>& label, size_t anchor, const Xy& centre,
                                   double radius_mm, const Xy tri[3], double margin_mm) {
     std::vector<int32_t> host;
-    const int32_t reach = int32_t(std::ceil(radius_mm / (s.pitch_mm * 0.8))) + 2;
-    for (int32_t r = s.row[anchor] - reach; r <= s.row[anchor] + reach; ++r)
-        for (int32_t c = s.col[anchor] - reach; c <= s.col[anchor] + reach; ++c) {
+    // Rows and columns within reach, kept to the grid and its ring of outside
+    // cells (any cell beyond is as absent as the ring): a recorded triangle
+    // read from a file may be far larger than the grid.
+    const double reach = std::ceil(radius_mm / (s.pitch_mm * 0.8)) + 2;
+    const auto from = [&](int32_t at) { return int32_t(std::max(-1.0, double(at) - reach)); };
+    const auto to = [&](int32_t at, int32_t n) { return int32_t(std::min(double(n), double(at) + reach)); };
+    if (!(reach >= 0)) return host;
+    for (int32_t r = from(s.row[anchor]); r <= to(s.row[anchor], s.grid.rows); ++r)
+        for (int32_t c = from(s.col[anchor]); c <= to(s.col[anchor], s.grid.cols); ++c) {
             const int32_t o = s.keptAt(c, r);
             if (dist(centre, toMm(s, hexCentre(s.grid, c, r))) > radius_mm) continue;
             if (o < 0 || label[size_t(o)] != label[anchor]) return {};
