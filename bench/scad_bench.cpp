@@ -35,7 +35,7 @@
 #include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "verify/mesh_topology.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 #include "verify/readback.h"
 
 namespace {
@@ -102,7 +102,7 @@ void benchStrategy(benchmark::State& state, int side, tsf::ScadOptions::Strategy
         const tsf::Mesh mesh = tsf::readMesh(rq.output_path);
         triangles = mesh.triangleCount();
         const double v = tsf::signedVolume(mesh), v_direct = tsf::signedVolume(tsf::meshScene(scene));
-        const tsf::TriangleBvh caster(mesh);
+        const tsf::ColumnGrid caster(mesh);
         const tsf::ReadbackResult rb = tsf::readBack(mesh, scene, caster, {});
         const bool solid = tsf::analyzeTopology(mesh).isClosedOrientedManifold();
         const bool volume = std::fabs(v - v_direct) <= kVolumeRelTolerance * v_direct;

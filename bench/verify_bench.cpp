@@ -17,6 +17,7 @@
 #include "gen/model/scene.h"
 #include "verify/agreement.h"
 #include "verify/printability.h"
+#include "verify/column_grid.h"
 #include "verify/triangle_bvh.h"
 #include "verify/readback.h"
 #include "verify/solid_checks.h"
@@ -75,16 +76,22 @@ void BM_VerifyRayTree(benchmark::State& state) {
     label(state, m);
 }
 
+void BM_VerifyColumnGrid(benchmark::State& state) {
+    const Model& m = model(int(state.range(0)));
+    for (auto _ : state) benchmark::DoNotOptimize(std::make_unique<tsf::ColumnGrid>(m.mesh));
+    label(state, m);
+}
+
 void BM_VerifyReadback(benchmark::State& state) {
     const Model& m = model(int(state.range(0)));
-    const tsf::TriangleBvh caster(m.mesh);
+    const tsf::ColumnGrid caster(m.mesh);
     for (auto _ : state) benchmark::DoNotOptimize(tsf::readBack(m.mesh, m.scene, caster, {}));
     label(state, m);
 }
 
 void BM_VerifyPrintability(benchmark::State& state) {
     const Model& m = model(int(state.range(0)));
-    const tsf::TriangleBvh caster(m.mesh);
+    const tsf::ColumnGrid caster(m.mesh);
     for (auto _ : state) benchmark::DoNotOptimize(tsf::checkPrintability(m.mesh, true, caster, {}));
     label(state, m);
 }
@@ -117,6 +124,7 @@ void BM_VerifyModel(benchmark::State& state) {
 
 BENCHMARK(BM_VerifySolid)->Args({100, 0})->Args({100, 1})->Args({300, 0})->Args({300, 1})->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyRayTree)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
+BENCHMARK(BM_VerifyColumnGrid)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyReadback)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyPrintability)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyAgreement)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();

@@ -10,7 +10,7 @@
 #include "gen/util/number_format.h"
 
 namespace tsf {
-AttachmentReadbackResult readBackAttachments(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster,
+AttachmentReadbackResult readBackAttachments(const Mesh& mesh, const Scene& scene, const ColumnGrid& caster,
                                              size_t max_offenders) {
     AttachmentReadbackResult r;
     const std::vector<ProbeSet> sets = sceneProbes(scene);

@@ -18,7 +18,7 @@
 #include "gen/geometry/mesh.h"
 #include "gen/model/scene.h"
 #include "verify/report.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 
 namespace tsf {
 
@@ -29,7 +29,7 @@ struct AttachmentReadbackResult {
     std::vector<Stage> stages;
 };
 
-AttachmentReadbackResult readBackAttachments(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster,
+AttachmentReadbackResult readBackAttachments(const Mesh& mesh, const Scene& scene, const ColumnGrid& caster,
                                              size_t max_offenders = 10);
 
 }  // namespace tsf

@@ -15,6 +15,7 @@
 #include "verify/overhang.h"
 #include "verify/detail/flat_planes.h"
 #include "verify/detail/format.h"
+#include "verify/detail/workers.h"
 
 namespace tsf {
 namespace {
@@ -147,7 +148,7 @@ constexpr double kProbeOffsetMm = 1e-3;
 ///   - otherwise (the far side is a wall too: a slab, as thin everywhere) the
 ///     first width stands.
 /// nullopt when nothing was hit (within max_mm) or the wall is not drawn.
-std::optional<double> wallWidth(const TriangleBvh& caster, const Mesh& mesh, double sign, uint32_t t, const Vec3& at,
+std::optional<double> wallWidth(const ColumnGrid& caster, const Mesh& mesh, double sign, uint32_t t, const Vec3& at,
                                 const Vec3& n, bool material, const PrintabilityOptions& o,
                                 double max_mm = std::numeric_limits<double>::infinity()) {
     const Vec3 dir = material ? Vec3{-n.x, -n.y, -n.z} : n;
@@ -211,7 +212,7 @@ Check thinnest(const Mesh& mesh, const char* id, const char* title, std::vector<
 
 }  // namespace
 
-PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const TriangleBvh& caster,
+PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const ColumnGrid& caster,
                                      const PrintabilityOptions& o) {
     PrintabilityResult r;
     PrintabilityFigures& f = r.figures;
@@ -234,7 +235,7 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
         struct Samples {
             std::vector<Sample> walls, gaps, slabs;
         };
-        const unsigned workers = TriangleBvh::workerCount(0);
+        const unsigned workers = detail::workerCount(0);
         std::vector<Samples> parts(workers);
         auto measure = [&](unsigned w) {
             Samples& out = parts[w];

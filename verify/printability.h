@@ -43,7 +43,7 @@
 #include <vector>
 
 #include "gen/geometry/mesh.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 #include "verify/report.h"
 
 namespace tsf {
@@ -67,7 +67,7 @@ struct PrintabilityResult {
 
 /// `closed_oriented`: the solid checks found the mesh closed, manifold and
 /// consistently oriented (see SolidResult); `caster` is built on `mesh`.
-PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const TriangleBvh& caster,
+PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, const ColumnGrid& caster,
                                      const PrintabilityOptions& options);
 
 }  // namespace tsf

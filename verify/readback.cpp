@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "verify/detail/format.h"
+#include "verify/detail/workers.h"
 #include "gen/model/attachments.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
@@ -51,7 +52,7 @@ std::string describe(const CellReadback& c) {
 
 }  // namespace
 
-ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster, const ReadbackOptions& options) {
+ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const ColumnGrid& caster, const ReadbackOptions& options) {
     ReadbackResult r;
     ReadbackFigures& f = r.figures;
     const auto t0 = std::chrono::steady_clock::now();
@@ -149,7 +150,7 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh&
         double sum_err = 0, sum_verr = 0, max_err = 0, max_verr = 0;
         std::vector<Ranked> worst;  // heap: front = the least bad kept
     };
-    const unsigned workers = TriangleBvh::workerCount(0);
+    const unsigned workers = detail::workerCount(0);
     std::vector<Part> parts(workers);
     const size_t cells = scene.keptCount();
     auto work = [&](unsigned w) {

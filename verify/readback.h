@@ -26,7 +26,7 @@
 
 #include "gen/geometry/mesh.h"
 #include "gen/model/scene.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 #include "verify/report.h"
 
 namespace tsf {
@@ -48,6 +48,6 @@ struct ReadbackResult {
 
 /// Reads every kept cell's heights back from `mesh` through `caster` (built on
 /// the same mesh). Empty Scene: nothing to check, both checks pass.
-ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster, const ReadbackOptions& options);
+ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const ColumnGrid& caster, const ReadbackOptions& options);
 
 }  // namespace tsf

@@ -228,25 +228,25 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
     const bool finite = topo.nonfinite_vertices.empty();
     detail::GeometricFindings g;
     std::string exact_fallback_reason;  // non-empty: the filtered kernel failed and the exact one was used
-    std::unique_ptr<TriangleBvh> own_bvh;
+    std::unique_ptr<ColumnGrid> own_grid;
     if (finite) {
-        const TriangleBvh* bvh = options.bvh;
-        if (!bvh && options.self_intersections) {
-            own_bvh = std::make_unique<TriangleBvh>(mesh);
-            bvh = own_bvh.get();
-            r.stages.push_back({"bvh", own_bvh->buildMs()});
+        const ColumnGrid* grid = options.grid;
+        if (!grid && options.self_intersections) {
+            own_grid = std::make_unique<ColumnGrid>(mesh);
+            grid = own_grid.get();
+            r.stages.push_back({"grid", own_grid->buildMs()});
         }
         if (options.exact) {
-            g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections, bvh);
+            g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections, grid);
         } else {
             try {
-                g = detail::geometricChecksEpick(mesh, topo, max_off, options.self_intersections, bvh);
+                g = detail::geometricChecksEpick(mesh, topo, max_off, options.self_intersections, grid);
             } catch (const std::exception& e) {
                 // The filtered kernel constructs intersection points in doubles;
                 // on near-degenerate contacts (a corner touching a face) CGAL's
                 // own preconditions can fail there. The exact kernel decides
                 // those cases, so the check is redone with it rather than lost.
-                g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections, bvh);
+                g = detail::geometricChecksEpeck(mesh, topo, max_off, options.self_intersections, grid);
                 exact_fallback_reason = e.what();
                 exact_fallback_reason = exact_fallback_reason.substr(0, exact_fallback_reason.find('\n'));
             }
@@ -334,7 +334,7 @@ SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options) {
     }
 
     r.closed_oriented_manifold = topo.isClosedOrientedManifold();
-    r.bvh = std::move(own_bvh);
+    r.grid = std::move(own_grid);
     return r;
 }
 

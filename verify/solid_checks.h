@@ -14,7 +14,7 @@
 //   geometry with CGAL (Epick by default; Epeck when exact):
 //     [degenerate_faces]       no triangle with a repeated index or three collinear points
 //     [self_intersections]     no two triangles meeting other than at a shared vertex or edge
-//                              (broad phase: the verifier's tree, verify/triangle_bvh.h)
+//                              (broad phase: the verifier's column grid, verify/column_grid.h)
 //     [outward_orientation]    every component has positive volume (needs a closed,
 //                              consistently oriented manifold; else skipped)
 // Positions are millimetres in the model frame; offenders carry mm positions.
@@ -26,7 +26,7 @@
 
 #include "gen/geometry/mesh.h"
 #include "verify/report.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 
 namespace tsf {
 
@@ -39,11 +39,11 @@ struct SolidOptions {
     /// [single_piece] passes with several pieces (noted): a part of a
     /// multi-part model that stands on another part (verify/verify_parts.h).
     bool pieces_allowed = false;
-    /// The verifier's tree of this mesh, when the caller has one; else
-    /// checkSolid builds one for the self-intersection test (after the
+    /// The verifier's column grid of this mesh, when the caller has one;
+    /// else checkSolid builds one for the self-intersection test (after the
     /// topology, whose memory is free by then) and hands it back in
-    /// SolidResult::bvh.
-    const TriangleBvh* bvh = nullptr;
+    /// SolidResult::grid.
+    const ColumnGrid* grid = nullptr;
 };
 
 struct SolidResult {
@@ -51,9 +51,9 @@ struct SolidResult {
     std::vector<Check> checks;
     std::vector<Stage> stages;
     bool closed_oriented_manifold = false;  ///< closed, manifold, consistently oriented, finite
-    /// The tree checkSolid built, if it built one (for the ray checks). It
+    /// The grid checkSolid built, if it built one (for the ray checks). It
     /// reads the checked mesh in place: keep that mesh alive while using it.
-    std::unique_ptr<TriangleBvh> bvh;
+    std::unique_ptr<ColumnGrid> grid;
 };
 
 SolidResult checkSolid(const Mesh& mesh, const SolidOptions& options);

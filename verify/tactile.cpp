@@ -13,7 +13,8 @@
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
-#include "verify/triangle_bvh.h"
+#include "verify/height_field.h"
+#include "verify/detail/workers.h"
 
 namespace tsf {
 namespace {
@@ -168,18 +169,13 @@ void checkPointsAndEdges(const Mesh& m, const TactileOptions& o, TactileResult& 
     r.stages.push_back({"tactile_angles", ms});
 }
 
-// The top surface sampled on a grid from above; -inf where a ray meets nothing.
-struct HeightMap {
-    double x0 = 0, y0 = 0, step = 0.5;
-    int nx = 0, ny = 0;
-    std::vector<double> z;
-    double at(int i, int j) const { return z[size_t(j) * size_t(nx) + size_t(i)]; }
-};
+// The top surface sampled on a grid (verify/height_field.h); -inf where nothing is over a sample.
+using HeightMap = TopHeightField;
 
 // Runs fn(row) for every row on the verifier's worker threads.
 template <class Fn>
 void forRows(int rows, Fn fn) {
-    const unsigned workers = TriangleBvh::workerCount(0);
+    const unsigned workers = detail::workerCount(0);
     std::vector<std::thread> pool;
     for (unsigned w = 1; w < workers; ++w)
         pool.emplace_back([&, w] {
@@ -288,7 +284,7 @@ Unreached unreachedPlaces(const HeightMap& h, const std::vector<double>& reach) 
     return u;
 }
 
-void checkFingerReach(const Mesh& m, const TriangleBvh& caster, const TactileOptions& o, TactileResult& r) {
+void checkFingerReach(const Mesh& m, const TactileOptions& o, TactileResult& r) {
     const auto t0 = std::chrono::steady_clock::now();
     Check c{"tactile_finger_reach", "a fingertip reaches the bottom of every pit and valley"};
     c.unit = "mm";
@@ -306,14 +302,7 @@ void checkFingerReach(const Mesh& m, const TriangleBvh& caster, const TactileOpt
         h.y0 = b.min.y - margin;
         h.nx = int(std::ceil(w / h.step)) + 1;
         h.ny = int(std::ceil(d / h.step)) + 1;
-        h.z.assign(size_t(h.nx) * size_t(h.ny), -std::numeric_limits<double>::infinity());
-        const double above = b.max.z + 1.0;
-        forRows(h.ny, [&](int j) {
-            for (int i = 0; i < h.nx; ++i) {
-                const auto hit = caster.firstHit({h.x0 + i * h.step, h.y0 + j * h.step, above}, {0, 0, -1});
-                if (hit) h.z[size_t(j) * size_t(h.nx) + size_t(i)] = hit->point_mm.z;
-            }
-        });
+        rasteriseTop(m, h);
         const Unreached adult = unreachedPlaces(h, reachedBy(h, kAdultFingertipRadiusMm, b.min.z));
         const Unreached child = unreachedPlaces(h, reachedBy(h, kChildFingertipRadiusMm, b.min.z));
         c.count = adult.places;
@@ -537,10 +526,10 @@ const std::vector<TactileThreshold>& tactileThresholds() {
     return table;
 }
 
-TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TriangleBvh& caster, const TactileOptions& options) {
+TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOptions& options) {
     TactileResult r;
     checkPointsAndEdges(mesh, options, r);
-    checkFingerReach(mesh, caster, options, r);
+    checkFingerReach(mesh, options, r);
     if (scene) {
         checkMarks(*scene, options, r);
         checkPillars(*scene, options, r);

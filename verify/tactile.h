@@ -37,7 +37,6 @@
 namespace tsf {
 
 struct Scene;
-class TriangleBvh;
 
 /// One threshold of the tactile checks and where its number comes from.
 struct TactileThreshold {
@@ -92,6 +91,6 @@ struct TactileResult {
 /// Runs the tactile checks on `mesh` (closed or not: a check that needs a
 /// closed, oriented mesh says so and is skipped). `scene` (nullable) adds
 /// the marks check.
-TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TriangleBvh& caster, const TactileOptions& options);
+TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOptions& options);
 
 }  // namespace tsf

@@ -21,7 +21,7 @@ struct Measured {
 
 }  // namespace
 
-TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster) {
+TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const ColumnGrid& caster) {
     TiltReadbackResult r;
     if (scene.shapes.cells_tilted == 0) return r;
     const auto t0 = std::chrono::steady_clock::now();

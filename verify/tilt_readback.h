@@ -22,7 +22,7 @@
 
 #include "gen/geometry/mesh.h"
 #include "gen/model/scene.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 #include "verify/report.h"
 
 namespace tsf {
@@ -35,6 +35,6 @@ struct TiltReadbackResult {
 
 /// Reads the tilt of every tilted cell back from `mesh` through `caster`.
 /// A Scene without tilted cells gives no check.
-TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const TriangleBvh& caster);
+TiltReadbackResult readBackTilt(const Mesh& mesh, const Scene& scene, const ColumnGrid& caster);
 
 }  // namespace tsf

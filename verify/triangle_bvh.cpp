@@ -15,6 +15,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "verify/detail/ray_triangle.h"
+#include "verify/detail/workers.h"
+
 namespace tsf {
 namespace {
 
@@ -39,7 +42,9 @@ constexpr size_t kParallelBuildMin = 10000;
 constexpr uint32_t kNone = UINT32_MAX;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-using V3 = std::array<double, 3>;
+using detail::hitTriangle;
+using detail::RaySetup;
+using detail::V3;
 
 struct Box {
     V3 lo{kInf, kInf, kInf};
@@ -296,29 +301,6 @@ struct SubtreeBuilder {
     }
 };
 
-// Watertight ray/triangle test. kx, ky, kz and the shear (sx, sy, sz) are per ray.
-struct RaySetup {
-    V3 o, d;
-    int kx, ky, kz;
-    double sx, sy, sz;
-};
-
-RaySetup setup(const V3& o, const V3& d) {
-    RaySetup r{o, d, 0, 0, 0, 0, 0, 0};
-    int kz = 0;
-    for (int k = 1; k < 3; ++k)
-        if (std::fabs(d[k]) > std::fabs(d[kz])) kz = k;
-    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (d[kz] < 0) std::swap(kx, ky);  // keep the winding of the triangles
-    r.kx = kx;
-    r.ky = ky;
-    r.kz = kz;
-    r.sx = d[kx] / d[kz];
-    r.sy = d[ky] / d[kz];
-    r.sz = 1.0 / d[kz];
-    return r;
-}
-
 // A ray as the box test wants it: the reciprocal of each direction
 // component (a multiplication per slab instead of a division), and which
 // components are zero (those slabs are a comparison of the origin, exact).
@@ -355,35 +337,6 @@ bool rayBox(const BoxRay& r, const FBox& b, double t_max, double& t_enter) {
     }
     t_enter = t0;
     return true;
-}
-
-// Ray parameter of the hit, or a negative number for no hit; on a hit, the
-// hit point from the triangle's own corners (barycentric), kept inside the
-// triangle's bounding box so that a hit on a face parallel to an axis plane
-// has exactly that face's coordinate (a top at z = 12.4 reads 12.4, not
-// 12.4 plus the rounding of origin + t * direction).
-double hitTriangle(const RaySetup& r, const V3& a, const V3& b, const V3& c, double t_max, V3& point) {
-    const V3 A{a[0] - r.o[0], a[1] - r.o[1], a[2] - r.o[2]};
-    const V3 B{b[0] - r.o[0], b[1] - r.o[1], b[2] - r.o[2]};
-    const V3 C{c[0] - r.o[0], c[1] - r.o[1], c[2] - r.o[2]};
-    const double Ax = A[r.kx] - r.sx * A[r.kz], Ay = A[r.ky] - r.sy * A[r.kz];
-    const double Bx = B[r.kx] - r.sx * B[r.kz], By = B[r.ky] - r.sy * B[r.kz];
-    const double Cx = C[r.kx] - r.sx * C[r.kz], Cy = C[r.ky] - r.sy * C[r.kz];
-    const double U = Cx * By - Cy * Bx;
-    const double V = Ax * Cy - Ay * Cx;
-    const double W = Bx * Ay - By * Ax;
-    if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return -1.0;
-    const double det = U + V + W;
-    if (det == 0.0) return -1.0;  // the ray lies in the triangle's plane, or the triangle has no area
-    const double T = U * (r.sz * A[r.kz]) + V * (r.sz * B[r.kz]) + W * (r.sz * C[r.kz]);
-    const double tt = T / det;
-    if (!(tt >= 0.0) || tt > t_max) return -1.0;
-    for (int k = 0; k < 3; ++k) {
-        const double p = (U * a[k] + V * b[k] + W * c[k]) / det;
-        const double lo = std::min({a[k], b[k], c[k]}), hi = std::max({a[k], b[k], c[k]});
-        point[k] = std::clamp(p, lo, hi);
-    }
-    return tt;
 }
 
 V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -613,10 +566,7 @@ size_t TriangleBvh::triangleCount() const { return impl_->mesh_index.size(); }
 int TriangleBvh::depth() const { return impl_->depth; }
 double TriangleBvh::buildMs() const { return impl_->build_ms; }
 
-unsigned TriangleBvh::workerCount(unsigned workers) {
-    if (workers > 0) return workers;
-    return std::max(1u, std::thread::hardware_concurrency());
-}
+unsigned TriangleBvh::workerCount(unsigned workers) { return detail::workerCount(workers); }
 
 std::optional<RayHit> TriangleBvh::firstHit(const Vec3& origin, const Vec3& direction, int64_t skip,
                                             double max_distance_mm) const {
@@ -624,7 +574,7 @@ std::optional<RayHit> TriangleBvh::firstHit(const Vec3& origin, const Vec3& dire
     if (!im.nodes || !finite(origin) || !finite(direction)) return std::nullopt;
     if (direction.x == 0 && direction.y == 0 && direction.z == 0) return std::nullopt;
     const V3 o{origin.x, origin.y, origin.z}, d{direction.x, direction.y, direction.z};
-    const RaySetup r = setup(o, d);
+    const RaySetup r = detail::raySetup(o, d);
     const uint32_t skip_slot = (skip >= 0 && size_t(skip) < im.slot_of.size()) ? im.slot_of[size_t(skip)] : kNone;
 
     const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);

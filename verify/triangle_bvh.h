@@ -48,14 +48,9 @@
 #include <optional>
 
 #include "gen/geometry/mesh.h"
+#include "verify/ray_hit.h"
 
 namespace tsf {
-
-struct RayHit {
-    double distance_mm = 0;  ///< from the origin to the hit
-    Vec3 point_mm;           ///< the hit
-    uint32_t triangle = 0;   ///< mesh triangle index
-};
 
 struct ClosestPoint {
     double distance_mm = 0;  ///< +inf when the tree is empty or the query is not finite

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <memory>
 
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 #include "verify/readback.h"
 #include "verify/attachment_readback.h"
 #include "verify/solid_checks.h"
@@ -37,14 +37,14 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
     report.mesh.name = options.name.empty() ? "(in memory)" : options.name;
     report.mesh.read_notes = options.read_notes;
     const bool closed_oriented = solid.closed_oriented_manifold;
-    // One tree for every check that needs one: the self-intersections' broad
-    // phase (checkSolid built it after the topology, so the two never hold
-    // memory at once), the values read back and the printability rays.
-    std::unique_ptr<TriangleBvh> caster = std::move(solid.bvh);
+    // One column grid for every check that needs one: the self-intersections'
+    // broad phase (checkSolid built it after the topology, so the two never
+    // hold memory at once), the values read back and the printability rays.
+    std::unique_ptr<ColumnGrid> caster = std::move(solid.grid);
     append(report, std::move(solid));
     if (!caster && (scene || options.printability || options.tactile)) {
-        caster = std::make_unique<TriangleBvh>(mesh);
-        report.stages.push_back({"bvh", caster->buildMs()});
+        caster = std::make_unique<ColumnGrid>(mesh);
+        report.stages.push_back({"grid", caster->buildMs()});
     }
 
     if (scene) {
@@ -90,7 +90,7 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
         to.layer_mm = options.layer_mm;
         to.sample_mm = options.tactile_sample_mm;
         to.nozzle_mm = options.nozzle_mm;
-        TactileResult tr = checkTactile(mesh, scene, *caster, to);
+        TactileResult tr = checkTactile(mesh, scene, to);
         if (options.tactile_as_warnings)
             for (Check& c : tr.checks)
                 if (c.status == CheckStatus::Fail) {

@@ -7,7 +7,7 @@
 #include "verify/attachment_readback.h"
 #include "verify/readback.h"
 #include "verify/tilt_readback.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 
 namespace tsf {
 namespace {
@@ -74,8 +74,8 @@ PartsVerifyReport verifyParts(const std::vector<MeshPart>& parts, const Scene* s
     }
     append(a, checkAssembly(parts, solid, options.max_offenders));
     if (scene) {
-        TriangleBvh caster(joined);
-        a.stages.push_back({"bvh", caster.buildMs()});
+        ColumnGrid caster(joined);
+        a.stages.push_back({"grid", caster.buildMs()});
         ReadbackOptions ro;
         ro.height_tolerance_mm = options.height_tolerance_mm;
         ro.max_offenders = options.max_offenders;

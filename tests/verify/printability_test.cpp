@@ -5,13 +5,13 @@
 
 #include "tests/verify/verify_test_support.h"
 #include "verify/printability.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 
 namespace tsf {
 namespace {
 
 PrintabilityResult run(const Mesh& m, PrintabilityOptions o = {}, bool closed = true) {
-    const TriangleBvh caster(m);
+    const ColumnGrid caster(m);
     return checkPrintability(m, closed, caster, o);
 }
 

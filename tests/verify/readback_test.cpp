@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "tests/verify/verify_test_support.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 #include "verify/readback.h"
 #include "gen/model/build_scene.h"
 
@@ -15,7 +15,7 @@ namespace tsf {
 namespace {
 
 ReadbackResult readBackModel(const Mesh& mesh, const Scene& scene, ReadbackOptions o = {}) {
-    const TriangleBvh caster(mesh);
+    const ColumnGrid caster(mesh);
     return readBack(mesh, scene, caster, o);
 }
 

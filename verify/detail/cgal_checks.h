@@ -14,7 +14,7 @@
 #include "verify/mesh_topology.h"
 
 namespace tsf {
-class TriangleBvh;
+class ColumnGrid;
 }
 
 namespace tsf::detail {
@@ -51,12 +51,12 @@ struct GeometricFindings {
 /// topo's out-of-range or index-degenerate lists). Requires every position to
 /// be finite (topo.nonfinite_vertices empty).
 /// self_intersections = false skips the self-intersection test (the slowest
-/// part); mesh_built stays false. With the mesh's tree (`bvh`, built from
-/// the same mesh) a closed, manifold, consistently oriented soup is tested
-/// directly: the tree's overlapping boxes, then CGAL's exact predicates on
-/// those pairs only, on every core with the filtered kernel (the lazy exact
+/// part); mesh_built stays false. With the mesh's column grid (`grid`,
+/// built from the same mesh) a closed, manifold, consistently oriented soup
+/// is tested directly: the grid's candidate pairs, then CGAL's exact
+/// predicates on those pairs only, on every core with the filtered kernel (the lazy exact
 /// numbers of Epeck are not shared across threads). Otherwise, or without a
-/// tree, CGAL's PMP::self_intersections runs on a Surface_mesh of the soup,
+/// grid, CGAL's PMP::self_intersections runs on a Surface_mesh of the soup,
 /// repaired by orient_polygon_soup when needed. Both find the same pairs.
 /// A point (mm) on the intersection of mesh triangles a and b, to locate a
 /// pair that intersects; always constructed with the exact kernel (the
@@ -65,8 +65,8 @@ struct GeometricFindings {
 Vec3 intersectionPoint(const Mesh& mesh, uint32_t a, uint32_t b);
 
 GeometricFindings geometricChecksEpick(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
-                                       bool self_intersections = true, const TriangleBvh* bvh = nullptr);
+                                       bool self_intersections = true, const ColumnGrid* grid = nullptr);
 GeometricFindings geometricChecksEpeck(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
-                                       bool self_intersections = true, const TriangleBvh* bvh = nullptr);
+                                       bool self_intersections = true, const ColumnGrid* grid = nullptr);
 
 }  // namespace tsf::detail

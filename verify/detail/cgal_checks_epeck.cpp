@@ -37,10 +37,10 @@ Vec3 intersectionPoint(const Mesh& mesh, uint32_t ta, uint32_t tb) {
 }
 
 GeometricFindings geometricChecksEpeck(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
-                                        bool self_intersections, const TriangleBvh* bvh) {
+                                        bool self_intersections, const ColumnGrid* grid) {
     // One thread: Epeck's lazy exact numbers are reference-counted objects
     // that the self-intersection workers would share.
-    return geometricChecks<CGAL::Exact_predicates_exact_constructions_kernel>(mesh, topo, max_pairs, self_intersections, bvh, 1);
+    return geometricChecks<CGAL::Exact_predicates_exact_constructions_kernel>(mesh, topo, max_pairs, self_intersections, grid, 1);
 }
 
 }  // namespace tsf::detail

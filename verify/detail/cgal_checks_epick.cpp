@@ -6,8 +6,8 @@
 namespace tsf::detail {
 
 GeometricFindings geometricChecksEpick(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs,
-                                        bool self_intersections, const TriangleBvh* bvh) {
-    return geometricChecks<CGAL::Exact_predicates_inexact_constructions_kernel>(mesh, topo, max_pairs, self_intersections, bvh, 0);
+                                        bool self_intersections, const ColumnGrid* grid) {
+    return geometricChecks<CGAL::Exact_predicates_inexact_constructions_kernel>(mesh, topo, max_pairs, self_intersections, grid, 0);
 }
 
 }  // namespace tsf::detail

@@ -18,7 +18,8 @@
 
 #include "verify/detail/cgal_checks.h"
 #include "verify/detail/flat_planes.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
+#include "verify/detail/workers.h"
 
 // On near-degenerate contacts CGAL's preconditions fail in the filtered
 // kernel and throw; solid_checks.cpp catches that and redoes the check with
@@ -115,7 +116,7 @@ bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::ve
 
 template <class K>
 GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, size_t max_pairs, bool self_intersections,
-                                  const TriangleBvh* bvh, unsigned workers) {
+                                  const ColumnGrid* grid, unsigned workers) {
     using P = typename K::Point_3;
     using SM = CGAL::Surface_mesh<P>;
     namespace PMP = CGAL::Polygon_mesh_processing;
@@ -148,7 +149,7 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
         const bool valid_soup =
             topo.nonmanifold_edges.empty() && topo.misoriented_edges.empty() && topo.nonmanifold_vertices.empty();
         std::vector<std::pair<uint32_t, uint32_t>> ids;  // intersecting pairs, original ids, first < second
-        if (valid_soup && bvh) {
+        if (valid_soup && grid) {
             // Broad phase: the pairs whose boxes overlap, from the verifier's
             // tree; exact predicates on those only, on `workers` threads.
             // Triangles with collinear corners are left out, as CGAL leaves
@@ -161,8 +162,8 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
                     const auto& q = mesh.triangles[t];
                     plane[t] = flat::planeCode(mesh.positions[q[0]], mesh.positions[q[1]], mesh.positions[q[2]]);
                 }
-            std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found(TriangleBvh::workerCount(workers));
-            bvh->forEachOverlappingPair(
+            std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found(detail::workerCount(workers));
+            grid->forEachOverlappingPair(
                 [&](unsigned w, uint32_t a, uint32_t b) {
                     if (!tested[a] || !tested[b]) return;
                     if (trianglesMeet<K>(points, mesh.positions, mesh.triangles[a], mesh.triangles[b], plane[a],

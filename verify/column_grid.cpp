@@ -1,0 +1,363 @@
+// ColumnGrid: footprints row by row, a counting build, pairs in their first
+// common column, rays by a grid walk. See column_grid.h.
+#include "verify/column_grid.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <thread>
+
+#include "verify/detail/ray_triangle.h"
+#include "verify/detail/workers.h"
+
+namespace tsf {
+namespace {
+
+using detail::V3;
+
+constexpr uint32_t kNone = UINT32_MAX;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// At most this many columns a side: a grid of 4096 x 4096 is 64 MB of
+// column starts; finer columns would hold less than a triangle each on any
+// model the verifier can hold.
+constexpr int32_t kMaxSide = 4096;
+// Footprints are widened by this share of the model's size (see the header).
+constexpr double kMarginShare = 1e-6;
+// Columns a worker takes at a time in the pair walk.
+constexpr uint32_t kColumnsPerTask = 256;
+
+bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// The nearest float at or below (above) d: a float range holds the double one.
+float floatDown(double d) {
+    if (d < -double(std::numeric_limits<float>::max())) return -std::numeric_limits<float>::infinity();
+    float f = float(d);
+    if (double(f) > d) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+}
+float floatUp(double d) {
+    if (d > double(std::numeric_limits<float>::max())) return std::numeric_limits<float>::infinity();
+    float f = float(d);
+    if (double(f) < d) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+}
+
+struct Box3 {
+    double lo[3], hi[3];
+};
+
+}  // namespace
+
+int32_t ColumnGrid::binX(double x) const {
+    const double u = (x - x0_) * inv_x_;  // monotone in x: so is the column
+    if (!(u > 0)) return 0;
+    return u >= double(nx_) ? nx_ - 1 : int32_t(u);
+}
+
+int32_t ColumnGrid::binY(double y) const {
+    const double u = (y - y0_) * inv_y_;
+    if (!(u > 0)) return 0;
+    return u >= double(ny_) ? ny_ - 1 : int32_t(u);
+}
+
+void ColumnGrid::rowRange(uint32_t t, int32_t& r0, int32_t& r1) const {
+    const auto& q = triangles_[t];
+    const double lo = std::min({positions_[q[0]].y, positions_[q[1]].y, positions_[q[2]].y});
+    const double hi = std::max({positions_[q[0]].y, positions_[q[1]].y, positions_[q[2]].y});
+    r0 = binY(lo - margin_);
+    r1 = binY(hi + margin_);
+}
+
+bool ColumnGrid::span(uint32_t t, int32_t r, int32_t& c0, int32_t& c1) const {
+    // The triangle's part in row r's band, widened by the margin: its x range
+    // comes from the corners inside the band and the edges' crossings of the
+    // band's two lines. A crossing is computed only for an edge that spans
+    // more than the margin in y there, where its rounding is far below the
+    // margin; a flatter edge's crossing lies between its ends, one of which
+    // is in the band or the edge does not reach the needed part of it.
+    const double lo = r == 0 ? -kInf : y0_ + double(r) * step_y_ - margin_;
+    const double hi = r == ny_ - 1 ? kInf : y0_ + double(r + 1) * step_y_ + margin_;
+    const auto& q = triangles_[t];
+    const Vec3* p[3] = {&positions_[q[0]], &positions_[q[1]], &positions_[q[2]]};
+    double x_lo = kInf, x_hi = -kInf;
+    for (int i = 0; i < 3; ++i)
+        if (p[i]->y >= lo && p[i]->y <= hi) {
+            x_lo = std::min(x_lo, p[i]->x);
+            x_hi = std::max(x_hi, p[i]->x);
+        }
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 &a = *p[i], &b = *p[(i + 1) % 3];
+        for (const double line : {lo, hi}) {
+            if (!std::isfinite(line) || !((a.y < line && b.y > line) || (a.y > line && b.y < line))) continue;
+            const double s = std::clamp((line - a.y) / (b.y - a.y), 0.0, 1.0);
+            const double x = a.x + s * (b.x - a.x);
+            x_lo = std::min(x_lo, x);
+            x_hi = std::max(x_hi, x);
+        }
+    }
+    if (x_lo > x_hi) return false;
+    c0 = binX(x_lo - margin_);
+    c1 = binX(x_hi + margin_);
+    return true;
+}
+
+ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
+    const auto t0 = std::chrono::steady_clock::now();
+    positions_ = mesh.positions.data();
+    triangles_ = mesh.triangles.data();
+    const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
+    first_bin_.assign(nt, kNone);
+    z_range_.assign(nt, {0.0f, 0.0f});
+    std::vector<uint8_t> usable(nt, 0);
+    double x_min = kInf, x_max = -kInf, y_min = kInf, y_max = -kInf;
+    for (size_t t = 0; t < nt; ++t) {
+        const auto& q = mesh.triangles[t];
+        if (q[0] >= nv || q[1] >= nv || q[2] >= nv) continue;
+        if (!finite(mesh.positions[q[0]]) || !finite(mesh.positions[q[1]]) || !finite(mesh.positions[q[2]])) continue;
+        usable[t] = 1;
+        ++listed_;
+        const double z_lo = std::min({mesh.positions[q[0]].z, mesh.positions[q[1]].z, mesh.positions[q[2]].z});
+        const double z_hi = std::max({mesh.positions[q[0]].z, mesh.positions[q[1]].z, mesh.positions[q[2]].z});
+        z_range_[t] = {floatDown(z_lo), floatUp(z_hi)};
+        for (int i = 0; i < 3; ++i) {
+            const Vec3& v = mesh.positions[q[i]];
+            x_min = std::min(x_min, v.x);
+            x_max = std::max(x_max, v.x);
+            y_min = std::min(y_min, v.y);
+            y_max = std::max(y_max, v.y);
+        }
+    }
+    if (listed_ == 0) {
+        start_.assign(1, 0);
+        build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        return;
+    }
+    const double w = x_max - x_min, d = y_max - y_min;
+    const double size = std::max({w, d, std::fabs(x_min), std::fabs(x_max), std::fabs(y_min), std::fabs(y_max), 1.0});
+    margin_ = kMarginShare * size;
+    // Square columns, about triangles_per_column triangles each on average.
+    const double wanted = std::max(1.0, double(listed_) / std::max(0.5, triangles_per_column));
+    const double side = w > 0 && d > 0 ? std::sqrt(w * d / wanted) : std::max(w, d) / wanted;
+    auto count = [&](double extent) {
+        if (!(side > 0) || !(extent > 0)) return int32_t(1);
+        return int32_t(std::clamp(std::ceil(extent / side), 1.0, double(kMaxSide)));
+    };
+    nx_ = count(w);
+    ny_ = count(d);
+    x0_ = x_min;
+    y0_ = y_min;
+    step_x_ = w > 0 ? w / nx_ : 1.0;
+    step_y_ = d > 0 ? d / ny_ : 1.0;
+    inv_x_ = 1.0 / step_x_;
+    inv_y_ = 1.0 / step_y_;
+
+    // Two passes over the footprints: count per column, then fill.
+    const size_t columns = size_t(nx_) * size_t(ny_);
+    start_.assign(columns + 1, 0);
+    for (size_t t = 0; t < nt; ++t) {
+        if (!usable[t]) continue;
+        int32_t r0, r1;
+        rowRange(uint32_t(t), r0, r1);
+        for (int32_t r = r0; r <= r1; ++r) {
+            int32_t c0, c1;
+            if (!span(uint32_t(t), r, c0, c1)) continue;
+            const size_t row = size_t(r) * size_t(nx_);
+            if (first_bin_[t] == kNone) first_bin_[t] = uint32_t(row + size_t(c0));
+            for (int32_t c = c0; c <= c1; ++c) ++start_[row + size_t(c) + 1];
+        }
+    }
+    for (size_t b = 0; b < columns; ++b) start_[b + 1] += start_[b];
+    entries_.resize(start_[columns]);
+    // Each column lists its sloped and vertical triangles first, then its
+    // flat ones (every corner at one z), which no horizontal ray can hit.
+    std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
+    for (const bool flat : {false, true}) {
+        for (size_t t = 0; t < nt; ++t) {
+            if (!usable[t] || (z_range_[t][0] == z_range_[t][1] && isFlat(uint32_t(t))) != flat) continue;
+            int32_t r0, r1;
+            rowRange(uint32_t(t), r0, r1);
+            for (int32_t r = r0; r <= r1; ++r) {
+                int32_t c0, c1;
+                if (!span(uint32_t(t), r, c0, c1)) continue;
+                const size_t row = size_t(r) * size_t(nx_);
+                for (int32_t c = c0; c <= c1; ++c) entries_[fill[row + size_t(c)]++] = uint32_t(t);
+            }
+        }
+        if (!flat) flat_start_ = fill;
+    }
+    build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool ColumnGrid::isFlat(uint32_t t) const {
+    const auto& q = triangles_[t];
+    return positions_[q[0]].z == positions_[q[1]].z && positions_[q[1]].z == positions_[q[2]].z;
+}
+
+bool ColumnGrid::firstCommon(uint32_t a, uint32_t b, uint32_t bin) const {
+    // No column before both triangles' first ones lists both: when `bin` is
+    // the later of the two first columns, it is the first common one.
+    if (bin == std::max(first_bin_[a], first_bin_[b])) return true;
+    const int32_t row = int32_t(bin / uint32_t(nx_));
+    for (int32_t r = int32_t(std::max(first_bin_[a], first_bin_[b]) / uint32_t(nx_)); r <= row; ++r) {
+        int32_t a0, a1, b0, b1;
+        if (!span(a, r, a0, a1) || !span(b, r, b0, b1)) continue;
+        if (std::max(a0, b0) > std::min(a1, b1)) continue;
+        return uint32_t(r) * uint32_t(nx_) + uint32_t(std::max(a0, b0)) == bin;
+    }
+    return false;
+}
+
+void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint32_t, uint32_t)>& visit,
+                                        unsigned workers) const {
+    const size_t columns = start_.size() - 1;
+    if (columns == 0 || entries_.empty()) return;
+    workers = std::max(1u, std::min(detail::workerCount(workers), unsigned((columns + kColumnsPerTask - 1) / kColumnsPerTask)));
+    std::atomic<size_t> next{0};
+    std::atomic<bool> failed{false};
+    std::exception_ptr error;  // the first exception a visit threw; written once, under `failed`
+    auto work = [&](unsigned worker) {
+        std::vector<Box3> boxes;
+        try {
+            for (size_t task; !failed.load() && (task = next.fetch_add(kColumnsPerTask)) < columns;) {
+                const size_t end = std::min(columns, task + kColumnsPerTask);
+                for (size_t bin = task; bin < end; ++bin) {
+                    const uint32_t first = start_[bin], n = start_[bin + 1] - first;
+                    if (n < 2) continue;
+                    boxes.resize(n);
+                    for (uint32_t i = 0; i < n; ++i) {
+                        const auto& q = triangles_[entries_[first + i]];
+                        const Vec3 &p0 = positions_[q[0]], &p1 = positions_[q[1]], &p2 = positions_[q[2]];
+                        boxes[i] = {{std::min({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}), std::min({p0.z, p1.z, p2.z})},
+                                    {std::max({p0.x, p1.x, p2.x}), std::max({p0.y, p1.y, p2.y}), std::max({p0.z, p1.z, p2.z})}};
+                    }
+                    for (uint32_t i = 0; i + 1 < n; ++i) {
+                        const Box3& u = boxes[i];
+                        for (uint32_t j = i + 1; j < n; ++j) {
+                            const Box3& v = boxes[j];
+                            if (u.lo[2] > v.hi[2] || v.lo[2] > u.hi[2] || u.lo[0] > v.hi[0] || v.lo[0] > u.hi[0] ||
+                                u.lo[1] > v.hi[1] || v.lo[1] > u.hi[1])
+                                continue;
+                            const uint32_t a = entries_[first + i], b = entries_[first + j];
+                            if (firstCommon(a, b, uint32_t(bin))) visit(worker, a, b);
+                        }
+                    }
+                }
+            }
+        } catch (...) {
+            if (!failed.exchange(true)) error = std::current_exception();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work, w);
+    work(0);
+    for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
+}
+
+std::optional<RayHit> ColumnGrid::firstHit(const Vec3& origin, const Vec3& direction, int64_t skip,
+                                           double max_distance_mm) const {
+    if (entries_.empty() || !finite(origin) || !finite(direction)) return std::nullopt;
+    if (direction.x == 0 && direction.y == 0 && direction.z == 0) return std::nullopt;
+    const V3 o{origin.x, origin.y, origin.z}, d{direction.x, direction.y, direction.z};
+    const detail::RaySetup ray = detail::raySetup(o, d);
+    const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double best_t = max_distance_mm / len;  // a hit exactly at the limit still counts
+    uint32_t best = kNone;
+    V3 best_point{};
+    // The triangles of column (c, r) that the ray's z can reach while over
+    // it, between parameters t0 and t1 (widened by a part in a million of
+    // the z range, far beyond the rounding of o.z + t * d.z).
+    auto testColumn = [&](int32_t c, int32_t r, double t0, double t1) {
+        const size_t bin = size_t(r) * size_t(nx_) + size_t(c);
+        t1 = std::min(t1, best_t);
+        double z_lo = -kInf, z_hi = kInf;
+        if (std::isfinite(t0) && std::isfinite(t1)) {
+            const double za = o[2] + t0 * d[2], zb = o[2] + t1 * d[2];
+            const double pad = 1e-6 * (std::fabs(za) + std::fabs(zb) + std::fabs(zb - za)) + 1e-300;
+            z_lo = std::min(za, zb) - pad;
+            z_hi = std::max(za, zb) + pad;
+        }
+        // A horizontal ray meets no flat triangle: in the watertight test its
+        // three edge functions are one height times differences that sum to
+        // zero, so they have mixed signs or are all zero (no area).
+        const uint32_t end = d[2] == 0 ? flat_start_[bin] : start_[bin + 1];
+        for (uint32_t e = start_[bin]; e < end; ++e) {
+            const uint32_t t = entries_[e];
+            if (int64_t(t) == skip) continue;
+            if (double(z_range_[t][0]) > z_hi || double(z_range_[t][1]) < z_lo) continue;
+            const auto& q = triangles_[t];
+            const Vec3 &a = positions_[q[0]], &b = positions_[q[1]], &c3 = positions_[q[2]];
+            V3 hit;
+            const double s = detail::hitTriangle(ray, {a.x, a.y, a.z}, {b.x, b.y, b.z}, {c3.x, c3.y, c3.z}, best_t, hit);
+            if (s >= 0 && (s < best_t || (s == best_t && (best == kNone || t < best)))) {
+                best_t = s;
+                best = t;
+                best_point = hit;
+            }
+        }
+    };
+    // The grid's box, widened by the margin: nothing listed lies outside it.
+    const double gx0 = x0_ - margin_, gx1 = x0_ + nx_ * step_x_ + margin_;
+    const double gy0 = y0_ - margin_, gy1 = y0_ + ny_ * step_y_ + margin_;
+    if (d[0] == 0 && d[1] == 0) {
+        if (o[0] < gx0 || o[0] > gx1 || o[1] < gy0 || o[1] > gy1) return std::nullopt;
+        testColumn(binX(o[0]), binY(o[1]), -kInf, kInf);
+    } else {
+        // The part of the ray over the grid's box, then column by column.
+        double t_in = 0, t_out = best_t;
+        for (int k = 0; k < 2; ++k) {
+            const double lo = k == 0 ? gx0 : gy0, hi = k == 0 ? gx1 : gy1;
+            if (d[k] == 0) {
+                if (o[k] < lo || o[k] > hi) return std::nullopt;
+                continue;
+            }
+            double ta = (lo - o[k]) / d[k], tb = (hi - o[k]) / d[k];
+            if (ta > tb) std::swap(ta, tb);
+            t_in = std::max(t_in, ta);
+            t_out = std::min(t_out, tb);
+        }
+        if (!(t_in <= t_out)) return std::nullopt;
+        int32_t c = binX(o[0] + t_in * d[0]), r = binY(o[1] + t_in * d[1]);
+        const int32_t step_c = d[0] > 0 ? 1 : -1, step_r = d[1] > 0 ? 1 : -1;
+        // Ray parameters where it crosses the next column line in x and in y.
+        auto nextLine = [&](int k, int32_t cell) {
+            if (d[k] == 0) return kInf;
+            const double origin_k = k == 0 ? x0_ : y0_, step = k == 0 ? step_x_ : step_y_;
+            const double line = origin_k + double(d[k] > 0 ? cell + 1 : cell) * step;
+            return (line - o[k]) / d[k];
+        };
+        double next_x = nextLine(0, c), next_y = nextLine(1, r);
+        double t_enter = t_in;
+        for (;;) {
+            const double t_exit = std::min({next_x, next_y, t_out});
+            // The walk's parameters are a column's within rounding; a margin
+            // of a column's tenth keeps every z the ray has over it.
+            const double slack = 0.1 * std::min(step_x_ / std::max(std::fabs(d[0]), 1e-300),
+                                                step_y_ / std::max(std::fabs(d[1]), 1e-300));
+            testColumn(c, r, std::max(0.0, t_enter - slack), t_exit + slack);
+            t_enter = t_exit;
+            if (best != kNone && best_t <= t_exit) break;
+            if (t_exit >= t_out) break;
+            if (next_x <= next_y) {
+                c += step_c;
+                if (c < 0 || c >= nx_) break;
+                next_x = nextLine(0, c);
+            } else {
+                r += step_r;
+                if (r < 0 || r >= ny_) break;
+                next_y = nextLine(1, r);
+            }
+        }
+    }
+    if (best == kNone) return std::nullopt;
+    RayHit h;
+    h.point_mm = {best_point[0], best_point[1], best_point[2]};
+    h.distance_mm = best_t * len;
+    h.triangle = best;
+    return h;
+}
+
+}  // namespace tsf

@@ -1,0 +1,64 @@
+// rasteriseTop: consistent edge functions, closed coverage. See height_field.h.
+#include "verify/height_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tsf {
+namespace {
+
+struct P2 {
+    double x, y;
+};
+
+bool before(const P2& a, const P2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+// Twice the signed area of (a, b, s): positive when s is left of a -> b.
+// Evaluated from the edge's first end (before()), so the edge b -> a gives
+// exactly the negation.
+double edgeFunction(const P2& a, const P2& b, const P2& s) {
+    if (before(b, a)) return -edgeFunction(b, a, s);
+    return (b.x - a.x) * (s.y - a.y) - (b.y - a.y) * (s.x - a.x);
+}
+
+}  // namespace
+
+void rasteriseTop(const Mesh& mesh, TopHeightField& f) {
+    const double none = -std::numeric_limits<double>::infinity();
+    f.z.assign(size_t(std::max(f.nx, 0)) * size_t(std::max(f.ny, 0)), none);
+    if (f.nx <= 0 || f.ny <= 0 || !(f.step > 0)) return;
+    const size_t nv = mesh.positions.size();
+    for (const auto& q : mesh.triangles) {
+        if (q[0] >= nv || q[1] >= nv || q[2] >= nv) continue;
+        const Vec3 &a = mesh.positions[q[0]], &b = mesh.positions[q[1]], &c = mesh.positions[q[2]];
+        if (!std::isfinite(a.x + a.y + a.z + b.x + b.y + b.z + c.x + c.y + c.z)) continue;
+        const P2 pa{a.x, a.y}, pb{b.x, b.y}, pc{c.x, c.y};
+        const double z_lo = std::min({a.z, b.z, c.z}), z_hi = std::max({a.z, b.z, c.z});
+        // The samples within the shadow's box.
+        const double x_lo = std::min({a.x, b.x, c.x}), x_hi = std::max({a.x, b.x, c.x});
+        const double y_lo = std::min({a.y, b.y, c.y}), y_hi = std::max({a.y, b.y, c.y});
+        const int i0 = std::max(0, int(std::ceil((x_lo - f.x0) / f.step)) - 1);
+        const int i1 = std::min(f.nx - 1, int(std::floor((x_hi - f.x0) / f.step)) + 1);
+        const int j0 = std::max(0, int(std::ceil((y_lo - f.y0) / f.step)) - 1);
+        const int j1 = std::min(f.ny - 1, int(std::floor((y_hi - f.y0) / f.step)) + 1);
+        if (i0 > i1 || j0 > j1) continue;
+        for (int j = j0; j <= j1; ++j) {
+            const double y = f.y0 + j * f.step;
+            if (y < y_lo || y > y_hi) continue;
+            for (int i = i0; i <= i1; ++i) {
+                const P2 s{f.x0 + i * f.step, y};
+                const double wa = edgeFunction(pb, pc, s), wb = edgeFunction(pc, pa, s), wc = edgeFunction(pa, pb, s);
+                // Covered: all three on one side or on an edge (either winding).
+                if ((wa < 0 || wb < 0 || wc < 0) && (wa > 0 || wb > 0 || wc > 0)) continue;
+                const double sum = wa + wb + wc;
+                if (sum == 0) continue;  // no area in the shadow, or the sum cancelled
+                const double z = std::clamp((wa * a.z + wb * b.z + wc * c.z) / sum, z_lo, z_hi);
+                double& cell = f.z[size_t(j) * size_t(f.nx) + size_t(i)];
+                cell = std::max(cell, z);
+            }
+        }
+    }
+}
+
+}  // namespace tsf
