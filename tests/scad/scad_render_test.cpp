@@ -12,7 +12,7 @@
 #include "gen/scad/scad_emitter.h"
 #include "scad_test_support.h"
 #include "verify/mesh_topology.h"
-#include "verify/triangle_bvh.h"
+#include "verify/column_grid.h"
 #include "verify/readback.h"
 #include "verify/verify_model.h"
 #include "gen/model/build_scene.h"
@@ -53,7 +53,7 @@ Rendered generateAndRender(const Scene& scene, Strategy strategy, const std::str
 // above and from below. Together with the centre rays of the values read
 // back, this sees a wall in the wrong place or a missing step.
 void expectCornerRaysMatch(const Mesh& mesh, const Scene& scene) {
-    const TriangleBvh caster(mesh);
+    const ColumnGrid caster(mesh);
     const Bounds b = meshBounds(mesh);
     const double above = b.max.z + 10, below = b.min.z - 10;
     // Half a z step: a surface on the right step is within it (float32 STL
@@ -212,7 +212,7 @@ TEST_P(EditOneValue, ChangesExactlyThatCell) {
     const Mesh after = readMesh(edited_stl);
 
     // Against the unedited Scene exactly one cell is off, and it is (col, row).
-    const TriangleBvh caster(after);
+    const ColumnGrid caster(after);
     ReadbackOptions ro;
     ro.max_offenders = 5;
     const ReadbackResult old_scene = readBack(after, scene, caster, ro);
