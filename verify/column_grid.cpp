@@ -188,6 +188,21 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
         }
         if (!flat) flat_start_ = fill;
     }
+    // Each column's range of z over its sloped and vertical triangles, and
+    // over all of them: a ray whose z over the column misses it skips the
+    // column at once (inside a solid, a horizontal ray passes under every
+    // wall between the tops above it).
+    constexpr float kFloatInf = std::numeric_limits<float>::infinity();
+    const std::array<float, 2> nothing{kFloatInf, -kFloatInf};
+    column_z_.assign(columns, std::array<std::array<float, 2>, 2>{nothing, nothing});
+    for (size_t bin = 0; bin < columns; ++bin)
+        for (uint32_t e = start_[bin]; e < start_[bin + 1]; ++e) {
+            const auto& zr = z_range_[entries_[e]];
+            for (int part = e < flat_start_[bin] ? 0 : 1; part < 2; ++part) {
+                column_z_[bin][part][0] = std::min(column_z_[bin][part][0], zr[0]);
+                column_z_[bin][part][1] = std::max(column_z_[bin][part][1], zr[1]);
+            }
+        }
     build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -283,6 +298,8 @@ std::optional<RayHit> ColumnGrid::firstHit(const Vec3& origin, const Vec3& direc
         // A horizontal ray meets no flat triangle: in the watertight test its
         // three edge functions are one height times differences that sum to
         // zero, so they have mixed signs or are all zero (no area).
+        const auto& column_z = column_z_[bin][d[2] == 0 ? 0 : 1];
+        if (double(column_z[0]) > z_hi || double(column_z[1]) < z_lo) return;
         const uint32_t end = d[2] == 0 ? flat_start_[bin] : start_[bin + 1];
         for (uint32_t e = start_[bin]; e < end; ++e) {
             const uint32_t t = entries_[e];

@@ -106,6 +106,9 @@ private:
     std::vector<uint32_t> start_;      // per column: where its triangles start in entries_ (nx * ny + 1)
     std::vector<uint32_t> entries_;    // mesh triangle indices, column by column
     std::vector<uint32_t> flat_start_; // per column: where its flat triangles start in entries_
+    // Per column: the z range of its sloped and vertical triangles [0] and of
+    // all its triangles [1] (floats rounded outwards; empty: +inf, -inf).
+    std::vector<std::array<std::array<float, 2>, 2>> column_z_;
     // Per mesh triangle: its z range as floats rounded outwards, so that a
     // ray along a column tests only the triangles its z passes there (the
     // grid's answer to a tree's boxes in z: a horizontal ray through a

@@ -105,5 +105,75 @@ TEST(SelfIntersections, SamePairsAsCgalOnRandomlyDeformedModels) {
     EXPECT_GT(total, 12u);  // the deformations do intersect: the test is not vacuous
 }
 
+// Defects made to slip past a broad phase that trusted the terrain's
+// structure (walls and tops on a lattice, triangles near their cells): each
+// must get CGAL's verdict.
+TEST(SelfIntersections, DefectsThatDoNotLookLikeTerrainGetCgalsVerdict) {
+    const vtest::Model model = vtest::smallModel(Bottom::Flat);
+    const Mesh& base = model.mesh;
+    const Bounds b = meshBounds(base);
+    size_t total = 0;
+    {
+        // A far-away triangle pushed through a top: a thin closed spike from
+        // well outside the model, lying over many cells, its tip through the
+        // middle of the top surface.
+        Mesh m = base;
+        const Vec3 tip{(b.min.x + b.max.x) / 2 + 0.013, (b.min.y + b.max.y) / 2 + 0.007, b.min.z + 0.2};
+        const uint32_t v = uint32_t(m.positions.size());
+        m.positions.push_back({b.min.x - 40, b.min.y - 30, b.max.z + 2});
+        m.positions.push_back({b.min.x - 40, b.min.y - 29.5, b.max.z + 2.5});
+        m.positions.push_back({b.min.x - 39.5, b.min.y - 30, b.max.z + 2.5});
+        m.positions.push_back(tip);
+        m.triangles.push_back({v, v + 2, v + 1});
+        m.triangles.push_back({v, v + 1, v + 3});
+        m.triangles.push_back({v + 1, v + 2, v + 3});
+        m.triangles.push_back({v + 2, v, v + 3});
+        const size_t before = total;
+        expectCgalPairs(m, "a spike from afar", total);
+        EXPECT_GT(total, before) << "the spike does cross the top";
+    }
+    {
+        // Two closed tetrahedra above the model touching at one point, each
+        // on its own side of it.
+        Mesh m = base;
+        const Vec3 p{(b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2, b.max.z + 3};
+        auto tetra = [&](double sx) {
+            const uint32_t v = uint32_t(m.positions.size());
+            m.positions.push_back(p);
+            m.positions.push_back({p.x + sx * 0.4, p.y + sx * 0.1, p.z});
+            m.positions.push_back({p.x + sx * 0.1, p.y + sx * 0.4, p.z});
+            m.positions.push_back({p.x + sx * 0.2, p.y + sx * 0.2, p.z + 0.3});
+            // Outward for sx = 1; a mirror image for sx = -1, wound the other way.
+            if (sx > 0) {
+                m.triangles.push_back({v, v + 2, v + 1});
+                m.triangles.push_back({v, v + 1, v + 3});
+                m.triangles.push_back({v + 1, v + 2, v + 3});
+                m.triangles.push_back({v + 2, v, v + 3});
+            } else {
+                m.triangles.push_back({v, v + 1, v + 2});
+                m.triangles.push_back({v, v + 3, v + 1});
+                m.triangles.push_back({v + 1, v + 3, v + 2});
+                m.triangles.push_back({v + 2, v + 3, v});
+            }
+        };
+        tetra(1);
+        tetra(-1);
+        const size_t before = total;
+        expectCgalPairs(m, "two shells meeting at a point", total);
+        EXPECT_GT(total, before) << "the shells do touch";
+    }
+    {
+        // Every wall's upper corners tilted by one unit in the last place, in
+        // turn toward and away from its cell: no wall is vertical any more.
+        for (const double toward : {-1.0, 1.0}) {
+            Mesh m = model.mesh;
+            const double z_top = b.max.z;
+            for (Vec3& p : m.positions)
+                if (p.z > 0 && p.z < z_top) p.x = std::nextafter(p.x, toward * INFINITY);
+            expectCgalPairs(m, toward > 0 ? "walls tilted east by an ulp" : "walls tilted west by an ulp", total);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace tsf
