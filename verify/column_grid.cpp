@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <stdexcept>
 #include <thread>
 
 #include "verify/detail/ray_triangle.h"
@@ -78,10 +79,16 @@ bool ColumnGrid::span(uint32_t t, int32_t r, int32_t& c0, int32_t& c1) const {
     // more than the margin in y there, where its rounding is far below the
     // margin; a flatter edge's crossing lies between its ends, one of which
     // is in the band or the edge does not reach the needed part of it.
-    const double lo = r == 0 ? -kInf : y0_ + double(r) * step_y_ - margin_;
-    const double hi = r == ny_ - 1 ? kInf : y0_ + double(r + 1) * step_y_ + margin_;
     const auto& q = triangles_[t];
     const Vec3* p[3] = {&positions_[q[0]], &positions_[q[1]], &positions_[q[2]]};
+    // A triangle within one row (most of them) takes the columns of its box.
+    if (binY(std::min({p[0]->y, p[1]->y, p[2]->y}) - margin_) == binY(std::max({p[0]->y, p[1]->y, p[2]->y}) + margin_)) {
+        c0 = binX(std::min({p[0]->x, p[1]->x, p[2]->x}) - margin_);
+        c1 = binX(std::max({p[0]->x, p[1]->x, p[2]->x}) + margin_);
+        return true;
+    }
+    const double lo = r == 0 ? -kInf : y0_ + double(r) * step_y_ - margin_;
+    const double hi = r == ny_ - 1 ? kInf : y0_ + double(r + 1) * step_y_ + margin_;
     double x_lo = kInf, x_hi = -kInf;
     for (int i = 0; i < 3; ++i)
         if (p[i]->y >= lo && p[i]->y <= hi) {
@@ -154,40 +161,73 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
     inv_x_ = 1.0 / step_x_;
     inv_y_ = 1.0 / step_y_;
 
-    // Two passes over the footprints: count per column, then fill.
+    // Two passes over the footprints, each on the verifier's threads (a
+    // contiguous range of triangles each): count per column, then fill. Each
+    // column lists its sloped and vertical triangles first, then its flat ones
+    // (every corner at one z), which no horizontal ray can hit; each part in
+    // ascending triangle order, as one thread would list them.
     const size_t columns = size_t(nx_) * size_t(ny_);
-    start_.assign(columns + 1, 0);
-    for (size_t t = 0; t < nt; ++t) {
-        if (!usable[t]) continue;
+    const unsigned workers = nt < 20000 ? 1u : detail::workerCount(0);
+    // Per worker and part (0 sloped or vertical, 1 flat): a count per column,
+    // then where that worker's next entry of that part goes.
+    std::vector<std::array<std::vector<uint32_t>, 2>> at(workers);
+    std::vector<uint8_t> flat(nt, 0);
+    auto forWorkers = [&](const auto& fn) {
+        std::vector<std::thread> pool;
+        for (unsigned w = 1; w < workers; ++w) pool.emplace_back(fn, w);
+        fn(0u);
+        for (std::thread& th : pool) th.join();
+    };
+    auto forFootprint = [&](uint32_t t, const auto& fn) {
         int32_t r0, r1;
-        rowRange(uint32_t(t), r0, r1);
+        rowRange(t, r0, r1);
         for (int32_t r = r0; r <= r1; ++r) {
             int32_t c0, c1;
-            if (!span(uint32_t(t), r, c0, c1)) continue;
+            if (!span(t, r, c0, c1)) continue;
             const size_t row = size_t(r) * size_t(nx_);
-            if (first_bin_[t] == kNone) first_bin_[t] = uint32_t(row + size_t(c0));
-            for (int32_t c = c0; c <= c1; ++c) ++start_[row + size_t(c) + 1];
+            fn(row + size_t(c0), row + size_t(c1));
         }
-    }
-    for (size_t b = 0; b < columns; ++b) start_[b + 1] += start_[b];
-    entries_.resize(start_[columns]);
-    // Each column lists its sloped and vertical triangles first, then its
-    // flat ones (every corner at one z), which no horizontal ray can hit.
-    std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (const bool flat : {false, true}) {
-        for (size_t t = 0; t < nt; ++t) {
-            if (!usable[t] || (z_range_[t][0] == z_range_[t][1] && isFlat(uint32_t(t))) != flat) continue;
-            int32_t r0, r1;
-            rowRange(uint32_t(t), r0, r1);
-            for (int32_t r = r0; r <= r1; ++r) {
-                int32_t c0, c1;
-                if (!span(uint32_t(t), r, c0, c1)) continue;
-                const size_t row = size_t(r) * size_t(nx_);
-                for (int32_t c = c0; c <= c1; ++c) entries_[fill[row + size_t(c)]++] = uint32_t(t);
+    };
+    forWorkers([&](unsigned w) {
+        at[w][0].assign(columns, 0);
+        at[w][1].assign(columns, 0);
+        for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) {
+            if (!usable[t]) continue;
+            flat[t] = z_range_[t][0] == z_range_[t][1] && isFlat(uint32_t(t));
+            std::vector<uint32_t>& count = at[w][flat[t]];
+            forFootprint(uint32_t(t), [&](size_t first, size_t last) {
+                if (first_bin_[t] == kNone) first_bin_[t] = uint32_t(first);
+                for (size_t bin = first; bin <= last; ++bin) ++count[bin];
+            });
+        }
+    });
+    start_.assign(columns + 1, 0);
+    flat_start_.assign(columns, 0);
+    uint64_t total = 0;
+    for (size_t bin = 0; bin < columns; ++bin) {
+        start_[bin] = uint32_t(total);
+        for (int part = 0; part < 2; ++part) {
+            if (part == 1) flat_start_[bin] = uint32_t(total);
+            for (unsigned w = 0; w < workers; ++w) {
+                const uint32_t n = at[w][part][bin];
+                at[w][part][bin] = uint32_t(total);
+                total += n;
             }
         }
-        if (!flat) flat_start_ = fill;
+        if (total > UINT32_MAX) throw std::length_error("the column grid would list more than 2^32 triangles");
     }
+    start_[columns] = uint32_t(total);
+    entries_.resize(total);
+    forWorkers([&](unsigned w) {
+        for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) {
+            if (!usable[t]) continue;
+            std::vector<uint32_t>& next = at[w][flat[t]];
+            forFootprint(uint32_t(t), [&](size_t first, size_t last) {
+                for (size_t bin = first; bin <= last; ++bin) entries_[next[bin]++] = uint32_t(t);
+            });
+        }
+    });
+    std::vector<std::array<std::vector<uint32_t>, 2>>().swap(at);
     // Each column's range of z over its sloped and vertical triangles, and
     // over all of them: a ray whose z over the column misses it skips the
     // column at once (inside a solid, a horizontal ray passes under every

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
+
+#include "verify/detail/workers.h"
 
 namespace tsf {
 namespace {
@@ -22,14 +25,11 @@ double edgeFunction(const P2& a, const P2& b, const P2& s) {
     return (b.x - a.x) * (s.y - a.y) - (b.y - a.y) * (s.x - a.x);
 }
 
-}  // namespace
-
-void rasteriseTop(const Mesh& mesh, TopHeightField& f) {
-    const double none = -std::numeric_limits<double>::infinity();
-    f.z.assign(size_t(std::max(f.nx, 0)) * size_t(std::max(f.ny, 0)), none);
-    if (f.nx <= 0 || f.ny <= 0 || !(f.step > 0)) return;
+// The triangles [from, to) into `z` (the field's samples), keeping the highest.
+void rasteriseRange(const Mesh& mesh, size_t from, size_t to, const TopHeightField& f, std::vector<double>& z) {
     const size_t nv = mesh.positions.size();
-    for (const auto& q : mesh.triangles) {
+    for (size_t t = from; t < to; ++t) {
+        const auto& q = mesh.triangles[t];
         if (q[0] >= nv || q[1] >= nv || q[2] >= nv) continue;
         const Vec3 &a = mesh.positions[q[0]], &b = mesh.positions[q[1]], &c = mesh.positions[q[2]];
         if (!std::isfinite(a.x + a.y + a.z + b.x + b.y + b.z + c.x + c.y + c.z)) continue;
@@ -53,12 +53,32 @@ void rasteriseTop(const Mesh& mesh, TopHeightField& f) {
                 if ((wa < 0 || wb < 0 || wc < 0) && (wa > 0 || wb > 0 || wc > 0)) continue;
                 const double sum = wa + wb + wc;
                 if (sum == 0) continue;  // no area in the shadow, or the sum cancelled
-                const double z = std::clamp((wa * a.z + wb * b.z + wc * c.z) / sum, z_lo, z_hi);
-                double& cell = f.z[size_t(j) * size_t(f.nx) + size_t(i)];
-                cell = std::max(cell, z);
+                const double height = std::clamp((wa * a.z + wb * b.z + wc * c.z) / sum, z_lo, z_hi);
+                double& cell = z[size_t(j) * size_t(f.nx) + size_t(i)];
+                cell = std::max(cell, height);
             }
         }
     }
+}
+
+}  // namespace
+
+void rasteriseTop(const Mesh& mesh, TopHeightField& f) {
+    const double none = -std::numeric_limits<double>::infinity();
+    f.z.assign(size_t(std::max(f.nx, 0)) * size_t(std::max(f.ny, 0)), none);
+    if (f.nx <= 0 || f.ny <= 0 || !(f.step > 0)) return;
+    // The triangles shared among the verifier's threads, each into a field
+    // of its own (8 bytes a sample), then the highest of them.
+    const size_t nt = mesh.triangles.size();
+    const unsigned workers = nt < 20000 ? 1u : detail::workerCount(0);
+    std::vector<std::vector<double>> parts(workers - 1, std::vector<double>(f.z.size(), none));
+    std::vector<std::thread> pool;
+    for (unsigned w = 1; w < workers; ++w)
+        pool.emplace_back([&, w] { rasteriseRange(mesh, nt * w / workers, nt * (w + 1) / workers, f, parts[w - 1]); });
+    rasteriseRange(mesh, 0, nt / workers, f, f.z);
+    for (std::thread& t : pool) t.join();
+    for (const auto& part : parts)
+        for (size_t k = 0; k < f.z.size(); ++k) f.z[k] = std::max(f.z[k], part[k]);
 }
 
 }  // namespace tsf

@@ -29,6 +29,16 @@ constexpr double kSteepNormalZ = 0.5;
 // whatever the nozzle, and rays that leave the model would otherwise cross it
 // entirely (most of the cost).
 constexpr double kGapSearchNozzles = 10.0;
+// Material rays look as far, when the mesh has no face that slopes (neither
+// steep nor exactly flat): a horizontal ray meets no flat face (see
+// verify/column_grid.h), so its first hit is then a steep face, which
+// wallWidth takes as it is, and a ray with nothing within this distance
+// measures a wall wider than it, whatever lies beyond. Through a model of
+// merged pillars the unbounded ray crosses the solid to its far side (12 of
+// the 15 s this check took on a 1000 x 1000 model). With sloped faces the
+// far hit may be a tilted top whose rim is re-measured, so the ray is
+// unbounded there.
+constexpr double kMaterialSearchNozzles = kGapSearchNozzles;
 
 double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -147,13 +157,15 @@ constexpr double kProbeOffsetMm = 1e-3;
 ///     not a wall a printer draws, and is not measured;
 ///   - otherwise (the far side is a wall too: a slab, as thin everywhere) the
 ///     first width stands.
-/// nullopt when nothing was hit (within max_mm) or the wall is not drawn.
+/// nullopt when nothing was hit (within max_mm) or the wall is not drawn;
+/// +inf when nothing was hit within max_mm and `beyond_is_wider` (see
+/// kMaterialSearchNozzles: the wall is wider than max_mm).
 std::optional<double> wallWidth(const ColumnGrid& caster, const Mesh& mesh, double sign, uint32_t t, const Vec3& at,
                                 const Vec3& n, bool material, const PrintabilityOptions& o,
-                                double max_mm = std::numeric_limits<double>::infinity()) {
+                                double max_mm = std::numeric_limits<double>::infinity(), bool beyond_is_wider = false) {
     const Vec3 dir = material ? Vec3{-n.x, -n.y, -n.z} : n;
     const auto hit = caster.firstHit(at, dir, int64_t(t), max_mm);
-    if (!hit) return std::nullopt;
+    if (!hit) return beyond_is_wider ? std::optional<double>(std::numeric_limits<double>::infinity()) : std::nullopt;
     const double nz = faceNormalZ(mesh, hit->triangle, sign);
     const bool narrows = std::fabs(nz) >= kSteepNormalZ && std::fabs(n.z) < 1e-9;
     if (!narrows && hit->distance_mm >= o.nozzle_mm) return hit->distance_mm;
@@ -232,6 +244,18 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
         // The regions in contiguous chunks, one per thread, their samples
         // joined in chunk order: the same lists as one thread makes.
         const std::vector<uint32_t> regions = planarRegionRepresentatives(mesh);
+        bool sloped = false;  // a face neither steep nor exactly flat
+        for (const auto& q : mesh.triangles) {
+            const Vec3 &a = mesh.positions[q[0]], &b = mesh.positions[q[1]], &c = mesh.positions[q[2]];
+            if (a.z == b.z && b.z == c.z) continue;
+            const Vec3 n = cross(sub(b, a), sub(c, a));
+            const double len = std::sqrt(dot(n, n));
+            if (len > 0 && std::fabs(n.z) >= kSteepNormalZ * len) {
+                sloped = true;
+                break;
+            }
+        }
+        double material_search_mm = sloped ? std::numeric_limits<double>::infinity() : kMaterialSearchNozzles * o.nozzle_mm;
         struct Samples {
             std::vector<Sample> walls, gaps, slabs;
         };
@@ -258,21 +282,34 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
                         out.slabs.push_back({hit->distance_mm, t});
                     continue;
                 }
-                if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, true, o))
+                if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, true, o, material_search_mm, !sloped))
                     out.walls.push_back({*d, t});
                 if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, false, o, gap_search_mm))
                     out.gaps.push_back({*d, t});
             }
         };
-        std::vector<std::thread> pool;
-        for (unsigned w = 1; w < workers; ++w) pool.emplace_back(measure, w);
-        measure(0);
-        for (std::thread& th : pool) th.join();
         std::vector<Sample> walls, gaps, slabs;
-        for (const Samples& p : parts) {
-            walls.insert(walls.end(), p.walls.begin(), p.walls.end());
-            gaps.insert(gaps.end(), p.gaps.begin(), p.gaps.end());
-            slabs.insert(slabs.end(), p.slabs.begin(), p.slabs.end());
+        auto measureAll = [&] {
+            std::vector<std::thread> pool;
+            for (unsigned w = 1; w < workers; ++w) pool.emplace_back(measure, w);
+            measure(0);
+            for (std::thread& th : pool) th.join();
+            walls.clear();
+            gaps.clear();
+            slabs.clear();
+            for (Samples& p : parts) {
+                walls.insert(walls.end(), p.walls.begin(), p.walls.end());
+                gaps.insert(gaps.end(), p.gaps.begin(), p.gaps.end());
+                slabs.insert(slabs.end(), p.slabs.begin(), p.slabs.end());
+                p = Samples{};
+            }
+        };
+        measureAll();
+        // Every wall wider than the search (cells of several millimetres):
+        // measured again to the far side, for the thinnest wall's figure.
+        if (!walls.empty() && std::none_of(walls.begin(), walls.end(), [](const Sample& s) { return std::isfinite(s.distance_mm); })) {
+            material_search_mm = std::numeric_limits<double>::infinity();
+            measureAll();
         }
         std::vector<Samples>().swap(parts);
         ray_checks.push_back(thinnest(mesh, "wall_thickness", "walls at least a nozzle wide", walls, o.nozzle_mm,

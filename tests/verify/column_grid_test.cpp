@@ -10,6 +10,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/build_scene.h"
+#include "tests/support/fields.h"
 #include "tests/verify/verify_test_support.h"
 #include "verify/column_grid.h"
 #include "verify/triangle_bvh.h"
@@ -185,6 +188,50 @@ TEST(ColumnGrid, EveryTouchingPairIsACandidateOnce) {
             expectEveryTouchingPair(m, grid, "round " + std::to_string(round) + ", " + std::to_string(per_column) + " a column");
         }
     }
+}
+
+// A model large enough for the grid to be built on several threads: the
+// same first hits as the tree, and every touching pair of the tree's
+// overlapping boxes a candidate, once.
+TEST(ColumnGrid, ALargeModelBuiltOnSeveralThreadsAgreesWithTheTree) {
+    SceneParams p = vtest::smallFieldParams(Bottom::Mirrored, 0.01);
+    p.pitch_mm = 2.0;
+    const Scene s = buildScene(test::fieldFromFunction(45, 40, [](int c, int r) { return 1.0 + std::sin(c * 0.3) * std::cos(r * 0.2); }), p);
+    const Mesh m = meshScene(s);
+    ASSERT_GT(m.triangles.size(), 40000u);
+    const ColumnGrid grid(m);
+    const TriangleBvh tree(m);
+    const Bounds b = meshBounds(m);
+    for (size_t k = 0; k < s.keptCount(); k += 7) {
+        const Vec3 c = s.point(hexCentre(s.grid, s.col[k], s.row[k]), 0);
+        expectSameHit(grid, tree, {c.x, c.y, b.max.z + 1}, {0, 0, -1}, -1, INFINITY, "down");
+        expectSameHit(grid, tree, {c.x, c.y, b.min.z - 1}, {0, 0, 1}, -1, INFINITY, "up");
+    }
+    for (uint32_t t = 0; t < m.triangles.size(); t += 13) {
+        const auto& q = m.triangles[t];
+        const Vec3 n = cross(sub(m.positions[q[1]], m.positions[q[0]]), sub(m.positions[q[2]], m.positions[q[0]]));
+        expectSameHit(grid, tree, vtest::centroid(m, t), {-n.x, -n.y, -n.z}, t, INFINITY, "inward");
+    }
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> per_worker(2);
+    grid.forEachOverlappingPair(
+        [&](unsigned w, uint32_t a, uint32_t c) { per_worker[w].emplace_back(std::min(a, c), std::max(a, c)); }, 2);
+    std::vector<std::pair<uint32_t, uint32_t>> got = per_worker[0];
+    got.insert(got.end(), per_worker[1].begin(), per_worker[1].end());
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(std::adjacent_find(got.begin(), got.end()), got.end()) << "a pair was visited twice";
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> touching(2);
+    tree.forEachOverlappingPair(
+        [&](unsigned w, uint32_t a, uint32_t c) {
+            if (CGAL::do_intersect(cgalTriangle(m, a), cgalTriangle(m, c))) touching[w].emplace_back(std::min(a, c), std::max(a, c));
+        },
+        2);
+    size_t checked = 0;
+    for (const auto& list : touching)
+        for (const auto& pair : list) {
+            ++checked;
+            EXPECT_TRUE(std::binary_search(got.begin(), got.end(), pair)) << pair.first << ", " << pair.second;
+        }
+    EXPECT_GT(checked, m.triangles.size());
 }
 
 // Two triangles that meet only at a point where four columns meet, each in

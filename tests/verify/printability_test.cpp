@@ -116,6 +116,23 @@ TEST(Printability, BedFitAsIsTurnedOrNot) {
     EXPECT_EQ(findCheck(run(m, o), "fits_bed").status, CheckStatus::Warn);  // too tall
 }
 
+// Material is looked for ten nozzle widths into the solid when no face
+// slopes; walls all wider than that are measured to their far side, so the
+// thinnest wall is still a figure, not "none".
+TEST(Printability, WallsWiderThanTheSearchAreMeasuredToTheirFarSide) {
+    // 6 mm thick, 20 mm long: no face slopes, 4 mm of search.
+    const PrintabilityResult r = run(vtest::box({0, 0, 0}, {6, 20, 5}));
+    EXPECT_DOUBLE_EQ(r.figures.min_wall_mm, 6.0);
+    EXPECT_EQ(findCheck(r, "wall_thickness").status, CheckStatus::Pass);
+    // Two boxes side by side: a 1 mm wall found within the search, a 6 mm
+    // one beyond it; the thinnest is 1 mm and both walls are sampled.
+    const Mesh two = test::append(vtest::box({0, 0, 0}, {1, 20, 5}), vtest::box({3, 0, 0}, {9, 20, 5}));
+    const PrintabilityResult r2 = run(two);
+    EXPECT_DOUBLE_EQ(r2.figures.min_wall_mm, 1.0);
+    EXPECT_NE(findCheck(r2, "wall_thickness").note.find("over 8 samples"), std::string::npos)
+        << findCheck(r2, "wall_thickness").note;
+}
+
 TEST(Printability, TsfModelHasPitchWideWallsAndGaps) {
     const vtest::Model m = vtest::smallModel(Bottom::Flat);
     PrintabilityOptions o;
