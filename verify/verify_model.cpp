@@ -39,10 +39,11 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
     const bool closed_oriented = solid.closed_oriented_manifold;
     // One column grid for every check that needs one: the self-intersections'
     // broad phase (checkSolid built it after the topology, so the two never
-    // hold memory at once), the values read back and the printability rays.
+    // hold memory at once), the values read back and the printability rays;
+    // freed before the tactile checks.
     std::unique_ptr<ColumnGrid> caster = std::move(solid.grid);
     append(report, std::move(solid));
-    if (!caster && (scene || options.printability || options.tactile)) {
+    if (!caster && (scene || options.printability)) {
         caster = std::make_unique<ColumnGrid>(mesh);
         report.stages.push_back({"grid", caster->buildMs()});
     }
@@ -83,6 +84,7 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
         report.printability = std::move(pr.figures);
         append(report, std::move(pr));
     }
+    caster.reset();  // the tactile checks need no rays: its memory is free for theirs
 
     if (options.tactile) {
         TactileOptions to;
