@@ -27,6 +27,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int32_t kMaxSide = 4096;
 // Footprints are widened by this share of the model's size (see the header).
 constexpr double kMarginShare = 1e-6;
+// A triangle whose box meets at most this many columns is listed in all of
+// them (a footprint, cheaper to find, and a pair's first common column is
+// then found from the two boxes alone); a larger one only in the columns its
+// shadow meets, row by row (the long thin triangles of a flat bottom).
+constexpr int64_t kBoxedColumns = 16;
 // Columns a worker takes at a time in the pair walk.
 constexpr uint32_t kColumnsPerTask = 256;
 
@@ -81,10 +86,11 @@ bool ColumnGrid::span(uint32_t t, int32_t r, int32_t& c0, int32_t& c1) const {
     // is in the band or the edge does not reach the needed part of it.
     const auto& q = triangles_[t];
     const Vec3* p[3] = {&positions_[q[0]], &positions_[q[1]], &positions_[q[2]]};
-    // A triangle within one row (most of them) takes the columns of its box.
-    if (binY(std::min({p[0]->y, p[1]->y, p[2]->y}) - margin_) == binY(std::max({p[0]->y, p[1]->y, p[2]->y}) + margin_)) {
-        c0 = binX(std::min({p[0]->x, p[1]->x, p[2]->x}) - margin_);
-        c1 = binX(std::max({p[0]->x, p[1]->x, p[2]->x}) + margin_);
+    // A small triangle (most of them) takes the columns of its box.
+    const BoxColumns box = boxColumns(t);
+    if (box.boxed) {
+        c0 = box.c0;
+        c1 = box.c1;
         return true;
     }
     const double lo = r == 0 ? -kInf : y0_ + double(r) * step_y_ - margin_;
@@ -251,10 +257,28 @@ bool ColumnGrid::isFlat(uint32_t t) const {
     return positions_[q[0]].z == positions_[q[1]].z && positions_[q[1]].z == positions_[q[2]].z;
 }
 
+ColumnGrid::BoxColumns ColumnGrid::boxColumns(double x_lo, double x_hi, double y_lo, double y_hi) const {
+    BoxColumns b;
+    b.c0 = binX(x_lo - margin_);
+    b.c1 = binX(x_hi + margin_);
+    b.r0 = binY(y_lo - margin_);
+    b.r1 = binY(y_hi + margin_);
+    b.boxed = int64_t(b.c1 - b.c0 + 1) * int64_t(b.r1 - b.r0 + 1) <= kBoxedColumns;
+    return b;
+}
+
+ColumnGrid::BoxColumns ColumnGrid::boxColumns(uint32_t t) const {
+    const auto& q = triangles_[t];
+    const Vec3 &p0 = positions_[q[0]], &p1 = positions_[q[1]], &p2 = positions_[q[2]];
+    return boxColumns(std::min({p0.x, p1.x, p2.x}), std::max({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}),
+                      std::max({p0.y, p1.y, p2.y}));
+}
+
 bool ColumnGrid::firstCommon(uint32_t a, uint32_t b, uint32_t bin) const {
     // No column before both triangles' first ones lists both: when `bin` is
     // the later of the two first columns, it is the first common one.
     if (bin == std::max(first_bin_[a], first_bin_[b])) return true;
+
     const int32_t row = int32_t(bin / uint32_t(nx_));
     for (int32_t r = int32_t(std::max(first_bin_[a], first_bin_[b]) / uint32_t(nx_)); r <= row; ++r) {
         int32_t a0, a1, b0, b1;
@@ -275,6 +299,7 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
     std::exception_ptr error;  // the first exception a visit threw; written once, under `failed`
     auto work = [&](unsigned worker) {
         std::vector<Box3> boxes;
+        std::vector<BoxColumns> box_columns;
         try {
             for (size_t task; !failed.load() && (task = next.fetch_add(kColumnsPerTask)) < columns;) {
                 const size_t end = std::min(columns, task + kColumnsPerTask);
@@ -282,11 +307,14 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
                     const uint32_t first = start_[bin], n = start_[bin + 1] - first;
                     if (n < 2) continue;
                     boxes.resize(n);
+                    box_columns.resize(n);
                     for (uint32_t i = 0; i < n; ++i) {
                         const auto& q = triangles_[entries_[first + i]];
                         const Vec3 &p0 = positions_[q[0]], &p1 = positions_[q[1]], &p2 = positions_[q[2]];
-                        boxes[i] = {{std::min({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}), std::min({p0.z, p1.z, p2.z})},
-                                    {std::max({p0.x, p1.x, p2.x}), std::max({p0.y, p1.y, p2.y}), std::max({p0.z, p1.z, p2.z})}};
+                        Box3& box = boxes[i];
+                        box = {{std::min({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}), std::min({p0.z, p1.z, p2.z})},
+                               {std::max({p0.x, p1.x, p2.x}), std::max({p0.y, p1.y, p2.y}), std::max({p0.z, p1.z, p2.z})}};
+                        box_columns[i] = boxColumns(box.lo[0], box.hi[0], box.lo[1], box.hi[1]);
                     }
                     for (uint32_t i = 0; i + 1 < n; ++i) {
                         const Box3& u = boxes[i];
@@ -296,7 +324,14 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
                                 u.lo[1] > v.hi[1] || v.lo[1] > u.hi[1])
                                 continue;
                             const uint32_t a = entries_[first + i], b = entries_[first + j];
-                            if (firstCommon(a, b, uint32_t(bin))) visit(worker, a, b);
+                            const BoxColumns &ca = box_columns[i], &cb = box_columns[j];
+                            // Two boxes of columns meet in a box: its first column
+                            // is the later first row and the later first column.
+                            const bool first_here =
+                                ca.boxed && cb.boxed
+                                    ? bin == size_t(std::max(ca.r0, cb.r0)) * size_t(nx_) + size_t(std::max(ca.c0, cb.c0))
+                                    : firstCommon(a, b, uint32_t(bin));
+                            if (first_here) visit(worker, a, b);
                         }
                     }
                 }

@@ -10,10 +10,11 @@
 // trusts nothing about the mesh: a triangle of any shape or slope, however
 // far from the lattice, is listed in every column its footprint meets.
 //
-// Footprints: a triangle is listed in the columns its projection on x, y
-// meets, row by row (the part of the triangle in a row's band of y, widened
-// by a margin), not in every column of its bounding box: the long thin
-// triangles of a flat bottom meet few columns of their box. The margin,
+// Footprints: a small triangle (its box over at most 16 columns) is listed
+// in every column its bounding box meets; a larger one in the columns its
+// projection on x, y meets, row by row (the part of the triangle in a row's
+// band of y, widened by a margin), not in every column of its box: the long
+// thin triangles of a flat bottom meet few columns of their box. The margin,
 // a millionth of the model's size (0.15 um on a 150 mm model), is far
 // larger than the rounding of the footprints' arithmetic, so a point of a
 // triangle is always in a column that lists it, even on a column's edge.
@@ -90,9 +91,17 @@ private:
     /// Columns c0..c1 of row r that triangle t's footprint meets; false if none.
     bool span(uint32_t t, int32_t r, int32_t& c0, int32_t& c1) const;
     void rowRange(uint32_t t, int32_t& r0, int32_t& r1) const;
-    /// Is `bin` the first column (row-major) listing both a and b?
+    /// Is `bin` (listing both) the first column, row-major, listing both a and b?
     bool firstCommon(uint32_t a, uint32_t b, uint32_t bin) const;
     bool isFlat(uint32_t t) const;  ///< every corner at one z
+    /// The columns and rows triangle t's box meets (widened by the margin);
+    /// `boxed`: few enough that the triangle is listed in all of them.
+    struct BoxColumns {
+        int32_t c0, c1, r0, r1;
+        bool boxed;
+    };
+    BoxColumns boxColumns(uint32_t t) const;
+    BoxColumns boxColumns(double x_lo, double x_hi, double y_lo, double y_hi) const;
 
     const Vec3* positions_ = nullptr;
     const std::array<uint32_t, 3>* triangles_ = nullptr;
