@@ -125,23 +125,47 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
     first_bin_.assign(nt, kNone);
     z_range_.assign(nt, {0.0f, 0.0f});
     std::vector<uint8_t> usable(nt, 0);
-    double x_min = kInf, x_max = -kInf, y_min = kInf, y_max = -kInf;
-    for (size_t t = 0; t < nt; ++t) {
-        const auto& q = mesh.triangles[t];
-        if (q[0] >= nv || q[1] >= nv || q[2] >= nv) continue;
-        if (!finite(mesh.positions[q[0]]) || !finite(mesh.positions[q[1]]) || !finite(mesh.positions[q[2]])) continue;
-        usable[t] = 1;
-        ++listed_;
-        const double z_lo = std::min({mesh.positions[q[0]].z, mesh.positions[q[1]].z, mesh.positions[q[2]].z});
-        const double z_hi = std::max({mesh.positions[q[0]].z, mesh.positions[q[1]].z, mesh.positions[q[2]].z});
-        z_range_[t] = {floatDown(z_lo), floatUp(z_hi)};
-        for (int i = 0; i < 3; ++i) {
-            const Vec3& v = mesh.positions[q[i]];
-            x_min = std::min(x_min, v.x);
-            x_max = std::max(x_max, v.x);
-            y_min = std::min(y_min, v.y);
-            y_max = std::max(y_max, v.y);
+    const unsigned workers = nt < 20000 ? 1u : detail::workerCount(0);
+    auto forWorkers = [&](const auto& fn) {
+        std::vector<std::thread> pool;
+        for (unsigned w = 1; w < workers; ++w) pool.emplace_back(fn, w);
+        fn(0u);
+        for (std::thread& th : pool) th.join();
+    };
+    // The usable triangles, their z ranges and the box of x, y, on the
+    // worker threads (a contiguous range of triangles each).
+    struct Extent {
+        double x_min = kInf, x_max = -kInf, y_min = kInf, y_max = -kInf;
+        size_t listed = 0;
+    };
+    std::vector<Extent> extents(workers);
+    forWorkers([&](unsigned w) {
+        Extent& e = extents[w];
+        for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) {
+            const auto& q = mesh.triangles[t];
+            if (q[0] >= nv || q[1] >= nv || q[2] >= nv) continue;
+            if (!finite(mesh.positions[q[0]]) || !finite(mesh.positions[q[1]]) || !finite(mesh.positions[q[2]])) continue;
+            usable[t] = 1;
+            ++e.listed;
+            const double z_lo = std::min({mesh.positions[q[0]].z, mesh.positions[q[1]].z, mesh.positions[q[2]].z});
+            const double z_hi = std::max({mesh.positions[q[0]].z, mesh.positions[q[1]].z, mesh.positions[q[2]].z});
+            z_range_[t] = {floatDown(z_lo), floatUp(z_hi)};
+            for (int i = 0; i < 3; ++i) {
+                const Vec3& v = mesh.positions[q[i]];
+                e.x_min = std::min(e.x_min, v.x);
+                e.x_max = std::max(e.x_max, v.x);
+                e.y_min = std::min(e.y_min, v.y);
+                e.y_max = std::max(e.y_max, v.y);
+            }
         }
+    });
+    double x_min = kInf, x_max = -kInf, y_min = kInf, y_max = -kInf;
+    for (const Extent& e : extents) {
+        x_min = std::min(x_min, e.x_min);
+        x_max = std::max(x_max, e.x_max);
+        y_min = std::min(y_min, e.y_min);
+        y_max = std::max(y_max, e.y_max);
+        listed_ += e.listed;
     }
     if (listed_ == 0) {
         start_.assign(1, 0);
@@ -173,17 +197,10 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
     // (every corner at one z), which no horizontal ray can hit; each part in
     // ascending triangle order, as one thread would list them.
     const size_t columns = size_t(nx_) * size_t(ny_);
-    const unsigned workers = nt < 20000 ? 1u : detail::workerCount(0);
     // Per worker and part (0 sloped or vertical, 1 flat): a count per column,
     // then where that worker's next entry of that part goes.
     std::vector<std::array<std::vector<uint32_t>, 2>> at(workers);
     std::vector<uint8_t> flat(nt, 0);
-    auto forWorkers = [&](const auto& fn) {
-        std::vector<std::thread> pool;
-        for (unsigned w = 1; w < workers; ++w) pool.emplace_back(fn, w);
-        fn(0u);
-        for (std::thread& th : pool) th.join();
-    };
     auto forFootprint = [&](uint32_t t, const auto& fn) {
         int32_t r0, r1;
         rowRange(t, r0, r1);
