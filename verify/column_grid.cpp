@@ -193,14 +193,17 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
 
     // Two passes over the footprints, each on the verifier's threads (a
     // contiguous range of triangles each): count per column, then fill. Each
-    // column lists its sloped and vertical triangles first, then its flat ones
-    // (every corner at one z), which no horizontal ray can hit; each part in
-    // ascending triangle order, as one thread would list them.
+    // column lists its walls first (two corners over one point), then its
+    // other sloped or vertical triangles, then its flat ones (every corner at
+    // one z): no vertical ray can hit a wall, no horizontal one a flat
+    // triangle (see firstHit). Each part in ascending triangle order, as one
+    // thread would list them.
     const size_t columns = size_t(nx_) * size_t(ny_);
-    // Per worker and part (0 sloped or vertical, 1 flat): a count per column,
+    // Per worker and part (0 wall, 1 other, 2 flat): a count per column,
     // then where that worker's next entry of that part goes.
-    std::vector<std::array<std::vector<uint32_t>, 2>> at(workers);
-    std::vector<uint8_t> flat(nt, 0);
+    constexpr int kParts = 3;
+    std::vector<std::array<std::vector<uint32_t>, kParts>> at(workers);
+    std::vector<uint8_t> part_of(nt, 0);
     auto forFootprint = [&](uint32_t t, const auto& fn) {
         int32_t r0, r1;
         rowRange(t, r0, r1);
@@ -212,12 +215,11 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
         }
     };
     forWorkers([&](unsigned w) {
-        at[w][0].assign(columns, 0);
-        at[w][1].assign(columns, 0);
+        for (auto& count : at[w]) count.assign(columns, 0);
         for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) {
             if (!usable[t]) continue;
-            flat[t] = z_range_[t][0] == z_range_[t][1] && isFlat(uint32_t(t));
-            std::vector<uint32_t>& count = at[w][flat[t]];
+            part_of[t] = z_range_[t][0] == z_range_[t][1] && isFlat(uint32_t(t)) ? 2 : isWall(uint32_t(t)) ? 0 : 1;
+            std::vector<uint32_t>& count = at[w][part_of[t]];
             forFootprint(uint32_t(t), [&](size_t first, size_t last) {
                 if (first_bin_[t] == kNone) first_bin_[t] = uint32_t(first);
                 for (size_t bin = first; bin <= last; ++bin) ++count[bin];
@@ -226,11 +228,13 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
     });
     start_.assign(columns + 1, 0);
     flat_start_.assign(columns, 0);
+    other_start_.assign(columns, 0);
     uint64_t total = 0;
     for (size_t bin = 0; bin < columns; ++bin) {
         start_[bin] = uint32_t(total);
-        for (int part = 0; part < 2; ++part) {
-            if (part == 1) flat_start_[bin] = uint32_t(total);
+        for (int part = 0; part < kParts; ++part) {
+            if (part == 1) other_start_[bin] = uint32_t(total);
+            if (part == 2) flat_start_[bin] = uint32_t(total);
             for (unsigned w = 0; w < workers; ++w) {
                 const uint32_t n = at[w][part][bin];
                 at[w][part][bin] = uint32_t(total);
@@ -244,13 +248,13 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
     forWorkers([&](unsigned w) {
         for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) {
             if (!usable[t]) continue;
-            std::vector<uint32_t>& next = at[w][flat[t]];
+            std::vector<uint32_t>& next = at[w][part_of[t]];
             forFootprint(uint32_t(t), [&](size_t first, size_t last) {
                 for (size_t bin = first; bin <= last; ++bin) entries_[next[bin]++] = uint32_t(t);
             });
         }
     });
-    std::vector<std::array<std::vector<uint32_t>, 2>>().swap(at);
+    std::vector<std::array<std::vector<uint32_t>, kParts>>().swap(at);
     // Each column's range of z over its sloped and vertical triangles, and
     // over all of them: a ray whose z over the column misses it skips the
     // column at once (inside a solid, a horizontal ray passes under every
@@ -267,6 +271,13 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
             }
         }
     build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool ColumnGrid::isWall(uint32_t t) const {
+    const auto& q = triangles_[t];
+    const Vec3 &a = positions_[q[0]], &b = positions_[q[1]], &c = positions_[q[2]];
+    auto over = [](const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y; };
+    return over(a, b) || over(b, c) || over(c, a);
 }
 
 bool ColumnGrid::isFlat(uint32_t t) const {
@@ -381,7 +392,8 @@ std::optional<RayHit> ColumnGrid::firstHit(const Vec3& origin, const Vec3& direc
         const size_t bin = size_t(r) * size_t(nx_) + size_t(c);
         t1 = std::min(t1, best_t);
         double z_lo = -kInf, z_hi = kInf;
-        if (std::isfinite(t0) && std::isfinite(t1)) {
+        const bool bounded = std::isfinite(t0) && std::isfinite(t1);  // a vertical ray is not: it reads one column whole
+        if (bounded) {
             const double za = o[2] + t0 * d[2], zb = o[2] + t1 * d[2];
             const double pad = 1e-6 * (std::fabs(za) + std::fabs(zb) + std::fabs(zb - za)) + 1e-300;
             z_lo = std::min(za, zb) - pad;
@@ -390,13 +402,19 @@ std::optional<RayHit> ColumnGrid::firstHit(const Vec3& origin, const Vec3& direc
         // A horizontal ray meets no flat triangle: in the watertight test its
         // three edge functions are one height times differences that sum to
         // zero, so they have mixed signs or are all zero (no area).
-        const auto& column_z = column_z_[bin][d[2] == 0 ? 0 : 1];
-        if (double(column_z[0]) > z_hi || double(column_z[1]) < z_lo) return;
+        if (bounded) {
+            const auto& column_z = column_z_[bin][d[2] == 0 ? 0 : 1];
+            if (double(column_z[0]) > z_hi || double(column_z[1]) < z_lo) return;
+        }
+        // A vertical ray meets no wall (two corners over one point): the
+        // edge functions of those two corners are the same products, so the
+        // third is zero and the other two are each other's negation.
+        const uint32_t begin = d[0] == 0 && d[1] == 0 ? other_start_[bin] : start_[bin];
         const uint32_t end = d[2] == 0 ? flat_start_[bin] : start_[bin + 1];
-        for (uint32_t e = start_[bin]; e < end; ++e) {
+        for (uint32_t e = begin; e < end; ++e) {
             const uint32_t t = entries_[e];
             if (int64_t(t) == skip) continue;
-            if (double(z_range_[t][0]) > z_hi || double(z_range_[t][1]) < z_lo) continue;
+            if (bounded && (double(z_range_[t][0]) > z_hi || double(z_range_[t][1]) < z_lo)) continue;
             const auto& q = triangles_[t];
             const Vec3 &a = positions_[q[0]], &b = positions_[q[1]], &c3 = positions_[q[2]];
             V3 hit;

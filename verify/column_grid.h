@@ -30,6 +30,11 @@
 // tested with the watertight test shared with the tree
 // (verify/detail/ray_triangle.h), so both casters answer alike; the walk
 // stops at the first column whose far side lies beyond the nearest hit.
+// Each column lists its walls (two corners over one point) first and its
+// flat triangles (one z) last: a vertical ray skips the walls and a
+// horizontal one the flat triangles, which that test cannot report as hit
+// (exactly: see firstHit), and a column whose z range the ray's z misses is
+// skipped whole.
 // Ties at one distance go to the lower mesh index.
 //
 // Triangles with an out-of-range index or a non-finite corner are left out.
@@ -94,6 +99,7 @@ private:
     /// Is `bin` (listing both) the first column, row-major, listing both a and b?
     bool firstCommon(uint32_t a, uint32_t b, uint32_t bin) const;
     bool isFlat(uint32_t t) const;  ///< every corner at one z
+    bool isWall(uint32_t t) const;  ///< two corners over one point of x, y
     /// The columns and rows triangle t's box meets (widened by the margin);
     /// `boxed`: few enough that the triangle is listed in all of them.
     struct BoxColumns {
@@ -114,6 +120,7 @@ private:
     std::vector<uint32_t> first_bin_;  // per mesh triangle: the first column listing it (row-major), or UINT32_MAX
     std::vector<uint32_t> start_;      // per column: where its triangles start in entries_ (nx * ny + 1)
     std::vector<uint32_t> entries_;    // mesh triangle indices, column by column
+    std::vector<uint32_t> other_start_;  // per column: where its triangles other than walls start in entries_
     std::vector<uint32_t> flat_start_; // per column: where its flat triangles start in entries_
     // Per column: the z range of its sloped and vertical triangles [0] and of
     // all its triangles [1] (floats rounded outwards; empty: +inf, -inf).

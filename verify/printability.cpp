@@ -29,16 +29,18 @@ constexpr double kSteepNormalZ = 0.5;
 // whatever the nozzle, and rays that leave the model would otherwise cross it
 // entirely (most of the cost).
 constexpr double kGapSearchNozzles = 10.0;
-// Material rays look as far, when the mesh has no face that slopes (neither
-// steep nor exactly flat): a horizontal ray meets no flat face (see
-// verify/column_grid.h), so its first hit is then a steep face, which
-// wallWidth takes as it is, and a ray with nothing within this distance
-// measures a wall wider than it, whatever lies beyond. Through a model of
-// merged pillars the unbounded ray crosses the solid to its far side (12 of
-// the 15 s this check took on a 1000 x 1000 model). With sloped faces the
-// far hit may be a tilted top whose rim is re-measured, so the ray is
-// unbounded there.
-constexpr double kMaterialSearchNozzles = kGapSearchNozzles;
+// Material rays look this many nozzle widths far, then, if no wall was
+// found that near, as far as gap rays, then to the far side; when the mesh
+// has no face that slopes (neither steep nor exactly flat). A horizontal ray
+// meets no flat face (see verify/column_grid.h), so its first hit is then a
+// steep face, which wallWidth takes as it is, and a ray with nothing within
+// the search measures a wall wider than it, whatever lies beyond: the walls
+// under the nozzle, the samples and the thinnest wall are the same as with
+// one unbounded ray. Through a model of merged pillars the unbounded ray
+// crosses the solid to its far side (12 of the 15 s this check took on a
+// 1000 x 1000 model). With sloped faces the far hit may be a tilted top
+// whose rim is re-measured, so the ray is unbounded there.
+constexpr double kMaterialSearchNozzles[] = {2.0, kGapSearchNozzles};
 
 double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -255,7 +257,13 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
                 break;
             }
         }
-        double material_search_mm = sloped ? std::numeric_limits<double>::infinity() : kMaterialSearchNozzles * o.nozzle_mm;
+        const double inf = std::numeric_limits<double>::infinity();
+        std::vector<double> searches;  // the material rays' lengths, in turn (mm)
+        if (!sloped)
+            for (const double nozzles : kMaterialSearchNozzles) searches.push_back(nozzles * o.nozzle_mm);
+        searches.push_back(inf);
+        double material_search_mm = searches.front();
+        bool walls_only = false;  // a search again: the gaps and slabs are measured
         struct Samples {
             std::vector<Sample> walls, gaps, slabs;
         };
@@ -278,12 +286,14 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
                 const Vec3 inward{-n.x, -n.y, -n.z};
                 const bool steep = std::fabs(n.z) < kSteepNormalZ;
                 if (!steep) {
+                    if (walls_only) continue;
                     if (const auto hit = caster.firstHit(centroid, inward, int64_t(t)))
                         out.slabs.push_back({hit->distance_mm, t});
                     continue;
                 }
                 if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, true, o, material_search_mm, !sloped))
                     out.walls.push_back({*d, t});
+                if (walls_only) continue;
                 if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, false, o, gap_search_mm))
                     out.gaps.push_back({*d, t});
             }
@@ -295,8 +305,6 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
             measure(0);
             for (std::thread& th : pool) th.join();
             walls.clear();
-            gaps.clear();
-            slabs.clear();
             for (Samples& p : parts) {
                 walls.insert(walls.end(), p.walls.begin(), p.walls.end());
                 gaps.insert(gaps.end(), p.gaps.begin(), p.gaps.end());
@@ -305,10 +313,13 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
             }
         };
         measureAll();
-        // Every wall wider than the search (cells of several millimetres):
-        // measured again to the far side, for the thinnest wall's figure.
-        if (!walls.empty() && std::none_of(walls.begin(), walls.end(), [](const Sample& s) { return std::isfinite(s.distance_mm); })) {
-            material_search_mm = std::numeric_limits<double>::infinity();
+        // Every wall wider than the search: measured again further, for the
+        // thinnest wall's figure (cells of a millimetre or more).
+        for (size_t k = 1; k < searches.size(); ++k) {
+            if (walls.empty() || std::any_of(walls.begin(), walls.end(), [](const Sample& s) { return std::isfinite(s.distance_mm); }))
+                break;
+            material_search_mm = searches[k];
+            walls_only = true;
             measureAll();
         }
         std::vector<Samples>().swap(parts);
