@@ -1,6 +1,8 @@
-// TriangleBvh: the verifier's one bounding-volume hierarchy over a mesh's
-// triangles, for first hits of rays, closest points, and pairs of triangles
-// whose boxes overlap (the broad phase of the self-intersection test).
+// TriangleBvh: a bounding-volume hierarchy over a mesh's triangles, for the
+// closest points of the agreement and halves checks; its first hits of rays
+// and its pairs of overlapping boxes answer what the column grid
+// (verify/column_grid.h, the checks' rays and the self-intersections' broad
+// phase) answers, and the tests hold the two to each other.
 //
 // Build: axis-aligned boxes split by the surface-area heuristic over 16 bins
 // of the box centres along their longest extent, so the long triangles of a
