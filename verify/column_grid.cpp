@@ -32,6 +32,8 @@ constexpr double kMarginShare = 1e-6;
 // then found from the two boxes alone); a larger one only in the columns its
 // shadow meets, row by row (the long thin triangles of a flat bottom).
 constexpr int64_t kBoxedColumns = 16;
+// Columns a side of a block (see block_z_).
+constexpr int32_t kBlockColumns = 8;
 // Columns a worker takes at a time in the pair walk.
 constexpr uint32_t kColumnsPerTask = 256;
 
@@ -270,6 +272,20 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
                 column_z_[bin][part][1] = std::max(column_z_[bin][part][1], zr[1]);
             }
         }
+    // Blocks of kBlockColumns x kBlockColumns columns keep the range of z of
+    // their columns' non-flat triangles: a horizontal ray at a z outside it
+    // steps through the block without reading a column (through the air
+    // over a model, a cache miss a column).
+    block_nx_ = (nx_ + kBlockColumns - 1) / kBlockColumns;
+    const int32_t block_ny = (ny_ + kBlockColumns - 1) / kBlockColumns;
+    block_z_.assign(size_t(block_nx_) * size_t(block_ny), nothing);
+    for (int32_t r = 0; r < ny_; ++r)
+        for (int32_t c = 0; c < nx_; ++c) {
+            auto& b = block_z_[size_t(r / kBlockColumns) * size_t(block_nx_) + size_t(c / kBlockColumns)];
+            const auto& z = column_z_[size_t(r) * size_t(nx_) + size_t(c)][0];
+            b[0] = std::min(b[0], z[0]);
+            b[1] = std::max(b[1], z[1]);
+        }
     build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -458,7 +474,46 @@ std::optional<RayHit> ColumnGrid::firstHit(const Vec3& origin, const Vec3& direc
         };
         double next_x = nextLine(0, c), next_y = nextLine(1, r);
         double t_enter = t_in;
+        // A horizontal ray's one z, widened as testColumn widens it.
+        const double z_pad = 1e-6 * 2 * std::fabs(o[2]) + 1e-300;
+        int64_t checked_block = -1;
         for (;;) {
+            if (d[2] == 0) {
+                const int64_t block = int64_t(r / kBlockColumns) * block_nx_ + c / kBlockColumns;
+                if (block != checked_block) {
+                    checked_block = block;
+                    const auto& bz = block_z_[size_t(block)];
+                    if (double(bz[0]) > o[2] + z_pad || double(bz[1]) < o[2] - z_pad) {
+                        // Step through the block: every column in it would be skipped.
+                        bool out = false;
+                        while (int64_t(r / kBlockColumns) * block_nx_ + c / kBlockColumns == block) {
+                            const double t_exit = std::min({next_x, next_y, t_out});
+                            t_enter = t_exit;
+                            if (t_exit >= t_out) {
+                                out = true;
+                                break;
+                            }
+                            if (next_x <= next_y) {
+                                c += step_c;
+                                if (c < 0 || c >= nx_) {
+                                    out = true;
+                                    break;
+                                }
+                                next_x = nextLine(0, c);
+                            } else {
+                                r += step_r;
+                                if (r < 0 || r >= ny_) {
+                                    out = true;
+                                    break;
+                                }
+                                next_y = nextLine(1, r);
+                            }
+                        }
+                        if (out) break;
+                        continue;
+                    }
+                }
+            }
             const double t_exit = std::min({next_x, next_y, t_out});
             // The walk's parameters are a column's within rounding; a margin
             // of a column's tenth keeps every z the ray has over it.

@@ -125,6 +125,10 @@ private:
     // Per column: the z range of its sloped and vertical triangles [0] and of
     // all its triangles [1] (floats rounded outwards; empty: +inf, -inf).
     std::vector<std::array<std::array<float, 2>, 2>> column_z_;
+    // Per block of 8 x 8 columns: the z range of its columns' non-flat
+    // triangles (a horizontal ray outside it passes the block unread).
+    std::vector<std::array<float, 2>> block_z_;
+    int32_t block_nx_ = 0;
     // Per mesh triangle: its z range as floats rounded outwards, so that a
     // ray along a column tests only the triangles its z passes there (the
     // grid's answer to a tree's boxes in z: a horizontal ray through a
