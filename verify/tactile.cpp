@@ -233,29 +233,36 @@ std::vector<double> reachedBy(const HeightMap& h, double r, double table) {
             const double d2 = (di * h.step) * (di * h.step) + (dj * h.step) * (dj * h.step);
             if (d2 <= r * r) disc.push_back({di, dj, std::sqrt(r * r - d2)});
         }
-    auto height = [&](int i, int j) {
-        if (i < 0 || j < 0 || i >= h.nx || j >= h.ny) return table;
-        const double z = h.at(i, j);
-        return std::isfinite(z) ? z : table;
-    };
-    std::vector<double> centre(h.z.size()), reach(h.z.size());
-    forRows(h.ny, [&](int j) {
+    // Both passes read arrays padded by n samples on every side, so that an
+    // offset never leaves them, and run offset by offset along a row: a
+    // maximum (minimum) of the same values as sample by sample, in a loop
+    // the compiler vectorises.
+    const size_t w = size_t(h.nx) + 2 * size_t(n), rows = size_t(h.ny) + 2 * size_t(n);
+    std::vector<double> padded(w * rows, table);  // the surface; the table where nothing is
+    for (int j = 0; j < h.ny; ++j)
         for (int i = 0; i < h.nx; ++i) {
-            double c = -std::numeric_limits<double>::infinity();
-            for (const Offset& o : disc) c = std::max(c, height(i + o.di, j + o.dj) + o.rise);
-            centre[size_t(j) * size_t(h.nx) + size_t(i)] = c;
+            const double z = h.at(i, j);
+            padded[(size_t(j) + size_t(n)) * w + size_t(i) + size_t(n)] = std::isfinite(z) ? z : table;
+        }
+    // The lowest each ball centre can go; a centre beyond the sampled area
+    // stands on the table.
+    std::vector<double> centre(w * rows, table + r), reach(h.z.size());
+    forRows(h.ny, [&](int j) {
+        double* out = &centre[(size_t(j) + size_t(n)) * w + size_t(n)];
+        std::fill(out, out + h.nx, -std::numeric_limits<double>::infinity());
+        for (const Offset& o : disc) {
+            const double* in = &padded[(size_t(j + o.dj) + size_t(n)) * w + size_t(n + o.di)];
+            const double rise = o.rise;
+            for (int i = 0; i < h.nx; ++i) out[i] = std::max(out[i], in[i] + rise);
         }
     });
     forRows(h.ny, [&](int j) {
-        for (int i = 0; i < h.nx; ++i) {
-            double lowest = std::numeric_limits<double>::infinity();
-            for (const Offset& o : disc) {
-                const int ci = i + o.di, cj = j + o.dj;
-                // A centre beyond the sampled area stands on the table.
-                const double c = ci < 0 || cj < 0 || ci >= h.nx || cj >= h.ny ? table + r : centre[size_t(cj) * size_t(h.nx) + size_t(ci)];
-                lowest = std::min(lowest, c - o.rise);
-            }
-            reach[size_t(j) * size_t(h.nx) + size_t(i)] = lowest;
+        double* out = &reach[size_t(j) * size_t(h.nx)];
+        std::fill(out, out + h.nx, std::numeric_limits<double>::infinity());
+        for (const Offset& o : disc) {
+            const double* in = &centre[(size_t(j + o.dj) + size_t(n)) * w + size_t(n + o.di)];
+            const double rise = o.rise;
+            for (int i = 0; i < h.nx; ++i) out[i] = std::min(out[i], in[i] - rise);
         }
     });
     return reach;
