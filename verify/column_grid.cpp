@@ -9,7 +9,6 @@
 #include <cmath>
 #include <exception>
 #include <stdexcept>
-#include <thread>
 
 #include "verify/detail/ray_triangle.h"
 #include "verify/detail/workers.h"
@@ -128,12 +127,7 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
     z_range_.assign(nt, {0.0f, 0.0f});
     std::vector<uint8_t> usable(nt, 0);
     const unsigned workers = nt < 20000 ? 1u : detail::workerCount(0);
-    auto forWorkers = [&](const auto& fn) {
-        std::vector<std::thread> pool;
-        for (unsigned w = 1; w < workers; ++w) pool.emplace_back(fn, w);
-        fn(0u);
-        for (std::thread& th : pool) th.join();
-    };
+    auto forWorkers = [&](const auto& fn) { detail::runOnWorkers(workers, [&](unsigned w, const auto&) { fn(w); }); };
     // The usable triangles, their z ranges and the box of x, y, on the
     // worker threads (a contiguous range of triangles each).
     struct Extent {
@@ -339,56 +333,45 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
     if (columns == 0 || entries_.empty()) return;
     workers = std::max(1u, std::min(detail::workerCount(workers), unsigned((columns + kColumnsPerTask - 1) / kColumnsPerTask)));
     std::atomic<size_t> next{0};
-    std::atomic<bool> failed{false};
-    std::exception_ptr error;  // the first exception a visit threw; written once, under `failed`
-    auto work = [&](unsigned worker) {
+    detail::runOnWorkers(workers, [&](unsigned worker, const std::atomic<bool>& stop) {
         std::vector<Box3> boxes;
         std::vector<BoxColumns> box_columns;
-        try {
-            for (size_t task; !failed.load() && (task = next.fetch_add(kColumnsPerTask)) < columns;) {
-                const size_t end = std::min(columns, task + kColumnsPerTask);
-                for (size_t bin = task; bin < end; ++bin) {
-                    const uint32_t first = start_[bin], n = start_[bin + 1] - first;
-                    if (n < 2) continue;
-                    boxes.resize(n);
-                    box_columns.resize(n);
-                    for (uint32_t i = 0; i < n; ++i) {
-                        const auto& q = triangles_[entries_[first + i]];
-                        const Vec3 &p0 = positions_[q[0]], &p1 = positions_[q[1]], &p2 = positions_[q[2]];
-                        Box3& box = boxes[i];
-                        box = {{std::min({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}), std::min({p0.z, p1.z, p2.z})},
-                               {std::max({p0.x, p1.x, p2.x}), std::max({p0.y, p1.y, p2.y}), std::max({p0.z, p1.z, p2.z})}};
-                        box_columns[i] = boxColumns(box.lo[0], box.hi[0], box.lo[1], box.hi[1]);
-                    }
-                    for (uint32_t i = 0; i + 1 < n; ++i) {
-                        const Box3& u = boxes[i];
-                        for (uint32_t j = i + 1; j < n; ++j) {
-                            const Box3& v = boxes[j];
-                            if (u.lo[2] > v.hi[2] || v.lo[2] > u.hi[2] || u.lo[0] > v.hi[0] || v.lo[0] > u.hi[0] ||
-                                u.lo[1] > v.hi[1] || v.lo[1] > u.hi[1])
-                                continue;
-                            const uint32_t a = entries_[first + i], b = entries_[first + j];
-                            const BoxColumns &ca = box_columns[i], &cb = box_columns[j];
-                            // Two boxes of columns meet in a box: its first column
-                            // is the later first row and the later first column.
-                            const bool first_here =
-                                ca.boxed && cb.boxed
-                                    ? bin == size_t(std::max(ca.r0, cb.r0)) * size_t(nx_) + size_t(std::max(ca.c0, cb.c0))
-                                    : firstCommon(a, b, uint32_t(bin));
-                            if (first_here) visit(worker, a, b);
-                        }
+        for (size_t task; !stop.load() && (task = next.fetch_add(kColumnsPerTask)) < columns;) {
+            const size_t end = std::min(columns, task + kColumnsPerTask);
+            for (size_t bin = task; bin < end; ++bin) {
+                const uint32_t first = start_[bin], n = start_[bin + 1] - first;
+                if (n < 2) continue;
+                boxes.resize(n);
+                box_columns.resize(n);
+                for (uint32_t i = 0; i < n; ++i) {
+                    const auto& q = triangles_[entries_[first + i]];
+                    const Vec3 &p0 = positions_[q[0]], &p1 = positions_[q[1]], &p2 = positions_[q[2]];
+                    Box3& box = boxes[i];
+                    box = {{std::min({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}), std::min({p0.z, p1.z, p2.z})},
+                           {std::max({p0.x, p1.x, p2.x}), std::max({p0.y, p1.y, p2.y}), std::max({p0.z, p1.z, p2.z})}};
+                    box_columns[i] = boxColumns(box.lo[0], box.hi[0], box.lo[1], box.hi[1]);
+                }
+                for (uint32_t i = 0; i + 1 < n; ++i) {
+                    const Box3& u = boxes[i];
+                    for (uint32_t j = i + 1; j < n; ++j) {
+                        const Box3& v = boxes[j];
+                        if (u.lo[2] > v.hi[2] || v.lo[2] > u.hi[2] || u.lo[0] > v.hi[0] || v.lo[0] > u.hi[0] ||
+                            u.lo[1] > v.hi[1] || v.lo[1] > u.hi[1])
+                            continue;
+                        const uint32_t a = entries_[first + i], b = entries_[first + j];
+                        const BoxColumns &ca = box_columns[i], &cb = box_columns[j];
+                        // Two boxes of columns meet in a box: its first column
+                        // is the later first row and the later first column.
+                        const bool first_here =
+                            ca.boxed && cb.boxed
+                                ? bin == size_t(std::max(ca.r0, cb.r0)) * size_t(nx_) + size_t(std::max(ca.c0, cb.c0))
+                                : firstCommon(a, b, uint32_t(bin));
+                        if (first_here) visit(worker, a, b);
                     }
                 }
             }
-        } catch (...) {
-            if (!failed.exchange(true)) error = std::current_exception();
         }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work, w);
-    work(0);
-    for (std::thread& t : pool) t.join();
-    if (error) std::rethrow_exception(error);
+    });
 }
 
 std::optional<RayHit> ColumnGrid::firstHit(const Vec3& origin, const Vec3& direction, int64_t skip,

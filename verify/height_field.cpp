@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include "verify/detail/workers.h"
 
@@ -72,11 +71,9 @@ void rasteriseTop(const Mesh& mesh, TopHeightField& f) {
     const size_t nt = mesh.triangles.size();
     const unsigned workers = nt < 20000 ? 1u : detail::workerCount(0);
     std::vector<std::vector<double>> parts(workers - 1, std::vector<double>(f.z.size(), none));
-    std::vector<std::thread> pool;
-    for (unsigned w = 1; w < workers; ++w)
-        pool.emplace_back([&, w] { rasteriseRange(mesh, nt * w / workers, nt * (w + 1) / workers, f, parts[w - 1]); });
-    rasteriseRange(mesh, 0, nt / workers, f, f.z);
-    for (std::thread& t : pool) t.join();
+    detail::runOnWorkers(workers, [&](unsigned w, const auto&) {
+        rasteriseRange(mesh, nt * w / workers, nt * (w + 1) / workers, f, w == 0 ? f.z : parts[w - 1]);
+    });
     for (const auto& part : parts)
         for (size_t k = 0; k < f.z.size(); ++k) f.z[k] = std::max(f.z[k], part[k]);
 }

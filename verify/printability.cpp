@@ -6,7 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <thread>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -300,10 +299,7 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
         };
         std::vector<Sample> walls, gaps, slabs;
         auto measureAll = [&] {
-            std::vector<std::thread> pool;
-            for (unsigned w = 1; w < workers; ++w) pool.emplace_back(measure, w);
-            measure(0);
-            for (std::thread& th : pool) th.join();
+            detail::runOnWorkers(workers, [&](unsigned w, const auto&) { measure(w); });
             walls.clear();
             for (Samples& p : parts) {
                 walls.insert(walls.end(), p.walls.begin(), p.walls.end());

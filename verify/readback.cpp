@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include "verify/detail/format.h"
 #include "verify/detail/workers.h"
@@ -185,10 +184,7 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const ColumnGrid& 
                 }
             }
     };
-    std::vector<std::thread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work, w);
-    work(0);
-    for (std::thread& t : pool) t.join();
+    detail::runOnWorkers(workers, [&](unsigned w, const auto&) { work(w); });
 
     double sum_err = 0, sum_verr = 0;
     size_t n_err = 0, n_verr = 0;

@@ -6,7 +6,6 @@
 #include <limits>
 #include <numbers>
 #include <string>
-#include <thread>
 
 #include "gen/model/features/class_textures.h"
 #include "gen/model/features/marks.h"
@@ -118,10 +117,7 @@ bool dihedralAngles(const Mesh& m, std::vector<std::vector<EdgeAngle>>& parts, s
             }
         }
     };
-    std::vector<std::thread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work, w);
-    work(0);
-    for (std::thread& t : pool) t.join();
+    detail::runOnWorkers(workers, [&](unsigned w, const auto&) { work(w); });
     return !m.triangles.empty();
 }
 
@@ -208,13 +204,9 @@ using HeightMap = TopHeightField;
 template <class Fn>
 void forRows(int rows, Fn fn) {
     const unsigned workers = detail::workerCount(0);
-    std::vector<std::thread> pool;
-    for (unsigned w = 1; w < workers; ++w)
-        pool.emplace_back([&, w] {
-            for (int j = int(w); j < rows; j += int(workers)) fn(j);
-        });
-    for (int j = 0; j < rows; j += int(workers)) fn(j);
-    for (std::thread& t : pool) t.join();
+    detail::runOnWorkers(workers, [&](unsigned w, const auto&) {
+        for (int j = int(w); j < rows; j += int(workers)) fn(j);
+    });
 }
 
 // Where a ball of radius r lowered from above onto the surface can touch:

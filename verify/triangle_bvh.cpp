@@ -711,22 +711,10 @@ void TriangleBvh::forEachOverlappingPair(const std::function<void(unsigned, uint
         tasks.swap(next);
     }
     std::atomic<size_t> next_task{0};
-    std::atomic<bool> failed{false};
-    std::exception_ptr error;  // the first exception a visit threw; written once, under `failed`
-    auto work = [&](unsigned worker) {
+    detail::runOnWorkers(workers, [&](unsigned worker, const std::atomic<bool>& stop) {
         auto call = [&](uint32_t a, uint32_t b) { visit(worker, a, b); };
-        try {
-            for (size_t i; !failed.load() && (i = next_task.fetch_add(1)) < tasks.size();)
-                im.pairs(tasks[i].a, tasks[i].b, call);
-        } catch (...) {
-            if (!failed.exchange(true)) error = std::current_exception();
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work, w);
-    work(0);
-    for (std::thread& t : pool) t.join();
-    if (error) std::rethrow_exception(error);
+        for (size_t i; !stop.load() && (i = next_task.fetch_add(1)) < tasks.size();) im.pairs(tasks[i].a, tasks[i].b, call);
+    });
 }
 
 }  // namespace tsf

@@ -145,12 +145,7 @@ K::Triangle_3 cgalTriangle(const Mesh& m, uint32_t t) {
 // Every pair of triangles that touch or cross (CGAL, all pairs) is a
 // candidate, exactly once, and every candidate's boxes overlap.
 void expectEveryTouchingPair(const Mesh& m, const ColumnGrid& grid, const std::string& what) {
-    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> per_worker(2);
-    grid.forEachOverlappingPair(
-        [&](unsigned w, uint32_t a, uint32_t b) { per_worker[w].emplace_back(std::min(a, b), std::max(a, b)); }, 2);
-    std::vector<std::pair<uint32_t, uint32_t>> got = per_worker[0];
-    got.insert(got.end(), per_worker[1].begin(), per_worker[1].end());
-    std::sort(got.begin(), got.end());
+    const auto got = vtest::visitedPairs(grid);
     EXPECT_EQ(std::adjacent_find(got.begin(), got.end()), got.end()) << what << ": a pair was visited twice";
     const size_t n = m.triangles.size();
     std::vector<K::Triangle_3> tris;
@@ -216,26 +211,13 @@ TEST(ColumnGrid, ALargeModelBuiltOnSeveralThreadsAgreesWithTheTree) {
         const Vec3 n = cross(sub(m.positions[q[1]], m.positions[q[0]]), sub(m.positions[q[2]], m.positions[q[0]]));
         expectSameHit(grid, tree, vtest::centroid(m, t), {-n.x, -n.y, -n.z}, t, INFINITY, "inward");
     }
-    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> per_worker(2);
-    grid.forEachOverlappingPair(
-        [&](unsigned w, uint32_t a, uint32_t c) { per_worker[w].emplace_back(std::min(a, c), std::max(a, c)); }, 2);
-    std::vector<std::pair<uint32_t, uint32_t>> got = per_worker[0];
-    got.insert(got.end(), per_worker[1].begin(), per_worker[1].end());
-    std::sort(got.begin(), got.end());
+    const auto got = vtest::visitedPairs(grid);
     EXPECT_EQ(std::adjacent_find(got.begin(), got.end()), got.end()) << "a pair was visited twice";
-    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> touching(2);
-    tree.forEachOverlappingPair(
-        [&](unsigned w, uint32_t a, uint32_t c) {
-            if (CGAL::do_intersect(cgalTriangle(m, a), cgalTriangle(m, c))) touching[w].emplace_back(std::min(a, c), std::max(a, c));
-        },
-        2);
-    size_t checked = 0;
-    for (const auto& list : touching)
-        for (const auto& pair : list) {
-            ++checked;
-            EXPECT_TRUE(std::binary_search(got.begin(), got.end(), pair)) << pair.first << ", " << pair.second;
-        }
-    EXPECT_GT(checked, m.triangles.size());
+    const auto touching = vtest::visitedPairs(
+        tree, [&](uint32_t a, uint32_t c) { return CGAL::do_intersect(cgalTriangle(m, a), cgalTriangle(m, c)); });
+    for (const auto& pair : touching)
+        EXPECT_TRUE(std::binary_search(got.begin(), got.end(), pair)) << pair.first << ", " << pair.second;
+    EXPECT_GT(touching.size(), m.triangles.size());
 }
 
 // Two triangles that meet only at a point where four columns meet, each in

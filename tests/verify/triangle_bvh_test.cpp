@@ -182,12 +182,7 @@ TEST(TriangleBvh, OverlappingPairsAreExactlyTheBruteForceOnes) {
                 p.min.z <= q.max.z && q.min.z <= p.max.z)
                 expected.emplace_back(a, b);
         }
-    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> per_worker(2);
-    bvh.forEachOverlappingPair(
-        [&](unsigned w, uint32_t a, uint32_t b) { per_worker[w].emplace_back(std::min(a, b), std::max(a, b)); }, 2);
-    std::vector<std::pair<uint32_t, uint32_t>> got = per_worker[0];
-    got.insert(got.end(), per_worker[1].begin(), per_worker[1].end());
-    std::sort(got.begin(), got.end());
+    const auto got = vtest::visitedPairs(bvh);
     EXPECT_EQ(std::adjacent_find(got.begin(), got.end()), got.end()) << "a pair was visited twice";
     EXPECT_EQ(got, expected);
     EXPECT_GT(expected.size(), n);  // neighbours touch: the test is not vacuous

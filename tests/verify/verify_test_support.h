@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gen/mesh/direct_mesher.h"
@@ -33,6 +34,28 @@ using test::runTsf;
 using test::scratchDir;
 using test::smallParams;
 using test::writeText;
+
+/// The pairs `index.forEachOverlappingPair` visits on two workers that
+/// `keep(a, b)` accepts, each as (smaller, larger), in ascending order; a
+/// pair visited twice is listed twice.
+template <class Index, class Keep>
+std::vector<std::pair<uint32_t, uint32_t>> visitedPairs(const Index& index, Keep keep) {
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> per_worker(2);
+    index.forEachOverlappingPair(
+        [&](unsigned w, uint32_t a, uint32_t b) {
+            if (keep(a, b)) per_worker[w].emplace_back(std::min(a, b), std::max(a, b));
+        },
+        2);
+    std::vector<std::pair<uint32_t, uint32_t>> pairs = per_worker[0];
+    pairs.insert(pairs.end(), per_worker[1].begin(), per_worker[1].end());
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+template <class Index>
+std::vector<std::pair<uint32_t, uint32_t>> visitedPairs(const Index& index) {
+    return visitedPairs(index, [](uint32_t, uint32_t) { return true; });
+}
 
 inline Vec3 centroid(const Mesh& m, size_t t) {
     const auto& tri = m.triangles[t];

@@ -1,8 +1,11 @@
-// How many threads the verifier's parallel stages use.
+// The verifier's parallel stages: how many threads, and running on them.
 #pragma once
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <thread>
+#include <vector>
 
 namespace tsf::detail {
 
@@ -10,6 +13,29 @@ namespace tsf::detail {
 inline unsigned workerCount(unsigned workers) {
     if (workers > 0) return workers;
     return std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// Calls fn(worker, stop) for every worker in [0, workers): worker 0 on the
+/// calling thread, the others on threads of their own, and joins them. The
+/// first exception fn throws is rethrown here once every worker is done;
+/// `stop` turns true as soon as one is thrown, so that a long loop can end
+/// early.
+template <class Fn>
+void runOnWorkers(unsigned workers, Fn&& fn) {
+    std::atomic<bool> stop{false};
+    std::exception_ptr error;  // written once, by the worker that set `stop`
+    auto guarded = [&](unsigned worker) {
+        try {
+            fn(worker, static_cast<const std::atomic<bool>&>(stop));
+        } catch (...) {
+            if (!stop.exchange(true)) error = std::current_exception();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(guarded, w);
+    guarded(0);
+    for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
 }
 
 }  // namespace tsf::detail
