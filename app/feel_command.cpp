@@ -20,6 +20,7 @@
 
 #include "app/commands.h"
 #include "app/gen_options.h"
+#include "app/session_signals.h"
 #include "gen/util/error.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/mesh_io/mesh_writer.h"
@@ -30,6 +31,7 @@
 #include "gen/model/scene.h"
 #include "haptics/coverage.h"
 #include "haptics/falcon/falcon_device.h"
+#include "haptics/falcon/falcon_guardian.h"
 #include "haptics/falcon/libusb_transport.h"
 #include "haptics/feel_renderer.h"
 #include "haptics/field_mapping.h"
@@ -91,34 +93,6 @@ constexpr double kMaxLogSeconds = 600.0;
 /// Room in the log for a simulated session this many times its script's
 /// length (the hand slows down while it waits for the finger, sim_device.h).
 constexpr double kSimLogScriptFactor = 2.0;
-
-std::atomic<bool> g_stop{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the SIGINT flag must be lock-free");
-
-extern "C" void onSigint(int) { g_stop.store(true); }
-
-/// Installs the SIGINT handler for its lifetime; the handler only sets a flag
-/// the haptic loop polls (it then ramps the force down and ends).
-class SigintGuard {
-public:
-    SigintGuard() {
-        g_stop.store(false);
-        struct sigaction sa {};
-        sa.sa_handler = onSigint;
-        sigemptyset(&sa.sa_mask);
-        installed_ = sigaction(SIGINT, &sa, &old_) == 0;
-    }
-    ~SigintGuard() {
-        if (installed_) sigaction(SIGINT, &old_, nullptr);
-    }
-    SigintGuard(const SigintGuard&) = delete;
-    SigintGuard& operator=(const SigintGuard&) = delete;
-
-private:
-    struct sigaction old_ {};
-    bool installed_ = false;
-};
-
 
 [[noreturn]] void deviceFailed(const std::string& message) {
     std::fprintf(stderr, "tsf: error: %s\n", message.c_str());
@@ -408,10 +382,18 @@ void runFeel(const FeelOptions& o) {
     const bool realtime = rq.realtime;
 
     FeelOutcome session;
+    int signal_caught = 0;
     {
-        SigintGuard sigint;
+        SessionSignals signals;
+        rq.loop.pause_requested = &SessionSignals::pause();
+        rq.loop.pause = &SessionSignals::pauseProcess;
         try {
-            session = runFeelSession(scene, surface, *device, rq, g_stop, [&] {
+            // Started before the Falcon is opened, released after it is
+            // closed at zero force: should this process die in between
+            // (SIGKILL, a crash), the guardian zeroes the Falcon.
+            std::optional<FalconGuardian> guardian;
+            if (falcon) guardian.emplace(openFalconUsb);
+            session = runFeelSession(scene, surface, *device, rq, SessionSignals::stop(), [&] {
                 if (falcon && !falcon->homed())
                     std::fprintf(stderr, "tsf: home the Falcon: pull the grip all the way out toward you, then push it "
                                          "back in; forces start when its light turns from red to green (Ctrl-C ends)\n");
@@ -419,6 +401,7 @@ void runFeel(const FeelOptions& o) {
         } catch (const DeviceError& e) {
             deviceFailed(e.what());
         }
+        signal_caught = SessionSignals::caught();
     }
     const LoopStats& stats = session.stats;
     const ForceLog& log = session.log;
@@ -494,6 +477,8 @@ void runFeel(const FeelOptions& o) {
                                      {"p99", stats.compute.quantile_us(0.99)},
                                      {"max", stats.compute.max_us()}}},
                      {"overruns", stats.overruns},
+                     {"pauses", stats.pauses},
+                     {"stalls", stats.stalls},
                      {"failed_writes", stats.failed_writes},
                      {"zero_force_sent", stats.zero_force_sent}};
         j["forces"] = {{"max_N", c.max_force_N},
@@ -536,8 +521,13 @@ void runFeel(const FeelOptions& o) {
                     (unsigned long long)c.damping_ticks, (unsigned long long)c.rejected_ticks);
         std::printf("  coverage  touched %lld of %lld cells (%.1f%%)%s\n", (long long)coverage.touched,
                     (long long)coverage.cells, 100.0 * coverage.fraction(), log.dropped() ? ", log full: undercounted" : "");
-        std::printf("  ended     %s; zero force %s\n", loopEndName(stats.end),
+        std::printf("  ended     %s; zero force %s", loopEndName(stats.end),
                     stats.zero_force_sent ? "sent" : "NOT confirmed by the device");
+        if (stats.pauses || stats.stalls)
+            std::printf("; %llu pause%s and %llu stall%s, each followed by the start ramp again",
+                        (unsigned long long)stats.pauses, stats.pauses == 1 ? "" : "s",
+                        (unsigned long long)stats.stalls, stats.stalls == 1 ? "" : "s");
+        std::printf("\n");
         if (!o.log.empty())
             std::printf("  log       %s (%zu rows%s)\n", o.log.c_str(), log.size(),
                         log.dropped() ? (", " + std::to_string(log.dropped()) + " dropped: log full").c_str() : "");
@@ -549,7 +539,11 @@ void runFeel(const FeelOptions& o) {
         const std::string why = device->failureReason();
         deviceFailed(why.empty() ? "the device stopped answering during the session" : why);
     }
-    if (stats.end == LoopEnd::kInterrupted) throw CLI::RuntimeError(kExitInterrupted);
+    if (stats.end == LoopEnd::kInterrupted) {
+        // The device is closed at zero force: now end as the signal asks.
+        finishBySignal(signal_caught);
+        throw CLI::RuntimeError(signal_caught ? 128 + signal_caught : kExitInterrupted);
+    }
 }
 
 }  // namespace
@@ -570,7 +564,10 @@ void addFeelCommand(CLI::App& app) {
         "  tsf feel edited.stl --scene model.stl.scene.json   # an edit of the .scad, rendered by OpenSCAD\n"
         "Device frame: x right, y up, z toward the user, metres; north of the field is away from the user.\n"
         "Buttons: centre = volume mode on/off, plus = coarser level, minus = finer level.\n"
-        "Ctrl-C ramps the force to zero and ends the session (exit code 130). See docs/haptics.md.");
+        "Ctrl-C, SIGTERM (kill, timeout), a closed terminal and Ctrl-\\ ramp the force to zero, close the device\n"
+        "and end the session (exit code 130, or the signal's own status); Ctrl-Z holds zero force while stopped\n"
+        "and ramps in again after fg. With a Falcon, a guardian process zeroes it if tsf is killed or crashes.\n"
+        "See docs/haptics.md.");
     addGenOptions(cmd, o->gen);
     cmd->add_option("--device", o->device, "sim | replay:FILE | falcon")->capture_default_str();
     cmd->add_option("--firmware", o->firmware,

@@ -47,6 +47,9 @@ struct DeviceState {
     Vec3 position_m{0.0};   ///< end-effector position, device frame
     uint32_t buttons = 0;   ///< kButton* bits, 1 = pressed
     bool homed = true;      ///< false until a device with relative encoders has found its origin
+    /// Ticks since the device last reported a new position (0: this reading
+    /// is new). A device that always has one leaves it 0.
+    uint32_t stale_ticks = 0;
 };
 
 enum class ReadStatus {
@@ -83,6 +86,10 @@ public:
     /// Commands a force, held until the next call. False when the device did
     /// not accept it.
     virtual bool writeForce(const Vec3& force_N) noexcept = 0;
+    /// Makes the device hold zero force now, as far as it can confirm it,
+    /// and stay open (before the process is stopped: a pause). Default: a
+    /// zero writeForce.
+    virtual void holdZero() noexcept { writeForce(Vec3(0.0)); }
     /// What the rendering is doing, for a device that can show it (the
     /// Falcon's LEDs); called by the loop after each tick's force. Default:
     /// nothing.

@@ -60,7 +60,10 @@ void runHapticLoop(HapticDevice& device, TickHandler& handler, LoopClock& clock,
     double stop_t = 0.0;
     int failed_in_row = 0;
     double last_t = 0.0;
-    double homed_t = -1.0;  // loop time of the first homed tick (< 0: not homed)
+    double homed_t = -1.0;  // loop time the start ramp began (< 0: not homed)
+    bool pausing = false;
+    double pause_t = 0.0;
+    const double stall_s = double(options.stall_ticks) * period;
     DeviceState state;
     LogRecord record;
     for (;;) {
@@ -93,16 +96,38 @@ void runHapticLoop(HapticDevice& device, TickHandler& handler, LoopClock& clock,
             }
             if (stopping) stop_t = t;
         }
+        if (!stopping && !pausing && options.pause_requested &&
+            options.pause_requested->load(std::memory_order_relaxed)) {
+            pausing = true;
+            pause_t = t;
+        }
         // The start ramp runs from the first homed tick: a device that homes
         // late (the Falcon, after the user has moved the grip) still gets
-        // its forces faded in, and losing the homing restarts it.
-        if (!state.homed) homed_t = -1.0;
+        // its forces faded in, and losing the homing or a stall restarts it.
+        const bool stalled = (stall_s > 0.0 && late > stall_s) ||
+                             (options.stall_ticks > 0 && state.stale_ticks >= uint32_t(options.stall_ticks));
+        if (stalled && homed_t >= 0.0) ++stats.stalls;
+        if (!state.homed || stalled) homed_t = -1.0;
         else if (homed_t < 0.0) homed_t = t;
         const double since_homed = homed_t < 0.0 ? 0.0 : t - homed_t;
         double gain = options.start_ramp_s > 0.0 ? smoothstep01(since_homed / options.start_ramp_s) : 1.0;
         if (stopping) {
             const double left = options.stop_ramp_s > 0.0 ? 1.0 - (t - stop_t) / options.stop_ramp_s : 0.0;
             if (left <= 0.0) break;
+            gain *= smoothstep01(left);
+        } else if (pausing) {
+            const double left = options.stop_ramp_s > 0.0 ? 1.0 - (t - pause_t) / options.stop_ramp_s : 0.0;
+            if (left <= 0.0) {
+                // Zero held, then the process may stop; forces ramp in again after.
+                device.writeForce(Vec3(0.0));
+                device.holdZero();
+                ++stats.pauses;
+                if (options.pause) options.pause();
+                pausing = false;
+                homed_t = -1.0;
+                ++k;
+                continue;  // the next deadline follows the lateness the pause left
+            }
             gain *= smoothstep01(left);
         }
         Vec3 force(0.0);

@@ -14,9 +14,17 @@
 //   - the output gain ramps from 0 to 1 over start_ramp_s (smoothstep) from
 //     the first tick the device is homed, so a probe resting inside the
 //     surface at start (or when homing completes) is not kicked;
-//   - on a stop request (Ctrl-C sets the flag), at duration_s, or when the
-//     handler asks, the gain ramps to 0 over stop_ramp_s and then the loop
-//     ends;
+//   - on a stop request (a signal handler sets the flag), at duration_s, or
+//     when the handler asks, the gain ramps to 0 over stop_ramp_s and then
+//     the loop ends;
+//   - on a pause request (Ctrl-Z) the gain ramps to 0 over stop_ramp_s, the
+//     device is told to hold zero (HapticDevice::holdZero), LoopOptions::pause
+//     is called (it stops the process and returns when it continues), and
+//     the start ramp begins again;
+//   - a stall - a tick more than stall_ticks periods late (the process was
+//     stopped or starved) or a device whose position is stall_ticks ticks
+//     old - restarts the start ramp: forces never come back at full strength
+//     onto a hand that has moved meanwhile;
 //   - on EVERY exit (ramp finished, device ended or failed, a device that
 //     refuses forces) the loop writes zero force before returning;
 //   - the device not homed: zero force (the handler is not even asked).
@@ -50,6 +58,14 @@ struct LoopOptions {
     double stop_ramp_s = 0.1;
     /// Consecutive refused writes after which the device counts as failed.
     int max_failed_writes = 3;
+    /// A stall this many ticks long (lateness or a stale position) restarts the start ramp.
+    int stall_ticks = 5;
+    /// Set (by a signal handler) to pause the session; may be null. The loop
+    /// never clears it: `pause` must.
+    const std::atomic<bool>* pause_requested = nullptr;
+    /// Called on the loop's thread once the device holds zero; returns when
+    /// the session may go on (stopping the process is its business).
+    void (*pause)() noexcept = nullptr;
 };
 
 enum class LoopEnd {
@@ -90,6 +106,8 @@ struct LoopStats {
     MicrosHistogram compute;       ///< read + force + write, on the steady clock (real CPU time)
     uint64_t overruns = 0;         ///< ticks that woke more than a period late
     uint64_t failed_writes = 0;
+    uint64_t pauses = 0;           ///< pause requests served (zero held, then the start ramp again)
+    uint64_t stalls = 0;           ///< stalls that restarted the start ramp
     bool zero_force_sent = false;  ///< the final zero write happened
 };
 

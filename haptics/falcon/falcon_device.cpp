@@ -117,6 +117,28 @@ void FalconDevice::close() noexcept {
     awaiting_ = false;
 }
 
+void FalconDevice::holdZero() noexcept {
+    if (!link_ || unplugged_) return;
+    // Zero packets, each answered when the device still answers; the
+    // replies keep the position current, and none is left in flight.
+    const FalconCommand zero{{0, 0, 0}, statusBits()};
+    for (int k = 0; k < options_.close_packets; ++k) {
+        if (!send(zero)) return;
+        if (failed_) continue;
+        const UsbResult r = link_->read(buf_, kCloseReadTimeout_ms);
+        if (r.status == UsbStatus::kNoDevice) {
+            unplugged_ = true;
+            fail("the Falcon was unplugged or lost power during the session");
+            return;
+        }
+        parser_.push(std::span<const uint8_t>(buf_.data(), r.bytes));
+        FalconReport rep;
+        while (parser_.next(rep)) takeFrame(rep);
+    }
+    awaiting_ = false;
+    silent_ = 0;
+}
+
 void FalconDevice::fail(const char* why) noexcept {
     if (!failed_) failure_ = why;
     failed_ = true;
@@ -211,6 +233,7 @@ ReadStatus FalconDevice::read(double loop_time_s, DeviceState& out) noexcept {
     out.position_m = position_m_;
     out.buttons = report_.buttons;
     out.homed = homed_;
+    out.stale_ticks = uint32_t(std::min<uint64_t>(silent_, UINT32_MAX));
     return ReadStatus::kOk;
 }
 

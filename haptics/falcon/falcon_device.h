@@ -29,6 +29,10 @@
 //   - a position that stops updating is not pushed on: after
 //     stale_ticks_to_zero ticks without a frame every motor command is 0
 //     until a frame comes again (a tick or two of USB jitter keeps the force);
+//   - holdZero() (a pause) exchanges close_packets zero packets and keeps
+//     the link; read() reports how many ticks the position is old
+//     (DeviceState::stale_ticks: the loop restarts its start ramp after a
+//     stall);
 //   - close() (and the destructor) sends zero commands before releasing the
 //     device, also after a failure: to a device that stopped answering it
 //     writes them without waiting for replies, so the last command the
@@ -106,6 +110,8 @@ public:
     void close() noexcept override;
     ReadStatus read(double loop_time_s, DeviceState& out) noexcept override;
     bool writeForce(const Vec3& force_N) noexcept override;
+    /// close_packets zero packets, each read back (a pause: the link stays).
+    void holdZero() noexcept override;
     void showStatus(bool in_contact, bool volume_mode) noexcept override;
     std::string failureReason() const override { return failure_ ? failure_ : ""; }
 

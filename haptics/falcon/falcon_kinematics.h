@@ -72,8 +72,10 @@ inline constexpr double kFalconFkTolerance_m = 0.01 * kFalconMetresPerCount;
 /// the scale "rather random"). The figure that never exceeds Novint's
 /// driver is kept until it is measured on a device.
 inline constexpr double kFalconCountsPerNm = 2220.0;
-/// Largest motor command magnitude sent (libnifalcon's documented cap).
-inline constexpr int kFalconMaxMotorCommand = 4096;
+/// Largest motor command magnitude sent: where Novint's own driver stops
+/// (libnifalcon's HDAL traces saturate at 4095; its header's 4096 is one
+/// more than any trace shows).
+inline constexpr int kFalconMaxMotorCommand = 4095;
 
 double falconEncoderToAngle(int16_t counts) noexcept;
 /// Inverse of falconEncoderToAngle, unrounded (fakes round it).

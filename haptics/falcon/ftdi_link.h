@@ -2,7 +2,9 @@
 // UsbTransport with the chip's vendor control requests (all bmRequestType
 // 0x40, wIndex 0, no data stage):
 //
-//   request 0  reset/purge      wValue 1 = receive buffer, 2 = transmit buffer
+//   request 0  reset/purge      wValue 2 = the chip's buffer of data for the host
+//                               (what the host reads), 1 = its buffer of data
+//                               from the host (not yet sent on the serial line)
 //   request 1  modem control    wValue = mask << 8 | state; DTR is bit 0, RTS bit 1
 //   request 2  flow control     wValue 0 = none
 //   request 3  baud rate        wValue = the chip's divisor encoding
@@ -37,6 +39,9 @@ inline constexpr uint16_t kFtdiBaud9600 = 0x4138;    ///< 312.5: the boot loader
 inline constexpr uint16_t kFtdiBaud142857 = 0x0015;  ///< 21: firmware upload
 inline constexpr uint16_t kFtdiBaud1500000 = 0x0002; ///< 2 (special code): normal operation
 inline constexpr uint16_t kFtdiLine8N1 = 0x0008;
+/// Purge (request 0) values, see FtdiLink::purgeReceive.
+inline constexpr uint16_t kFtdiPurgeToHost = 2;
+inline constexpr uint16_t kFtdiPurgeFromHost = 1;
 
 /// Control requests wait this long; they are rare and answered at once.
 inline constexpr int kFtdiControlTimeout_ms = 100;
@@ -45,8 +50,14 @@ class FtdiLink {
 public:
     explicit FtdiLink(UsbTransport& transport) noexcept : usb_(transport) {}
 
-    UsbResult purgeReceive() noexcept { return request(FtdiRequest::kReset, 1); }
-    UsbResult purgeTransmit() noexcept { return request(FtdiRequest::kReset, 2); }
+    /// The purge values are the chip's, named from its side: libftdi 1.5
+    /// (src/ftdi.h, SIO_TCIFLUSH 2 and SIO_TCOFLUSH 1; its comment there says
+    /// the older SIO_RESET_PURGE_RX = 1 empties the FIFO of data from the
+    /// CPU, the opposite of what its name suggested to earlier releases).
+    /// Drops what the device sent that the host has not read (tcflush TCIFLUSH).
+    UsbResult purgeReceive() noexcept { return request(FtdiRequest::kReset, kFtdiPurgeToHost); }
+    /// Drops what the host wrote that the chip has not sent on (TCOFLUSH).
+    UsbResult purgeTransmit() noexcept { return request(FtdiRequest::kReset, kFtdiPurgeFromHost); }
     UsbResult setDtr(bool high) noexcept { return request(FtdiRequest::kModemControl, high ? 0x0101 : 0x0100); }
     UsbResult setRts(bool high) noexcept { return request(FtdiRequest::kModemControl, high ? 0x0202 : 0x0200); }
     UsbResult setNoFlowControl() noexcept { return request(FtdiRequest::kFlowControl, 0); }

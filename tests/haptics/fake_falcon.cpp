@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "tests/haptics/fake_falcon_mechanism.h"
 
@@ -9,7 +10,12 @@ namespace tsf::haptics::testing {
 namespace {
 
 constexpr uint16_t kDivisorLoader = 0x4138, kDivisorUpload = 0x0015, kDivisorNormal = 0x0002;
-constexpr uint8_t kModemStatus = 0x31, kLineStatus = 0x60;  // what an idle FT232 reports
+/// Modem-status bytes as an FT232 sends them: bit 0 always set, CTS/DSR
+/// (0x10, 0x20) as the DSP drives them; line status THRE/TEMT (0x20,
+/// 0x40) as its transmitter empties, DR (0x01) when data waits. Cycled
+/// through packet by packet.
+constexpr uint8_t kModemStatus[] = {0x31, 0x01, 0x11, 0x21};
+constexpr uint8_t kLineStatus[] = {0x60, 0x00, 0x61, 0x20, 0x40};
 /// Encoder offset before homing (any number will do: the counts are relative).
 constexpr int kUnhomedOffset = 1234;
 constexpr double kPacketPeriod_s = 0.001;
@@ -31,7 +37,10 @@ std::vector<uint8_t> fakeFirmwareImage(size_t n) {
 }
 
 FakeFalcon::FakeFalcon(FakeFalconConfig config) : cfg_(std::move(config)) {
-    firmware_running_ = cfg_.firmware_running;
+    firmware_running_ = cfg_.firmware_running || cfg_.homed_at_start;
+    homed_ = cfg_.homed_at_start;
+    divisor_ = cfg_.divisor_at_start;
+    latency_ms_ = cfg_.latency_at_start_ms;
     p_ = cfg_.pose ? cfg_.pose(0.0) : Vec3(0.0);
 }
 
@@ -54,9 +63,13 @@ UsbResult FakeFalcon::control(uint8_t request, uint16_t value, uint16_t index, i
     if (unplugged_) return {UsbStatus::kNoDevice, 0};
     controls_.push_back({request, value, index});
     switch (request) {
-    case 0:  // purge
-        if (value == 1) rx_.clear();
-        if (value == 2) in_.clear();
+    case 0:  // reset (0) or purge, named from the chip's side (libftdi 1.5's SIO_TCIFLUSH 2, SIO_TCOFLUSH 1)
+        if (value == 2) {
+            // What waits for the host, in the chip: bytes still on the DSP's
+            // serial line arrive after the purge.
+            while (!rx_.empty() && rx_.front().at_us <= now_us_) rx_.pop_front();
+        }
+        if (value == 1) in_.clear();
         break;
     case 1:  // modem control: DTR is bit 0 of the state, enabled by bit 8 of the mask
         if (value & 0x0100) {
@@ -156,7 +169,14 @@ void FakeFalcon::onCommand(const FalconCommand& c) {
     commands_.push_back(c);
     if (!homed_ && (c.motor[0] || c.motor[1] || c.motor[2])) ++nonzero_unhomed_;
     if (homed_) lowest_y_ = std::min(lowest_y_, p_.y);
-    if (c.status & kFalconHoming) ++homing_seen_;
+    if (c.status & kFalconHoming) {
+        ++homing_seen_;
+    } else {
+        // Without the homing bit the firmware drops its homing: the motors
+        // must be homed again (libnifalcon sets the bit in every packet).
+        homing_seen_ = 0;
+        homed_ = false;
+    }
     if (cfg_.homing_packets >= 0 && homing_seen_ >= cfg_.homing_packets) homed_ = true;
     // The motors push with the commanded torques at the current pose.
     const Vec3 force = fakeMotorForce(p_, c.motor);
@@ -165,7 +185,9 @@ void FakeFalcon::onCommand(const FalconCommand& c) {
 
     const long n = ++replies_;
     if (cfg_.silent_after_packets >= 0 && n > cfg_.silent_after_packets) silent_ = true;
+    if (cfg_.on_command) cfg_.on_command();
     if (silent_ || (cfg_.drop_reply_every > 0 && n % cfg_.drop_reply_every == 0)) return;
+    reply_positions_.push_back(p_);
     FalconReport rep;
     std::array<double, 3> now;
     if (fakeThighAngles(p_, now))
@@ -232,8 +254,9 @@ UsbResult FakeFalcon::bulkRead(std::span<uint8_t> buffer, int timeout_ms) noexce
             return {UsbStatus::kTimeout, n};
         }
         t = t_next;
-        buffer[n] = kModemStatus;
-        buffer[n + 1] = kLineStatus;
+        buffer[n] = kModemStatus[packets_to_host_ % std::size(kModemStatus)];
+        buffer[n + 1] = kLineStatus[packets_to_host_ % std::size(kLineStatus)];
+        ++packets_to_host_;
         size_t take = 0;
         while (take < room && take < rx_.size() && rx_[take].at_us <= t) {
             buffer[n + 2 + take] = rx_[take].byte;

@@ -5,12 +5,16 @@
 // What it plays:
 //   - the FTDI chip, on a virtual clock (no test waits for real time):
 //     every control request is recorded (baud divisor, DTR, latency
-//     timer, purges). Bytes the DSP sends reach the chip at the serial line's
+//     timer, purges: wValue 2 empties what waits for the host, 1 what the
+//     host wrote and the chip has not yet sent on, as libftdi 1.5 names
+//     them: SIO_TCIFLUSH 2, SIO_TCOFLUSH 1). Bytes the DSP sends reach the chip at the serial line's
 //     speed (10 bits a byte at 9600, 142 857 or 1 500 000 baud). The chip
 //     hands the host a USB packet (two modem-status bytes, then up to 62
 //     data bytes) when 62 bytes are waiting, or else when its latency timer
 //     runs out since the last packet - with whatever has come, nothing at
-//     all included (a 2-byte status-only packet). A bulk read lasts until a
+//     all included (a 2-byte status-only packet). The two modem-status
+//     bytes change from packet to packet (line bits come and go, as on a
+//     real chip), so a reader that takes them for data is caught. A bulk read lasts until a
 //     short packet ends it, the buffer is full or its timeout passes; a
 //     full 64-byte packet does not end it. So a read right after a quiet
 //     spell returns at once with no data, and one that waits for a 62-byte
@@ -23,7 +27,11 @@
 //   - the firmware: answers each 16-byte command, reply_turnaround_us after
 //     it arrived, with one 16-byte frame of encoder counts from the grip's
 //     pose, buttons and homed flags. Before homing, counts are offset by an
-//     arbitrary amount, as relative encoders are after power-up.
+//     arbitrary amount, as relative encoders are after power-up. Homing
+//     needs the homing bit in every packet (as libnifalcon sends it): a
+//     packet without it un-homes the motors. Each reply is the grip's
+//     pose after the command it answers (replyPositions()), so a driver
+//     that reports a position one packet late is seen to.
 //   - the mechanism (fake_falcon_mechanism.h, written independently of the
 //     driver's kinematics): thigh angles and encoder counts from the pose,
 //     the motors' force from the commands;
@@ -71,6 +79,12 @@ struct FakeFalconConfig {
     bool finger = false;             ///< simulate a finger (mass 0.15 kg, hand 300 N/m, 4 N s/m) pushed by the motors
     double press_N = 0.0;            ///< finger: constant downward push of the hand
     double hand_y_N_per_m = 300.0;   ///< finger: the hand spring's vertical stiffness (soft = a resting hand)
+    // State kept by the device across host processes (fake_libusb restores it).
+    bool homed_at_start = false;     ///< the motors are homed already (firmware_running too)
+    uint16_t divisor_at_start = 0x4138; ///< the chip's baud divisor at power-up (or left by the last process)
+    int latency_at_start_ms = 16;
+    /// Called after each command the firmware took (e.g. to keep a report current).
+    std::function<void()> on_command;
 };
 
 struct ControlRecord {
@@ -88,6 +102,9 @@ public:
     UsbResult bulkRead(std::span<uint8_t> buffer, int timeout_ms) noexcept override;
     const char* location() const noexcept override { return "fake bus 1 device 2"; }
 
+    /// The host lets `s` seconds pass without a transfer (bytes the DSP
+    /// sends meanwhile reach the chip).
+    void wait(double s) { now_us_ += s * 1e6; }
     /// Cuts the cable now.
     void unplug() { unplugged_ = true; }
     /// The firmware hangs: commands are taken but never answered.
@@ -96,6 +113,8 @@ public:
     // What happened.
     const std::vector<ControlRecord>& controls() const { return controls_; }
     const std::vector<FalconCommand>& commands() const { return commands_; }
+    /// The grip's position (device frame) each reply reported, in order.
+    const std::vector<Vec3>& replyPositions() const { return reply_positions_; }
     /// Force (N, device frame) the motors applied for each command.
     const std::vector<Vec3>& forces() const { return forces_; }
     bool firmwareRunning() const { return firmware_running_; }
@@ -136,11 +155,13 @@ private:
     std::vector<ControlRecord> controls_;
     std::vector<FalconCommand> commands_;
     std::vector<Vec3> forces_;
+    std::vector<Vec3> reply_positions_;
     std::deque<Arriving> rx_;  ///< bytes for the host, in the chip or still on the line
     std::vector<uint8_t> in_;  ///< partial command bytes
     double now_us_ = 0.0;
     double line_free_us_ = 0.0;    ///< when the DSP's transmit line is next free
     double last_packet_us_ = -1e9; ///< when the chip last handed the host a packet
+    uint64_t packets_to_host_ = 0;  ///< USB packets handed to the host (varies the status bytes)
     long upload_writes_ = 0;
     uint16_t divisor_ = 0x4138;
     int latency_ms_ = 16;

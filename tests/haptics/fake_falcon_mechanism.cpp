@@ -39,7 +39,51 @@ bool legAngle(int leg, double x, double y, double z, double& theta) {
     return std::isfinite(theta);
 }
 
+/// d theta_i / d p_k at p (row i, column k); false out of reach.
+bool angleRates(const Vec3& p, double D[3][3]) noexcept {
+    constexpr double h = 1e-6;
+    for (int k = 0; k < 3; ++k) {
+        Vec3 lo = p, hi = p;
+        lo[k] -= h;
+        hi[k] += h;
+        std::array<double, 3> t_lo, t_hi;
+        if (!fakeThighAngles(lo, t_lo) || !fakeThighAngles(hi, t_hi)) return false;
+        for (int i = 0; i < 3; ++i) D[i][k] = (t_hi[size_t(i)] - t_lo[size_t(i)]) / (2 * h);
+    }
+    return true;
+}
+
+double det3(const double m[3][3]) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+double computeMotorUnitsPerNm() noexcept {
+    // F = D^T tau (virtual work): solve for tau with F = 12.5 N along -z.
+    double D[3][3];
+    if (!angleRates(Vec3(0.0), D)) return 0.0;
+    double A[3][3];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) A[r][c] = D[c][r];
+    const double F[3] = {0.0, 0.0, -12.5};
+    const double d = det3(A);
+    double mean_abs_tau = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        double Ai[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) Ai[r][c] = c == i ? F[r] : A[r][c];
+        mean_abs_tau += std::abs(det3(Ai) / d) / 3.0;
+    }
+    constexpr double kHdalUnits = 700.0;  // each motor, for that push
+    return kHdalUnits / mean_abs_tau;
+}
+
 }  // namespace
+
+double fakeMotorUnitsPerNm() noexcept {
+    static const double units = computeMotorUnitsPerNm();
+    return units;
+}
 
 bool fakeThighAngles(const Vec3& p, std::array<double, 3>& theta) noexcept {
     std::array<double, 3> t{};
@@ -59,7 +103,7 @@ Vec3 fakeMotorForce(const Vec3& p, const std::array<int16_t, 3>& motor) noexcept
     // F_k = sum_i tau_i d theta_i / d p_k.
     constexpr double h = 1e-6;
     double tau[3];
-    for (int i = 0; i < 3; ++i) tau[i] = -double(motor[size_t(i)]) / kFakeMotorUnitsPerNm;
+    for (int i = 0; i < 3; ++i) tau[i] = -double(motor[size_t(i)]) / fakeMotorUnitsPerNm();
     Vec3 force(0.0);
     for (int k = 0; k < 3; ++k) {
         Vec3 lo = p, hi = p;

@@ -25,10 +25,14 @@ namespace tsf::haptics::testing {
 
 /// Device-frame origin in Stamper's mechanism frame, metres.
 inline constexpr double kFakeWorkspaceCentreZ_m = 0.125;
-/// What the fake's motors take as one N m of thigh torque: a property of
-/// the simulated device (the driver has its own figure; see
-/// falcon_force_trace_test.cpp for what Novint's driver sends).
-inline constexpr double kFakeMotorUnitsPerNm = 2220.0;
+/// What the fake's motors take as one N m of thigh torque, derived here
+/// from the raw observation alone, not from the driver's figure: Novint's
+/// own driver (HDAL, as libnifalcon traced it) commanded about 700 units on
+/// each motor for a 12.5 N push along -z at the workspace centre; the
+/// thigh torque that push needs comes from this file's mechanism (virtual
+/// work, dtheta/dp by central differences, the 3 x 3 system solved by
+/// Cramer's rule). Computed once.
+double fakeMotorUnitsPerNm() noexcept;
 
 /// Thigh angles (radians) that put the grip at p (device frame); false when
 /// a leg cannot reach it.
@@ -40,7 +44,7 @@ bool fakeThighAngles(const Vec3& p_device_m, std::array<double, 3>& theta) noexc
 int16_t fakeEncoderCount(double theta_rad) noexcept;
 
 /// The force (N, device frame) the motors push the grip at p with when
-/// commanded `motor` (thigh torque -motor / kFakeMotorUnitsPerNm N m each).
+/// commanded `motor` (thigh torque -motor / fakeMotorUnitsPerNm() N m each).
 /// Zero when p is out of reach.
 Vec3 fakeMotorForce(const Vec3& p_device_m, const std::array<int16_t, 3>& motor) noexcept;
 

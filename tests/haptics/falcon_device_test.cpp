@@ -73,9 +73,11 @@ struct Session {
     SpringHandler handler;
 };
 
-void run(FalconDevice& dev, Session& s, double duration_s, const std::atomic<bool>* stop = nullptr) {
+void run(FalconDevice& dev, Session& s, double duration_s, const std::atomic<bool>* stop = nullptr,
+         int stall_ticks = LoopOptions{}.stall_ticks) {
     FakeLoopClock clock;
     LoopOptions lo;
+    lo.stall_ticks = stall_ticks;
     lo.duration_s = duration_s;
     lo.start_ramp_s = 0.2;
     std::atomic<bool> never{false};
@@ -248,7 +250,9 @@ TEST(FalconDevice, AFalconThatStopsAnsweringIsToldToStopPushing) {
     Rig rig(cfg);
     Session s;
     s.handler.anchor = Vec3(0.0, 0.05, 0.0);
-    run(rig.dev, s, 5.0);
+    // The driver's own guard, with the loop's stall rule (which zeroes the
+    // gain sooner, tested below) switched off.
+    run(rig.dev, s, 5.0, nullptr, 0);
     EXPECT_EQ(s.stats.end, LoopEnd::kDeviceFailed);
     const std::vector<FalconCommand>& sent = rig.fake.commands();
     ASSERT_GT(sent.size(), 620u);
@@ -264,6 +268,19 @@ TEST(FalconDevice, AFalconThatStopsAnsweringIsToldToStopPushing) {
     rig.dev.close();
     ASSERT_GT(rig.fake.commands().size(), before);
     EXPECT_TRUE(zero(rig.fake.commands().back()));
+
+    // With the loop's stall rule: the gain drops to zero once the position
+    // is stall_ticks old, before the driver's own guard.
+    Rig again(cfg);
+    Session t;
+    t.handler.anchor = Vec3(0.0, 0.05, 0.0);
+    run(again.dev, t, 5.0);
+    EXPECT_EQ(t.stats.stalls, 1u);
+    const std::vector<FalconCommand>& sent2 = again.fake.commands();
+    ASSERT_GT(sent2.size(), 620u);
+    EXPECT_FALSE(zero(sent2[590]));
+    for (size_t k = 600 + size_t(LoopOptions{}.stall_ticks) + 1; k < sent2.size(); ++k)
+        EXPECT_TRUE(zero(sent2[k])) << "command " << k;
 }
 
 TEST(FalconDevice, StopRequestAndDestructionLeaveZeroForce) {
@@ -324,4 +341,101 @@ TEST(FalconDevice, LedsShowHomingContactAndVolume) {
     EXPECT_EQ(tick(false, false), kFalconLedGreen);
     EXPECT_EQ(tick(true, false), kFalconLedBlue);
     EXPECT_EQ(tick(true, true), kFalconLedGreen | kFalconLedBlue);
+}
+
+TEST(FalconDevice, EachTickReportsThePositionOfTheNewestReply) {
+    // The grip jumps 4 mm sideways on every packet (on odd packets it is
+    // at +4 mm), so a position one packet old is 4 mm off: each reading
+    // must be the pose the newest reply carried.
+    FakeFalconConfig cfg = running(0);
+    cfg.pose = [](double t) {
+        const long packet = std::lround(t / 0.001);
+        return Vec3(packet % 2 ? 0.004 : 0.0, -0.005, 0.002);
+    };
+    Rig rig(cfg);
+    class Checker final : public TickHandler {
+    public:
+        explicit Checker(const FakeFalcon& f) : fake(f) {}
+        const FakeFalcon& fake;
+        double worst_m = 0.0;
+        int ticks = 0;
+        Vec3 tick(const DeviceState& s, double, LogRecord&) noexcept override {
+            const Vec3 newest = fake.replyPositions().back();
+            worst_m = std::max(worst_m, glm::length(s.position_m - newest));
+            ++ticks;
+            return Vec3(0.0);
+        }
+    } checker(rig.fake);
+    FakeLoopClock clock;
+    LoopOptions lo;
+    lo.duration_s = 0.5;
+    std::atomic<bool> never{false};
+    LoopStats stats;
+    runHapticLoop(rig.dev, checker, clock, lo, never, nullptr, stats);
+    EXPECT_GT(checker.ticks, 400);
+    EXPECT_LT(checker.worst_m, 2.0 * kFalconMetresPerCount);  // the encoders' resolution, not a packet's lag
+}
+
+TEST(FalconDevice, HomingBitInEveryPacketKeepsTheDeviceHomed) {
+    // The fake un-homes on a packet without the homing bit (libnifalcon
+    // sets it in every packet): a whole session, forces and LEDs included,
+    // must keep it.
+    FakeFalconConfig cfg = running(50);
+    cfg.pose = circle;
+    Rig rig(cfg);
+    Session s;
+    s.handler.anchor = Vec3(0.0, 0.01, 0.0);
+    run(rig.dev, s, 1.0);
+    EXPECT_TRUE(rig.fake.homed());
+    for (const FalconCommand& c : rig.fake.commands()) ASSERT_TRUE(c.status & kFalconHoming);
+    EXPECT_GT(rig.dev.stats().ticks_homed, 900u);
+}
+
+TEST(FalconDevice, APauseHoldsZeroAndTheForceRampsInAgain) {
+    FakeFalconConfig cfg = running(0);
+    cfg.pose = circle;
+    Rig rig(cfg);
+    Session s;
+    s.handler.anchor = Vec3(0.0, 0.03, 0.0);  // a steady pull of about 4 N
+    static std::atomic<bool> pause{false};
+    static size_t commands_at_pause = 0;
+    static FakeFalcon* fake = nullptr;
+    fake = &rig.fake;
+    pause.store(false);
+    struct Pauser {
+        static void paused() noexcept {
+            pause.store(false);
+            commands_at_pause = fake->commands().size();
+        }
+    };
+    class PauseAt final : public TickHandler {
+    public:
+        SpringHandler& inner;
+        explicit PauseAt(SpringHandler& h) : inner(h) {}
+        Vec3 tick(const DeviceState& st, double gain, LogRecord& r) noexcept override {
+            if (st.t_s > 1.5 && st.t_s < 1.5015) pause.store(true);
+            return inner.tick(st, gain, r);
+        }
+    } handler(s.handler);
+    FakeLoopClock clock;
+    LoopOptions lo;
+    lo.duration_s = 3.0;
+    lo.start_ramp_s = 0.2;
+    lo.pause_requested = &pause;
+    lo.pause = &Pauser::paused;
+    std::atomic<bool> never{false};
+    runHapticLoop(rig.dev, handler, clock, lo, never, nullptr, s.stats);
+    EXPECT_EQ(s.stats.pauses, 1u);
+    ASSERT_GT(commands_at_pause, 1500u);
+    const auto& cmds = rig.fake.commands();
+    const auto& forces = rig.fake.forces();
+    // What the device held when the process stopped: zero.
+    EXPECT_TRUE(zero(cmds[commands_at_pause - 1]));
+    // Full force before the pause; after it, the force starts again from
+    // nothing and ramps back up over start_ramp_s (0.2 s).
+    const double before = glm::length(forces[commands_at_pause - 200]);
+    EXPECT_GT(before, 2.0);
+    EXPECT_LT(glm::length(forces[commands_at_pause + 5]), 0.05 * before);
+    EXPECT_LT(glm::length(forces[commands_at_pause + 60]), 0.5 * before);
+    EXPECT_GT(glm::length(forces[commands_at_pause + 400]), 0.9 * before);
 }

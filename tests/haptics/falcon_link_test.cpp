@@ -81,10 +81,10 @@ TEST(FalconFirmware, LoadsWithTheDocumentedRequestSequence) {
     EXPECT_FALSE(fake.dtr());
     // The boot sequence, request by request.
     const std::vector<std::pair<uint8_t, uint16_t>> expected = {
-        {0, 1},      {0, 2},      {9, 16},     {3, 0x4138}, {4, 0x0008}, {2, 0},  // purge, latency, 9600 8N1
+        {0, 2},      {0, 1},      {9, 16},     {3, 0x4138}, {4, 0x0008}, {2, 0},  // purge, latency, 9600 8N1
         {1, 0x0200}, {1, 0x0100}, {1, 0x0101},                                    // RTS low, DTR low -> high
         {1, 0x0100}, {3, 0x0015},                                                 // DTR low, upload speed
-        {9, 1},      {3, 0x0002}, {0, 1},      {0, 2}};                            // normal mode
+        {9, 1},      {3, 0x0002}, {0, 2},      {0, 1}};                            // normal mode
     std::vector<std::pair<uint8_t, uint16_t>> seen;
     for (const auto& c : fake.controls()) {
         seen.emplace_back(c.request, c.value);
@@ -228,6 +228,27 @@ TEST(FakeFtdiChip, BatchesByTheLatencyTimer) {
     EXPECT_EQ(r.status, UsbStatus::kTimeout);
     EXPECT_EQ(r.bytes, 0u);
     EXPECT_NEAR(fake.linkTime() - t3, 0.010, 1e-9);
+}
+
+TEST(FtdiLink, PurgesAsLibftdiNamesThem) {
+    // libftdi 1.5 (src/ftdi.h): SIO_TCIFLUSH = 2 drops what the chip holds
+    // for the host, SIO_TCOFLUSH = 1 what the host wrote. A reply waiting
+    // in the chip survives purgeTransmit and is gone after purgeReceive.
+    FakeFalconConfig cfg;
+    cfg.firmware_running = true;
+    FakeFalcon fake(cfg);
+    FtdiLink link(fake);
+    ASSERT_TRUE(setFalconNormalMode(link));
+    std::array<uint8_t, FtdiLink::kDataBytes> data{};
+    ASSERT_TRUE(link.write(encodeFalconCommand(FalconCommand{{0, 0, 0}, kFalconHoming}), 2).ok());
+    fake.wait(0.002);
+    ASSERT_TRUE(link.purgeTransmit().ok());
+    EXPECT_EQ(link.read(data, 5).bytes, kFalconPacketBytes);
+    ASSERT_TRUE(link.write(encodeFalconCommand(FalconCommand{{0, 0, 0}, kFalconHoming}), 2).ok());
+    fake.wait(0.002);
+    ASSERT_TRUE(link.purgeReceive().ok());
+    EXPECT_EQ(link.read(data, 5).bytes, 0u);
+    EXPECT_EQ(fake.controls().back().value, 2);
 }
 
 TEST(FalconFirmware, UnpluggedDeviceFailsAtOnce) {

@@ -22,6 +22,7 @@ public:
     bool refuse_writes = false;
     bool homed = true;
     double homed_at_s = 0.0;  ///< homed from this loop time on
+    double stale_from_s = 1e9, stale_until_s = 0.0;  ///< the position is this many ticks old in between
     std::vector<Vec3> forces;
     std::vector<double> read_times;
 
@@ -37,6 +38,7 @@ public:
         out.t_s = t;
         out.position_m = Vec3(0.0);
         out.homed = homed && t >= homed_at_s;
+        out.stale_ticks = t >= stale_from_s && t < stale_until_s ? uint32_t((t - stale_from_s) * 1000.0) + 1 : 0;
         return ReadStatus::kOk;
     }
     bool writeForce(const Vec3& f) noexcept override {
@@ -212,6 +214,101 @@ TEST(Loop, ForceRampsInFromTheFirstHomedTick) {
     EXPECT_NEAR(h.gains[500], 0.5, 0.01);            // half-way through the 1 s ramp
     EXPECT_NEAR(h.gains[1500], 1.0, 1e-12);
     for (size_t k = 0; k < 3000; ++k) EXPECT_EQ(dev.forces[k], Vec3(0.0));  // nothing before homing
+}
+
+TEST(Loop, AStalledTickRestartsTheStartRamp) {
+    // Wake-up 1500 comes 50 ms late (the process was stopped or starved):
+    // the gain starts again from zero, whatever it was.
+    RecordingDevice dev;
+    ConstantHandler h;
+    FakeLoopClock clock;
+    clock.lateness_s = [](uint64_t k) { return k == 1500 ? 0.05 : 0.0; };
+    LoopOptions o;
+    o.duration_s = 3.0;
+    o.start_ramp_s = 0.5;
+    std::atomic<bool> stop{false};
+    LoopStats s;
+    runHapticLoop(dev, h, clock, o, stop, nullptr, s);
+    EXPECT_EQ(s.stalls, 1u);
+    ASSERT_GT(h.gains.size(), 1700u);
+    EXPECT_DOUBLE_EQ(h.gains[1499], 1.0);
+    EXPECT_DOUBLE_EQ(h.gains[1500], 0.0);
+    EXPECT_LT(h.gains[1550], 0.1);
+    EXPECT_DOUBLE_EQ(h.gains[2100], 1.0);
+    // A few ticks late is jitter, not a stall.
+    RecordingDevice dev2;
+    ConstantHandler h2;
+    FakeLoopClock clock2;
+    clock2.lateness_s = [](uint64_t k) { return k == 1500 ? 0.003 : 0.0; };
+    LoopStats s2;
+    runHapticLoop(dev2, h2, clock2, o, stop, nullptr, s2);
+    EXPECT_EQ(s2.stalls, 0u);
+    EXPECT_DOUBLE_EQ(h2.gains[1500], 1.0);
+}
+
+TEST(Loop, AStalePositionRestartsTheStartRamp) {
+    // The device's position stops updating for 20 ms (a run of lost
+    // replies): once it is stall_ticks old the gain drops to zero and, when
+    // positions come again, ramps in anew.
+    RecordingDevice dev;
+    dev.stale_from_s = 1.5;
+    dev.stale_until_s = 1.52;
+    ConstantHandler h;
+    FakeLoopClock clock;
+    LoopOptions o;
+    o.duration_s = 3.0;
+    o.start_ramp_s = 0.5;
+    std::atomic<bool> stop{false};
+    LoopStats s;
+    runHapticLoop(dev, h, clock, o, stop, nullptr, s);
+    EXPECT_EQ(s.stalls, 1u);
+    // The handler is asked while homed; gains index the ticks.
+    EXPECT_DOUBLE_EQ(h.gains[1502], 1.0);  // 3 ticks stale: jitter
+    EXPECT_DOUBLE_EQ(h.gains[1510], 0.0);
+    EXPECT_LT(h.gains[1560], 0.1);
+    EXPECT_DOUBLE_EQ(h.gains[2200], 1.0);
+}
+
+TEST(Loop, APauseRampsOutHoldsZeroCallsPauseAndRampsInAgain) {
+    RecordingDevice dev;
+    ConstantHandler h;
+    FakeLoopClock clock;
+    static std::atomic<bool> pause{false};
+    static size_t forces_at_pause = 0;
+    static RecordingDevice* device = nullptr;
+    device = &dev;
+    pause.store(false);
+    struct Pauser {
+        static void paused() noexcept {
+            pause.store(false);
+            forces_at_pause = device->forces.size();
+        }
+    };
+    LoopOptions o;
+    o.duration_s = 3.0;
+    o.start_ramp_s = 0.5;
+    o.stop_ramp_s = 0.1;
+    o.pause_requested = &pause;
+    o.pause = &Pauser::paused;
+    clock.lateness_s = [](uint64_t k) {
+        if (k == 1200) pause.store(true);  // Ctrl-Z at 1.2 s
+        return 0.0;
+    };
+    std::atomic<bool> stop{false};
+    LoopStats s;
+    runHapticLoop(dev, h, clock, o, stop, nullptr, s);
+    EXPECT_EQ(s.pauses, 1u);
+    EXPECT_EQ(s.end, LoopEnd::kDuration);
+    ASSERT_GT(forces_at_pause, 1250u);
+    // Ramped out over 0.1 s, then zero written (and held) before the pause.
+    EXPECT_NEAR(dev.forces[1150].y, 2.0, 1e-12);
+    EXPECT_LT(dev.forces[forces_at_pause - 4].y, 0.01);
+    EXPECT_EQ(dev.forces[forces_at_pause - 1], Vec3(0.0));
+    EXPECT_EQ(dev.forces[forces_at_pause - 2], Vec3(0.0));
+    // After it: from zero, ramped in over start_ramp_s.
+    EXPECT_EQ(dev.forces[forces_at_pause], Vec3(0.0));
+    EXPECT_LT(dev.forces[forces_at_pause + 100].y, 0.5);
+    EXPECT_NEAR(dev.forces[forces_at_pause + 700].y, 2.0, 1e-12);
 }
 
 TEST(Histogram, QuantilesOfKnownSamples) {

@@ -10,14 +10,26 @@
 //   TSF_FAKE_FALCON_UNPLUG_AFTER    unplug after this many command packets
 //   TSF_FAKE_FALCON_SILENT_AFTER    the firmware hangs after this many command packets: the link
 //                                   stays, commands are taken, no reply comes
-//   TSF_FAKE_FALCON_REPORT=FILE     on close, write what the device saw (key=value lines)
+//   TSF_FAKE_FALCON_REPORT=FILE     what the device saw (key=value lines), kept current: rewritten
+//                                   (atomically) at open, after every command and at close, so a
+//                                   process killed mid-session leaves the command the device holds
+//                                   (last_command, last_command_zero). The report is also the
+//                                   device's memory across processes: when it says open=1 (the last
+//                                   process never closed the device: it died), the next process to
+//                                   open the fake finds the firmware running, the chip's settings
+//                                   and the homing as that process left them, as a powered Falcon
+//                                   keeps them.
 // The grip: a finger held above the workspace until 1.5 s (homing comes
 // after 300 packets), then a soft hand (50 N/m toward y = -50 mm, about 2 N
 // on the surface) draws a 10 mm circle over the middle at 10 mm/s.
 #include <libusb.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <map>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -65,21 +77,40 @@ Vec3 handTarget(double t) {
     return {0.01 * std::cos(a), -0.05, 0.01 * std::sin(a)};
 }
 
+bool g_open = false;   // the device is open in this process (open=1 in the report)
+int g_opens = 0;       // how many processes have opened it since the report began
+
+/// key=value lines of a report (empty when there is none).
+std::map<std::string, std::string> readReport(const std::string& path) {
+    std::map<std::string, std::string> m;
+    std::ifstream f(path);
+    std::string line;
+    while (std::getline(f, line))
+        if (const auto eq = line.find('='); eq != std::string::npos) m[line.substr(0, eq)] = line.substr(eq + 1);
+    return m;
+}
+
 void writeReport() {
     const std::string path = env("TSF_FAKE_FALCON_REPORT");
     if (path.empty() || !g_fake) return;
-    FILE* f = std::fopen(path.c_str(), "w");
+    const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+    FILE* f = std::fopen(tmp.c_str(), "w");
     if (!f) return;
     const auto& cmds = g_fake->commands();
-    const bool last_zero = cmds.empty() || (cmds.back().motor[0] == 0 && cmds.back().motor[1] == 0 && cmds.back().motor[2] == 0);
+    const tsf::haptics::FalconCommand last = cmds.empty() ? tsf::haptics::FalconCommand{} : cmds.back();
+    const bool last_zero = last.motor[0] == 0 && last.motor[1] == 0 && last.motor[2] == 0;
     double max_force = 0.0;
     for (const Vec3& v : g_fake->forces()) max_force = std::max(max_force, std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z));
     std::fprintf(f, "controls=%zu\nuploads=%d\nfirmware_bytes=%zu\ncommands=%zu\nlast_command_zero=%d\n"
-                    "nonzero_before_homed=%ld\nhomed=%d\nmax_force_N=%.4f\nlowest_homed_y_m=%.5f\nlatency_ms=%d\n",
+                    "nonzero_before_homed=%ld\nhomed=%d\nmax_force_N=%.4f\nlowest_homed_y_m=%.5f\nlatency_ms=%d\n"
+                    "last_command=%d %d %d\nlast_status=%d\nfirmware_running=%d\ndivisor=%d\nopen=%d\nopens=%d\n"
+                    "pid=%ld\n",
                  g_fake->controls().size(), g_fake->uploads(), g_fake->firmwareBytesEchoed(), cmds.size(),
                  int(last_zero), g_fake->nonzeroBeforeHomed(), int(g_fake->homed()), max_force, g_fake->lowestHomedY(),
-                 g_fake->latencyTimer());
-    std::fclose(f);
+                 g_fake->latencyTimer(), last.motor[0], last.motor[1], last.motor[2], int(last.status),
+                 int(g_fake->firmwareRunning()), int(g_fake->baudDivisor()), int(g_open), g_opens, long(::getpid()));
+    if (std::fclose(f) == 0) std::rename(tmp.c_str(), path.c_str());
+    else std::remove(tmp.c_str());
 }
 
 }  // namespace
@@ -136,12 +167,30 @@ int LIBUSB_CALL libusb_open(libusb_device*, libusb_device_handle** handle) {
     cfg.finger = true;
     cfg.hand_y_N_per_m = 50.0;
     cfg.pose = handTarget;
+    cfg.on_command = writeReport;
+    // A device the last process never closed (it died) is as that process left it.
+    const std::string path = env("TSF_FAKE_FALCON_REPORT");
+    const auto before = path.empty() ? std::map<std::string, std::string>{} : readReport(path);
+    g_opens = before.count("opens") ? std::atoi(before.at("opens").c_str()) + 1 : 1;
+    const auto was = [&](const char* key, const char* fallback) {
+        const auto it = before.find(key);
+        return it == before.end() ? std::string(fallback) : it->second;
+    };
+    if (was("open", "0") == "1") {
+        cfg.firmware_running = cfg.firmware_running || was("firmware_running", "0") == "1";
+        cfg.homed_at_start = was("homed", "0") == "1";
+        cfg.divisor_at_start = uint16_t(std::atoi(was("divisor", "16696").c_str()));
+        cfg.latency_at_start_ms = std::atoi(was("latency_ms", "16").c_str());
+    }
     g_fake = std::make_unique<FakeFalcon>(cfg);
+    g_open = true;
+    writeReport();
     *handle = new libusb_device_handle;
     return 0;
 }
 
 void LIBUSB_CALL libusb_close(libusb_device_handle* handle) {
+    g_open = false;
     writeReport();
     delete handle;
 }
