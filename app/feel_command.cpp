@@ -109,6 +109,7 @@ constexpr int kForeignMeshCells = 60;
 struct MeshTop {
     HexField field;
     double floor_mm = 0;  ///< the lowest top above the mesh's bottom
+    double shift_x_mm = 0, shift_y_mm = 0;  ///< the mesh's own frame = the shifted one + these
 };
 
 MeshTop meshTopField(Mesh& mesh, const std::string& path) {
@@ -139,6 +140,8 @@ MeshTop meshTopField(Mesh& mesh, const std::string& path) {
     for (double& v : f.values)
         if (std::isfinite(v)) v -= lowest;  // mm above the lowest top
     out.floor_mm = lowest - b.min.z;
+    out.shift_x_mm = b.min.x;
+    out.shift_y_mm = b.min.y;
     f.source = path;
     f.pitch_data = pitch;
     f.how = "the mesh's own top (no scene sidecar), on " + std::to_string(f.grid.cols) + " x " +
@@ -296,12 +299,24 @@ void runFeel(const FeelOptions& o) {
     // or a mesh file itself (a model as written, or as OpenSCAD rendered an
     // edited .scad) on the grid of its sidecar.
     const bool from_mesh = isMeshFile(o.gen.input);
-    std::string sidecar = from_mesh ? (o.scene.empty() ? o.gen.input + ".scene.json" : o.scene) : std::string();
     if (!from_mesh && !o.scene.empty()) throw InputError("--scene is for a mesh input (MODEL.stl --scene MODEL.stl.scene.json)");
-    if (from_mesh && !o.scene.empty() && !std::filesystem::exists(sidecar))
+    if (from_mesh && !o.scene.empty() && !std::filesystem::exists(o.scene))
         throw InputError("--scene " + o.scene + ": no such file (tsf gen writes MODEL.stl.scene.json beside the model)");
-    // A mesh tsf did not make has no sidecar: its top is felt on a grid laid over it.
-    const bool foreign_mesh = from_mesh && !std::filesystem::exists(sidecar);
+    // The sidecar: --scene, else MODEL.stl.scene.json (what tsf gen writes),
+    // else MODEL.scene.json; none: a mesh tsf did not make, whose top is
+    // felt on a grid laid over it.
+    std::string sidecar;
+    if (from_mesh) {
+        const std::filesystem::path in(o.gen.input);
+        std::filesystem::path stem = in;
+        stem.replace_extension(".scene.json");
+        for (const std::string& candidate : {o.scene, o.gen.input + ".scene.json", stem.string()})
+            if (!candidate.empty() && std::filesystem::exists(candidate)) {
+                sidecar = candidate;
+                break;
+            }
+    }
+    const bool foreign_mesh = from_mesh && sidecar.empty();
     const bool from_sidecar = (from_mesh && !foreign_mesh) || isSceneSidecar(o.gen.input);
     Mesh file_mesh;
     if (from_mesh) {
@@ -313,10 +328,13 @@ void runFeel(const FeelOptions& o) {
     refuseBandSeries(o.gen, "feel");
     if (!from_sidecar && !from_mesh) field = loadField(o.gen);
     Scene scene;
+    double relief_shift_x_mm = 0, relief_shift_y_mm = 0;  // --relief is written in the mesh's own frame
     if (foreign_mesh) {
         const MeshTop top = meshTopField(file_mesh, o.gen.input);
         field = top.field;
         scene = buildScene(field, meshTopParams(top));
+        relief_shift_x_mm = top.shift_x_mm;
+        relief_shift_y_mm = top.shift_y_mm;
     }
     if (!foreign_mesh) scene = from_sidecar ? readSceneJson(from_mesh ? sidecar : o.gen.input) : buildScene(field, o.gen.scene);
     if (from_mesh) {
@@ -420,7 +438,8 @@ void runFeel(const FeelOptions& o) {
                 for (int32_t i = 0; i < r.cols; ++i) {
                     const double z = r.z_mm[size_t(j) * size_t(r.cols) + size_t(i)];
                     std::snprintf(line, sizeof line, std::isnan(z) ? "%.4f,%.4f,NaN\n" : "%.4f,%.4f,%.4f\n",
-                                  r.x0_mm + (i + 0.5) * r.sample_mm, r.y0_mm + (j + 0.5) * r.sample_mm, z);
+                                  relief_shift_x_mm + r.x0_mm + (i + 0.5) * r.sample_mm,
+                                  relief_shift_y_mm + r.y0_mm + (j + 0.5) * r.sample_mm, z);
                     os << line;
                 }
         });
@@ -451,6 +470,7 @@ void runFeel(const FeelOptions& o) {
                        {"felt_height_m", mapping.relief_m},
                        {"samples_per_cell", relief.samples_per_pitch},
                        {"exact_at_cell_centres", relief.exact_at_centres}};
+        j["sidecar"] = sidecar.empty() ? nlohmann::json(nullptr) : nlohmann::json(sidecar);
         j["device"] = device->name();
         if (falcon) j["falcon"] = falconJson(*falcon, stats);
         j["mapping_m"] = {{"cell", pitch_m},
@@ -500,6 +520,9 @@ void runFeel(const FeelOptions& o) {
                     field.grid.rows, facts.min, facts.max,
                     facts.nodata ? (", " + std::to_string(facts.nodata) + " no-data cells as floor").c_str() : "",
                     device->name().c_str());
+        if (from_mesh)
+            std::printf("  sidecar   %s\n", sidecar.empty() ? "none: the mesh's own top, on a grid laid over it"
+                                                            : (sidecar + " (its grid and heights)").c_str());
         std::printf("  relief    as printed: %s from %g (floor) to %g (top: %.1f mm printed, %s felt), %zu cells\n",
                     toString(vm.transfer), vm.baseline, vm.value_max, vm.max_height_mm, mm(mapping.relief_m).c_str(),
                     scene.keptCount());
@@ -559,8 +582,9 @@ void addFeelCommand(CLI::App& app) {
         "The input and model options are tsf gen's: the relief felt is the relief gen prints.\n"
         "Given MODEL.stl.scene.json (the sidecar tsf gen writes), the model it describes is felt as printed:\n"
         "orientation tab, legend and scale included; the model options are then not used.\n"
-        "Given a mesh (MODEL.stl, .3mf, .off, .obj), that mesh is felt on the grid of its sidecar (--scene),\n"
-        "or, without one (a mesh tsf did not make), on a grid laid over it:\n"
+        "Given a mesh (MODEL.stl, .3mf, .off, .obj), that mesh is felt on the grid of its sidecar (--scene, else\n"
+        "MODEL.stl.scene.json, else MODEL.scene.json beside it; the summary says which), or, without one (a mesh\n"
+        "tsf did not make), on a grid laid over it:\n"
         "  tsf feel edited.stl --scene model.stl.scene.json   # an edit of the .scad, rendered by OpenSCAD\n"
         "Device frame: x right, y up, z toward the user, metres; north of the field is away from the user.\n"
         "Buttons: centre = volume mode on/off, plus = coarser level, minus = finer level.\n"
@@ -606,7 +630,7 @@ void addFeelCommand(CLI::App& app) {
     cmd->add_option("--plot", o->plot, "Write a PNG of the field with the path and the forces felt");
     cmd->add_option("--scene", o->scene,
                     "With a mesh input (MODEL.stl, .3mf, .off, .obj): the scene sidecar of the model it was made from "
-                    "(default MODEL.stl.scene.json beside it), for its grid and heights; the mesh itself is felt, "
+                    "(default MODEL.stl.scene.json, else MODEL.scene.json beside it), for its grid and heights; the mesh itself is felt, "
                     "e.g. what OpenSCAD rendered after an edit of the .scad");
     cmd->add_option("--relief", o->relief_csv,
                     "Write the surface felt as CSV: x_mm,y_mm,z_mm of the printed model's top on a 0.5 mm grid "

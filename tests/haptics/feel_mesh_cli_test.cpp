@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "gen/geometry/mesh.h"
+#include "gen/mesh_io/mesh_reader.h"
 #include "tests/support/required_tools.h"
 #include "tests/support/run.h"
 
@@ -84,16 +86,116 @@ TEST(FeelCli, FeelsAMeshTsfDidNotMake) {
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_NE(j["field"]["how"].get<std::string>().find("no scene sidecar"), std::string::npos) << j["field"].dump();
     EXPECT_NEAR(j["relief"]["printed_height_mm"].get<double>(), 6.0, 0.05) << "the step above the lowest top";
-    // The relief: 10 mm over the small block, 4 mm over the rest of the big one, in the mesh's own frame moved to (0, 0).
+    EXPECT_TRUE(j["sidecar"].is_null());
+    // The relief: 10 mm over the small block, 4 mm over the rest of the big one, in the mesh's own frame.
     const auto z = readRelief(csv);
     size_t high = 0, low = 0;
     for (const auto& [k, h] : z) {
         const double x = k.first / 1000.0, y = k.second / 1000.0;
-        if (x > 16 && x < 24 && y > 11 && y < 19) high += std::fabs(h - 10) < 1e-6;
-        if ((x > 1 && x < 10) || (x > 30 && x < 39)) low += std::fabs(h - 4) < 1e-6;
+        if (x > 116 && x < 124 && y > 61 && y < 69) high += std::fabs(h - 10) < 1e-6;
+        if ((x > 101 && x < 110) || (x > 130 && x < 139)) low += std::fabs(h - 4) < 1e-6;
     }
     EXPECT_GT(high, 100u);
     EXPECT_GT(low, 500u);
+}
+
+// The mesh's top at (x, y), mm: the highest triangle over that point (NaN
+// where none is), by brute force over triangles bucketed on a 2 mm grid.
+class MeshTop {
+public:
+    explicit MeshTop(const tsf::Mesh& m) : m_(m) {
+        const tsf::Bounds b = tsf::meshBounds(m);
+        x0_ = b.min.x, y0_ = b.min.y;
+        cols_ = int(std::ceil((b.max.x - x0_) / kBucket)) + 1, rows_ = int(std::ceil((b.max.y - y0_) / kBucket)) + 1;
+        buckets_.resize(size_t(cols_) * size_t(rows_));
+        for (size_t t = 0; t < m.triangles.size(); ++t) {
+            double lx = 1e300, ly = 1e300, hx = -1e300, hy = -1e300;
+            for (uint32_t v : m.triangles[t]) {
+                lx = std::min(lx, m.positions[v].x), hx = std::max(hx, m.positions[v].x);
+                ly = std::min(ly, m.positions[v].y), hy = std::max(hy, m.positions[v].y);
+            }
+            for (int j = int((ly - y0_) / kBucket); j <= int((hy - y0_) / kBucket); ++j)
+                for (int i = int((lx - x0_) / kBucket); i <= int((hx - x0_) / kBucket); ++i)
+                    buckets_[size_t(j) * size_t(cols_) + size_t(i)].push_back(t);
+        }
+    }
+    double at(double x, double y) const {
+        const int i = int((x - x0_) / kBucket), j = int((y - y0_) / kBucket);
+        if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return NAN;
+        double top = NAN;
+        for (size_t t : buckets_[size_t(j) * size_t(cols_) + size_t(i)]) {
+            const auto& a = m_.positions[m_.triangles[t][0]];
+            const auto& b = m_.positions[m_.triangles[t][1]];
+            const auto& c = m_.positions[m_.triangles[t][2]];
+            const double d = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+            if (std::fabs(d) < 1e-12) continue;  // a wall
+            const double u = ((x - a.x) * (c.y - a.y) - (c.x - a.x) * (y - a.y)) / d;
+            const double v = ((b.x - a.x) * (y - a.y) - (x - a.x) * (b.y - a.y)) / d;
+            if (u < -1e-9 || v < -1e-9 || u + v > 1 + 1e-9) continue;
+            const double z = a.z + u * (b.z - a.z) + v * (c.z - a.z);
+            if (!(top >= z)) top = z;
+        }
+        return top;
+    }
+
+private:
+    static constexpr double kBucket = 2.0;
+    const tsf::Mesh& m_;
+    double x0_ = 0, y0_ = 0;
+    int cols_ = 0, rows_ = 0;
+    std::vector<std::vector<size_t>> buckets_;
+};
+
+// A model tsf made, its sidecar gone (or never copied along): the relief
+// written is the mesh's top in the mesh's own coordinates, the orientation
+// tab west of x = 0 included.
+TEST(FeelCli, TheReliefOfAMeshWithoutSidecarIsInTheMeshsOwnFrame) {
+    const auto dir = tsf::test::scratchDir("feel_mesh_own_frame");
+    const std::string model = (dir / "volcano.stl").string();
+    ASSERT_EQ(tsf::test::runTsf("gen " + std::string(TSF_SOURCE_DIR) + "/examples/volcano.csv -o " + model, dir).exit_code, 0);
+    std::filesystem::remove(model + ".scene.json");
+    const std::string csv = (dir / "r.csv").string();
+    const auto r = tsf::test::runTsf("feel " + model + " --trajectory taps --relief " + csv + " --json", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(nlohmann::json::parse(r.out)["sidecar"].is_null());
+    const tsf::Mesh mesh = tsf::readMesh(model);
+    ASSERT_LT(tsf::meshBounds(mesh).min.x, -10.0) << "the tab reaches west of x = 0";
+    const MeshTop top(mesh);
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    size_t samples = 0, close = 0, west = 0;
+    double x, y, h;
+    while (std::getline(in, line)) {
+        if (std::sscanf(line.c_str(), "%lf,%lf,%lf", &x, &y, &h) != 3) continue;
+        const double t = top.at(x, y);
+        if (std::isnan(t) && std::isnan(h)) continue;  // nothing there, said so
+        ++samples;
+        west += x < 0 && !std::isnan(h);
+        close += !std::isnan(t) && !std::isnan(h) && std::fabs(t - h) <= 0.1;
+    }
+    ASSERT_GT(samples, 10000u);
+    EXPECT_GT(west, 100u) << "the tab is in the relief";
+    EXPECT_GE(double(close), 0.99 * double(samples)) << close << " of " << samples;
+}
+
+// MODEL.scene.json (the model's name without .stl) is taken as the sidecar
+// too, and the summary says which one was used.
+TEST(FeelCli, FindsASidecarNamedAfterTheModelAndSaysWhichItUsed) {
+    const auto dir = tsf::test::scratchDir("feel_mesh_sidecar_name");
+    tsf::test::writeText(dir / "g.csv", kGrid);
+    const std::string model = (dir / "g.stl").string();
+    ASSERT_EQ(tsf::test::runTsf("gen " + (dir / "g.csv").string() + " --cell 8 -o " + model, dir).exit_code, 0);
+    const std::string plain = (dir / "g.scene.json").string();
+    std::filesystem::rename(model + ".scene.json", plain);
+    const auto r = tsf::test::runTsf("feel " + model + " --trajectory taps --json", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["sidecar"], plain);
+    EXPECT_EQ(j["field"]["cols"], 4);  // the sidecar's grid, not one laid over the mesh
+    EXPECT_EQ(j["field"]["rows"], 4);
+    const auto text = tsf::test::runTsf("feel " + model + " --trajectory taps", dir);
+    EXPECT_NE(text.out.find("sidecar   " + plain), std::string::npos) << text.out;
 }
 
 // A blind maker edits one value of the generated .scad (4 -> 7), OpenSCAD
