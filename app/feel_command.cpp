@@ -81,6 +81,7 @@ struct FeelOptions {
     std::string log;
     std::string plot;
     std::string relief_csv;
+    std::string proportions = "fitted";
     std::string scene;  ///< --scene: the sidecar of the model a mesh input was made from
     bool json = false;
     bool realtime = false;
@@ -358,7 +359,8 @@ void runFeel(const FeelOptions& o) {
     const DeviceLimits limits;  // the Falcon's (sim and replay stand in for one)
     const FeelSurface surface =
         buildFeelSurface(scene, o.levels, o.scale_space == "mipmap" ? ScaleSpaceKind::kMipmap : ScaleSpaceKind::kGaussian,
-                         limits, from_mesh ? &file_mesh : nullptr);
+                         limits, from_mesh ? &file_mesh : nullptr,
+                         o.proportions == "printed" ? Proportions::kAsPrinted : Proportions::kFitted);
     const ReliefInfo& relief = surface.relief;
     const HeightGrid& grid = surface.grid;
     const FieldMapping& mapping = surface.mapping;
@@ -481,6 +483,10 @@ void runFeel(const FeelOptions& o) {
                           {"floor_y", mapping.floor_y_m},
                           {"volume_bottom_y", mapping.volume_bottom_y_m},
                           {"volume_top_y", mapping.volume_top_y_m}};
+        j["proportions"] = {{"mode", o.proportions},
+                            {"scale_xy", surface.scale.xy},
+                            {"scale_z", surface.scale.z},
+                            {"slope_exaggeration", surface.scale.slopeExaggeration()}};
         j["scale_space"] = {{"kind", o.scale_space}, {"levels", space.count()}, {"build_s", build_s}};
         j["loop"] = {{"end", loopEndName(stats.end)},
                      {"realtime", realtime},
@@ -529,6 +535,14 @@ void runFeel(const FeelOptions& o) {
         std::printf("  mapping   %s x %s footprint, cell %s, volume slab %s\n", mm(mapping.cell_m * grid.cols).c_str(),
                     mm(mapping.cell_m * grid.rows).c_str(), mm(pitch_m).c_str(),
                     mm(mapping.volume_top_y_m - mapping.volume_bottom_y_m).c_str());
+        if (o.proportions == "printed")
+            std::printf("  scale     as printed: %s device mm per printed mm in x, y and z (slopes feel as printed)\n",
+                        formatFixed(surface.scale.xy, 2).c_str());
+        else
+            std::printf("  scale     fitted: %s device mm per printed mm across, %s up: slopes feel %sx steeper than "
+                        "printed (--proportions printed: as printed)\n",
+                        formatFixed(surface.scale.xy, 2).c_str(), formatFixed(surface.scale.z, 2).c_str(),
+                        formatFixed(surface.scale.slopeExaggeration(), 1).c_str());
         std::printf("  levels    %d %s levels built in %.1f ms\n", space.count(), o.scale_space.c_str(), build_s * 1e3);
         std::printf("  loop      %llu ticks in %.2f s (%.1f Hz, target %.0f Hz), %s, %s\n",
                     (unsigned long long)stats.ticks, stats.elapsed_s, stats.rate_Hz, stats.target_rate_Hz,
@@ -632,6 +646,11 @@ void addFeelCommand(CLI::App& app) {
                     "With a mesh input (MODEL.stl, .3mf, .off, .obj): the scene sidecar of the model it was made from "
                     "(default MODEL.stl.scene.json, else MODEL.scene.json beside it), for its grid and heights; the mesh itself is felt, "
                     "e.g. what OpenSCAD rendered after an edit of the .scad");
+    cmd->add_option("--proportions", o->proportions,
+                    "fitted: the footprint fills the workspace and the relief its height band, each scaled apart "
+                    "(slopes steeper than printed; the summary says how much); printed: one scale for x, y and z, so "
+                    "slopes feel as printed (a lower relief: small steps and dots get hard to feel)")
+        ->check(CLI::IsMember({"fitted", "printed"}))->capture_default_str();
     cmd->add_option("--relief", o->relief_csv,
                     "Write the surface felt as CSV: x_mm,y_mm,z_mm of the printed model's top on a 0.5 mm grid "
                     "(finer for cells under 3 mm) over its whole footprint, NaN where nothing is");

@@ -32,6 +32,35 @@ FieldMapping mapFieldToWorkspace(int32_t cols, int32_t rows, const WorkspaceBox&
     return m;
 }
 
+FieldMapping mapReliefToWorkspace(int32_t cols, int32_t rows, double sample_mm, double height_mm,
+                                  Proportions proportions, const WorkspaceBox& box, const FieldLayout& layout) {
+    FieldMapping m = mapFieldToWorkspace(cols, rows, box, layout);
+    if (proportions == Proportions::kFitted || !(height_mm > 0.0) || !(sample_mm > 0.0)) return m;
+    // Device metres per printed metre: the footprint's fit, unless the
+    // relief at that scale would rise above its band.
+    const double footprint = m.cell_m / sample_mm;
+    const double band = m.relief_m / height_mm;
+    const double scale = std::min(footprint, band);
+    const double cx = m.west_x_m + 0.5 * m.cell_m * cols;
+    const double cz = m.south_z_m - 0.5 * m.cell_m * rows;
+    m.cell_m = scale * sample_mm;
+    m.west_x_m = cx - 0.5 * m.cell_m * cols;
+    m.south_z_m = cz + 0.5 * m.cell_m * rows;
+    m.relief_m = scale * height_mm;
+    // The volume slab keeps its thickness and sits on the highest surface.
+    const double slab = m.volume_top_y_m - m.volume_bottom_y_m;
+    m.volume_bottom_y_m = m.floor_y_m + m.relief_m;
+    m.volume_top_y_m = m.volume_bottom_y_m + slab;
+    return m;
+}
+
+MappingScale mappingScale(const FieldMapping& m, double sample_mm, double height_mm) noexcept {
+    MappingScale s;
+    if (sample_mm > 0.0) s.xy = 1000.0 * m.cell_m / sample_mm;  // m per mm -> mm per mm
+    if (height_mm > 0.0) s.z = 1000.0 * m.relief_m / height_mm;
+    return s;
+}
+
 GridPoint deviceToGrid(const FieldMapping& m, const Vec3& p_m) noexcept {
     return {(p_m.x - m.west_x_m) / m.cell_m - 0.5, (m.south_z_m - p_m.z) / m.cell_m - 0.5};
 }

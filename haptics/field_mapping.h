@@ -45,10 +45,33 @@ struct FieldMapping {
     double northZ() const { return south_z_m - cell_m * rows; }
 };
 
+/// How printed millimetres become device millimetres.
+enum class Proportions {
+    kFitted,     ///< footprint fitted to the box's floor, relief to its surface band, apart (slopes exaggerated)
+    kAsPrinted,  ///< one scale for x, y and z, the largest that fits both: slopes feel as printed
+};
+
 /// Validates and computes the mapping. Throws tsf::InputError when the grid
 /// is empty, the box is not a proper box, or the fractions are not positive
 /// with floor + surface + volume <= 1.
 FieldMapping mapFieldToWorkspace(int32_t cols, int32_t rows, const WorkspaceBox& box, const FieldLayout& layout = {});
+
+/// The mapping of a printed relief: samples of sample_mm, heights 0..1
+/// meaning 0..height_mm above the floor. kFitted is mapFieldToWorkspace;
+/// kAsPrinted takes its footprint scale, or the relief band's if the relief
+/// would not fit it (then the footprint shrinks, still centred), for all
+/// three axes. Throws as mapFieldToWorkspace; height_mm <= 0 maps as kFitted.
+FieldMapping mapReliefToWorkspace(int32_t cols, int32_t rows, double sample_mm, double height_mm,
+                                  Proportions proportions, const WorkspaceBox& box, const FieldLayout& layout = {});
+
+/// Device millimetres per printed millimetre of a relief's mapping.
+struct MappingScale {
+    double xy = 0.0;  ///< across (x, y printed -> x, z device)
+    double z = 0.0;   ///< up (printed height -> device y); 0 when height_mm is 0
+    /// How much steeper slopes feel than printed (z / xy; 1 = as printed).
+    double slopeExaggeration() const { return xy > 0.0 && z > 0.0 ? z / xy : 1.0; }
+};
+MappingScale mappingScale(const FieldMapping& m, double sample_mm, double height_mm) noexcept;
 
 /// Continuous grid coordinates (height_grid.h) of a device-frame point.
 struct GridPoint {

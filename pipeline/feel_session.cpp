@@ -31,11 +31,14 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 FeelSurface buildFeelSurface(const Scene& scene, int levels, ScaleSpaceKind kind, const DeviceLimits& limits,
-                             const Mesh* mesh) {
+                             const Mesh* mesh, Proportions proportions) {
     FeelSurface s;
     s.grid = mesh ? meshRelief(scene, *mesh, &s.relief) : printedRelief(scene, &s.relief);
     s.limits = limits;
-    s.mapping = mapFieldToWorkspace(s.grid.cols, s.grid.rows, limits.workspace);
+    const double height_mm = scene.mapping.max_height_mm;
+    s.mapping = mapReliefToWorkspace(s.grid.cols, s.grid.rows, s.relief.sample_mm, height_mm, proportions,
+                                     limits.workspace);
+    s.scale = mappingScale(s.mapping, s.relief.sample_mm, height_mm);
     const auto t0 = std::chrono::steady_clock::now();
     s.space = buildScaleSpace(s.grid, levels, kind, s.relief.samples_per_pitch);
     s.build_s = secondsSince(t0);

@@ -35,15 +35,19 @@ struct FeelSurface {
     haptics::FieldMapping mapping;
     haptics::ScaleSpace space;
     haptics::DeviceLimits limits;  ///< the workspace and force limit the surface is fitted to
+    haptics::MappingScale scale;   ///< device mm per printed mm, across and up
     double build_s = 0;            ///< building the scale space, s
 };
 
-/// `levels` (1..kMaxScaleLevels) of `kind`; the Falcon's workspace and limits.
+/// `levels` (1..kMaxScaleLevels) of `kind`; the Falcon's workspace and limits;
+/// `proportions`: the footprint and relief fitted apart (today's default) or
+/// one scale for x, y and z (field_mapping.h).
 /// `mesh` (nullable): feel that mesh (a model file as written, or as
 /// OpenSCAD rendered an edited .scad) on the Scene's grid instead of the
 /// Scene's own mesh.
 FeelSurface buildFeelSurface(const Scene& scene, int levels, haptics::ScaleSpaceKind kind,
-                             const haptics::DeviceLimits& limits = {}, const Mesh* mesh = nullptr);
+                             const haptics::DeviceLimits& limits = {}, const Mesh* mesh = nullptr,
+                             haptics::Proportions proportions = haptics::Proportions::kFitted);
 
 struct FeelRequest {
     haptics::ForceParams force;

@@ -304,3 +304,23 @@ TEST(FeelCli, ThePlotOfAVeryWideFieldStaysBounded) {
     EXPECT_GT(width, 700u);
     EXPECT_LT(width, 2400u);
 }
+
+TEST(FeelCli, TheSummarySaysHowMuchTheFitExaggeratesSlopesAndPrintedProportionsDoNot) {
+    const std::string volcano = std::string(TSF_SOURCE_DIR) + "/examples/volcano.csv";
+    const auto fitted = tsf::test::runTsf("feel " + volcano + " --duration 0.2 --json");
+    ASSERT_EQ(fitted.exit_code, 0) << fitted.output;
+    const auto f = nlohmann::json::parse(fitted.output.substr(fitted.output.find('{')))["proportions"];
+    EXPECT_EQ(f["mode"], "fitted");
+    // The footprint and the relief are fitted apart: 20 mm printed become 24 mm felt.
+    EXPECT_NEAR(f["scale_z"].get<double>(), 1.2, 1e-9);
+    EXPECT_NEAR(f["slope_exaggeration"].get<double>(), f["scale_z"].get<double>() / f["scale_xy"].get<double>(), 1e-9);
+    EXPECT_GT(f["slope_exaggeration"].get<double>(), 2.0);
+    const auto text = tsf::test::runTsf("feel " + volcano + " --duration 0.2");
+    EXPECT_NE(text.output.find("steeper than printed"), std::string::npos) << text.output;
+    const auto printed = tsf::test::runTsf("feel " + volcano + " --duration 0.2 --proportions printed --json");
+    ASSERT_EQ(printed.exit_code, 0) << printed.output;
+    const auto p = nlohmann::json::parse(printed.output.substr(printed.output.find('{')))["proportions"];
+    EXPECT_NEAR(p["scale_xy"].get<double>(), p["scale_z"].get<double>(), 1e-9);
+    EXPECT_NEAR(p["scale_xy"].get<double>(), f["scale_xy"].get<double>(), 1e-9);  // the footprint's scale: the relief fits
+    EXPECT_EQ(tsf::test::runTsf("feel " + volcano + " --proportions steep").exit_code, tsf::test::kExitBadInput);
+}
