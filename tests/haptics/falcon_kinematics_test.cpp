@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "haptics/falcon/falcon_kinematics.h"
+#include "tests/haptics/fake_falcon_mechanism.h"
 
 using namespace tsf::haptics;
 
@@ -192,4 +193,13 @@ TEST(FalconKinematics, NonFiniteForceGivesNoCommand) {
     const FalconMotorOutput m = falconMotorCommands(Vec3(0.0), t, Vec3(NAN, 0.0, 1.0));
     EXPECT_FALSE(m.valid);
     EXPECT_EQ(m.command, (std::array<int16_t, 3>{0, 0, 0}));
+}
+
+TEST(FalconKinematics, TheMotorScaleAgreesWithTheFakesOwnDerivation) {
+    // The fake derives its motors' units per N m from Novint's trace (700
+    // units for 12.5 N along -z at the centre) through its own mechanism;
+    // the driver's constant came from the same trace through the driver's
+    // Jacobian. Two derivations, one answer (2218.5 against 2220).
+    EXPECT_NEAR(tsf::haptics::testing::fakeMotorUnitsPerNm(), tsf::haptics::kFalconCountsPerNm,
+                0.005 * tsf::haptics::kFalconCountsPerNm);
 }
