@@ -105,12 +105,14 @@ TEST(TactileCli, APitNarrowerThanAFingertipIsFound) {
     test::writeText(dir / "shallow.csv", shallow);
     for (const std::string name : {"deep", "shallow"}) {
         const std::string model = (dir / (name + ".stl")).string();
-        const auto g = test::runTsf("gen " + (dir / (name + ".csv")).string() + " --cell 3 --height 10 --baseline zero -o " + model, dir);
+        const auto g = test::runTsf("gen " + (dir / (name + ".csv")).string() + " --cell 3 --height 10 --transfer linear --baseline zero -o " + model, dir);
         ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
         const auto r = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json", dir);
         // tsf gen's self-check says so as a warning, and writes the model.
         const bool warned = g.out.find("warn      a fingertip reaches the bottom") != std::string::npos;
         EXPECT_EQ(warned, name == "deep") << g.out;
+        // The options given are kept; the summary names one that passes, tried.
+        if (name == "deep") EXPECT_NE(g.out.find("tried: --transfer log passes every tactile check"), std::string::npos) << g.out;
         if (name == "deep") {
             EXPECT_EQ(r.exit_code, test::kExitCheckFailed) << r.out;
             EXPECT_EQ(statusOf(r.out, "tactile_finger_reach"), "fail") << r.out;
@@ -157,7 +159,8 @@ TEST(TactileCli, SlenderPillarsFailAndCloseHeightsWarn) {
     test::writeText(dir / "spike.csv", spike);
     for (const std::string cell : {"3", "8"}) {
         const std::string model = (dir / ("spike" + cell + ".stl")).string();
-        const auto g = test::runTsf("gen " + (dir / "spike.csv").string() + " --cell " + cell + " --cull none -o " + model, dir);
+        // --height given: tsf keeps it (without it, gen lowers the spike until it stands).
+        const auto g = test::runTsf("gen " + (dir / "spike.csv").string() + " --cell " + cell + " --height 20 --cull none -o " + model, dir);
         ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
         const auto r = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json", dir);
         EXPECT_EQ(statusOf(r.out, "tactile_slender_pillars"), cell == "3" ? "fail" : "pass") << cell << "\n" << r.out;
@@ -165,7 +168,7 @@ TEST(TactileCli, SlenderPillarsFailAndCloseHeightsWarn) {
             EXPECT_EQ(countOf(r.out, "tactile_slender_pillars"), 1) << r.out;
         }
     }
-    // The volcano at 0.001 mm steps: many neighbours less than a 0.2 mm layer apart; a warning.
+    // The volcano at 0.001 mm steps: many neighbours less than 0.5 mm apart; a warning.
     const std::string v = (dir / "v.stl").string();
     ASSERT_EQ(test::runTsf("gen " + test::sourcePath("examples/volcano.csv") + " -o " + v, dir).exit_code, test::kExitOk);
     const auto r = test::runTsf("verify " + v + " --scene " + v + ".scene.json --tactile --json", dir);
@@ -197,6 +200,57 @@ TEST(TactileCli, BrailleDotsAreCheckedAsTheyWillPrint) {
     const auto v = test::runTsf("verify " + layered + " --scene " + layered + ".scene.json --tactile --json", dir);
     EXPECT_EQ(v.exit_code, test::kExitOk) << v.out;
     EXPECT_EQ(statusOf(v.out, "tactile_braille"), "pass") << v.out;
+}
+
+// gen's self-check and tsf verify --tactile run the same checks on the same
+// samples: on every tactile check they give the same verdict and the same
+// count (gen says "warn" where verify says "fail": gen writes the model).
+TEST(TactileCli, GenAndVerifyGiveTheSameVerdicts) {
+    const auto dir = test::scratchDir();
+    std::string pit, holes;
+    for (int r = 0; r < 7; ++r) {
+        for (int c = 0; c < 7; ++c) {
+            pit += std::string(c ? "," : "") + (r == 3 && c == 3 ? "6" : "10");
+            holes += std::string(c ? "," : "") + ((r == 2 && c == 2) || (r == 4 && c == 3) ? "" : std::to_string(20 + r + c));
+        }
+        pit += "\n";
+        holes += "\n";
+    }
+    test::writeText(dir / "pit.csv", pit);
+    test::writeText(dir / "holes.csv", holes);
+    const std::string volcano = test::sourcePath("examples/volcano.csv");
+    struct Case {
+        std::string name, gen, verify;
+    };
+    const std::vector<Case> cases = {
+        {"volcano", volcano, ""},
+        {"mirrored", volcano + " --mirror", ""},
+        {"titled", volcano + " --title Volcano --units m --layer 0.2", " --layer 0.2"},
+        {"pit", (dir / "pit.csv").string() + " --cell 3 --height 10 --transfer linear --baseline zero", ""},
+        {"holes", (dir / "holes.csv").string() + " --cell 3", ""},
+    };
+    for (const Case& k : cases) {
+        const std::string model = (dir / (k.name + ".stl")).string();
+        const auto g = test::runTsf("gen " + k.gen + " --json -o " + model, dir);
+        ASSERT_EQ(g.exit_code, test::kExitOk) << k.name << "\n" << g.out << g.err;
+        const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json" + k.verify, dir);
+        const nlohmann::json gj = nlohmann::json::parse(g.out)["verify"];
+        int compared = 0;
+        for (const auto& c : gj["checks"]) {
+            const std::string id = c["id"];
+            if (id.rfind("tactile_", 0) != 0) continue;
+            const std::string verified = statusOf(v.out, id);
+            EXPECT_EQ(c["status"].get<std::string>(), verified == "fail" ? "warn" : verified) << k.name << " " << id;
+            EXPECT_EQ(c["count"].get<int64_t>(), countOf(v.out, id)) << k.name << " " << id;
+            ++compared;
+        }
+        EXPECT_GE(compared, 6) << k.name;
+        if (k.name == "pit") {
+            EXPECT_EQ(statusOf(v.out, "tactile_finger_reach"), "fail") << v.out;
+        } else {
+            EXPECT_EQ(statusOf(v.out, "tactile_finger_reach"), "pass") << k.name << "\n" << v.out;
+        }
+    }
 }
 
 }  // namespace
