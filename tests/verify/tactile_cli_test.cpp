@@ -22,6 +22,14 @@ std::string statusOf(const std::string& json_text, const std::string& id) {
     return "";
 }
 
+std::string noteOf(const std::string& json_text, const std::string& id) {
+    const nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
+    if (j.is_discarded()) return "";
+    for (const auto& c : j["checks"])
+        if (c["id"] == id) return c["note"].get<std::string>();
+    return "";
+}
+
 int64_t countOf(const std::string& json_text, const std::string& id) {
     const nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
     for (const auto& c : j["checks"])
@@ -242,6 +250,10 @@ TEST(TactileCli, GenAndVerifyGiveTheSameVerdicts) {
             const std::string verified = statusOf(v.out, id);
             EXPECT_EQ(c["status"].get<std::string>(), verified == "fail" ? "warn" : verified) << k.name << " " << id;
             EXPECT_EQ(c["count"].get<int64_t>(), countOf(v.out, id)) << k.name << " " << id;
+            // The same measures: the note (depths, areas, the sampling), less what gen adds to a warning.
+            std::string note = c["note"];
+            if (const size_t at = note.find(" (tsf verify --tactile lists the places)"); at != std::string::npos) note.erase(at);
+            EXPECT_EQ(note, noteOf(v.out, id)) << k.name << " " << id;
             ++compared;
         }
         EXPECT_GE(compared, 6) << k.name;
