@@ -9,6 +9,9 @@
 #include <random>
 #include <vector>
 
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/build_scene.h"
+#include "tests/support/fields.h"
 #include "verify/finger_reach.h"
 #include "verify/tactile.h"
 
@@ -144,6 +147,39 @@ TEST(FingerReach, RaisingAWallOrDeepeningAPitNeverHelps) {
         checked += before.places > 0;
     }
     EXPECT_GT(checked, 10);
+}
+
+// The slender-pillar check on built models: raising the spike never makes
+// it stand stronger, and a thinner pillar never stands stronger (a failure
+// at w mm cells stays one at thinner cells).
+TEST(TactileMonotone, SlenderPillarsAreMonotoneInHeightAndWidth) {
+    auto verdict = [](double spike, double cell) {
+        SceneParams p = test::smallParams(Bottom::Flat, Cull::None);
+        p.pitch_mm = cell;
+        p.max_height_mm = 20;
+        p.baseline_mode = BaselineMode::Zero;
+        p.value_max = 20;
+        const Scene s = buildScene(test::fieldFromFunction(5, 5, [&](int c, int r) { return c == 2 && r == 2 ? spike : 0.0; }), p);
+        for (const Check& c : checkTactile(meshScene(s), &s, TactileOptions{}).checks)
+            if (c.id == "tactile_slender_pillars") return c.status == CheckStatus::Fail;
+        ADD_FAILURE() << "no slender-pillar check";
+        return false;
+    };
+    bool failed_taller = false;
+    for (double spike : {2.0, 4.0, 6.0, 10.0, 20.0}) {
+        const bool fails = verdict(spike, 3.0);
+        EXPECT_TRUE(fails || !failed_taller) << spike << " mm passes after a lower spike failed";
+        failed_taller = failed_taller || fails;
+    }
+    EXPECT_TRUE(failed_taller) << "a 20 mm spike 3 mm across breaks";
+    bool failed_wider = false;
+    for (double cell : {8.0, 6.0, 5.0, 4.0, 3.0}) {
+        const bool fails = verdict(12.0, cell);
+        EXPECT_TRUE(fails || !failed_wider) << cell << " mm cells pass after wider ones failed";
+        failed_wider = failed_wider || fails;
+    }
+    EXPECT_FALSE(verdict(12.0, 8.0)) << "12 mm free, 8 mm across: stands";
+    EXPECT_TRUE(failed_wider) << "12 mm free, 3 mm across: breaks";
 }
 
 }  // namespace
