@@ -210,6 +210,22 @@ TEST(TactileCli, BrailleDotsAreCheckedAsTheyWillPrint) {
     EXPECT_EQ(statusOf(v.out, "tactile_braille"), "pass") << v.out;
 }
 
+// Neighbours 0.4 mm apart (two whole 0.2 mm layers) print apart but feel the
+// same: a reader compares steps of about 0.5 mm. 1 mm apart they pass.
+TEST(TactileCli, StepsUnderHalfAMillimetreFeelTheSame) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "ramp.csv", "1,2,3,4,5\n1,2,3,4,5\n1,2,3,4,5\n1,2,3,4,5\n");
+    for (const std::string height : {"2", "5"}) {
+        const std::string model = (dir / ("ramp" + height + ".stl")).string();
+        const auto g = test::runTsf("gen " + (dir / "ramp.csv").string() + " --cell 6 --baseline zero --layer 0.2 --height " +
+                                        height + " -o " + model,
+                                    dir);
+        ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+        const auto r = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --layer 0.2 --json", dir);
+        EXPECT_EQ(statusOf(r.out, "tactile_height_steps"), height == "2" ? "warn" : "pass") << height << "\n" << r.out;
+    }
+}
+
 // gen's self-check and tsf verify --tactile run the same checks on the same
 // samples: on every tactile check they give the same verdict and the same
 // count (gen says "warn" where verify says "fail": gen writes the model).
