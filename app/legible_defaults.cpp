@@ -246,7 +246,7 @@ LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const
                              : "no height from " + formatSignificant(p0.max_height_mm, 3) + " down to " +
                                    formatSignificant(heights.empty() ? p0.max_height_mm : heights.back(), 3) +
                                    " mm and no transfer passes";
-    if (!refused.empty()) reason += "; lower would flatten the data (" + refused + ")";
+    if (!refused.empty()) reason += "; others would flatten the data (" + refused + ")";
     out.lines.push_back(reason);
     j["why"] = reason;
     out.json = j;

@@ -226,6 +226,28 @@ TEST(TactileCli, StepsUnderHalfAMillimetreFeelTheSame) {
     }
 }
 
+// A pit 8 mm deep (at the default 20 mm) beside a step of 1.2 mm: a height
+// low enough for the pit would take the step under 0.5 mm, and a log
+// transfer would too, so gen
+// keeps its model and says why, never passing by flattening the data.
+TEST(TactileCli, GenNeverPassesByFlattening) {
+    const auto dir = test::scratchDir();
+    std::string grid;
+    for (int r = 0; r < 7; ++r) {
+        for (int c = 0; c < 7; ++c) grid += std::string(c ? "," : "") + (r == 3 && c == 3 ? "6" : r == 0 && c == 6 ? "9.4" : "10");
+        grid += "\n";
+    }
+    test::writeText(dir / "pit.csv", grid);
+    const std::string model = (dir / "pit.stl").string();
+    const auto g = test::runTsf("gen " + (dir / "pit.csv").string() + " --cell 3 --baseline zero --json -o " + model, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    const nlohmann::json j = nlohmann::json::parse(g.out);
+    EXPECT_FALSE(j["legibility"].contains("changed")) << j["legibility"].dump(1);
+    EXPECT_NE(j["legibility"]["why"].get<std::string>().find("would flatten"), std::string::npos) << j["legibility"].dump(1);
+    EXPECT_EQ(j["legibility"]["fails"].size(), 1u) << j["legibility"].dump(1);
+    EXPECT_EQ(j["scene"]["mapping"]["transfer"], "linear");
+}
+
 // gen's self-check and tsf verify --tactile run the same checks on the same
 // samples: on every tactile check they give the same verdict and the same
 // count (gen says "warn" where verify says "fail": gen writes the model).
