@@ -16,6 +16,7 @@
 #include "app/halves_output.h"
 #include "app/tiles_output.h"
 #include "app/input_report.h"
+#include "app/legible_defaults.h"
 #include "app/stage_timer.h"
 #include "app/preview.h"
 #include "app/printer_fit.h"
@@ -65,6 +66,7 @@ struct GenCommandOptions {
     std::string parts_layout = "portable";  ///< --parts-layout: portable | prusaslicer
     bool print_check = false;  ///< --print-check: slice the written model with PrusaSlicer
     GivenOptions given;   ///< model options the user gave himself
+    LegibilityGiven legibility_given;  ///< what defaults that pass may not change (app/legible_defaults.h)
 };
 
 // Largest existing parameter-set file read to decide whether tsf wrote it
@@ -348,6 +350,33 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     } catch (const ModelVerificationFailed& e) {
         refuseUnverified(e, timer);
     }
+    // Defaults that pass: a model made from tsf's defaults that fails a
+    // legibility check is made again with what the user left to tsf
+    // (app/legible_defaults.h); the summary says what changed and why.
+    std::string legibility_key;
+    if (made.report) {
+        const std::vector<std::string> failed = failedLegibility(*made.report);
+        if (!failed.empty()) {
+            timer.begin("legibility");
+            const LegibleDefaults ld = legibleDefaults(field, scene, failed, o.legibility_given, rq.verify_options);
+            summary.legibility = ld.lines;
+            summary.legibility_json = ld.json;
+            if (ld.params) {
+                o.gen.scene = *ld.params;
+                scene = buildScene(field, o.gen.scene);
+                try {
+                    made = makeVerifiedModel(scene, rq, [&](const std::string& stage) { timer.begin(stage.c_str()); });
+                } catch (const ModelVerificationFailed& e) {
+                    refuseUnverified(e, timer);
+                }
+            }
+            if (!failedLegibility(*made.report).empty() && ld.json.is_object() && ld.json.contains("key")) {
+                legibility_key = "Where the model may not read well:";
+                for (const auto& why : ld.json["key"])
+                    legibility_key += " " + why.get<std::string>() + ".";
+            }
+        }
+    }
     std::optional<VerifiedTiles> tiles;
     if (o.printer.tile) {
         const BedSize bed = parseBedSize(o.printer.bed, "--bed", /*need_height=*/false);
@@ -454,6 +483,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
                 facts.read_facts.push_back((f.name == "band" ? std::string("Band") : f.name == "units" ? "Units" : "Variable") +
                                            ": " + f.value);
         facts.categorical = field.input.categorical;
+        facts.legibility = legibility_key;
         facts.class_names = field.input.classes;
         facts.class_order = field.input.class_order;
         if (const auto g = groundScale(scene, field)) facts.ground = groundSentence(*g);
@@ -653,6 +683,10 @@ void addGenCommand(CLI::App& app) {
         opts->given.depth = cmd->get_option("--depth")->count() > 0;
         opts->given.snap = cmd->get_option("--snap")->count() > 0;
         opts->given.max_slope = cmd->get_option("--max-slope")->count() > 0;
+        // A series keeps one value scale: its heights and transfer are never changed band by band.
+        const bool series = !opts->gen.band_series.empty();
+        opts->legibility_given.height = series || cmd->get_option("--height")->count() > 0;
+        opts->legibility_given.transfer = series || cmd->get_option("--transfer")->count() > 0;
         // The pieces are not the model the sidecar describes: none is written for them.
         if (opts->gen.scene.halves || opts->printer.tile) opts->no_sidecar = true;
         if (!opts->gen.band_series.empty()) runGenSeries(*opts);

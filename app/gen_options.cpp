@@ -159,7 +159,8 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "shallower north-south than the ground (default: the hexagons stretched north-south so rows stand a "
            "cell apart and the model keeps the ground's proportions)")
         ->group(model);
-    cmd->add_option("--height", p.max_height_mm, "Height of the largest value above the floor, mm")
+    cmd->add_option("--height", p.max_height_mm, "Height of the largest value above the floor, mm (left out, tsf gen lowers it where a fingertip "
+                    "could not read the model, never flattening a step of 0.5 mm: docs/tactile.md)")
         ->check(CLI::NonNegativeNumber)->capture_default_str()->group(model);
     cmd->add_option("--base", p.base_mm, "Flat: base under the floor; mirrored: thinnest slab, mm")
         ->check(CLI::PositiveNumber)->capture_default_str()->group(model);
@@ -168,7 +169,8 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            [&p](const std::string& t) {
                p.transfer = t == "sqrt" ? Transfer::Sqrt : t == "log" ? Transfer::Log : Transfer::Linear;
            },
-           "Value -> height: linear (default) | sqrt | log (log10(1+99t)/2, two decades)")
+           "Value -> height: linear (default) | sqrt | log (log10(1+99t)/2, two decades); left out, tsf gen "
+           "may choose sqrt or log where a fingertip could not read the model (docs/tactile.md)")
         ->check(CLI::IsMember({"linear", "sqrt", "log"}))->group(model);
     cmd->add_option_function<std::string>(
            "--baseline", [&p](const std::string& t) { parseBaseline(t, p); },

@@ -4,6 +4,7 @@
 #include "app/printer_fit.h"
 #include "gen/model/attachments.h"
 #include "gen/model/feature_records.h"
+#include "gen/model/features/felt_heights.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
@@ -113,7 +114,8 @@ std::string formatSceneFacts(const Scene& s) {
           << " mm above the floor: a class map's codes are names, not amounts (--class-order stands ordered "
              "classes at heights)\n";
     else
-        o << "  heights   " << mappingText(s) << "\n";
+        o << "  heights   " << mappingText(s) << "\n"
+          << "  levels    " << feltLevelsSentence(s.mapping.max_height_mm, s.scale.has_value()) << "\n";
     if (s.params.bottom == Bottom::Flat)
         o << "  bottom    flat, base " << formatFixed(s.params.base_mm, 2) << " mm\n";
     else
@@ -214,6 +216,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
     if (!s.halves.is_null()) j["halves"] = s.halves;
     if (!s.tiles.is_null()) j["tiles"] = s.tiles;
     j["printer"] = s.printer_notes;
+    if (!s.legibility_json.is_null()) j["legibility"] = s.legibility_json;
     return j;
 }
 
@@ -222,6 +225,7 @@ std::string formatSummary(const GenSummary& s) {
     o << "tsf gen: " << s.input << "\n";
     if (s.field) o << "  input     " << s.field->how << "\n";
     for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
+    for (const std::string& n : s.legibility) o << "  legible   " << n << "\n";
     if (s.scene) o << formatSceneFacts(*s.scene);
     if (s.scene && s.field)
         if (const auto g = groundScale(*s.scene, *s.field)) o << groundLine(*g, s.field->input);

@@ -27,6 +27,9 @@ struct GenSummary {
     nlohmann::json tiles;    ///< --tile: the tiles, their checks and the assembly's (tiles_output.h); null otherwise
     std::string tiles_text;
     std::string supports_text;  ///< a one-piece mirrored model: the supports it needs
+    /// Defaults that pass (legible_defaults.h): what changed and why, or why nothing passes.
+    std::vector<std::string> legibility;
+    nlohmann::json legibility_json;
 };
 
 /// Human-readable summary (several lines, each "label  text").

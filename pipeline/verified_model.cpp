@@ -64,7 +64,8 @@ VerifiedModel makeVerifiedModel(const Scene& scene, const ModelRequest& rq,
         // The model as a hand reads it, as warnings (docs/tactile.md).
         vo.tactile = true;
         vo.tactile_as_warnings = true;
-        vo.tactile_sample_mm = 1.0;  // a sixteenth of the work of 0.5 mm; pits narrower than 3 mm still span samples
+        // At verify's own sampling (vo.tactile_sample_mm as given): the same
+        // code on the same samples, so gen's verdict is tsf verify's.
         if (!rq.verify_full && m.mesh.triangleCount() > kQuickVerifyTriangles) {
             vo.self_intersections = false;
             vo.printability = false;

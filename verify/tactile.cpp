@@ -7,12 +7,14 @@
 #include <numbers>
 #include <string>
 
+#include "gen/field/hex_grid.h"
 #include "gen/model/features/class_textures.h"
+#include "gen/model/features/felt_heights.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
-#include "verify/height_field.h"
+#include "verify/finger_reach.h"
 #include "verify/detail/workers.h"
 
 namespace tsf {
@@ -197,154 +199,53 @@ void checkPointsAndEdges(const Mesh& m, const TactileOptions& o, TactileResult& 
     r.stages.push_back({"tactile_angles", ms});
 }
 
-// The top surface sampled on a grid (verify/height_field.h); -inf where nothing is over a sample.
-using HeightMap = TopHeightField;
-
-// Runs fn(row) for every row on the verifier's worker threads.
-template <class Fn>
-void forRows(int rows, Fn fn) {
-    const unsigned workers = detail::workerCount(0);
-    detail::runOnWorkers(workers, [&](unsigned w, const auto&) {
-        for (int j = int(w); j < rows; j += int(workers)) fn(j);
-    });
+// Samples of `top` over the kept cells without data (their pits), from the
+// Scene: a hole there says "no data", and no value is read at its bottom.
+std::vector<uint8_t> noDataSamples(const TopHeightField& top, const Scene* s) {
+    std::vector<uint8_t> out;
+    if (!s || s->cells_nodata_kept == 0) return out;
+    out.assign(top.z.size(), 0);
+    for (int j = 0; j < top.ny; ++j)
+        for (int i = 0; i < top.nx; ++i) {
+            int32_t col = 0, row = 0;
+            const double x = top.x0 + i * top.step, y = top.y0 + j * top.step;
+            if (!hexCellAt(s->grid, x / s->pitch_mm, y / (s->pitch_mm * s->y_scale), col, row)) continue;
+            const int32_t k = s->keptAt(col, row);
+            if (k >= 0 && s->kind[size_t(k)] == CellKind::NoData) out[size_t(j) * size_t(top.nx) + size_t(i)] = 1;
+        }
+    return out;
 }
 
-// Where a ball of radius r lowered from above onto the surface can touch:
-// the surface closed by the ball (the lowest each ball centre can go, then
-// the lowest point of the balls above each sample). The table around the
-// model (no hit) is at `table`.
-std::vector<double> reachedBy(const HeightMap& h, double r, double table) {
-    struct Offset {
-        int di, dj;
-        double rise;
-    };
-    std::vector<Offset> disc;
-    const int n = int(std::ceil(r / h.step));
-    for (int dj = -n; dj <= n; ++dj)
-        for (int di = -n; di <= n; ++di) {
-            const double d2 = (di * h.step) * (di * h.step) + (dj * h.step) * (dj * h.step);
-            if (d2 <= r * r) disc.push_back({di, dj, std::sqrt(r * r - d2)});
-        }
-    // Both passes read arrays padded by n samples on every side, so that an
-    // offset never leaves them, and run offset by offset along a row: a
-    // maximum (minimum) of the same values as sample by sample, in a loop
-    // the compiler vectorises.
-    const size_t w = size_t(h.nx) + 2 * size_t(n), rows = size_t(h.ny) + 2 * size_t(n);
-    std::vector<double> padded(w * rows, table);  // the surface; the table where nothing is
-    for (int j = 0; j < h.ny; ++j)
-        for (int i = 0; i < h.nx; ++i) {
-            const double z = h.at(i, j);
-            padded[(size_t(j) + size_t(n)) * w + size_t(i) + size_t(n)] = std::isfinite(z) ? z : table;
-        }
-    // The lowest each ball centre can go; a centre beyond the sampled area
-    // stands on the table.
-    std::vector<double> centre(w * rows, table + r), reach(h.z.size());
-    forRows(h.ny, [&](int j) {
-        double* out = &centre[(size_t(j) + size_t(n)) * w + size_t(n)];
-        std::fill(out, out + h.nx, -std::numeric_limits<double>::infinity());
-        for (const Offset& o : disc) {
-            const double* in = &padded[(size_t(j + o.dj) + size_t(n)) * w + size_t(n + o.di)];
-            const double rise = o.rise;
-            for (int i = 0; i < h.nx; ++i) out[i] = std::max(out[i], in[i] + rise);
-        }
-    });
-    forRows(h.ny, [&](int j) {
-        double* out = &reach[size_t(j) * size_t(h.nx)];
-        std::fill(out, out + h.nx, std::numeric_limits<double>::infinity());
-        for (const Offset& o : disc) {
-            const double* in = &centre[(size_t(j + o.dj) + size_t(n)) * w + size_t(n + o.di)];
-            const double rise = o.rise;
-            for (int i = 0; i < h.nx; ++i) out[i] = std::min(out[i], in[i] - rise);
-        }
-    });
-    return reach;
-}
-
-struct Unreached {
-    int64_t places = 0;   // connected groups of samples left unreached
-    double deepest = 0;   // mm
-    std::vector<Offender> worst;
-};
-
-Unreached unreachedPlaces(const HeightMap& h, const std::vector<double>& reach) {
-    Unreached u;
-    std::vector<int32_t> label(h.z.size(), -1);
-    for (int j = 0; j < h.ny; ++j)
-        for (int i = 0; i < h.nx; ++i) {
-            const size_t s = size_t(j) * size_t(h.nx) + size_t(i);
-            const double z = h.z[s];
-            if (!std::isfinite(z) || label[s] >= 0 || reach[s] - z <= kUnreachedDepthMm) continue;
-            // Flood the group of deep samples around it. It is a place the
-            // fingertip cannot read only when no sample beside it, reached,
-            // continues its surface (lower, or higher by less than the
-            // depth): otherwise it is the foot of a wall the fingertip reads
-            // a little further out.
-            Offender worst{{0, 0, 0}, 0, ""};
-            int64_t samples = 0;
-            bool escapes = false;
-            std::vector<size_t> stack{s};
-            label[s] = int32_t(u.places);
-            while (!stack.empty()) {
-                const size_t p = stack.back();
-                stack.pop_back();
-                ++samples;
-                const int pi = int(p % size_t(h.nx)), pj = int(p / size_t(h.nx));
-                const double depth = reach[p] - h.z[p];
-                if (depth > worst.amount)
-                    worst = {{h.x0 + pi * h.step, h.y0 + pj * h.step, h.z[p]}, depth, ""};
-                for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
-                    const int qi = pi + di, qj = pj + dj;
-                    if (qi < 0 || qj < 0 || qi >= h.nx || qj >= h.ny) continue;
-                    const size_t q = size_t(qj) * size_t(h.nx) + size_t(qi);
-                    if (label[q] >= 0 || !std::isfinite(h.z[q])) continue;
-                    if (reach[q] - h.z[q] <= kUnreachedDepthMm) {
-                        escapes = escapes || h.z[q] <= h.z[p] + kUnreachedDepthMm;
-                        continue;
-                    }
-                    label[q] = int32_t(u.places);
-                    stack.push_back(q);
-                }
-            }
-            if (escapes) continue;
-            ++u.places;
-            u.deepest = std::max(u.deepest, worst.amount);
-            worst.detail = "the fingertip stops " + formatFixed(worst.amount, 1) + " mm above the surface, over " +
-                           formatFixed(double(samples) * h.step * h.step, 1) + " mm^2";
-            u.worst.push_back(worst);
-        }
-    return u;
-}
-
-void checkFingerReach(const Mesh& m, const TactileOptions& o, TactileResult& r) {
+void checkFingerReach(const Mesh& m, const Scene* scene, const TactileOptions& o, TactileResult& r) {
     const auto t0 = std::chrono::steady_clock::now();
     Check c{"tactile_finger_reach", "a fingertip reaches the bottom of every pit and valley"};
     c.unit = "mm";
-    const Bounds b = meshBounds(m);
-    if (m.triangles.empty() || !std::isfinite(b.min.z)) {
+    const TopHeightField top = sampledTop(m, o.sample_mm, kAdultFingertipRadiusMm);
+    const FingerReachResult reach =
+        top.z.empty() ? FingerReachResult{}
+                      : fingerReach(top, meshBounds(m).min.z, {kAdultFingertipRadiusMm, kChildFingertipRadiusMm},
+                                    noDataSamples(top, scene));
+    if (reach.fingers.size() != 2) {
         c.status = CheckStatus::Skipped;
         c.note = "skipped: an empty mesh";
     } else {
-        HeightMap h;
-        const double margin = kAdultFingertipRadiusMm;
-        const double w = b.max.x - b.min.x + 2 * margin, d = b.max.y - b.min.y + 2 * margin;
-        // At most about a million samples (a 500 mm model at 0.5 mm).
-        h.step = std::max(o.sample_mm, std::sqrt(w * d / 1.0e6));
-        h.x0 = b.min.x - margin;
-        h.y0 = b.min.y - margin;
-        h.nx = int(std::ceil(w / h.step)) + 1;
-        h.ny = int(std::ceil(d / h.step)) + 1;
-        rasteriseTop(m, h);
-        const Unreached adult = unreachedPlaces(h, reachedBy(h, kAdultFingertipRadiusMm, b.min.z));
-        const Unreached child = unreachedPlaces(h, reachedBy(h, kChildFingertipRadiusMm, b.min.z));
+        const FingerReach& adult = reach.fingers[0];
+        const FingerReach& child = reach.fingers[1];
         c.count = adult.places;
         c.worst = adult.worst;
-        keepWorst(c.worst, o.max_offenders, false);
+        if (c.worst.size() > o.max_offenders) c.worst.resize(o.max_offenders);
         c.status = adult.places ? CheckStatus::Fail : CheckStatus::Pass;
-        c.note = "an adult's fingertip (" + formatFixed(2 * kAdultFingertipRadiusMm, 0) + " mm) leaves " +
-                 std::to_string(adult.places) + (adult.places == 1 ? " place" : " places") + " more than " +
-                 formatFixed(kUnreachedDepthMm, 1) + " mm deep unreached (deepest " + formatFixed(adult.deepest, 1) +
-                 " mm), a child's (" + formatFixed(2 * kChildFingertipRadiusMm, 0) + " mm) " + std::to_string(child.places) +
-                 " (deepest " + formatFixed(child.deepest, 1) + " mm); top sampled every " + formatSignificant(h.step, 2) + " mm";
+        auto said = [](const FingerReach& f) {
+            return std::to_string(f.places) + (f.places == 1 ? " place" : " places") + " (" + formatFixed(f.area_mm2, 1) +
+                   " mm^2, deepest " + formatFixed(f.deepest_mm, 1) + " mm)";
+        };
+        c.note = "an adult's fingertip (" + formatFixed(2 * kAdultFingertipRadiusMm, 0) + " mm) leaves " + said(adult) +
+                 " more than " + formatFixed(kUnreachedDepthMm, 1) + " mm deep unreached, a child's (" +
+                 formatFixed(2 * kChildFingertipRadiusMm, 0) + " mm) " + said(child) +
+                 (adult.no_value_area_mm2 > 0 ? "; the pits of cells without data (" + formatFixed(adult.no_value_area_mm2, 1) +
+                                                    " mm^2 out of reach) hold no value to read"
+                                              : std::string()) +
+                 "; top sampled every " + formatSignificant(reach.step_mm, 2) + " mm";
     }
     c.time_ms = msSince(t0);
     c.stage = "tactile_reach";
@@ -427,7 +328,7 @@ void checkPillars(const Scene& s, const TactileOptions& o, TactileResult& r) {
 }
 
 void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r) {
-    Check c{"tactile_height_steps", "neighbouring values at least a printed layer apart"};
+    Check c{"tactile_height_steps", "neighbouring values at least a felt step apart"};
     c.unit = "mm";
     if (s.textures) {
         // A class map's classes share one height and are told apart by the
@@ -443,6 +344,9 @@ void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r)
         r.checks.push_back(std::move(c));
         return;
     }
+    // A step a reader compares neighbours by: half a millimetre, or a layer
+    // where layers are coarser (a step under one is rounded away).
+    const double felt = std::max(kFeltHeightStepMm, o.layer_mm);
     int64_t pairs = 0, close = 0;
     for (size_t k = 0; k < s.keptCount(); ++k) {
         if (s.kind[k] != CellKind::Data) continue;
@@ -451,7 +355,7 @@ void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r)
             if (n < 0 || s.kind[size_t(n)] != CellKind::Data || s.value[k] == s.value[size_t(n)]) continue;
             ++pairs;
             const double dz = std::fabs(centreTopMm(s, k) - centreTopMm(s, size_t(n)));
-            if (dz < o.layer_mm - 1e-9) {
+            if (dz < felt - 1e-9) {
                 ++close;
                 if (c.worst.size() < 4 * o.max_offenders)
                     c.worst.push_back({s.point(hexCentre(s.grid, s.col[k], s.row[k]), centreTop(s, k)), dz,
@@ -464,12 +368,11 @@ void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r)
     c.count = close;
     const double share = pairs ? 100.0 * double(close) / double(pairs) : 0.0;
     c.status = close ? CheckStatus::Warn : CheckStatus::Pass;
-    c.note = formatFixed(share, 1) + " % of " + std::to_string(pairs) + " neighbouring pairs of different values differ by less than a " +
-             formatSignificant(o.layer_mm, 3) + " mm layer (they print the same, or a layer apart by rounding)" +
-             (!close                               ? std::string()
-              : s.z_snap_mm >= o.layer_mm - 1e-9 ? std::string(": a larger --height spreads them over more layers")
-                                                   : ": make the model with --layer " + formatSignificant(o.layer_mm, 3) +
-                                                         " (whole layers), or a larger --height");
+    c.note = formatFixed(share, 1) + " % of " + std::to_string(pairs) + " neighbouring pairs of different values differ by less than " +
+             formatSignificant(felt, 3) + " mm (they feel the same: compare them against the scale or the key)" +
+             (close ? "; a larger --height spreads them" : "") +
+             "; by touch alone a reader tells about " + std::to_string(levelsReadWithoutScale(s.mapping.max_height_mm)) +
+             " heights apart";
     c.stage = "tactile_marks";
     r.checks.push_back(std::move(c));
 }
@@ -547,6 +450,24 @@ const std::vector<TactileThreshold>& tactileThresholds() {
         {"tactile_slender_pillars", "strength of printed PLA across its layers", kPrintedPlaInterlayerMpa, "MPa",
          "the low end of the interlayer strengths measured for FDM-printed PLA (Chacon et al., Materials & Design "
          "124:143-157, 2017: upright specimens, 20-50 MPa)"},
+        {"tactile_height_steps", "smallest height step between neighbouring values a reader compares by", kFeltHeightStepMm,
+         "mm",
+         "3D-printed tactile graphics: heights >= 0.5 mm to detect, >= 1 mm for what matters (printdisability.org, "
+         "Round Table on Information Access, 3D printing guidance); steps of 0.56 mm worked as levels on FDM maps "
+         "(Wabinski, Moscicka, Touya, PLOS ONE 17(3):e0264564, 2022). A fingertip detects a 1 um edge (Johansson and "
+         "LaMotte 1983), but detecting is not comparing. With coarser --layer, one layer"},
+        {"tactile_height_steps", "heights a reader identifies without the scale", double(kLevelsReadWithoutScale), "",
+         "three levels (0.56, 1.12, 1.68 mm) worked on FDM-printed maps (Wabinski et al. 2022); the summary and the "
+         "key say so, not range / 0.5 mm"},
+        {"tactile_height_steps", "class textures' relief, in whole layers", kMinFeltTextureReliefMm, "mm",
+         "0.02 in for an areal pattern (BANA, Guidelines and Standards for Tactile Graphics, 2010); printed in whole "
+         "layers: 0.6 mm at 0.2 mm layers where the cells' slope allows it"},
+        {"tactile_height_steps", "most textures on one model", double(kTextureCount), "",
+         "at most five area textures on a graphic, else a key (APH, Guidelines for Design of Tactile Graphics, 1997; "
+         "BANA 2010)"},
+        {"cell size", "spacing under which neighbouring features merge", kMergeSpacingMm, "mm",
+         "1/8 in, the smallest space between two elements a reader perceives (L. Hasty, '1/8th inch rule'); tsf "
+         "never makes or advises cells under 3 mm by default"},
         {"tactile_braille", "lowest printed dot", kMinPrintedDotHeightMm, "mm",
          "0.019 in, the dot height of NLS Specification 800 (2008) 3.2 (paper braille)"},
         {"tactile_braille", "highest printed dot", kMaxBrailleDotHeightMm, "mm",
@@ -560,7 +481,7 @@ const std::vector<TactileThreshold>& tactileThresholds() {
 TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOptions& options) {
     TactileResult r;
     checkPointsAndEdges(mesh, options, r);
-    checkFingerReach(mesh, options, r);
+    checkFingerReach(mesh, scene, options, r);
     if (scene) {
         checkMarks(*scene, options, r);
         checkPillars(*scene, options, r);

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "gen/geometry/mesh.h"
+#include "verify/finger_reach.h"
 #include "verify/report.h"
 
 namespace tsf {
@@ -54,12 +55,13 @@ inline constexpr double kKnifeEdgeDeg = 30.0;
 /// Fingertip radii (mm): half the width of an adult's and a young child's index fingertip.
 inline constexpr double kAdultFingertipRadiusMm = 8.0;
 inline constexpr double kChildFingertipRadiusMm = 5.5;
-/// Depth (mm) of a place the fingertip may leave unreached.
-inline constexpr double kUnreachedDepthMm = 2.0;
 /// Smallest orientation marks (mm): the notch's depth and the triangle's shorter leg.
 inline constexpr double kMinNotchDepthMm = 3.2;
 inline constexpr double kMinTriangleLegMm = 6.35;
 inline constexpr double kMinTriangleLongLegMm = 12.7;
+/// Spacing (mm) under which two neighbouring features merge under a
+/// fingertip (1/8 in): the notch is at least this deep, cells are not advised smaller.
+inline constexpr double kMergeSpacingMm = 3.2;
 /// Lowest printed braille dot, mm: NLS Specification 800's dot height (paper
 /// braille; lower dots are read poorly). The highest is kMaxBrailleDotHeightMm
 /// (gen/model/features/legend.h).

@@ -8,6 +8,7 @@
 #include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/features/class_textures.h"
+#include "gen/model/features/felt_heights.h"
 #include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
 
@@ -40,7 +41,7 @@ std::string heightsParagraph(const Scene& s) {
              "up of the same height multiplies the value.";
         break;
     }
-    return p;
+    return p + " " + feltLevelsSentence(m.max_height_mm, s.scale.has_value());
 }
 
 std::string orientationParagraph(const Scene& s) {
@@ -139,7 +140,8 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     if (pits > 0)
         out.push_back(std::to_string(pits) + (pits == 1 ? " cell has" : " cells have") +
                       " no data: each is a pit " + mm(s.zMm(s.nodata_pit_units)) +
-                      " below the floor, never a value.");
+                      " below the floor, never a value. Between tall pillars its bottom may be out of a fingertip's "
+                      "reach: a hole you cannot feel the bottom of holds no data.");
     if (s.shapes.cells_textured > 0)
         out.push_back(std::to_string(s.shapes.cells_textured) +
                       " cells at the floor hold no data and are there only to hold the model together: each has a "
@@ -176,6 +178,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     if (s.halves)
         out.push_back("The model prints in two halves, upper and lower, joined by pins that fit one way only.");
     if (!facts.assembly.empty()) out.push_back(facts.assembly);
+    if (!facts.legibility.empty()) out.push_back(facts.legibility);
     return out;
 }
 

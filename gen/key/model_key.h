@@ -37,6 +37,10 @@ struct ModelKeyFacts {
     /// How the printed pieces go together (the tiles of a model larger than
     /// the bed), one paragraph; "" for a model in one piece.
     std::string assembly;
+    /// Where a fingertip cannot read the model (a legibility check that
+    /// fails with every setting tsf could choose), one paragraph; "" when
+    /// every check passes.
+    std::string legibility;
 };
 
 /// The key's paragraphs: the first is the title line, each other a few

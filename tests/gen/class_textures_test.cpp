@@ -157,6 +157,24 @@ TEST(ClassTextures, SmallCellsGetALowerReliefAndTheSummarySaysWhenItIsHardToFeel
     expectVerified(small, "1.5 mm cells");
 }
 
+// With --layer 0.2 the relief is whole layers: three (0.6 mm, leaning
+// 0.6 / 1.5 = 0.4 under tan(26.57 deg) = 0.5) on 3 mm cells, not two; on
+// 2 mm cells only two fit the slope (0.4 mm), and the summary says why.
+TEST(ClassTextures, AtLayersOfPointTwoTheReliefIsThreeWholeLayersWhereTheCellsAllowIt) {
+    SceneParams p = test::smallParams();
+    p.pitch_mm = 3.0;
+    p.z_snap_mm = 0.2;
+    const Scene three = buildScene(threeClasses(), p);
+    EXPECT_EQ(three.textures->relief_units, 3);
+    expectVerified(three, "3 mm cells at 0.2 mm layers");
+    p.pitch_mm = 2.0;
+    const Scene two = buildScene(threeClasses(), p);
+    EXPECT_EQ(two.textures->relief_units, 2);
+    bool said = false;
+    for (const std::string& n : two.notes) said = said || n.find("class textures rise only 0.4 mm") != std::string::npos;
+    EXPECT_TRUE(said);
+}
+
 TEST(ClassTextures, OrderedClassesAndMeasurementsStandAtHeights) {
     HexField ordered = threeClasses();
     ordered.input.class_order = {41, 11, 90};

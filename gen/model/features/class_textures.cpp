@@ -79,13 +79,18 @@ SceneTextures decideClassTextures(const HexField& field, const SceneParams& p, d
     // No fan leans more than a tilted top may: a dimple's or bump's steepest
     // triangle rises `relief` over the distance from the centre to the
     // nearest edge (half the pitch; less to the slanted edges of a hexagon
-    // squashed north-south, hex_grid.h), the ridges' planes over a row
-    // spacing or a pitch, no steeper. The corners round to the z grid, so a
-    // step is kept to spare (as the tilt's limit does).
+    // squashed north-south, hex_grid.h); its centre and corners are whole z
+    // steps, so it may use the whole slope. The ridges' planes rise over a
+    // row spacing or a pitch, and their corners round to the z grid: a step
+    // is kept to spare there (as the tilt's limit does). The relief is whole
+    // z steps (whole layers with --layer): 0.6 mm at 0.2 mm layers where the
+    // cells allow it, never 0.4 when 0.6 fits.
     const double h = pitch_mm / kSqrt3 * y_scale;  // centre to the top corner
     const double inradius = std::min(0.5 * pitch_mm, pitch_mm * h / std::hypot(pitch_mm, h));
-    const double max_gradient = std::tan(p.max_slope_deg * std::numbers::pi / 180.0) - p.z_snap_mm / inradius;
-    const double relief_mm = std::min(kTextureReliefMm, std::max(0.0, max_gradient) * inradius);
+    const double slope = std::tan(p.max_slope_deg * std::numbers::pi / 180.0);
+    const double ridge_run = std::min(pitch_mm, 1.5 * h);  // a pitch east, a row spacing north
+    const double relief_mm = std::min({kTextureReliefMm, slope * inradius - 1e-6,
+                                       std::max(0.0, slope - p.z_snap_mm / inradius) * ridge_run});
     t.relief_units = std::max<int64_t>(1, int64_t(std::floor(relief_mm / p.z_snap_mm + 1e-9)));
     t.height_units = std::max(snapUnits(kTextureHeightMm, p.z_snap_mm), t.relief_units + 1);
     return t;

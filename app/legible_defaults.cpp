@@ -1,0 +1,256 @@
+#include "app/legible_defaults.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/build_scene.h"
+#include "gen/model/features/felt_heights.h"
+#include "gen/model/features/top_shapes.h"
+#include "gen/util/error.h"
+#include "gen/util/number_format.h"
+#include "verify/tactile.h"
+
+namespace tsf::cli {
+namespace {
+
+// The checks a setting of height or transfer can fix.
+constexpr const char* kFixable[] = {"tactile_finger_reach", "tactile_slender_pillars"};
+
+// Lowest height tried, mm: below it a model is a plate.
+constexpr double kLowestHeightMm = 2.0;
+
+// The smallest neighbouring step of `s` that is at least a felt step, over
+// pairs of data cells of different values (mm); +inf when there is none.
+double smallestFeltStep(const Scene& s) {
+    double smallest = INFINITY;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        if (s.kind[k] != CellKind::Data) continue;
+        for (int e = 0; e < 3; ++e) {
+            const int32_t n = s.keptNeighbour(k, e);
+            if (n < 0 || s.kind[size_t(n)] != CellKind::Data || s.value[k] == s.value[size_t(n)]) continue;
+            const double dz = std::fabs(s.zMm(centreTop(s, k)) - s.zMm(centreTop(s, size_t(n))));
+            if (dz >= kFeltHeightStepMm - 1e-9) smallest = std::min(smallest, dz);
+        }
+    }
+    return smallest;
+}
+
+// The first neighbouring pair whose step was felt in `before` and is not in
+// `after` (the same grid, other heights); "" when every felt step stays felt.
+std::string flattened(const Scene& before, const Scene& after) {
+    for (size_t k = 0; k < before.keptCount(); ++k) {
+        if (before.kind[k] != CellKind::Data) continue;
+        const int32_t a = after.keptAt(before.col[k], before.row[k]);
+        for (int e = 0; e < 3; ++e) {
+            const int32_t n = before.keptNeighbour(k, e);
+            if (n < 0 || before.kind[size_t(n)] != CellKind::Data) continue;
+            const double was = std::fabs(before.zMm(centreTop(before, k)) - before.zMm(centreTop(before, size_t(n))));
+            if (was < kFeltHeightStepMm - 1e-9) continue;
+            const int32_t b = after.keptAt(before.col[size_t(n)], before.row[size_t(n)]);
+            const double is = a < 0 || b < 0 ? 0.0
+                                             : std::fabs(after.zMm(centreTop(after, size_t(a))) -
+                                                         after.zMm(centreTop(after, size_t(b))));
+            if (is < kFeltHeightStepMm - 1e-9)
+                return "cells (col " + std::to_string(before.col[k]) + ", row " + std::to_string(before.row[k]) +
+                       ") and (col " + std::to_string(before.col[size_t(n)]) + ", row " +
+                       std::to_string(before.row[size_t(n)]) + ") would be " + formatSignificant(is, 2) + " mm apart, not " +
+                       formatSignificant(was, 2);
+        }
+    }
+    return "";
+}
+
+struct Trial {
+    SceneParams params;
+    std::vector<Check> checks;  // the fixable checks, as the verifier found them
+    int64_t failing = 0;        // their offenders together
+    std::string flattens;       // why it was refused ("" when it was tried)
+};
+
+// Builds, meshes and checks one setting with the verifier's tactile checks.
+Trial tryParams(const HexField& field, const Scene& first, const SceneParams& p, const VerifyOptions& vo) {
+    Trial t;
+    t.params = p;
+    const Scene s = buildScene(field, p);
+    t.flattens = flattened(first, s);
+    if (!t.flattens.empty()) return t;
+    TactileOptions to;
+    to.sample_mm = vo.tactile_sample_mm;
+    to.layer_mm = vo.layer_mm;
+    to.nozzle_mm = vo.nozzle_mm;
+    to.max_offenders = 3;
+    TactileResult r = checkTactile(meshScene(s), &s, to);
+    for (Check& c : r.checks)
+        if (std::find(std::begin(kFixable), std::end(kFixable), c.id) != std::end(kFixable)) {
+            if (c.status == CheckStatus::Fail) t.failing += c.count;
+            t.checks.push_back(std::move(c));
+        }
+    return t;
+}
+
+std::string settingText(const SceneParams& p) {
+    return "--height " + formatSignificant(p.max_height_mm, 3) + " --transfer " + toString(p.transfer);
+}
+
+// The options that differ between two settings, as a user would type them.
+std::string changedOptions(const SceneParams& from, const SceneParams& to) {
+    std::string out;
+    if (std::fabs(from.max_height_mm - to.max_height_mm) > 1e-9) out += "--height " + formatSignificant(to.max_height_mm, 3);
+    if (from.transfer != to.transfer) out += std::string(out.empty() ? "" : " ") + "--transfer " + toString(to.transfer);
+    return out;
+}
+
+std::string failText(const Check& c) {
+    std::string where;
+    for (size_t k = 0; k < c.worst.size() && k < 3; ++k)
+        where += std::string(k ? "; " : "") + "(" + formatFixed(c.worst[k].at_mm.x, 1) + ", " + formatFixed(c.worst[k].at_mm.y, 1) +
+                 ") mm: " + c.worst[k].detail;
+    return c.id + " fails at " + std::to_string(c.count) + (c.count == 1 ? " place" : " places") +
+           (where.empty() ? "" : " (" + where + ")");
+}
+
+// The same for the model's key, in a reader's words: where (mm east and
+// north of the grid's south-west corner) and what it means for reading.
+std::string readerText(const Check& c) {
+    std::string where;
+    for (size_t k = 0; k < c.worst.size() && k < 3; ++k)
+        where += std::string(k ? "; " : "") + formatFixed(c.worst[k].at_mm.x, 0) + " mm east and " +
+                 formatFixed(c.worst[k].at_mm.y, 0) + " mm north, " + formatFixed(c.worst[k].amount, 1) + " mm";
+    const std::string n = std::to_string(c.count);
+    if (c.id == std::string("tactile_finger_reach"))
+        return "At " + n + (c.count == 1 ? " place" : " places") +
+               " a fingertip cannot reach the bottom of a narrow low between high pillars, so its value is not read by "
+               "touch (east and north of the pillars' south-west corner, and how far the finger stays above the bottom: " + where + ")";
+    return n + (c.count == 1 ? " pillar is" : " pillars are") +
+           " thin and tall and may break if pressed hard (east and north of the pillars' south-west corner, and how far "
+           "each stands above its neighbours: " + where + ")";
+}
+
+}  // namespace
+
+std::vector<std::string> failedLegibility(const VerifyReport& report) {
+    std::vector<std::string> out;
+    for (const char* id : kFixable) {
+        const Check* c = report.find(id);
+        // gen's self-check turns a failed tactile check into a warning.
+        if (c && (c->status == CheckStatus::Fail || c->status == CheckStatus::Warn)) out.push_back(id);
+    }
+    return out;
+}
+
+LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const std::vector<std::string>& failed,
+                                const LegibilityGiven& given, const VerifyOptions& vo) {
+    LegibleDefaults out;
+    if (failed.empty() || first.textures) return out;
+    const SceneParams& p0 = first.params;
+    const Trial at_first = tryParams(field, first, p0, vo);
+    if (at_first.failing == 0) return out;
+
+    // Lower heights scale every step alike (and a gentler transfer shrinks
+    // the steps between high values): heights are tried down to the lowest
+    // that keeps every felt step felt.
+    const double felt = smallestFeltStep(first);
+    const double lowest = std::max(kLowestHeightMm, std::isfinite(felt) ? p0.max_height_mm * kFeltHeightStepMm / felt : 0.0);
+    std::vector<double> heights;  // below the first, highest first, in half millimetres
+    for (double f : {0.75, 0.5, 0.35, 0.25, 0.15, 0.1}) {
+        const double h = std::round(p0.max_height_mm * f * 2) / 2;
+        if (h >= lowest - 1e-9 && h < (heights.empty() ? p0.max_height_mm : heights.back()) - 1e-9) heights.push_back(h);
+    }
+    if (const double h = std::ceil(lowest * 2 - 1e-9) / 2; h < (heights.empty() ? p0.max_height_mm : heights.back()) - 1e-9)
+        heights.push_back(h);
+
+    // Every trial is a build, a mesh and the tactile checks: each setting once.
+    std::deque<Trial> tried;  // a deque: the trials found stay where they are
+    std::string refused;
+    auto trial = [&](double height, Transfer transfer) -> const Trial* {
+        for (const Trial& t : tried)
+            if (t.params.max_height_mm == height && t.params.transfer == transfer) return &t;
+        SceneParams p = p0;
+        p.max_height_mm = height;
+        p.transfer = transfer;
+        try {
+            tried.push_back(tryParams(field, first, p, vo));
+        } catch (const InputError&) {
+            return nullptr;  // a setting the field cannot take
+        }
+        const Trial& t = tried.back();
+        if (!t.flattens.empty() && refused.empty()) refused = settingText(p) + ": " + t.flattens;
+        return &t;
+    };
+    auto passes = [](const Trial* t) { return t && t->flattens.empty() && t->failing == 0; };
+    // The setting that changes least and passes: the first height with a
+    // gentler transfer, else the highest height that passes (a lower one
+    // makes pits shallower and pillars shorter: found by bisection).
+    auto search = [&](bool transfers, bool lower) -> const Trial* {
+        if (transfers)
+            for (const Transfer t : {Transfer::Sqrt, Transfer::Log})
+                if (t != p0.transfer)
+                    if (const Trial* x = trial(p0.max_height_mm, t); passes(x)) return x;
+        if (!lower || heights.empty()) return nullptr;
+        const Trial* low = trial(heights.back(), p0.transfer);
+        if (!passes(low)) return nullptr;
+        size_t pass_at = heights.size() - 1, fail_at = size_t(-1);  // heights[fail_at] fails (-1: the first height)
+        while (pass_at - (fail_at + 1) > 0) {
+            const size_t mid = (fail_at + 1 + pass_at) / 2;
+            if (passes(trial(heights[mid], p0.transfer))) pass_at = mid;
+            else fail_at = mid;
+        }
+        return trial(heights[pass_at], p0.transfer);
+    };
+    const Trial* pass = search(!given.transfer, !given.height);
+    const Trial* pass_given = pass || (!given.height && !given.transfer) ? nullptr : search(true, true);
+
+    nlohmann::json j = {{"failed_at_first", failed}};
+    if (pass) {
+        out.params = pass->params;
+        const std::string what = changedOptions(p0, pass->params);
+        std::string why;
+        for (const Check& c : at_first.checks)
+            if (c.status == CheckStatus::Fail) why += (why.empty() ? "" : "; ") + failText(c);
+        out.lines.push_back("changed " + what + " (was " + settingText(p0) + "): " + why +
+                            ". With it every check passes and every neighbouring step of " +
+                            formatSignificant(kFeltHeightStepMm, 2) + " mm or more stays one; give " + settingText(p0) +
+                            " to keep the first");
+        j["changed"] = what;
+        j["was"] = settingText(p0);
+        j["why"] = why;
+        out.json = j;
+        return out;
+    }
+    if (pass_given) {
+        const std::string what = changedOptions(p0, pass_given->params);
+        out.lines.push_back("tried: " + what + " passes every tactile check (tried, and no felt step lost); the options "
+                            "given are kept");
+        j["would_pass"] = what;
+    }
+    const Trial& kept = at_first;
+    for (const Check& c : kept.checks)
+        if (c.status == CheckStatus::Fail) {
+            j["key"].push_back(readerText(c));
+            std::string why = failText(c);
+            if (c.id == std::string("tactile_finger_reach"))
+                why += ". A pit w mm wide is reached to about w^2 / (8 r) + " + formatSignificant(kUnreachedDepthMm, 2) +
+                       " mm by a fingertip of radius r = " + formatSignificant(kAdultFingertipRadiusMm, 2) +
+                       " mm: a single-cell low " + formatSignificant(first.pitch_mm, 3) + " mm wide is reached " +
+                       formatSignificant(first.pitch_mm * first.pitch_mm / (8 * kAdultFingertipRadiusMm) + kUnreachedDepthMm, 2) +
+                       " mm deep";
+            out.lines.push_back("still " + why);
+            j["fails"].push_back(why);
+        }
+    std::string reason = given.height || given.transfer
+                             ? std::string("no setting passes that keeps the options given (") +
+                                   (given.height ? "--height" : "") + (given.height && given.transfer ? ", " : "") +
+                                   (given.transfer ? "--transfer" : "") + ")"
+                             : "no height from " + formatSignificant(p0.max_height_mm, 3) + " down to " +
+                                   formatSignificant(heights.empty() ? p0.max_height_mm : heights.back(), 3) +
+                                   " mm and no transfer passes";
+    if (!refused.empty()) reason += "; others would flatten the data (" + refused + ")";
+    out.lines.push_back(reason);
+    j["why"] = reason;
+    out.json = j;
+    return out;
+}
+
+}  // namespace tsf::cli

@@ -1,0 +1,131 @@
+// Readable by default: the model tsf gen makes from its defaults passes
+// tsf verify --tactile --scene on rasters as users have them (made here with
+// GDAL): a UTM DEM with holes of no data, a sea-temperature grid whose land
+// is no data, a geographic grid with a valley one pixel wide between high
+// ground, CF NetCDF variables. Where the first model fails, gen says what it
+// changed; where the user gave the option, gen keeps it and names a value
+// that passes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/readers/geotiff_test_writer.h"
+#include "tests/readers/netcdf_test_writer.h"
+#include "tests/support/files.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+// Every tactile check of `tsf verify --json` output, as "id status" lines.
+std::string tactileStatuses(const std::string& json_text) {
+    std::string out;
+    const nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
+    if (j.is_discarded()) return "(no JSON)";
+    for (const auto& c : j["checks"])
+        if (c["id"].get<std::string>().rfind("tactile_", 0) == 0)
+            out += c["id"].get<std::string>() + " " + c["status"].get<std::string>() + ": " + c["note"].get<std::string>() + "\n";
+    return out;
+}
+
+// gen with `options`, then verify --tactile --scene; returns gen's summary JSON.
+nlohmann::json genAndVerify(const std::filesystem::path& dir, const std::string& input, const std::string& name,
+                            const std::string& options = "") {
+    const std::string model = (dir / (name + ".stl")).string();
+    const auto g = test::runTsf("gen " + input + " " + options + " --json -o " + model, dir);
+    EXPECT_EQ(g.exit_code, test::kExitOk) << name << "\n" << g.out << g.err;
+    const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json", dir);
+    EXPECT_EQ(v.exit_code, test::kExitOk) << name << "\n" << tactileStatuses(v.out) << g.out;
+    const nlohmann::json j = nlohmann::json::parse(g.out, nullptr, false);
+    return j.is_discarded() ? nlohmann::json() : j;
+}
+
+// A hill 200-1400 m on a UTM grid, 30 m pixels, with three holes of no data.
+TEST(LegibleDefaults, AUtmDemWithHolesPasses) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = 40;
+    s.rows = 32;
+    s.epsg = 32633;
+    s.west = 500000;
+    s.north = 5200000;
+    s.pixel_w = s.pixel_h = 30;
+    s.nodata = -9999;
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c) {
+            const double d = std::hypot(c - 20.0, r - 16.0);
+            s.values.push_back(float(200 + 1200 * std::exp(-d * d / 150.0)));
+        }
+    for (const auto& [c, r] : {std::pair{18, 15}, {25, 10}, {12, 22}}) s.values[size_t(r * s.cols + c)] = -9999;
+    const std::string path = (dir / "dem.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const nlohmann::json j = genAndVerify(dir, path, "dem");
+    EXPECT_EQ(j["scene"]["cells"]["with_data"].get<int>() + 3, s.cols * s.rows) << "the holes stay holes";
+}
+
+// Sea temperature 275-300 K on a 1-degree grid whose land, a strip one pixel
+// wide and a block, is no data: pits between tall pillars, read as holes.
+TEST(LegibleDefaults, ASeaTemperatureGridWithLandPasses) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = 36;
+    s.rows = 24;
+    s.epsg = 4326;
+    s.west = -20;
+    s.north = 12;
+    s.nodata = -32768;
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c) {
+            const bool land = (c == 17 && r > 3 && r < 20) || (c > 26 && c < 31 && r > 6 && r < 12);
+            s.values.push_back(land ? -32768.0f : float(275 + 25 * std::cos((r - 12) / 15.0)));
+        }
+    const std::string path = (dir / "sst.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    genAndVerify(dir, path, "sst");
+}
+
+// High ground 900-1000 m cut by a valley one pixel wide at 0 m: a fingertip
+// cannot reach its floor 20 mm down. gen lowers the model until it does,
+// keeping every step of 0.5 mm or more, and says so; given --height, it is
+// kept and a height that passes is named.
+TEST(LegibleDefaults, ANarrowValleyIsReachedByALowerModel) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec s;
+    s.cols = 30;
+    s.rows = 24;
+    s.epsg = 4326;
+    s.west = 10;
+    s.north = 50;
+    s.pixel_w = s.pixel_h = 0.01;
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c) s.values.push_back(c == 15 ? 0.0f : float(900 + 100.0 * r / s.rows));
+    const std::string path = (dir / "valley.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, s));
+    const nlohmann::json j = genAndVerify(dir, path, "valley");
+    ASSERT_TRUE(j.contains("legibility")) << j.dump(1);
+    EXPECT_NE(j["legibility"]["changed"].get<std::string>().find("--height"), std::string::npos) << j["legibility"].dump(1);
+    const double height = j["scene"]["mapping"]["max_height_mm"].get<double>();
+    EXPECT_LT(height, 20.0);
+    EXPECT_GE(height, 2.0) << "the valley's step stays felt";
+
+    const std::string kept = (dir / "kept.stl").string();
+    const auto g = test::runTsf("gen " + path + " --height 20 -o " + kept, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    EXPECT_NE(g.out.find("warn      a fingertip reaches the bottom"), std::string::npos) << g.out;
+    EXPECT_NE(g.out.find("passes every tactile check (tried"), std::string::npos) << "a value that works is named:\n" << g.out;
+}
+
+// CF NetCDF: precipitation with a fill value, and packed air temperature.
+TEST(LegibleDefaults, NetCdfVariablesPass) {
+    const auto dir = test::scratchDir();
+    const std::string path = (dir / "climate.nc").string();
+    ASSERT_TRUE(test::writeNetCdf(path, {2, 12, 16})) << "GDAL's netCDF driver";
+    genAndVerify(dir, path + " --variable pr --band 2", "pr");
+    genAndVerify(dir, path + " --variable tas --band 1", "tas");
+}
+
+}  // namespace
+}  // namespace tsf

@@ -1,0 +1,241 @@
+#include "verify/finger_reach.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "gen/util/number_format.h"
+#include "verify/detail/workers.h"
+
+namespace tsf {
+namespace {
+
+// Heights that differ by float32's rounding of a model's z (about 2e-6 mm at
+// 20 mm) are the same height: a step of exactly the threshold stays on the
+// same side of it in gen's mesh and in the file read back.
+constexpr double kSameHeightMm = 1e-4;
+
+// Runs fn(row) for every row on the verifier's worker threads.
+template <class Fn>
+void forRows(int rows, Fn fn) {
+    const unsigned workers = detail::workerCount(0);
+    detail::runOnWorkers(workers, [&](unsigned w, const auto&) {
+        for (int j = int(w); j < rows; j += int(workers)) fn(j);
+    });
+}
+
+// Where a ball of radius r lowered from above onto the surface can touch:
+// the surface closed by the ball (the lowest each ball centre can go, then
+// the lowest point of the balls above each sample). The table around the
+// model (no hit) is at `table`.
+std::vector<double> closedBy(const TopHeightField& h, double r, double table) {
+    struct Offset {
+        int di, dj;
+        double rise;
+    };
+    std::vector<Offset> disc;
+    const int n = int(std::ceil(r / h.step));
+    for (int dj = -n; dj <= n; ++dj)
+        for (int di = -n; di <= n; ++di) {
+            const double d2 = (di * h.step) * (di * h.step) + (dj * h.step) * (dj * h.step);
+            if (d2 <= r * r) disc.push_back({di, dj, std::sqrt(r * r - d2)});
+        }
+    // Both passes read arrays padded by n samples on every side, so that an
+    // offset never leaves them, and run offset by offset along a row: a
+    // maximum (minimum) of the same values as sample by sample, in a loop
+    // the compiler vectorises.
+    const size_t w = size_t(h.nx) + 2 * size_t(n), rows = size_t(h.ny) + 2 * size_t(n);
+    std::vector<double> padded(w * rows, table);  // the surface; the table where nothing is
+    for (int j = 0; j < h.ny; ++j)
+        for (int i = 0; i < h.nx; ++i) {
+            const double z = h.at(i, j);
+            padded[(size_t(j) + size_t(n)) * w + size_t(i) + size_t(n)] = std::isfinite(z) ? z : table;
+        }
+    // The lowest each ball centre can go; a centre beyond the sampled area
+    // stands on the table.
+    std::vector<double> centre(w * rows, table + r), reach(h.z.size());
+    forRows(h.ny, [&](int j) {
+        double* out = &centre[(size_t(j) + size_t(n)) * w + size_t(n)];
+        std::fill(out, out + h.nx, -std::numeric_limits<double>::infinity());
+        for (const Offset& o : disc) {
+            const double* in = &padded[(size_t(j + o.dj) + size_t(n)) * w + size_t(n + o.di)];
+            const double rise = o.rise;
+            for (int i = 0; i < h.nx; ++i) out[i] = std::max(out[i], in[i] + rise);
+        }
+    });
+    forRows(h.ny, [&](int j) {
+        double* out = &reach[size_t(j) * size_t(h.nx)];
+        std::fill(out, out + h.nx, std::numeric_limits<double>::infinity());
+        for (const Offset& o : disc) {
+            const double* in = &centre[(size_t(j + o.dj) + size_t(n)) * w + size_t(n + o.di)];
+            const double rise = o.rise;
+            for (int i = 0; i < h.nx; ++i) out[i] = std::min(out[i], in[i] - rise);
+        }
+    });
+    return reach;
+}
+
+// Union-find over samples with the fingers that reach each set (a bit per finger).
+struct Sets {
+    std::vector<int32_t> parent;
+    std::vector<uint32_t> reached;
+    int32_t find(int32_t s) {
+        while (parent[size_t(s)] != s) {
+            parent[size_t(s)] = parent[size_t(parent[size_t(s)])];
+            s = parent[size_t(s)];
+        }
+        return s;
+    }
+    void join(int32_t a, int32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) return;
+        parent[size_t(b)] = a;
+        reached[size_t(a)] |= reached[size_t(b)];
+    }
+};
+
+// For every sample deep for some finger, the fingers that read it anyway: the
+// surface continues from it, never more than kUnreachedDepthMm above it, to a
+// sample that finger reaches. Found in one sweep up the heights: samples join
+// the sets of their lower neighbours in order of height, and a deep sample is
+// asked about once every sample up to its height + kUnreachedDepthMm has joined.
+std::vector<uint32_t> readAnyway(const TopHeightField& h, const std::vector<uint32_t>& reached_by,
+                                 const std::vector<uint32_t>& deep_for) {
+    const size_t n = h.z.size();
+    std::vector<int32_t> order, asked;
+    for (size_t s = 0; s < n; ++s)
+        if (std::isfinite(h.z[s])) {
+            order.push_back(int32_t(s));
+            if (deep_for[s]) asked.push_back(int32_t(s));
+        }
+    std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return h.z[size_t(a)] < h.z[size_t(b)]; });
+    std::sort(asked.begin(), asked.end(), [&](int32_t a, int32_t b) { return h.z[size_t(a)] < h.z[size_t(b)]; });
+    Sets sets{std::vector<int32_t>(n, -1), std::vector<uint32_t>(n, 0)};
+    std::vector<uint32_t> answer(n, 0);
+    size_t next = 0;
+    for (const int32_t p : asked) {
+        const double up_to = h.z[size_t(p)] + kUnreachedDepthMm + kSameHeightMm;
+        for (; next < order.size() && h.z[size_t(order[next])] <= up_to; ++next) {
+            const int32_t s = order[next];
+            sets.parent[size_t(s)] = s;
+            sets.reached[size_t(s)] = reached_by[size_t(s)];
+            const int i = int(size_t(s) % size_t(h.nx)), j = int(size_t(s) / size_t(h.nx));
+            for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                const int qi = i + di, qj = j + dj;
+                if (qi < 0 || qj < 0 || qi >= h.nx || qj >= h.ny) continue;
+                const size_t q = size_t(qj) * size_t(h.nx) + size_t(qi);
+                if (sets.parent[q] >= 0) sets.join(s, int32_t(q));
+            }
+        }
+        answer[size_t(p)] = sets.reached[size_t(sets.find(p))];
+    }
+    return answer;
+}
+
+// The places of one finger: connected groups of its unreached samples.
+FingerReach placesOf(const TopHeightField& h, const std::vector<double>& reach, const std::vector<uint8_t>& unreached,
+                     double radius) {
+    FingerReach f;
+    f.radius_mm = radius;
+    const double cell = h.step * h.step;
+    std::vector<uint8_t> seen(h.z.size(), 0);
+    std::vector<size_t> stack;
+    for (size_t s = 0; s < h.z.size(); ++s) {
+        if (!unreached[s] || seen[s]) continue;
+        Offender worst{{0, 0, 0}, -1, ""};
+        int64_t samples = 0;
+        stack.assign(1, s);
+        seen[s] = 1;
+        while (!stack.empty()) {
+            const size_t p = stack.back();
+            stack.pop_back();
+            ++samples;
+            const int pi = int(p % size_t(h.nx)), pj = int(p / size_t(h.nx));
+            const double depth = reach[p] - h.z[p];
+            if (depth > worst.amount) worst = {{h.x0 + pi * h.step, h.y0 + pj * h.step, h.z[p]}, depth, ""};
+            for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                const int qi = pi + di, qj = pj + dj;
+                if (qi < 0 || qj < 0 || qi >= h.nx || qj >= h.ny) continue;
+                const size_t q = size_t(qj) * size_t(h.nx) + size_t(qi);
+                if (!unreached[q] || seen[q]) continue;
+                seen[q] = 1;
+                stack.push_back(q);
+            }
+        }
+        ++f.places;
+        f.deepest_mm = std::max(f.deepest_mm, worst.amount);
+        f.area_mm2 += double(samples) * cell;
+        worst.detail = "the fingertip (" + formatFixed(2 * radius, 0) + " mm) stops " + formatFixed(worst.amount, 1) +
+                       " mm above the surface, over " + formatFixed(double(samples) * cell, 1) + " mm^2";
+        f.worst.push_back(std::move(worst));
+    }
+    std::stable_sort(f.worst.begin(), f.worst.end(), [](const Offender& a, const Offender& b) { return a.amount > b.amount; });
+    return f;
+}
+
+}  // namespace
+
+TopHeightField sampledTop(const Mesh& mesh, double sample_mm, double margin_mm) {
+    TopHeightField h;
+    const Bounds b = meshBounds(mesh);
+    if (mesh.triangles.empty() || !std::isfinite(b.min.z)) return h;
+    const double w = b.max.x - b.min.x + 2 * margin_mm, d = b.max.y - b.min.y + 2 * margin_mm;
+    // At most about a million samples (a 500 mm model at 0.5 mm); the
+    // coarser step is rounded up to 0.01 mm so that float32's rounding of the
+    // bounds does not move it.
+    h.step = std::max(sample_mm, std::ceil(std::sqrt(w * d / 1.0e6) * 100) / 100);
+    h.x0 = std::floor((b.min.x - margin_mm) / h.step) * h.step;
+    h.y0 = std::floor((b.min.y - margin_mm) / h.step) * h.step;
+    h.nx = int(std::ceil((b.max.x + margin_mm - h.x0) / h.step)) + 1;
+    h.ny = int(std::ceil((b.max.y + margin_mm - h.y0) / h.step)) + 1;
+    rasteriseTop(mesh, h);
+    return h;
+}
+
+FingerReachResult fingerReach(const TopHeightField& h, double table_mm, const std::vector<double>& radii_mm,
+                              const std::vector<uint8_t>& no_value) {
+    FingerReachResult r;
+    r.step_mm = h.step;
+    const size_t n = h.z.size();
+    const size_t fingers = std::min<size_t>(radii_mm.size(), 32);
+    std::vector<std::vector<double>> reach;
+    std::vector<uint32_t> reached_by(n, 0), deep_for(n, 0);
+    for (size_t f = 0; f < fingers; ++f) {
+        reach.push_back(closedBy(h, radii_mm[f], table_mm));
+        // A smaller ball fits wherever the larger one before it touched.
+        if (f > 0 && radii_mm[f] <= radii_mm[f - 1])
+            for (size_t s = 0; s < n; ++s) reach[f][s] = std::min(reach[f][s], reach[f - 1][s]);
+        for (size_t s = 0; s < n; ++s) {
+            if (!std::isfinite(h.z[s])) continue;
+            if (reach[f][s] - h.z[s] > kUnreachedDepthMm + kSameHeightMm) deep_for[s] |= 1u << f;
+            else reached_by[s] |= 1u << f;
+        }
+    }
+    const std::vector<uint32_t> anyway = readAnyway(h, reached_by, deep_for);
+    std::vector<uint8_t> unreached(n, 0);
+    for (size_t f = 0; f < fingers; ++f) {
+        const uint32_t bit = 1u << f;
+        int64_t left_out = 0;
+        for (size_t s = 0; s < n; ++s) {
+            unreached[s] = (deep_for[s] & bit) && !(anyway[s] & bit);
+            if (unreached[s] && s < no_value.size() && no_value[s]) {
+                unreached[s] = 0;
+                ++left_out;
+            }
+        }
+        r.fingers.push_back(placesOf(h, reach[f], unreached, radii_mm[f]));
+        r.fingers.back().no_value_area_mm2 = double(left_out) * h.step * h.step;
+    }
+    return r;
+}
+
+FingerReachResult fingerReach(const Mesh& mesh, double sample_mm, const std::vector<double>& radii_mm) {
+    const double margin = radii_mm.empty() ? 0.0 : *std::max_element(radii_mm.begin(), radii_mm.end());
+    const TopHeightField h = sampledTop(mesh, sample_mm, margin);
+    if (h.z.empty()) return {};
+    return fingerReach(h, meshBounds(mesh).min.z, radii_mm);
+}
+
+}  // namespace tsf
