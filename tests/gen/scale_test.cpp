@@ -4,6 +4,7 @@
 // pillars' plus the scale's boxes, computed without the mesher.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
@@ -288,6 +289,46 @@ TEST(ScalePlacement, StepsBackFromASpurToTheLongestRunOfTheEastSide) {
     const Scene back = sceneFromJson(sceneToJson(s));
     ASSERT_TRUE(back.scale.has_value());
     EXPECT_EQ(back.scale->contacts, sc.contacts);
+    EXPECT_EQ(back.scale->fillers, sc.fillers);
+}
+
+// A bay six cells deep in the east side, left open by concave culling:
+// the run that holds the staircase spans it, touching the rows north and
+// south of it, and the foot's west face stands free across the bay (no
+// filler there, -1). Still one closed solid (the bay a hole down to the
+// bed that the foot closes into a ring), and the scale alone is one.
+TEST(ScalePlacement, StandsFreeAcrossABayBetweenTwoContacts) {
+    const HexField f = test::fieldFromFunction(10, 14, [](int c, int r) {
+        return r >= 4 && r <= 9 && c >= 2 ? test::kNaN : 1.0 + (c + 2 * r) % 9;
+    });
+    SceneParams p = scaleParams();
+    p.cull = Cull::Concave;
+    p.scale.step.reset();
+    const Scene s = buildScene(f, p);
+    ASSERT_TRUE(s.scale.has_value());
+    const SceneScale& sc = *s.scale;
+    ASSERT_EQ(sc.fillers.size() + 1, sc.contacts.size());
+    ASSERT_NE(std::find(sc.fillers.begin(), sc.fillers.end(), -1), sc.fillers.end());
+    // Contacts on both sides of the bay (rows 4..9).
+    bool north = false, south = false;
+    for (const int32_t k : sc.contacts) {
+        north = north || s.row[size_t(k)] < 4;
+        south = south || s.row[size_t(k)] > 9;
+    }
+    EXPECT_TRUE(north && south);
+    const test::Invariants inv = test::checkInvariants(meshScene(s));
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+    // The foot closes a ring around each bay it spans: a hole down to the
+    // bed, one handle (genus 1) per gap.
+    const long gaps = long(std::count(sc.fillers.begin(), sc.fillers.end(), -1));
+    EXPECT_EQ(inv.euler, 2 - 2 * gaps);
+    EXPECT_EQ(inv.duplicate_positions, 0u);
+    const test::Invariants own = test::checkInvariants(meshScaleBody(s, /*joined=*/false).mesh);
+    EXPECT_TRUE(own.closedManifold()) << own.describe();
+    EXPECT_EQ(own.components, 1u);
+    const Scene back = sceneFromJson(sceneToJson(s));
+    ASSERT_TRUE(back.scale.has_value());
     EXPECT_EQ(back.scale->fillers, sc.fillers);
 }
 

@@ -25,7 +25,8 @@
 // whose east edge lies on x0, between y0 and y1), from z = 0 to the floor:
 // between two contacts the foot also fills the notch of the hexagon outline
 // (see SceneScale::fillers; -1 there between two contacts further apart,
-// where the foot's west face stands free of the shorter rows between them);
+// where the foot's west face stands free of the shorter rows between them,
+// and closes a ring around any culled cells there: a hole down to the bed);
 // every vertex of the contact is a lattice corner
 // at height 0 or the floor,
 // shared with the pillars' mesh, so the joined model needs no boolean
