@@ -39,6 +39,7 @@
 #include "runners/prusa_slicer/print_check.h"
 #include "verify/verify_model.h"
 #include "verify/verify_parts.h"
+#include "gen/model/attachments.h"
 #include "gen/model/build_scene.h"
 
 namespace tsf::cli {
@@ -310,7 +311,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
 
     timer.begin("reading");
     announceLargeInput(o.gen.input, o.progress);
-    const HexField field = loadField(o.gen);
+    HexField field = loadField(o.gen);
     summary.field = &field;
     if (field.grid.cellCount() > kProgressCells && !o.progress && !o.json)
         std::fprintf(stderr, "tsf: %d x %d cells, this may take a few seconds\n", field.grid.cols, field.grid.rows);
@@ -326,7 +327,12 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     Scene scene = buildScene(field, o.gen.scene);
     // What stands beside the pillars does not shrink with them: fit again
     // (a culled outline can need a second step).
-    for (int again = 0; again < 3 && shrinkFitToBed(scene, o.printer, o.gen); ++again) scene = buildScene(field, o.gen.scene);
+    // The field is read again for the smaller box: a raster resampled to fit
+    // it keeps cells a fingertip tells apart (fewer of them), never narrower.
+    for (int again = 0; again < 6 && shrinkFitToBed(scene, o.printer, o.gen); ++again) {
+        field = loadField(o.gen);
+        scene = buildScene(field, o.gen.scene);
+    }
     summary.scene = &scene;
     if (const std::string note = cellNozzleNote(scene.pitch_mm, o.printer); !note.empty())
         summary.printer_notes.push_back(note);
@@ -339,7 +345,19 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     if (o.printer.nozzle_mm > 0) rq.verify_options.nozzle_mm = o.printer.nozzle_mm;
     if (o.printer.layer_mm > 0) rq.verify_options.layer_mm = o.printer.layer_mm;
     rq.on_mesh = [&](const Mesh& mesh) {
-        if (!o.printer.tile) checkFitsBed(mesh, scene, o.printer);
+        if (!o.printer.tile)
+            checkFitsBed(mesh, scene, o.printer, o.gen.cell_mm > 0, o.gen.min_cell_mm, [&](double cell_mm) -> std::optional<std::pair<double, double>> {
+                // The model made again at that cell: the field (a raster is
+                // resampled for its cell) and the Scene, as asked otherwise.
+                GenOptions at = o.gen;
+                at.cell_mm = at.scene.pitch_mm = cell_mm;
+                try {
+                    const BoxMm f = sceneFootprint(buildScene(loadField(at), at.scene));
+                    return std::make_pair(f.x1 - f.x0, f.y1 - f.y0);
+                } catch (const InputError&) {
+                    return std::nullopt;
+                }
+            });
         if (rq.verify && !rq.verify_full && mesh.triangleCount() > kQuickVerifyTriangles)
             std::fprintf(stderr, "tsf: %zu triangles: verifying topology and heights only (--verify-full for all checks)\n",
                          mesh.triangleCount());

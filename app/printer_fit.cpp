@@ -9,6 +9,7 @@
 #include "gen/model/attachments.h"
 #include "gen/util/error.h"
 #include "gen/field/resample.h"
+#include "gen/field/hex_grid.h"
 #include "gen/util/number_format.h"
 
 namespace tsf::cli {
@@ -111,16 +112,23 @@ bool shrinkFitToBed(const Scene& scene, const PrinterSpec& printer, GenOptions& 
     // Round the overflow up to 0.01 mm so the next fit lands inside.
     if (over_w > 0) gen.scene.fit_width_mm = std::max(1.0, gen.scene.fit_width_mm - std::ceil(over_w * 100) / 100 - 0.01);
     if (over_d > 0) gen.scene.fit_depth_mm = std::max(1.0, gen.scene.fit_depth_mm - std::ceil(over_d * 100) / 100 - 0.01);
+    // The field is resampled for the same box (gen/field/resample.h).
+    gen.fit_width_mm = gen.scene.fit_width_mm;
+    gen.fit_depth_mm = gen.scene.fit_depth_mm;
     return true;
 }
 
-void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& printer) {
+void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& printer, bool cell_given, double min_cell_mm,
+                  const SizeAtCell& size_at) {
     if (printer.bed.empty() || mesh.positions.empty()) return;
     const BedSize bed = parseBedSize(printer.bed, "--bed", /*need_height=*/false);
     const double w = bed.width_mm - 2 * kBedMarginMm, d = bed.depth_mm - 2 * kBedMarginMm;
     const Bounds b = meshBounds(mesh);
     const double mw = b.max.x - b.min.x, md = b.max.y - b.min.y;
     if (mw <= w && md <= d) return;
+    const auto fits = [&](const std::optional<std::pair<double, double>>& size) {
+        return size && size->first <= w && size->second <= d;
+    };
     // The pillars scale with the cell; what stands beside them (the
     // orientation tab, the scale, the legend's plate) does not. The pillars'
     // own extent at this cell, from the kept cells' hexagons:
@@ -133,18 +141,44 @@ void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& print
     const double pw = scene.keptCount() ? latticeX({i_hi - i_lo, 0}, scene.pitch_mm) : mw;
     const double pd = scene.keptCount() ? latticeY({0, j_hi - j_lo}, scene.pitch_mm, scene.y_scale) : md;
     const double fw = std::max(0.0, mw - pw), fd = std::max(0.0, md - pd);
-    // The largest cell that fits, rounded down to 0.01 mm.
-    const double scale = std::min(pw > 0 ? (w - fw) / pw : 0.0, pd > 0 ? (d - fd) / pd : 0.0);
-    const double cell = std::floor(scene.pitch_mm * scale * 100.0) / 100.0;
     const std::string what = "the model is " + formatSignificant(mw, 4) + " x " + formatSignificant(md, 4) + " mm, larger than the " +
                              formatSignificant(bed.width_mm, 4) + " x " + formatSignificant(bed.depth_mm, 4) + " mm bed less " +
                              formatSignificant(kBedMarginMm, 4) + " mm on each side (" + formatSignificant(w, 4) + " x " +
                              formatSignificant(d, 4) + " mm)";
-    if (!(cell > 0))
-        throw InputError(what + "; what stands beside the pillars (" + formatSignificant(fw, 4) + " x " + formatSignificant(fd, 4) +
-                         " mm: the orientation tab, the scale, the legend) alone does not fit it: give a larger --bed");
-    throw InputError(what + "; give --cell " + formatSignificant(cell, 4) + " or less, or leave --cell out to fit the bed, " +
-                     "or add --tile to print it in tiles that each fit");
+    const double min_cell = std::max(kMinTactileCellMm, min_cell_mm);
+    if (cell_given && size_at) {
+        // The largest cell that fits, rounded down to 0.01 mm, from the
+        // pillars' share; then tried, and smaller by 1 % until a model at it
+        // fits. Never below the smallest cell a fingertip tells apart.
+        const double scale = std::min(pw > 0 ? (w - fw) / pw : 0.0, pd > 0 ? (d - fd) / pd : 0.0);
+        double cell = std::floor(scene.pitch_mm * scale * 100.0) / 100.0;
+        for (int tries = 0; tries < 8 && cell >= min_cell; ++tries, cell = std::floor(cell * 0.99 * 100.0) / 100.0)
+            if (fits(size_at(cell)))
+                throw InputError(what + "; give --cell " + formatSignificant(cell, 4) + " or less (tried: it fits), or leave --cell out " +
+                                 "to fit the bed, or add --tile to print it in tiles that each fit");
+    }
+    // No cell a fingertip reads makes it fit (or tsf chose the cell): the bed it needs, at the smallest cell.
+    std::optional<std::pair<double, double>> smallest;
+    if (size_at && scene.pitch_mm > min_cell + 1e-9) smallest = size_at(min_cell);
+    const double need_w = smallest ? smallest->first : mw, need_d = smallest ? smallest->second : md;
+    const std::string at = smallest ? "at --cell " + formatSignificant(min_cell, 4) + ", the smallest a fingertip tells apart, it is " +
+                                          formatSignificant(need_w, 4) + " x " + formatSignificant(need_d, 4) + " mm"
+                                    : std::string(scene.pitch_mm <= min_cell + 1e-9 ? "its cells are the smallest a fingertip tells apart (" +
+                                                                                          formatSignificant(min_cell, 4) + " mm)"
+                                                                                    : "");
+    // What stands beside the pillars, to 0.1 mm (the pillars' hexagons and the model's bounds differ by float noise).
+    const double side_w = std::round(fw * 10) / 10, side_d = std::round(fd * 10) / 10;
+    std::string beside;
+    if (side_w > 0 || side_d > 0)
+        beside = "; what stands beside the pillars (the orientation tab, the scale, the legend) takes " +
+                 (side_w > 0 ? formatSignificant(side_w, 4) + " mm of the width" : std::string()) +
+                 (side_w > 0 && side_d > 0 ? " and " : "") +
+                 (side_d > 0 ? formatSignificant(side_d, 4) + " mm of the depth" : std::string()) +
+                 " whatever the cell: leaving out --scale or --title/--units gives the pillars more";
+    const double bed_w = std::ceil(need_w + 2 * kBedMarginMm), bed_d = std::ceil(need_d + 2 * kBedMarginMm);
+    throw InputError(what + (at.empty() ? "" : "; " + at) + ": it needs a bed of at least " + formatSignificant(bed_w, 4) + " x " +
+                     formatSignificant(bed_d, 4) + " mm (--bed " + formatSignificant(bed_w, 4) + "x" + formatSignificant(bed_d, 4) +
+                     "), or --tile to print it in tiles that each fit" + beside);
 }
 
 }  // namespace tsf::cli

@@ -17,7 +17,10 @@
 //     check uses it.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/gen_options.h"
@@ -54,13 +57,25 @@ std::string cellNozzleNote(double pitch_mm, const PrinterSpec& printer);
 
 /// With --bed and the cell left to tsf: when what stands beside the pillars
 /// (the legend's plate, the tab, the scale) takes the model past the bed,
-/// shrinks the fit box by the overflow (gen.scene.fit_width_mm, fit_depth_mm)
-/// and returns true: the Scene is then built again.
+/// shrinks the fit box by the overflow (gen.scene.fit_width_mm,
+/// fit_depth_mm, and the field's own) and returns true: the field is then
+/// read again (a raster resampled to fewer cells, never narrower than the
+/// tactile minimum) and the Scene built again.
 bool shrinkFitToBed(const Scene& scene, const PrinterSpec& printer, GenOptions& gen);
 
+/// The x, y size (mm) of the whole model (pillars and what stands beside
+/// them) made at --cell cell_mm, everything else as asked; none when no
+/// model can be made at that cell.
+using SizeAtCell = std::function<std::optional<std::pair<double, double>>(double cell_mm)>;
+
 /// After meshing: throws InputError when the mesh's footprint is larger
-/// than the bed less its margins, naming the largest --cell that fits (the
-/// pillars scale with the cell, what stands beside them does not).
-void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& printer);
+/// than the bed less its margins, saying what does fit, each remedy tried
+/// (size_at) rather than guessed: with a --cell given (cell_given), the
+/// largest --cell at or above min_cell_mm (the smallest a fingertip tells
+/// apart) that fits; never a cell below it. Else, and when no such cell
+/// fits: the bed the model needs, --tile, and what stands beside the
+/// pillars (the tab, the scale, the legend), whose size no cell changes.
+void checkFitsBed(const Mesh& mesh, const Scene& scene, const PrinterSpec& printer, bool cell_given, double min_cell_mm,
+                  const SizeAtCell& size_at);
 
 }  // namespace tsf::cli

@@ -14,6 +14,7 @@
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
+#include "verify/attachment_joint.h"
 #include "verify/finger_reach.h"
 #include "verify/detail/workers.h"
 
@@ -486,6 +487,7 @@ TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOp
         checkMarks(*scene, options, r);
         checkPillars(*scene, options, r);
         checkHeightSteps(*scene, options, r);
+        r.checks.push_back(checkAttachmentJoints(*scene, kHandPushN, kPrintedPlaInterlayerMpa, options.max_offenders));
     }
     if (scene && scene->legend) checkBraille(*scene, options, r);
     return r;

@@ -1,5 +1,8 @@
 #include "gen/scad/scad_scale.h"
 
+#include <string>
+#include <vector>
+
 #include "gen/field/hex_grid.h"
 #include "gen/mesh_io/number_text.h"
 #include "gen/model/scene.h"
@@ -31,11 +34,13 @@ void emitScaleData(std::string& o, const Scene& s) {
         const Vec3 p = s.point(hexCorner(s.grid, s.col[size_t(k)], s.row[size_t(k)], e), 0);
         return "[" + formatShortest(p.x) + ", " + formatShortest(p.y) + "]";
     };
+    std::vector<std::string> notches;
     for (size_t n = 0; n + 1 < sc.contacts.size(); ++n) {
+        if (sc.fillers[n] < 0) continue;  // further apart than a notch: the foot stands free between them
         const int32_t lower = sc.contacts[n], upper = sc.contacts[n + 1];
-        o += "  [" + xy(lower, 1) + ", " + xy(upper, 0) + ", " + xy(upper, 5) + ", " + xy(lower, 2) +
-             (n + 2 < sc.contacts.size() ? "],\n" : "]\n");
+        notches.push_back("  [" + xy(lower, 1) + ", " + xy(upper, 0) + ", " + xy(upper, 5) + ", " + xy(lower, 2) + "]");
     }
+    for (size_t n = 0; n < notches.size(); ++n) o += notches[n] + (n + 1 < notches.size() ? ",\n" : "\n");
     o += "]];\n\n";
 }
 

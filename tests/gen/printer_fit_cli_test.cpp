@@ -1,7 +1,8 @@
 // tsf gen --bed / --nozzle / --layer: the model is shaped for one printer
 // (fitted into the bed less its margins, heights on whole layers, raster
 // cells a nozzle prints as pillars), and a model larger than the bed is
-// refused with the --cell that would fit.
+// refused with what does fit: the --cell that would (never below 3 mm), or
+// the bed it needs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gen/mesh_io/mesh_reader.h"
+#include "tests/support/files.h"
 #include "tests/support/run.h"
 
 namespace tsf {
@@ -61,17 +63,18 @@ TEST(PrinterFitCli, LayerSnapsEveryHeightToWholeLayersUnlessSnapIsGiven) {
 TEST(PrinterFitCli, AModelLargerThanTheBedIsRefusedWithACellThatFits) {
     const auto dir = test::scratchDir();
     const std::string model = (dir / "m.stl").string();
-    const auto big = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --cell 4 -o " + model, dir);
+    const auto big = test::runTsf("gen " + airports() + " " + kAirports + " --bed 220x220 --cell 6 -o " + model, dir);
     EXPECT_EQ(big.exit_code, test::kExitBadInput) << big.out << big.err;
-    EXPECT_NE(big.err.find("larger than the 120 x 100 mm bed"), std::string::npos) << big.err;
+    EXPECT_NE(big.err.find("larger than the 220 x 220 mm bed"), std::string::npos) << big.err;
     // The pillars scale with the cell, the 23 mm tab beside them does not:
-    // 40 columns of 4 mm are 162 of the 185 mm, 110 - 23 = 87 mm are left.
-    EXPECT_NE(big.err.find("give --cell 2.14 or less"), std::string::npos) << big.err;
+    // 40 columns of 6 mm are 243 of the 266 mm, 210 - 23 = 187 mm are left,
+    // 6 x 187 / 243 = 4.6 mm; the model at that cell was made and fits.
+    EXPECT_NE(big.err.find("give --cell 4.61 or less (tried: it fits)"), std::string::npos) << big.err;
     EXPECT_FALSE(std::filesystem::exists(model));
     // The suggestion works, and fills the bed's width.
-    const auto fits = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --cell 2.14 --no-verify -o " + model, dir);
+    const auto fits = test::runTsf("gen " + airports() + " " + kAirports + " --bed 220x220 --cell 4.61 --no-verify -o " + model, dir);
     EXPECT_EQ(fits.exit_code, test::kExitOk) << fits.out << fits.err;
-    EXPECT_GT(meshBounds(readMesh(model)).max.x - meshBounds(readMesh(model)).min.x, 108.0);
+    EXPECT_GT(meshBounds(readMesh(model)).max.x - meshBounds(readMesh(model)).min.x, 205.0);
 
     const auto wide = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --width 150 -o " + model, dir);
     EXPECT_EQ(wide.exit_code, test::kExitBadInput) << wide.err;
@@ -80,6 +83,45 @@ TEST(PrinterFitCli, AModelLargerThanTheBedIsRefusedWithACellThatFits) {
     const auto bad = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120 -o " + model, dir);
     EXPECT_EQ(bad.exit_code, test::kExitBadInput) << bad.err;
     EXPECT_NE(bad.err.find("--bed: expected WIDTHxDEPTH"), std::string::npos) << bad.err;
+}
+
+// On a bed too small for the pillars at the 3 mm a fingertip tells apart,
+// tsf never advises a smaller cell: it gives the model's size at 3 mm and
+// the bed that holds it (tried), or --tile.
+TEST(PrinterFitCli, NeverAdvisesACellBelowTheTactileMinimum) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "m.stl").string();
+    const auto small = test::runTsf("gen " + airports() + " " + kAirports + " --bed 120x100 --cell 4 -o " + model, dir);
+    EXPECT_EQ(small.exit_code, test::kExitBadInput) << small.out << small.err;
+    EXPECT_EQ(small.err.find("give --cell"), std::string::npos) << small.err;
+    // 40 columns at 3 mm are 121.5 mm, with the 23 mm tab 144.5 mm: a bed of 155 mm (5 mm margins) holds it.
+    EXPECT_NE(small.err.find("at --cell 3, the smallest a fingertip tells apart"), std::string::npos) << small.err;
+    EXPECT_NE(small.err.find("--bed 155x110"), std::string::npos) << small.err;
+    EXPECT_NE(small.err.find("--tile"), std::string::npos) << small.err;
+    EXPECT_NE(small.err.find("takes 23 mm of the width"), std::string::npos) << small.err;
+    const auto there = test::runTsf("gen " + airports() + " " + kAirports + " --bed 155x110 --cell 3 --no-verify -o " + model, dir);
+    EXPECT_EQ(there.exit_code, test::kExitOk) << there.out << there.err;
+}
+
+// A raster taller than the bed with the legend north and the scale east:
+// what stands beside the pillars takes the bed's depth and width from them,
+// and the raster is resampled again for what is left, to fewer cells at
+// least 3 mm across (not the same cells squeezed narrower), and fits.
+TEST(PrinterFitCli, TheBedFitCountsWhatStandsBesideAndKeepsCellsReadable) {
+    const auto dir = test::scratchDir();
+    std::string csv;
+    for (int r = 0; r < 100; ++r) {
+        for (int c = 0; c < 30; ++c) csv += (c ? "," : "") + std::to_string(100 + (c * 7 + r * 3) % 50);
+        csv += "\n";
+    }
+    test::writeText(dir / "tall.csv", csv);
+    const std::string model = (dir / "m.stl").string();
+    const auto r = test::runTsf("gen " + (dir / "tall.csv").string() + " --scale --title T --units m --bed 220x220 --json -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    EXPECT_GE(nlohmann::json::parse(r.out)["scene"]["pitch_mm"].get<double>(), 3.0 - 1e-9) << r.out;
+    const Bounds b = meshBounds(readMesh(model));
+    EXPECT_LE(b.max.x - b.min.x, 210.0);
+    EXPECT_LE(b.max.y - b.min.y, 210.0);
 }
 
 TEST(PrinterFitCli, AWideNozzleMakesRasterCellsFourNozzleWidthsAcross) {

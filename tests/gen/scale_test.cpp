@@ -4,6 +4,7 @@
 // pillars' plus the scale's boxes, computed without the mesher.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
@@ -210,7 +211,11 @@ TEST(ScalePlacement, KeepsClearOfTheBrailleLegend) {
     HexField low = test::fieldFromFunction(12, 5, [](int c, int r) { return r < 3 ? 0.0 : 1.0 + (c + r) % 5; });
     const InputError e = test::catchInputError([&] { buildScene(low, p); });
     EXPECT_NE(std::string(e.what()).find("braille legend"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("--scale-step"), std::string::npos) << e.what();
+    // No step fits, down to two: it says so rather than asking for a larger one.
+    EXPECT_NE(std::string(e.what()).find("no --scale-step fits"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("larger --scale-step"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("Leave out --title/--units (the plate north of the pillars) or --scale"), std::string::npos)
+        << e.what();
 }
 
 TEST(ScalePlacement, RefusedOnAMirroredModelAFlatFieldAndTooFineASteps) {
@@ -246,6 +251,85 @@ TEST(ScaleSidecar, RecordedAsPlacedAndReadAsRecorded) {
     const Scene moved = sceneFromJson(j);
     ASSERT_TRUE(moved.scale.has_value());
     EXPECT_EQ(moved.scale->steps[0].top_units, s.scale->steps[0].top_units + 1);
+}
+
+
+// An outline whose east side reaches its easternmost line in two rows only
+// (a spur at its south end, as a projected map's corner has): there the
+// foot would touch one pillar wall, a joint a hand snaps. The foot steps
+// back west to the line where a run of rows ends and stands against them.
+HexField spurField() {
+    return test::fieldFromFunction(12, 20, [](int c, int r) {
+        if (c == 11) return r == 18 || r == 19 ? 3.0 : test::kNaN;
+        return 1.0 + (c + r) % 4;
+    });
+}
+
+TEST(ScalePlacement, StepsBackFromASpurToTheLongestRunOfTheEastSide) {
+    const Scene s = buildScene(spurField(), scaleParams());
+    ASSERT_TRUE(s.scale.has_value());
+    const SceneScale& sc = *s.scale;
+    int64_t i_east = INT64_MIN;
+    for (size_t k = 0; k < s.keptCount(); ++k) i_east = std::max(i_east, hexCentre(s.grid, s.col[k], s.row[k]).i + 1);
+    // The spur's line holds one contact; the line one cell west, a run of rows.
+    EXPECT_EQ(sc.x0_i, i_east - 2);
+    EXPECT_GE(sc.contacts.size(), 3u);
+    for (const int32_t k : sc.contacts) EXPECT_EQ(s.col[size_t(k)], 10);
+    // Every kept cell beside the foot lies west of it; none overlaps it.
+    for (size_t k = 0; k < s.keptCount(); ++k)
+        for (int e = 0; e < 6; ++e) {
+            const Vec3 p = s.point(hexCorner(s.grid, s.col[k], s.row[k], e), 0);
+            if (p.y > sc.y0_mm && p.y < sc.y1_mm) EXPECT_LE(p.x, sc.x0_mm) << "cell " << s.col[k] << "," << s.row[k];
+        }
+    const test::Invariants inv = test::checkInvariants(meshScene(s));
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+    EXPECT_EQ(inv.duplicate_positions, 0u);
+    // The sidecar keeps it.
+    const Scene back = sceneFromJson(sceneToJson(s));
+    ASSERT_TRUE(back.scale.has_value());
+    EXPECT_EQ(back.scale->contacts, sc.contacts);
+    EXPECT_EQ(back.scale->fillers, sc.fillers);
+}
+
+// A bay six cells deep in the east side, left open by concave culling:
+// the run that holds the staircase spans it, touching the rows north and
+// south of it, and the foot's west face stands free across the bay (no
+// filler there, -1). Still one closed solid (the bay a hole down to the
+// bed that the foot closes into a ring), and the scale alone is one.
+TEST(ScalePlacement, StandsFreeAcrossABayBetweenTwoContacts) {
+    const HexField f = test::fieldFromFunction(10, 14, [](int c, int r) {
+        return r >= 4 && r <= 9 && c >= 2 ? test::kNaN : 1.0 + (c + 2 * r) % 9;
+    });
+    SceneParams p = scaleParams();
+    p.cull = Cull::Concave;
+    p.scale.step.reset();
+    const Scene s = buildScene(f, p);
+    ASSERT_TRUE(s.scale.has_value());
+    const SceneScale& sc = *s.scale;
+    ASSERT_EQ(sc.fillers.size() + 1, sc.contacts.size());
+    ASSERT_NE(std::find(sc.fillers.begin(), sc.fillers.end(), -1), sc.fillers.end());
+    // Contacts on both sides of the bay (rows 4..9).
+    bool north = false, south = false;
+    for (const int32_t k : sc.contacts) {
+        north = north || s.row[size_t(k)] < 4;
+        south = south || s.row[size_t(k)] > 9;
+    }
+    EXPECT_TRUE(north && south);
+    const test::Invariants inv = test::checkInvariants(meshScene(s));
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+    // The foot closes a ring around each bay it spans: a hole down to the
+    // bed, one handle (genus 1) per gap.
+    const long gaps = long(std::count(sc.fillers.begin(), sc.fillers.end(), -1));
+    EXPECT_EQ(inv.euler, 2 - 2 * gaps);
+    EXPECT_EQ(inv.duplicate_positions, 0u);
+    const test::Invariants own = test::checkInvariants(meshScaleBody(s, /*joined=*/false).mesh);
+    EXPECT_TRUE(own.closedManifold()) << own.describe();
+    EXPECT_EQ(own.components, 1u);
+    const Scene back = sceneFromJson(sceneToJson(s));
+    ASSERT_TRUE(back.scale.has_value());
+    EXPECT_EQ(back.scale->fillers, sc.fillers);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "gen/model/features/legend_plate.h"
 #include "gen/model/features/top_shapes.h"
@@ -17,6 +19,53 @@ double snapUm(double mm) { return std::round(mm * 1000.0) / 1000.0; }
 
 // Share of the grid's columns the kept cells of the plate's southmost row must span.
 constexpr double kPlateHoldFraction = 0.6;
+
+// The share of the plate's width (x, from 0 to its east edge) along which
+// it stands against pillars that rise to its top: where it holds on.
+double heldShare(const Scene& s) {
+    const PlateOutline outline = legendPlateOutline(s);
+    std::vector<std::pair<double, double>> spans;
+    for (const PlateOutline::Edge& e : outline.edges) {
+        if (e.cell < 0) continue;
+        const size_t k = size_t(e.cell);
+        if (!s.drawn_by_face.empty() && s.drawn_by_face[k]) continue;
+        if (cornerTop(s, k, e.side) < s.legend->plate_top_units || cornerTop(s, k, (e.side + 1) % kHexCorners) < s.legend->plate_top_units)
+            continue;  // a pit holds it only up to its top
+        const double a = outline.points[e.a].x_mm, b = outline.points[e.b].x_mm;
+        spans.push_back({std::min(a, b), std::max(a, b)});
+    }
+    std::sort(spans.begin(), spans.end());
+    double held = 0, reached = -std::numeric_limits<double>::infinity();
+    for (const auto& [a, b] : spans) {
+        if (b <= reached) continue;
+        held += b - std::max(a, reached);
+        reached = b;
+    }
+    const double width = s.legend->plate_east_mm - s.legend->x0_mm;
+    return width > 0 ? held / width : 0.0;
+}
+
+// Of the rows 0..limit, the northmost the plate may reach to and hold on
+// along kPlateHoldFraction of its width, else the one it holds on along
+// most of it: an irregular outline (a projected map's rotated corners, a
+// coast) leaves the first rows short, or pits where data ends.
+int32_t firmestReach(Scene& s, SceneLegend l, int32_t limit) {
+    int32_t best = limit;
+    double best_share = -1;
+    for (int32_t r = 0; r <= limit; ++r) {
+        l.reach_row = r;
+        l.plate_south_mm = s.point(LatticePoint{hexCentre(s.grid, 0, r).i, hexCentre(s.grid, 0, r).j + 1}, 0).y;
+        s.legend = l;
+        const double share = heldShare(s);
+        if (share > best_share + 1e-9) {
+            best = r;
+            best_share = share;
+        }
+        if (share >= kPlateHoldFraction) break;
+    }
+    s.legend.reset();
+    return best;
+}
 
 }  // namespace
 
@@ -74,10 +123,13 @@ void placeLegend(Scene& s) {
         l.layout = layoutLegend(p);
     }
     if (l.layout.dots.empty()) return;
-    // The plate reaches south over the culled corners to row `reach`, the
-    // first row (from the north) whose kept cells span kPlateHoldFraction of
-    // the grid's columns, so it holds on along much of its length; never over
-    // a whole row that holds a no-data pit (a pit must stay a pit).
+    // The plate reaches south over the culled corners to row `reach`, at most
+    // to the first row (from the north) whose kept cells span
+    // kPlateHoldFraction of the grid's columns. A mirrored model's plate
+    // never reaches over a whole row that holds a no-data pit (it lies in
+    // the band of the pillars it stands against, which a pit does not hold);
+    // a flat model's plate stands around such a pit, whose walls above its
+    // top are then the plate's sides (a pit stays a pit).
     int32_t reach = 0;
     for (int32_t r = 0; r < s.grid.rows; ++r) {
         int32_t lo_col = s.grid.cols, hi_col = -1;
@@ -91,7 +143,7 @@ void placeLegend(Scene& s) {
         }
         reach = r;
         if (hi_col >= lo_col && double(hi_col - lo_col + 1) >= kPlateHoldFraction * s.grid.cols) break;
-        if (pit) break;  // this row's tips are covered, the row itself is not
+        if (pit && mirrored) break;  // this row's tips are covered, the row itself is not
     }
     // The south edge: the line through the upper side corners of row `reach`
     // (it meets hexagon walls only at their corners); the braille begins north
@@ -111,6 +163,7 @@ void placeLegend(Scene& s) {
     const int64_t min_thick = std::max<int64_t>(1, snapUnits(kMinMirroredPlateMm, s.z_snap_mm));
     const int64_t want_thick = std::max(min_thick, snapUnits(s.params.base_mm, s.z_snap_mm));
     bool band_too_thin = false;
+    if (!mirrored) reach = firmestReach(s, l, reach);
     // The south edge, pulled north while a wall the plate would stand
     // against is cut by the notch in the data (a model of few rows), or
     // (mirrored) while the pillars it stands against share no band thick enough.

@@ -8,8 +8,13 @@
 // grid box's width (x from 0 to gridWidth, further under a wider legend),
 // its top is the floor (the base's top, so it reads as "not data"). It
 // reaches south over the cells culled at the model's northern corners, to
-// the first row whose kept cells span 60 % of the columns (never over a
-// whole row with a no-data pit), so it holds on along much of its length.
+// the northmost row at which it stands against pillars rising to its top
+// along 60 % of its width (at most to the first row whose kept cells span
+// 60 % of the columns; else the row it holds on along most), so it holds on
+// along most of its length, not by a corner (tsf verify --tactile checks
+// the joint). A flat model's plate stands around a no-data pit in the rows
+// it covers (the pit stays a pit: its walls above its top are the plate's
+// sides); a mirrored model's never reaches over a whole row with a pit.
 // Its south edge runs along the line through the upper side corners of that
 // row, which meets hexagon walls only at their corners. The plate is the box
 // less the kept hexagons: pillars keep their tops and walls above the floor.

@@ -143,65 +143,103 @@ void placeScale(Scene& s) {
         const std::vector<ScaleLevel> levels = scaleLevels(s.mapping, step, s.z_snap_mm, kScaleMaxSteps, &why);
         if (!why.empty() || levels.empty()) return false;
         n = int(levels.size());
-        // The foot's west face: the easternmost hexagon edge of the kept cells.
-        // Every kept cell with its east edge there is a candidate contact.
-        int64_t i_east = INT64_MIN;
-        for (size_t k = 0; k < s.keptCount(); ++k) i_east = std::max(i_east, hexCentre(s.grid, s.col[k], s.row[k]).i + 1);
-        struct Candidate {
+        // The foot's west face stands on a lattice line i_col: first the
+        // easternmost hexagon edge of the kept cells, then lines further
+        // west, up to kScaleMaxSetbackCells cells (an irregular outline
+        // whose east side is ragged). On line i_col, the cells with their east
+        // edge on it are the candidate contacts; a run [j0, j1] is clear when
+        // every kept cell beside it has its east edge on or west of the line,
+        // every cell on the line is one a foot may touch, and two contacts
+        // one notch apart have a cell in the notch the foot may touch too
+        // (further apart, the foot's west face stands free between them).
+        // Of all clear runs the one with the most contacts (the firmest
+        // joint) is taken, the easternmost and southernmost of equals.
+        // `blocked` says what cuts the runs on the easternmost line.
+        struct Cell {
             int32_t kept;
-            int64_t j;  // the centre's lattice j; its east edge spans j - 1 .. j + 1
-            bool ok;
+            int64_t east;  // lattice i of its east edge
+            int64_t j;     // its centre's lattice j; its east edge spans j - 1 .. j + 1, the hexagon j - 2 .. j + 2
         };
-        std::vector<Candidate> cand;
+        std::vector<Cell> cells;
+        int64_t i_east = INT64_MIN;
         for (size_t k = 0; k < s.keptCount(); ++k) {
             const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
-            if (c.i + 1 != i_east) continue;
-            const bool ok = footCanTouch(s, int32_t(k));
-            cand.push_back({int32_t(k), c.j, ok});
+            cells.push_back({int32_t(k), c.i + 1, c.j});
+            i_east = std::max(i_east, c.i + 1);
         }
-        std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
-        auto inBand = [&](int64_t j) {
-            for (const Candidate& c : cand)
-                if (j >= c.j - 1 && j <= c.j + 1) return true;
-            return false;
-        };
+        std::sort(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) { return a.j < b.j || (a.j == b.j && a.east < b.east); });
         const double unit_y_mm = latticeY({0, 1}, s.pitch_mm, s.y_scale);  // one lattice j step
         need_mm = n * kScaleTreadMm;
-        auto yOf = [&](int64_t j) { return s.point(LatticePoint{i_east, j}, 0).y; };
-        for (const Candidate& start : cand) {
-            if (!start.ok) continue;
-            const int64_t j0 = std::max<int64_t>(0, start.j - 3);  // the middle of the gap below it
-            if (inBand(j0)) continue;
-            int64_t j1 = j0 + int64_t(std::ceil(need_mm / unit_y_mm - 1e-9));
-            while (inBand(j1)) ++j1;
-            // Every candidate in the run is touched; consecutive ones are one
-            // notch apart, and the cell in the notch is touched too.
-            bool clear = true;
+        const int64_t need_j = int64_t(std::ceil(need_mm / unit_y_mm - 1e-9));
+        struct Run {
+            int64_t i_col = 0, j0 = 0, j1 = 0;
             std::vector<int32_t> contacts, fillers;
-            for (const Candidate& c : cand) {
-                if (c.j <= j0 || c.j >= j1) continue;
-                clear = clear && c.ok;
-                if (!contacts.empty()) {
-                    const int64_t previous_j = hexCentre(s.grid, s.col[size_t(contacts.back())], s.row[size_t(contacts.back())]).j;
-                    const int32_t filler = keptAtCentre(s, i_east - 2, previous_j + 3);
-                    clear = clear && c.j - previous_j == 6 && footCanTouch(s, filler);
-                    fillers.push_back(filler);
+        };
+        std::optional<Run> best;
+        for (int64_t i_col = i_east; i_col >= i_east - 2 * kScaleMaxSetbackCells; --i_col) {
+            std::vector<const Cell*> cand;  // on the line, south to north
+            for (const Cell& c : cells)
+                if (c.east == i_col) cand.push_back(&c);
+            auto inBand = [&](int64_t j) {
+                for (const Cell* c : cand)
+                    if (j >= c->j - 1 && j <= c->j + 1) return true;
+                return false;
+            };
+            auto yOf = [&](int64_t j) { return s.point(LatticePoint{i_col, j}, 0).y; };
+            for (const Cell* start : cand) {
+                if (!footCanTouch(s, start->kept)) continue;
+                const int64_t j0 = std::max<int64_t>(0, start->j - 3);  // the middle of the gap below it
+                if (inBand(j0)) continue;
+                int64_t j1 = j0 + need_j;
+                while (inBand(j1)) ++j1;
+                bool clear = true;
+                Run run{i_col, j0, j1, {}, {}};
+                for (const Cell& c : cells) {
+                    // Beside the run, or touching its ends with a tip: east of the line it would touch the foot.
+                    if (c.j + 2 < j0 || c.j - 2 > j1) continue;
+                    if (c.east > i_col) {
+                        clear = false;
+                        if (i_col == i_east) blocked = "the model's outline";
+                        break;
+                    }
+                    if (c.east < i_col || c.j - 1 < j0 || c.j + 1 > j1) continue;
+                    if (!footCanTouch(s, c.kept)) {
+                        clear = false;
+                        if (i_col == i_east) blocked = "cells without data, under a mark or culled";
+                        break;
+                    }
+                    if (!run.contacts.empty()) {
+                        const int64_t previous_j = hexCentre(s.grid, s.col[size_t(run.contacts.back())], s.row[size_t(run.contacts.back())]).j;
+                        int32_t filler = -1;  // further apart than one notch: no filler
+                        if (c.j - previous_j == 6) {
+                            filler = keptAtCentre(s, i_col - 2, previous_j + 3);
+                            if (!footCanTouch(s, filler)) {
+                                clear = false;
+                                if (i_col == i_east) blocked = "cells without data, under a mark or culled";
+                                break;
+                            }
+                        }
+                        run.fillers.push_back(filler);
+                    }
+                    run.contacts.push_back(c.kept);
                 }
-                contacts.push_back(c.kept);
+                if (!clear || run.contacts.empty()) continue;
+                if (s.legend && yOf(j1) + kScaleLegendClearanceMm > s.legend->plate_south_mm) {
+                    if (i_col == i_east) blocked = "the braille legend's plate";
+                    continue;
+                }
+                if (!best || run.contacts.size() > best->contacts.size()) best = std::move(run);
             }
-            if (!clear) {
-                blocked = "cells without data, under a mark or culled";
-                continue;
-            }
+        }
+        if (best) {
+            const int64_t i_col = best->i_col, j0 = best->j0, j1 = best->j1;
+            auto yOf = [&](int64_t j) { return s.point(LatticePoint{i_col, j}, 0).y; };
+            std::vector<int32_t> contacts = std::move(best->contacts), fillers = std::move(best->fillers);
             const double y1 = yOf(j1);
-            if (s.legend && y1 + kScaleLegendClearanceMm > s.legend->plate_south_mm) {
-                blocked = "the braille legend's plate";
-                continue;
-            }
-            sc.x0_i = i_east;
+            sc.x0_i = i_col;
             sc.y0_j = j0;
             sc.y1_j = j1;
-            sc.x0_mm = s.point(LatticePoint{i_east, j0}, 0).x;
+            sc.x0_mm = s.point(LatticePoint{i_col, j0}, 0).x;
             sc.xs_mm = snapXy(sc.x0_mm + kScaleGapMm);
             sc.x1_mm = snapXy(sc.xs_mm + kScaleStepWidthMm);
             sc.y0_mm = yOf(j0);
@@ -225,33 +263,44 @@ void placeScale(Scene& s) {
     };
     if (tryStep(sc.step)) return;
     // A step tsf chose grows (the next nice number: fewer, taller steps)
-    // until the staircase fits the east side; a step given is kept.
+    // until the staircase fits the east side; a step given is kept, and the
+    // larger steps are tried only to name one that fits.
     const double first_need = need_mm;
     const int first_n = n;
     const std::string first_blocked = blocked;
-    if (!sc.step_given) {
-        const double range = s.mapping.value_max - s.mapping.baseline;
-        for (double step = nextNiceStep(sc.step); step <= range; step = nextNiceStep(step)) {
-            // At least two steps: one is no staircase to measure by.
-            std::string level_why;
-            if (scaleLevels(s.mapping, step, s.z_snap_mm, kScaleMaxSteps, &level_why).size() < 2) break;
-            blocked.clear();
-            if (tryStep(step)) {
-                s.notes.push_back("--scale: steps of " + formatSignificant(step) + " (" + std::to_string(n) +
-                                  ") rather than " + formatSignificant(first_need / kScaleTreadMm, 3) +
-                                  " steps: the model's east side holds no longer run clear of " +
-                                  (first_blocked.empty() ? std::string("its shape") : first_blocked));
-                return;
-            }
+    std::optional<double> larger;  // a larger step whose staircase fits
+    const double range = s.mapping.value_max - s.mapping.baseline;
+    for (double step = nextNiceStep(sc.step); step <= range; step = nextNiceStep(step)) {
+        // At least two steps: one is no staircase to measure by.
+        std::string level_why;
+        if (scaleLevels(s.mapping, step, s.z_snap_mm, kScaleMaxSteps, &level_why).size() < 2) break;
+        blocked.clear();
+        if (tryStep(step)) {
+            larger = step;
+            break;
         }
     }
+    if (larger && !sc.step_given) {
+        s.notes.push_back("--scale: steps of " + formatSignificant(*larger) + " (" + std::to_string(n) + ") rather than " +
+                          formatSignificant(first_need / kScaleTreadMm, 3) +
+                          " steps: the model's east side holds no longer run clear of " +
+                          (first_blocked.empty() ? std::string("its shape") : first_blocked));
+        return;
+    }
+    s.scale.reset();
     need_mm = first_need;
     n = first_n;
     blocked = first_blocked;
-    throw InputError("--scale: the tactile scale needs " + formatSignificant(std::round(need_mm)) + " mm (" + std::to_string(n) +
-                     " steps of " + formatSignificant(kScaleTreadMm) + " mm) along the model's east side, and the run there is cut by " +
-                     (blocked.empty() ? std::string("the model's shape") : blocked) +
-                     ". Give a larger --scale-step, or leave out --title/--units or --scale");
+    const std::string what = "--scale: the tactile scale needs " + formatSignificant(std::round(need_mm)) + " mm (" +
+                             std::to_string(n) + " steps of " + formatSignificant(kScaleTreadMm) +
+                             " mm) along the model's east side, and the run there is cut by " +
+                             (blocked.empty() ? std::string("the model's shape") : blocked);
+    if (larger)  // a step given: name the larger one that was tried and fits
+        throw InputError(what + ". --scale-step " + formatSignificant(*larger) + " fits (tried), or leave out --scale-step");
+    // No step fits, down to two: a larger one cannot help.
+    throw InputError(what + ", and so is the run for two steps (" + formatSignificant(2 * kScaleTreadMm) + " mm)" +
+                     (sc.step_given ? ": no --scale-step fits" : "") + ". Leave out " +
+                     (blocked == "the braille legend's plate" ? "--title/--units (the plate north of the pillars) or " : "") + "--scale");
 }
 
 std::optional<int64_t> scaleTopAt(const Scene& s, double x, double y) {
@@ -311,7 +360,7 @@ public:
         // model (west_ is y0, then each contact's two corners, then y1).
         for (size_t a = west_.size() - 1; a > 0; --a) {
             const bool contact = a % 2 == 0 && a + 1 < west_.size();
-            const bool notch = a % 2 == 1 && a >= 3 && a + 1 < west_.size();
+            const bool notch = a % 2 == 1 && a >= 3 && a + 1 < west_.size() && sc_.fillers[(a - 3) / 2] >= 0;
             if (notch) {
                 addNotch((a - 3) / 2, floor);
                 continue;
@@ -475,12 +524,14 @@ std::optional<Attachment> scaleAttachment(const Scene& s, Assembly assembly) {
     }
     const std::vector<int32_t>& c = s.scale->contacts;
     const auto cover = [&](int32_t k, int e) { a.walls.push_back({k, e, 0, s.floor_units}); };
+    const std::vector<int32_t>& f = s.scale->fillers;  // -1: two contacts further apart than a notch
     for (size_t n = 0; n < c.size(); ++n) {
         cover(c[n], 0);
-        if (n + 1 < c.size()) cover(c[n], 1);
-        if (n > 0) cover(c[n], 5);
+        if (n + 1 < c.size() && f[n] >= 0) cover(c[n], 1);
+        if (n > 0 && f[n - 1] >= 0) cover(c[n], 5);
     }
-    for (const int32_t f : s.scale->fillers) cover(f, 0);
+    for (const int32_t k : f)
+        if (k >= 0) cover(k, 0);
     a.joined = meshScaleBody(s, /*joined=*/true);
     return a;
 }
@@ -523,8 +574,16 @@ void checkScale(const Scene& s) {
         south = st.y_north_mm;
     }
     if (south != sc.y1_mm) fail("scale: the last step must end at y1");
+    for (size_t n = 0; n < sc.fillers.size(); ++n) {
+        const auto centreJ = [&](int32_t k) { return hexCentre(s.grid, s.col[size_t(k)], s.row[size_t(k)]).j; };
+        const int32_t lower = sc.contacts[n], upper = sc.contacts[n + 1];
+        if (lower < 0 || upper < 0 || size_t(lower) >= s.keptCount() || size_t(upper) >= s.keptCount()) continue;  // below
+        if ((sc.fillers[n] >= 0) != (centreJ(upper) - centreJ(lower) == 6))
+            fail("scale: a filler must stand in the notch between two contacts one notch apart, and only there");
+    }
     for (const std::vector<int32_t>* list : {&sc.contacts, &sc.fillers})
         for (const int32_t k : *list) {
+            if (k == -1 && list == &sc.fillers) continue;  // contacts further apart: no notch to fill
             if (k < 0 || size_t(k) >= s.keptCount()) fail("scale: a touched cell is not a kept cell");
             for (int e = 0; e < kHexCorners; ++e)
                 if (cornerTop(s, size_t(k), e) < s.floor_units)

@@ -24,7 +24,10 @@
 // touches the model exactly along the east walls of `contacts` (kept cells
 // whose east edge lies on x0, between y0 and y1), from z = 0 to the floor:
 // between two contacts the foot also fills the notch of the hexagon outline
-// (see SceneScale::fillers); every vertex of the contact is a lattice corner
+// (see SceneScale::fillers; -1 there between two contacts further apart,
+// where the foot's west face stands free of the shorter rows between them,
+// and closes a ring around any culled cells there: a hole down to the bed);
+// every vertex of the contact is a lattice corner
 // at height 0 or the floor,
 // shared with the pillars' mesh, so the joined model needs no boolean
 // operation (gen/mesh/direct_mesher.cpp) and the scale alone is a closed body of
@@ -66,6 +69,9 @@ inline constexpr double kScaleStepWidthMm = 12.7;
 inline constexpr double kScaleGapMm = 4.0;
 /// Clear space kept from the braille legend's plate, mm.
 inline constexpr double kScaleLegendClearanceMm = 2.0;
+/// How far west of the easternmost hexagon edge the foot may stand, in
+/// cells, on an outline whose east side offers no clear run there.
+inline constexpr int64_t kScaleMaxSetbackCells = 8;
 
 /// One level of the scale.
 struct ScaleLevel {

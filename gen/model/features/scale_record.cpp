@@ -47,19 +47,23 @@ SceneScale scaleFrom(const json& j, const std::string& sp, const Scene& s) {
         sc.steps.push_back(st);
     }
     if (sc.steps.empty()) fail(join(sp, "steps"), "a scale has at least one step");
-    auto keptList = [&](const char* key) {
+    auto keptList = [&](const char* key, bool none_allowed) {
         std::vector<int32_t> out;
         const json& a = getArray(j, sp, key);
         for (size_t i = 0; i < a.size(); ++i) {
             const std::string p = sp + "." + key + "[" + std::to_string(i) + "]";
             const int64_t k = toInt(a[i], p);
+            if (none_allowed && k == -1) {
+                out.push_back(-1);
+                continue;
+            }
             if (k < 0 || size_t(k) >= s.keptCount()) fail(p, "is not the index of a cell");
             out.push_back(int32_t(k));
         }
         return out;
     };
-    sc.contacts = keptList("contacts");
-    sc.fillers = keptList("fillers");
+    sc.contacts = keptList("contacts", false);
+    sc.fillers = keptList("fillers", true);  // -1: contacts further apart than a notch
     return sc;
 }
 
