@@ -171,6 +171,7 @@ static std::string classesLine(const Scene& scene, const FieldInput& input) {
                                          : classes[k].texture + (classes[k].texture_shared ? ", shared" : "")) +
              ")";
     if (classes.size() > kListed) o += "; ... " + std::to_string(classes.size() - kListed) + " more in --json and the key";
+    if (const std::string b = backgroundSentence(classes); !b.empty()) o += "\n  background " + b + " " + backgroundRemedy(classes) + ".";
     return o + "\n";
 }
 
@@ -186,6 +187,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
                            {"depth_m", g->depth_m},
                            {"scale", g->east_west},
                            {"scale_north_south", g->north_south},
+                           {"hexagon_area_km2", g->hexagon_area_km2 > 0 ? nlohmann::json(g->hexagon_area_km2) : nlohmann::json(nullptr)},
                            {"longitude_scale", s.field->input.longitude_scale > 0
                                                    ? nlohmann::json(s.field->input.longitude_scale)
                                                    : nlohmann::json(nullptr)}};
@@ -195,7 +197,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
             classes.push_back({{"code", c.code}, {"name", c.name.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.name)},
                                {"cells", c.cells}, {"height_mm", c.height_mm},
                                {"texture", c.texture.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.texture)},
-                               {"texture_shared", c.texture_shared}});
+                               {"texture_shared", c.texture_shared}, {"background", c.background}});
         j["classes"] = classes;
         j["class_order_given"] = !s.field->input.class_order.empty();
     } else {

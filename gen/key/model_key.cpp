@@ -130,6 +130,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
                         (classes[k].cells == 1 ? " hexagon" : " hexagons");
             out.push_back(list + ".");
         }
+        if (const std::string b = backgroundSentence(classes); !b.empty()) out.push_back(b);
     } else {
         if (std::isfinite(lo))
             values += "The values go from " + num(lo) + " to " + num(hi) + u + ".";
