@@ -55,6 +55,7 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     j["cull"] = toString(s.params.cull);
     j["bottom"] = toString(s.params.bottom);
     if (s.params.bottom == Bottom::Mirrored) j["mirror_thickness_mm"] = s.zMm(s.mirror_thickness_units);
+    j["floor_mm"] = s.zMm(s.floor_units);  // the z of height 0 (mirrored: at or below the bed)
     j["one_pillar_per_value"] = s.one_to_one;
     if (s.params.cull == Cull::Concave)
         j["concave"] = {{"cells_convex_hull", s.cells_convex}, {"volume_saved_mm3", s.volume_saved_mm3}};
@@ -118,7 +119,11 @@ std::string formatSceneFacts(const Scene& s) {
         o << "  bottom    flat, base " << formatFixed(s.params.base_mm, 2) << " mm\n";
     else
         o << "  bottom    mirrored: every pillar " << formatFixed(s.zMm(s.mirror_thickness_units), 2)
-          << " mm thick; the underside shows the negated data\n";
+          << " mm thick; the underside shows the negated data"
+          << (s.floor_units < 0 ? "; the model stands on the bed, its lowest pillar's underside at z = 0: heights "
+                                  "count from " + formatFixed(-s.zMm(s.floor_units), 2) + " mm below the bed"
+                                : std::string())
+          << "\n";
     o << "  z snap    " << formatSignificant(s.z_snap_mm, 4) << " mm\n";
     if (s.y_scale != 1.0)
         o << "  aspect    true: the hexagons are stretched " << formatFixed(100.0 * (s.y_scale - 1.0), 1)

@@ -172,6 +172,9 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
         size += " on a flat base " + mm(s.params.base_mm) + " thick.";
     else
         size += ". The underside mirrors the top: seen from below, high values are deep pockets.";
+    if (s.params.bottom == Bottom::Mirrored && s.floor_units < 0)
+        size += " The lowest pillar stands on the table; heights are counted from " + mm(-s.zMm(s.floor_units)) +
+                " below it.";
     if (!facts.ground.empty()) size += " " + facts.ground;
     out.push_back(size);
     if (s.halves)
