@@ -11,6 +11,7 @@
 #include "gen/readers/gdal_reader.h"
 #include "gen/readers/raster_reader.h"
 #include "tests/readers/geotiff_test_writer.h"
+#include "tests/readers/netcdf_test_writer.h"
 #include "tests/support/files.h"
 #include "tests/support/input_error.h"
 #include "tests/support/run.h"
@@ -129,6 +130,25 @@ TEST(Georef, DegreesOffTheGlobeAreRefusedNamingTheValue) {
     RasterReadOptions o;
     o.ignore_georef = true;
     EXPECT_EQ(readRaster(path, o).cols, 4) << "--ignore-georef, which the message offers, reads it";
+}
+
+// The same for a CF NetCDF file whose latitudes run to 435 degrees north.
+TEST(Georef, NetCdfLatitudesOffTheGlobeAreRefusedNamingTheValue) {
+    const auto dir = test::scratchDir();
+    const std::string path = (dir / "off.nc").string();
+    test::NetCdfSpec s;
+    s.lat_shift = 433;  // latitudes 431.5 to 434.5, their pixels' edges to 435
+    ASSERT_TRUE(test::writeNetCdf(path, s)) << "GDAL's netCDF driver (Debian libgdal32 has it)";
+    RasterReadOptions o;
+    o.variable = "pr";
+    EXPECT_INPUT_ERROR(readRaster(path, o), "y values reach latitude 435 degrees");
+    const auto run = test::runTsf("gen " + path + " --variable pr -o " + (dir / "off.stl").string());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find("latitude 435"), std::string::npos) << run.output;
+    test::NetCdfSpec fine;
+    const std::string ok_path = (dir / "fine.nc").string();
+    ASSERT_TRUE(test::writeNetCdf(ok_path, fine));
+    EXPECT_EQ(readRaster(ok_path, o).cols, fine.cols) << "latitudes on the globe are read";
 }
 
 }  // namespace
