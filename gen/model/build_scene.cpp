@@ -7,7 +7,8 @@
 //   mirrored: bottom = h_units - S,  top = bottom + T,
 //             S = the least h_units of the kept cells with data (the model
 //                 stands on z = 0; no-data cells count as 0 after it),
-//                 less a class texture's relief (0 with tilted tops),
+//                 less a class texture's relief (tilted tops: the
+//                 lowest corner once they are resolved),
 //             T = max |h_units(a) - h_units(b)| over neighbouring kept cells
 //                 + snapUnits(base_mm)
 #include "gen/model/build_scene.h"
@@ -307,8 +308,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     // it (the z of height 0, at or below the bed).
     // Tops shaped below their level (class textures' dimples and ridges)
     // mirror into the underside: their relief is kept below the lowest
-    // cell. Tilted tops keep the whole height below them, as before (not
-    // yet shifted: their corners are known only once they are resolved).
+    // cell. Tilted tops keep the whole height below them until their
+    // corners are resolved, and come down to their lowest corner then.
     int64_t mirror_shift = 0;
     if (params.bottom == Bottom::Mirrored) {
         mirror_shift = std::numeric_limits<int64_t>::max();
@@ -504,6 +505,25 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         const bool any = params.tilt != TiltSource::None || s.textures ||
                          std::any_of(structural.begin(), structural.end(), [](uint8_t b) { return b != 0; });
         if (any) resolveTopShapes(s, slopes, s.textures ? 1.0 : params.steepness, structural, centre_dz);
+        if (any && params.bottom == Bottom::Mirrored && params.tilt != TiltSource::None) {
+            // Tilted mirrored tops kept the whole height below them (above);
+            // now that their corners are known, the model comes down to
+            // stand on its lowest corner. Before the legend and the tab,
+            // which take their z from the cells; tilt has no halves or tiles.
+            int64_t lowest = std::numeric_limits<int64_t>::max();
+            for (size_t k = 0; k < kept; ++k) {
+                lowest = std::min(lowest, centreBottom(s, k));
+                for (int e = 0; e < kHexCorners; ++e) lowest = std::min(lowest, cornerBottom(s, k, e));
+            }
+            if (lowest > 0 && lowest != std::numeric_limits<int64_t>::max()) {
+                for (size_t k = 0; k < kept; ++k) {
+                    s.top[k] -= lowest;
+                    s.bottom[k] -= lowest;
+                }
+                for (int64_t& z : s.shapes.extra_z) z -= lowest;
+                s.floor_units -= lowest;
+            }
+        }
     }
     if (s.textures) {
         if (s.textures->relief_units * s.z_snap_mm < kMinFeltTextureReliefMm - 1e-9)

@@ -49,5 +49,23 @@ TEST(MirrorFloor, AMirroredModelStandsOnTheBedAndStatesTheMeshsHeight) {
     EXPECT_EQ(vj.dump().find("\"ok\":false"), std::string::npos) << vj.dump();
 }
 
+// Tilted tops mirror into the underside; once their corners are known the
+// model comes down to its lowest corner, and still reads back.
+TEST(MirrorFloor, ATiltedMirroredModelStandsOnItsLowestCorner) {
+    const auto dir = test::scratchDir();
+    test::writeText(dir / "band.csv", highBand());
+    const std::string model = (dir / "t.stl").string();
+    const auto r = test::runTsf("gen " + (dir / "band.csv").string() + " --mirror --tilt gradient --json -o " + model, dir);
+    ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out.substr(r.out.find('{')));
+    EXPECT_GT(j["scene"]["tilt"]["cells_tilted"].get<int>(), 0) << j["scene"]["tilt"].dump();
+    const Bounds b = meshBounds(readMesh(model));
+    EXPECT_EQ(b.min.z, 0.0);
+    EXPECT_NEAR(j["scene"]["size_mm"][2].get<double>(), b.max.z, 1e-4);
+    EXPECT_LT(j["scene"]["floor_mm"].get<double>(), 0.0);
+    const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json", dir);
+    EXPECT_EQ(v.exit_code, test::kExitOk) << v.out << v.err;
+}
+
 }  // namespace
 }  // namespace tsf

@@ -103,11 +103,14 @@ TEST(Tilt, CrossingTopsAreSplitAtTheCrossingAndVerify) {
     // Two rows of equal height whose tops lean opposite ways: every shared
     // edge between them crosses.
     for (Bottom bottom : {Bottom::Flat, Bottom::Mirrored}) {
-        // Built for tilted tops (level ones here: the field has no gradient),
-        // so a mirrored model keeps room below its bottoms as a tilted one does.
-        SceneParams p = test::smallParams(bottom);
-        p.tilt = TiltSource::Gradient;
-        Scene s = buildScene(fieldFromFunction(6, 2, [](int, int) { return 5.0; }), p);
+        Scene s = buildScene(fieldFromFunction(6, 2, [](int, int) { return 5.0; }), test::smallParams(bottom));
+        if (bottom == Bottom::Mirrored) {
+            // A mirrored model stands on the bed: give its bottoms room to
+            // lean down, as buildScene does until tilted tops are resolved.
+            constexpr int64_t kRoom = 5000;
+            for (size_t k = 0; k < s.keptCount(); ++k) s.top[k] += kRoom, s.bottom[k] += kRoom;
+            s.floor_units += kRoom;
+        }
         std::vector<PlaneSlope> slopes(s.keptCount());
         for (size_t k = 0; k < s.keptCount(); ++k) slopes[k] = {s.col[k] % 2 ? 0.3 : -0.3, s.col[k] % 2 ? -0.2 : 0.2};
         resolveTopShapes(s, slopes, 1.0, {});
