@@ -150,7 +150,9 @@ void checkOutputs(const GenCommandOptions& o, const ScadOptions& so) {
         outputs.push_back({keyPaths(o).first, "the model's key (--no-key leaves it out)"});
         outputs.push_back({keyPaths(o).second, "the model's braille key (--no-key leaves it out)"});
     }
-    checkOutputPaths({{o.gen.input, "the input"}}, outputs);
+    std::vector<NamedPath> inputs = {{o.gen.input, "the input"}};
+    if (!o.gen.class_names.empty()) inputs.push_back({o.gen.class_names, "--class-names"});
+    checkOutputPaths(inputs, outputs);
     if (o.force) return;
     if (so.write_parameter_sets && !o.scad.empty())
         refuseForeignFile(scad_paths[1], isTsfParameterSetFile, "the OpenSCAD parameter sets of --scad " + o.scad,
@@ -460,7 +462,9 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         timer.begin("drawing preview");
         if (halves) writeModelPreview(halvesSideBySide(*halves), o.preview, false);
         else if (tiles) writeModelPreview(tilesApart(*tiles), o.preview, false);
-        else writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored);
+        else
+            writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored, 1200, 800,
+                              field.input.categorical ? &scene : nullptr);
         summary.outputs.push_back({o.preview, halves ? "preview picture of the pieces as they print"
                                               : tiles ? "preview picture of the tiles, drawn apart"
                                                       : "preview picture"});

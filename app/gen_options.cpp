@@ -80,7 +80,9 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--bin", o.bin_size, "Points: hexagon centre spacing in data units (default: from --bins)")
         ->check(CLI::PositiveNumber)->group(in);
     cmd->add_option("--bins", o.bins,
-                    "Number of hexagon columns (points: default 30; rasters: default one per raster column, at most 1000)")
+                    "Number of hexagon columns (points: hexagons across the longer side of the points' extent, so N "
+                    "columns when it is wider than tall and fewer when taller, default 30; rasters: default one per "
+                    "raster column, at most 1000)")
         ->check(CLI::Range(1, 100000))->group(in);
     cmd->add_option_function<std::string>(
            "--band",
@@ -98,6 +100,11 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                     "--variable pr; GDAL's own name works as the input too: 'NETCDF:\"file.nc\":pr' (tsf info "
                     "lists them)")
         ->group(in);
+    cmd->add_flag("--ignore-georef", o.ignore_georef,
+                  "Rasters: ignore the file's geotransform and coordinate system and read the plain grid, one "
+                  "square pixel per value, with no ground size or scale (a rotated raster is otherwise resampled "
+                  "north-up; a longitude/latitude grid has its longitudes scaled)")
+        ->group(in);
     cmd->add_option("--sample", o.sample,
                     "Raster -> hexagons: auto (mode for a class map with a colour table, else mean) | mean (of the "
                     "pixels in a hexagon) | mode (their most common value) | nearest | bilinear")
@@ -111,6 +118,14 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                     "A class map's classes are ordered (soil depth classes, say), lowest first: codes or the file's "
                     "names, separated by commas; each class stands one even step of height above the one before. "
                     "Without it the classes stand at one height, told apart by texture")
+        ->group(in);
+    cmd->add_option("--class-names", o.class_names,
+                    "A class map's class names from a CSV file of code,name lines (a header line is skipped); they "
+                    "replace the file's own names for those codes")
+        ->check(CLI::ExistingFile)->group(in);
+    cmd->add_option("--class-groups", o.class_groups,
+                    "Join a class map's codes into classes a reader needs: LO-HI=NAME or CODE=NAME, separated by ; "
+                    "(e.g. \"21-24=Developed;41-43=Forest\"); each group becomes one class, coded LO")
         ->group(in);
     cmd->add_option("--classes", o.scene.class_textures.max_textures,
                     "A class map's textures: at most N (1-5: level, ridges east-west, dimples, ridges north-south, "

@@ -56,6 +56,7 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     j["cull"] = toString(s.params.cull);
     j["bottom"] = toString(s.params.bottom);
     if (s.params.bottom == Bottom::Mirrored) j["mirror_thickness_mm"] = s.zMm(s.mirror_thickness_units);
+    j["floor_mm"] = s.zMm(s.floor_units);  // the z of height 0 (mirrored: at or below the bed)
     j["one_pillar_per_value"] = s.one_to_one;
     if (s.params.cull == Cull::Concave)
         j["concave"] = {{"cells_convex_hull", s.cells_convex}, {"volume_saved_mm3", s.volume_saved_mm3}};
@@ -120,7 +121,11 @@ std::string formatSceneFacts(const Scene& s) {
         o << "  bottom    flat, base " << formatFixed(s.params.base_mm, 2) << " mm\n";
     else
         o << "  bottom    mirrored: every pillar " << formatFixed(s.zMm(s.mirror_thickness_units), 2)
-          << " mm thick; the underside shows the negated data\n";
+          << " mm thick; the underside shows the negated data"
+          << (s.floor_units < 0 ? "; the model stands on the bed, its lowest pillar's underside at z = 0: heights "
+                                  "count from " + formatFixed(-s.zMm(s.floor_units), 2) + " mm below the bed"
+                                : std::string())
+          << "\n";
     o << "  z snap    " << formatSignificant(s.z_snap_mm, 4) << " mm\n";
     if (s.y_scale != 1.0)
         o << "  aspect    true: the hexagons are stretched " << formatFixed(100.0 * (s.y_scale - 1.0), 1)
@@ -173,6 +178,7 @@ static std::string classesLine(const Scene& scene, const FieldInput& input) {
                                          : classes[k].texture + (classes[k].texture_shared ? ", shared" : "")) +
              ")";
     if (classes.size() > kListed) o += "; ... " + std::to_string(classes.size() - kListed) + " more in --json and the key";
+    if (const std::string b = backgroundSentence(classes); !b.empty()) o += "\n  background " + b + " " + backgroundRemedy(classes) + ".";
     return o + "\n";
 }
 
@@ -188,6 +194,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
                            {"depth_m", g->depth_m},
                            {"scale", g->east_west},
                            {"scale_north_south", g->north_south},
+                           {"hexagon_area_km2", g->hexagon_area_km2 > 0 ? nlohmann::json(g->hexagon_area_km2) : nlohmann::json(nullptr)},
                            {"longitude_scale", s.field->input.longitude_scale > 0
                                                    ? nlohmann::json(s.field->input.longitude_scale)
                                                    : nlohmann::json(nullptr)}};
@@ -197,7 +204,7 @@ nlohmann::json summaryJson(const GenSummary& s) {
             classes.push_back({{"code", c.code}, {"name", c.name.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.name)},
                                {"cells", c.cells}, {"height_mm", c.height_mm},
                                {"texture", c.texture.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.texture)},
-                               {"texture_shared", c.texture_shared}});
+                               {"texture_shared", c.texture_shared}, {"background", c.background}});
         j["classes"] = classes;
         j["class_order_given"] = !s.field->input.class_order.empty();
     } else {

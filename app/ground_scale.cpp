@@ -14,6 +14,12 @@ std::string groundLength(double m) {
     return m >= 10000 ? formatSignificant(m / 1000, 4) + " km" : formatSignificant(m, 4) + " m";
 }
 
+// An area for a reader: square kilometres, or hectares below one.
+std::string areaText(double km2) {
+    if (km2 >= 1) return "about " + scaleNumber(km2) + " square kilometres";
+    return "about " + formatSignificant(km2 * 100, 3) + " hectares";
+}
+
 }  // namespace
 
 std::optional<GroundScale> groundScale(const Scene& scene, const HexField& field) {
@@ -22,6 +28,7 @@ std::optional<GroundScale> groundScale(const Scene& scene, const HexField& field
     GroundScale g;
     g.width_m = in.ground_width_m;
     g.depth_m = in.ground_depth_m;
+    g.hexagon_area_km2 = in.hexagon_area_km2;
     const double across_m = field.pitch_data * in.metres_per_unit;  // one pitch on the ground
     g.east_west = across_m * 1000.0 / scene.pitch_mm;
     // Rows: a raster's own a pixel apart, a lattice's laid over the ground
@@ -44,6 +51,7 @@ std::string groundLine(const GroundScale& g, const FieldInput& in) {
                     scaleNumber(g.east_west) + " (1 mm on the model is " + groundLength(g.east_west / 1000) +
                     " on the ground)";
     if (std::abs(g.north_south / g.east_west - 1) > 1e-6) o += ", north-south 1 : " + scaleNumber(g.north_south);
+    if (g.hexagon_area_km2 > 0) o += "; each hexagon " + areaText(g.hexagon_area_km2);
     if (in.longitude_scale > 0)
         o += "; longitude and latitude: a degree of longitude counted as cos(mean latitude) = " +
              formatSignificant(in.longitude_scale, 4) + " of a degree of latitude";
@@ -56,6 +64,7 @@ std::string groundSentence(const GroundScale& g) {
                     groundLength(g.east_west / 1000) + " on the ground";
     if (std::abs(g.north_south / g.east_west - 1) > 1e-6)
         o += " from west to east, and 1 : " + scaleNumber(g.north_south) + " from south to north";
+    if (g.hexagon_area_km2 > 0) o += ". Each hexagon covers " + areaText(g.hexagon_area_km2) + " of ground";
     return o + ".";
 }
 

@@ -8,12 +8,16 @@
 #include <string>
 
 #include "gen/geometry/mesh.h"
+#include "gen/model/scene.h"
 
 namespace tsf::cli {
 
 /// Draws `mesh` to png_path (width x height pixels); `underside` adds the
 /// view from below. Throws tsf::OutputError when the file cannot be written.
+/// `classes` (may be null): the Scene of a class map, whose tops are then
+/// coloured by class (a distinct colour per class, commonest first) instead
+/// of by height, so classes standing at one height still differ.
 void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, int width_px = 1200,
-                       int height_px = 800);
+                       int height_px = 800, const Scene* classes = nullptr);
 
 }  // namespace tsf::cli

@@ -14,7 +14,7 @@ double printedHeightFraction(const Scene& scene, size_t k) {
     // The top the mesher builds at the cell's centre, above the floor (flat)
     // or above the top of a zero (mirrored): a cell without data is a pit
     // below 0, a cell under the orientation triangle stands its height higher.
-    const int64_t zero = scene.params.bottom == Bottom::Mirrored ? scene.mirror_thickness_units : scene.floor_units;
+    const int64_t zero = scene.params.bottom == Bottom::Mirrored ? scene.mirror_thickness_units + scene.floor_units : scene.floor_units;
     const int64_t units = scene.top[k] + markRaiseAtCentre(scene, k) - zero;
     return std::clamp(scene.zMm(units) / max_mm, -1.0, 2.0);
 }
@@ -86,7 +86,7 @@ HeightGrid meshRelief(const Scene& scene, const Mesh& mesh, ReliefInfo* info) {
     g.heights.assign(size_t(cols) * size_t(rows), 0.0f);
     const double max_mm = scene.mapping.max_height_mm;
     if (max_mm > 0) {
-        const int64_t zero = scene.params.bottom == Bottom::Mirrored ? scene.mirror_thickness_units : scene.floor_units;
+        const int64_t zero = scene.params.bottom == Bottom::Mirrored ? scene.mirror_thickness_units + scene.floor_units : scene.floor_units;
         const double side_mm = side_p * scene.pitch_mm;
         const std::vector<double> tops = topsOver(mesh, side_mm, cols, rows, -origin_i * side_mm, -origin_j * side_mm);
         for (size_t n = 0; n < tops.size(); ++n)

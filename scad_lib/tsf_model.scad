@@ -160,7 +160,9 @@ function tsf_mirrored_spans(heights, base_units) =
 //                 underside), so a finger never takes it for the lowest value;
 //     undef     - no pillar (a cell outside the model).
 //   Heights: flat bottom: z from 0 to base_mm + height; mirrored: see
-//   tsf_mirrored_spans(). All heights are rounded to z_step_mm.
+//   tsf_mirrored_spans(), of the heights less the least height of a cell
+//   with data, so the model stands on z = 0. All heights are rounded to
+//   z_step_mm.
 //   faces are the orientation marks tsf wrote (tsf_marks.scad); each replaces
 //   the hexagons of the cells it covers, the triangle raised by mark_height_mm.
 // Arguments:
@@ -179,6 +181,8 @@ function tsf_mirrored_spans(heights, base_units) =
 //            none: every top a level hexagon. Default: [].
 //   min_thickness_units = mirrored: the slab is at least this many z steps thick (tsf writes the
 //            thickness its tilted corners need). Default: 0.
+//   mirror_room_units = mirrored: z steps kept below the lowest cell with data for shaped
+//            tops (tsf writes what its tops need). Default: 0.
 // Example(echo):
 //   m = tsf_model([[1, 2], [undef, "nodata"]], cell_mm=10, max_height_mm=10, base_mm=2,
 //                 transfer="linear", baseline=0, value_max=2, z_step_mm=0.5, mirrored=false);
@@ -186,7 +190,7 @@ function tsf_mirrored_spans(heights, base_units) =
 //   // ECHO: [[[0, 14], [0, 24]], [undef, [0, 2]]]
 function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear", baseline = 0, value_max,
                    z_step_mm = 0.001, mirrored = false, faces = [], mark_height_mm = 1, shapes = [],
-                   min_thickness_units = 0) =
+                   min_thickness_units = 0, mirror_room_units = 0) =
     assert(is_list(values) && len(values) >= 1 && is_list(values[0]) && len(values[0]) >= 1,
            "tsf_model: values must be a list of rows (north row first), each a list of cell values")
     assert(_tsf_is_finite(cell_mm) && cell_mm > 0, str("tsf_model: cell_mm must be a number > 0 (mm), got ", cell_mm))
@@ -208,6 +212,8 @@ function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear",
            "tsf_model: shapes must be [] or one row per row of values (the tops written by tsf)")
     assert(_tsf_is_count(min_thickness_units),
            str("tsf_model: min_thickness_units must be a whole number >= 0, got ", min_thickness_units))
+    assert(_tsf_is_count(mirror_room_units),
+           str("tsf_model: mirror_room_units must be a whole number >= 0, got ", mirror_room_units))
     let(rows = len(values), cols = len(values[0]),
         bad_row = [for (r = [0:rows - 1]) if (!is_list(values[r]) || len(values[r]) != cols) r])
     assert(len(bad_row) == 0,
@@ -220,9 +226,16 @@ function tsf_model(values, cell_mm, max_height_mm, base_mm, transfer = "linear",
                ") must be a finite number, \"nodata\" or undef, got ", bad[0][2]))
     let(present = [for (r = [0:rows - 1]) for (c = [0:cols - 1]) if (!is_undef(values[r][c])) 1])
     assert(len(present) > 0, "tsf_model: values has no present cell (every entry is undef): nothing to model")
-    let(heights = [for (row = values)
-                       [for (v = row) is_undef(v) ? undef
-                                      : round(_tsf_height_mm(v, transfer, baseline, value_max, max_height_mm) / z_step_mm)]],
+    let(raw = [for (row = values)
+                   [for (v = row) is_undef(v) ? undef
+                                  : round(_tsf_height_mm(v, transfer, baseline, value_max, max_height_mm) / z_step_mm)]],
+        // Mirrored, the model stands on z = 0: every height less the least
+        // height of a cell with data, but for the room shaped tops need
+        // (tsf's Scene: floor_units).
+        data_heights = [for (r = [0:rows - 1]) for (c = [0:cols - 1]) if (is_num(values[r][c])) raw[r][c]],
+        shift = mirrored && len(data_heights) > 0 ? max(0, min(data_heights) - mirror_room_units) : 0,
+        heights = [for (r = [0:rows - 1]) [for (c = [0:cols - 1])
+                       is_undef(raw[r][c]) ? undef : is_num(values[r][c]) ? max(0, raw[r][c] - shift) : raw[r][c]]],
         base_units = round(base_mm / z_step_mm),
         plain = mirrored ? _tsf_mirrored_spans(heights, base_units, min_thickness_units) : tsf_flat_spans(heights, base_units),
         // Same rule as tsf's Scene (nodata_pit_units): half the base, at most 1 mm, at least one step;

@@ -62,7 +62,10 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const ColumnGrid& 
     const double z_below = (have_mesh ? b.min.z : 0.0) - kRayStartClearanceMm;
 
     const bool mirrored = scene.params.bottom == Bottom::Mirrored;
-    const double top_zero_mm = scene.zMm(mirrored ? scene.mirror_thickness_units : scene.floor_units);
+    // Height 0 on the top and, mirrored, on the underside (floor_units: at
+    // or below the bed, where a mirrored model's lowest cell stands).
+    const double top_zero_mm = scene.zMm(mirrored ? scene.mirror_thickness_units + scene.floor_units : scene.floor_units);
+    const double bottom_zero_mm = scene.zMm(mirrored ? scene.floor_units : 0);
     const ValueMapping& map = scene.mapping;
     const bool has_range = map.value_max > map.baseline;
 
@@ -125,7 +128,7 @@ ReadbackResult readBack(const Mesh& mesh, const Scene& scene, const ColumnGrid& 
         c.value_error = nan;
         const bool carries_data = top || mirrored;
         if (hit && carries_data && has_range && !std::isnan(c.value)) {
-            const double h = top ? c.measured_mm - top_zero_mm : c.measured_mm;
+            const double h = top ? c.measured_mm - top_zero_mm : c.measured_mm - bottom_zero_mm;
             c.value_read = map.valueAt(h);
             c.value_error = c.value_read - std::clamp(c.value, map.baseline, map.value_max);
         }

@@ -35,6 +35,9 @@ struct FieldInput {
     double ground_width_m = 0, ground_depth_m = 0;
     double metres_per_unit = 0;
     double longitude_scale = 0;
+    /// Points binned on a projection tsf chose: the ground area of one
+    /// hexagon, km^2 (0 otherwise).
+    double hexagon_area_km2 = 0;
 };
 
 /// Counts `values` (NaN = no data) and takes min, max and mean of the others.

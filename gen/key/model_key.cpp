@@ -131,6 +131,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
                         (classes[k].cells == 1 ? " hexagon" : " hexagons");
             out.push_back(list + ".");
         }
+        if (const std::string b = backgroundSentence(classes); !b.empty()) out.push_back(b);
     } else {
         if (std::isfinite(lo))
             values += "The values go from " + num(lo) + " to " + num(hi) + u + ".";
@@ -173,6 +174,9 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
         size += " on a flat base " + mm(s.params.base_mm) + " thick.";
     else
         size += ". The underside mirrors the top: seen from below, high values are deep pockets.";
+    if (s.params.bottom == Bottom::Mirrored && s.floor_units < 0)
+        size += " The lowest pillar stands on the table; heights are counted from " + mm(-s.zMm(s.floor_units)) +
+                " below it.";
     if (!facts.ground.empty()) size += " " + facts.ground;
     out.push_back(size);
     if (s.halves)

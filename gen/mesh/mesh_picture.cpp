@@ -52,7 +52,8 @@ double niceLength(double extent_mm) {
 }
 
 // Draws one view into the rectangle [x0, x0 + w) x [y0, y0 + h) of img.
-void drawView(RgbImage& img, int x0, int y0, int w, int h, const Mesh& mesh, const Bounds& b, bool from_below) {
+void drawView(RgbImage& img, int x0, int y0, int w, int h, const Mesh& mesh, const Bounds& b, bool from_below,
+              const MeshPictureOptions& opts) {
     const Camera cam = camera(from_below);
     const std::string title = from_below ? "underside, from below: east left" : "top, seen from the south";
     drawText(img, x0 + kMarginPx, y0 + kMarginPx / 2, title, kFontScale, kInk);
@@ -79,6 +80,11 @@ void drawView(RgbImage& img, int x0, int y0, int w, int h, const Mesh& mesh, con
         const Vec3 n = unit(cross(sub(bb, a), sub(c, a)));
         if (dot(n, cam.toward) <= 0) continue;  // faces away (the mesh is closed)
         const double shade = 0.45 + 0.55 * std::max(0.0, dot(n, light));
+        // A top's own colour (a class), when the caller gives one.
+        uint32_t own = 0;
+        const bool has_own = opts.top_colour && n.z > 0.5 &&
+                             opts.top_colour((a.x + bb.x + c.x) / 3, (a.y + bb.y + c.y) / 3, own);
+        const Vec3 own_rgb{double((own >> 16) & 0xff), double((own >> 8) & 0xff), double(own & 0xff)};
         double sx[3], sy[3], d[3], z[3];
         const Vec3* v[3] = {&a, &bb, &c};
         for (int k = 0; k < 3; ++k) {
@@ -103,7 +109,7 @@ void drawView(RgbImage& img, int x0, int y0, int w, int h, const Mesh& mesh, con
                 double& zb = depth[size_t(py - y0) * size_t(w) + size_t(px - x0)];
                 if (pd <= zb) continue;
                 zb = pd;
-                const Vec3 col = heightColour((w0 * z[0] + w1 * z[1] + w2 * z[2] - b.min.z) / z_range);
+                const Vec3 col = has_own ? own_rgb : heightColour((w0 * z[0] + w1 * z[1] + w2 * z[2] - b.min.z) / z_range);
                 img.set(px, py,
                         (uint32_t(std::lround(col.x * shade)) << 16) | (uint32_t(std::lround(col.y * shade)) << 8) |
                             uint32_t(std::lround(col.z * shade)));
@@ -141,12 +147,12 @@ RgbImage drawMeshPicture(const Mesh& mesh, const MeshPictureOptions& opts) {
     if (mesh.positions.empty() || mesh.triangles.empty()) return img;
     const Bounds b = meshBounds(mesh);
     if (!opts.underside) {
-        drawView(img, 0, 0, img.w, img.h, mesh, b, false);
+        drawView(img, 0, 0, img.w, img.h, mesh, b, false, opts);
         return img;
     }
     const int half = img.w / 2;
-    drawView(img, 0, 0, half, img.h, mesh, b, false);
-    drawView(img, half, 0, img.w - half, img.h, mesh, b, true);
+    drawView(img, 0, 0, half, img.h, mesh, b, false, opts);
+    drawView(img, half, 0, img.w - half, img.h, mesh, b, true, opts);
     img.line(half, kMarginPx, half, img.h - kMarginPx, 1, 0xc0c0c0);
     return img;
 }

@@ -11,6 +11,8 @@
 // finger reads from underneath.
 #pragma once
 
+#include <functional>
+
 #include "gen/geometry/mesh.h"
 #include "gen/util/rgb_image.h"
 
@@ -20,6 +22,10 @@ struct MeshPictureOptions {
     int width_px = 1200;   ///< whole picture, both views
     int height_px = 800;
     bool underside = false;  ///< add the view from below
+    /// The colour (0xRRGGBB) of an upward-facing surface at (x, y) mm, asked
+    /// once per triangle at its centre (a class map's class); false, or no
+    /// function: coloured by height.
+    std::function<bool(double x_mm, double y_mm, uint32_t& rgb)> top_colour;
 };
 
 /// Background colour of the picture (0xRRGGBB); the model never uses it.

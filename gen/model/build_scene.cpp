@@ -4,7 +4,11 @@
 //   h_mm      = mapping.heightMm(value)              (0 for no-data cells)
 //   h_units   = snapUnits(h_mm, z_snap)
 //   flat:     bottom = 0,        top = snapUnits(base_mm) + h_units
-//   mirrored: bottom = h_units,  top = bottom + T,
+//   mirrored: bottom = h_units - S,  top = bottom + T,
+//             S = the least h_units of the kept cells with data (the model
+//                 stands on z = 0; no-data cells count as 0 after it),
+//                 less a class texture's relief (tilted tops: the
+//                 lowest corner once they are resolved),
 //             T = max |h_units(a) - h_units(b)| over neighbouring kept cells
 //                 + snapUnits(base_mm)
 #include "gen/model/build_scene.h"
@@ -296,6 +300,26 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
             keep.swap(concave);
         }
     }
+    // A mirrored model stands on z = 0: its lowest data cell's underside is
+    // the bed, not the height of its value above a floor it does not have
+    // (a mirrored band of values 7000 to 25000 would float 2 mm up). The
+    // shift is taken over every cell the culling keeps, before a tile takes
+    // its share, so the tiles of one model share it; floor_units records
+    // it (the z of height 0, at or below the bed).
+    // Tops shaped below their level (class textures' dimples and ridges)
+    // mirror into the underside: their relief is kept below the lowest
+    // cell. Tilted tops keep the whole height below them until their
+    // corners are resolved, and come down to their lowest corner then.
+    int64_t mirror_shift = 0;
+    if (params.bottom == Bottom::Mirrored) {
+        mirror_shift = std::numeric_limits<int64_t>::max();
+        for (size_t idx = 0; idx < n; ++idx)
+            if (keep[idx] && !std::isnan(field.values[idx])) mirror_shift = std::min(mirror_shift, h_units[idx]);
+        if (mirror_shift == std::numeric_limits<int64_t>::max() || params.tilt != TiltSource::None) mirror_shift = 0;
+        if (s.textures) mirror_shift = std::max<int64_t>(0, mirror_shift - s.textures->relief_units);
+        for (size_t idx = 0; idx < n; ++idx)
+            if (!std::isnan(field.values[idx])) h_units[idx] = std::max<int64_t>(0, h_units[idx] - mirror_shift);
+    }
     if (!params.tile_cells.empty()) {
         // One tile of a tiled model: its share of the cells the whole keeps
         // (gen/model/features/tiles.h made it one piece).
@@ -343,7 +367,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
                 if (other >= 0) max_step = std::max<int64_t>(max_step, std::llabs(h - h_units[size_t(g.index(nc, nr))]));
             }
         }
-        s.floor_units = 0;
+        s.floor_units = -mirror_shift;
         s.mirror_thickness_units = max_step + base_units;
         const int64_t flat_pit = s.nodata_pit_units;
         // A pit is cut from both faces of the slab: leave the cell at least
@@ -481,6 +505,25 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         const bool any = params.tilt != TiltSource::None || s.textures ||
                          std::any_of(structural.begin(), structural.end(), [](uint8_t b) { return b != 0; });
         if (any) resolveTopShapes(s, slopes, s.textures ? 1.0 : params.steepness, structural, centre_dz);
+        if (any && params.bottom == Bottom::Mirrored && params.tilt != TiltSource::None) {
+            // Tilted mirrored tops kept the whole height below them (above);
+            // now that their corners are known, the model comes down to
+            // stand on its lowest corner. Before the legend and the tab,
+            // which take their z from the cells; tilt has no halves or tiles.
+            int64_t lowest = std::numeric_limits<int64_t>::max();
+            for (size_t k = 0; k < kept; ++k) {
+                lowest = std::min(lowest, centreBottom(s, k));
+                for (int e = 0; e < kHexCorners; ++e) lowest = std::min(lowest, cornerBottom(s, k, e));
+            }
+            if (lowest > 0 && lowest != std::numeric_limits<int64_t>::max()) {
+                for (size_t k = 0; k < kept; ++k) {
+                    s.top[k] -= lowest;
+                    s.bottom[k] -= lowest;
+                }
+                for (int64_t& z : s.shapes.extra_z) z -= lowest;
+                s.floor_units -= lowest;
+            }
+        }
     }
     if (s.textures) {
         if (s.textures->relief_units * s.z_snap_mm < kMinFeltTextureReliefMm - 1e-9)

@@ -190,7 +190,10 @@ struct Scene {
     double z_snap_mm = 0.001;
     SceneParams params;     ///< as given (after validation)
     ValueMapping mapping;
-    int64_t floor_units = 0;  ///< flat: z of height 0 (= base); mirrored: 0
+    /// The z of height 0: flat, the base's top; mirrored, at or below the bed
+    /// (minus the least height of the kept cells with data, so the model
+    /// stands on z = 0 and a bottom at z is height z - floor_units).
+    int64_t floor_units = 0;
 
     // Kept cells, struct of arrays, ordered by (row, col).
     std::vector<int32_t> col;

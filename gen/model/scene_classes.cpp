@@ -17,9 +17,15 @@ std::vector<SceneClass> sceneClasses(const Scene& s, const std::vector<RasterCla
         const size_t rank = size_t(s.value[k]);
         c.code = order.empty() ? s.value[k] : rank >= 1 && rank <= order.size() ? order[rank - 1] : NAN;
         ++c.cells;
+        const int32_t col = s.col[k], row = s.row[k];
+        if (col == 0 || row == 0 || col == s.grid.cols - 1 || row == s.grid.rows - 1) ++c.border_cells;
         // As the cell stands: its top above the floor (mirrored: its bottom).
         c.height_mm = s.zMm(s.params.bottom == Bottom::Mirrored ? s.bottom[k] : s.top[k] - s.floor_units);
     }
+    int64_t border = 0;
+    for (const auto& [value, c] : by_code) border += c.border_cells;
+    for (auto& [value, c] : by_code)
+        c.background = by_code.size() > 1 && border > 0 && double(c.border_cells) > kBackgroundBorderShare * double(border);
     std::vector<SceneClass> out;
     for (auto& [value, c] : by_code) {
         for (const RasterClass& n : names)
@@ -38,6 +44,36 @@ std::vector<SceneClass> sceneClasses(const Scene& s, const std::vector<RasterCla
         out.swap(by_texture);
     }
     return out;
+}
+
+const SceneClass* backgroundClass(const std::vector<SceneClass>& classes) {
+    for (const SceneClass& c : classes)
+        if (c.background) return &c;
+    return nullptr;
+}
+
+std::string backgroundSentence(const std::vector<SceneClass>& classes) {
+    const SceneClass* b = backgroundClass(classes);
+    if (!b) return "";
+    int64_t border = 0, cells = 0;
+    for (const SceneClass& c : classes) {
+        border += c.border_cells;
+        cells += c.cells;
+    }
+    const auto percent = [](int64_t part, int64_t whole) {
+        return std::to_string(int(std::lround(100.0 * double(part) / double(std::max<int64_t>(1, whole))))) + " percent";
+    };
+    return "Class " + className(*b) + " rings the edge of the map (" + percent(b->border_cells, border) +
+           " of the edge, " + percent(b->cells, cells) + " of the model): it is most likely a background, such as the "
+           "area outside a survey, rather than a class of interest.";
+}
+
+std::string backgroundRemedy(const std::vector<SceneClass>& classes) {
+    const SceneClass* b = backgroundClass(classes);
+    if (!b) return "";
+    return "If class " + formatSignificant(b->code) + " is a background, --nodata " + formatSignificant(b->code) +
+           " leaves it out (its hexagons become no-data pits or are culled); if it is a real class (sea round an "
+           "island), --class-names FILE names it";
 }
 
 std::string className(const SceneClass& c) {

@@ -22,7 +22,16 @@ struct SceneClass {
     /// told apart by texture; "" when they stand at heights.
     std::string texture;
     bool texture_shared = false;  ///< one of the rarer classes that share the last texture
+    int64_t border_cells = 0;     ///< of its cells, those on the grid's edge
+    /// It holds most of the grid's edge (kBackgroundBorderShare of its data
+    /// cells, and more than any other class): most likely a background (the
+    /// area outside a survey, sea round an island), not a class of interest.
+    bool background = false;
 };
+
+/// The share of the grid edge's data cells a class must hold to be named a
+/// background: more than half (so at most one class is).
+inline constexpr double kBackgroundBorderShare = 0.5;
 
 /// Every class the Scene's data cells hold, from the lowest, with its name
 /// from `names` (the file's, gen/field/raster.h) where it has one. With
@@ -32,6 +41,16 @@ struct SceneClass {
 /// order the textures are handed out in.
 std::vector<SceneClass> sceneClasses(const Scene& scene, const std::vector<RasterClass>& names,
                                      const std::vector<double>& order = {});
+
+/// The background class (SceneClass::background) among `classes`, or null.
+const SceneClass* backgroundClass(const std::vector<SceneClass>& classes);
+
+/// One sentence for the summary and the key on a background class: which,
+/// and how much of the edge and of the model; "" without one.
+std::string backgroundSentence(const std::vector<SceneClass>& classes);
+
+/// What to do about it, for the summary (command-line options); "" without one.
+std::string backgroundRemedy(const std::vector<SceneClass>& classes);
 
 /// "11 Open water" or "11" (no name): how a person is told a class.
 std::string className(const SceneClass& c);

@@ -81,13 +81,14 @@ const Module& module() {
     return m;
 }
 
-Raster call(const std::string& path, const std::string_view* bytes, int band, const std::string& variable) {
+Raster call(const std::string& path, const std::string_view* bytes, int band, const std::string& variable,
+            bool ignore_georef) {
     const Module& m = module();
     if (!m.read)
         throw std::runtime_error(path + ": this raster is read through GDAL, and tsf's GDAL module " + m.problem);
     Raster r;
     GdalModuleError e;
-    const GdalCall c{&path, bytes, &r, &e, band, &variable};
+    const GdalCall c{&path, bytes, &r, &e, band, &variable, ignore_georef};
     const int status = m.read(&c);
     if (status == kGdalInputError) throw InputError(e.path, e.line, e.column, e.detail);
     if (status != kGdalOk) throw std::runtime_error(path + ": GDAL failed: " + e.detail);
@@ -96,12 +97,13 @@ Raster call(const std::string& path, const std::string_view* bytes, int band, co
 
 }  // namespace
 
-Raster readGdalRaster(const std::string& path, int band, const std::string& variable) {
-    return call(path, nullptr, band, variable);
+Raster readGdalRaster(const std::string& path, int band, const std::string& variable, bool ignore_georef) {
+    return call(path, nullptr, band, variable, ignore_georef);
 }
 
-Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band, const std::string& variable) {
-    return call(path, &bytes, band, variable);
+Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band, const std::string& variable,
+                       bool ignore_georef) {
+    return call(path, &bytes, band, variable, ignore_georef);
 }
 
 bool isGdalDatasetName(const std::string& path) {

@@ -23,7 +23,14 @@
 //     of the smaller side, so the model keeps the ground's aspect;
 //     Raster::cell_size is that side, in the CRS's units (degrees of
 //     latitude for a geographic CRS);
-//   - a rotated geotransform is read as north-up (a fact says so);
+//   - a rotated or sheared geotransform is resampled north-up in the CRS's
+//     coordinates (nearest neighbour, so values and classes stay exact):
+//     square pixels of the source pixel's ground area, no data outside the
+//     raster's own outline; a fact gives the raster's sides on the ground
+//     and the bearing its top edge faced; the ground size is the north-up
+//     box the model shows;
+//   - ignore_georef (--ignore-georef): the geotransform and CRS are not
+//     read; the plain grid, pixels square, no ground size;
 //   - a raster larger than 4 million values (or 20 000 a side) after that is
 //     read DECIMATED: both sides divided by the smallest whole factor that
 //     fits, each value the mean of the pixels with data in its block (the
@@ -54,7 +61,10 @@ namespace tsf {
 /// rasters; GDAL's subdatasets) by name; "" takes the only one, and a file
 /// of several without one is an InputError listing them. `path` may also be
 /// GDAL's own name of a variable: NETCDF:"file.nc":pr.
-Raster readGdalRaster(const std::string& path, int band = 1, const std::string& variable = "");
+/// `ignore_georef` reads the plain grid: square pixels of one unit, no CRS,
+/// no ground size (--ignore-georef).
+Raster readGdalRaster(const std::string& path, int band = 1, const std::string& variable = "",
+                      bool ignore_georef = false);
 
 /// Transforms points in place from CRS `from` to `to` (anything GDAL reads
 /// as user input: "EPSG:4326", a PROJ string, WKT) with PROJ, x east and y
@@ -66,7 +76,8 @@ std::string transformCoordinates(const std::string& from, const std::string& to,
 /// Same on bytes in memory (GDAL's /vsimem/); `path` names them in messages
 /// and tells GDAL the extension. Files that need a sidecar (.hdr, .prj)
 /// must be read with readGdalRaster.
-Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band = 1, const std::string& variable = "");
+Raster parseGdalRaster(std::string_view bytes, const std::string& path, int band = 1, const std::string& variable = "",
+                       bool ignore_georef = false);
 
 /// True when path is GDAL's name of a dataset inside a file rather than a
 /// file name: DRIVER:"file":variable or DRIVER:file:variable (NETCDF:,

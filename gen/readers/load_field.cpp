@@ -7,15 +7,20 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "gen/readers/class_labels.h"
 #include "gen/readers/point_binning.h"
 #include "gen/readers/point_projection.h"
 #include "gen/readers/point_reader.h"
 #include "gen/readers/raster_reader.h"
 #include "gen/field/resample.h"
+#include "gen/util/file_bytes.h"
 #include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
+
+// A class-names CSV is a few lines per class: far below this.
+constexpr int64_t kMaxClassNamesBytes = int64_t(16) << 20;
 
 // Values GIS tools and loggers write for "no data"; a raster whose smallest
 // value is one of them almost certainly means it as no data.
@@ -106,9 +111,14 @@ HexField loadField(const FieldLoadOptions& o) {
                          "--points x=COL,y=COL");
     if (!o.points.empty() && !o.class_order.empty())
         throw InputError("--class-order is for class maps; points are counted, summed or averaged into hexagons");
+    if (!o.points.empty() && (!o.class_names.empty() || !o.class_groups.empty()))
+        throw InputError(std::string(o.class_names.empty() ? "--class-groups" : "--class-names") +
+                         " is for class maps; points are counted, summed or averaged into hexagons");
     if (!o.points.empty() && o.categorical)
         throw InputError("--categorical is for rasters of class codes; points are counted, summed or averaged into "
                          "hexagons (--aggregate)");
+    if (!o.points.empty() && o.ignore_georef)
+        throw InputError("--ignore-georef is for rasters; for points give --project none to use x and y as they are");
     if (!o.points.empty()) {
         PointColumns cols = parsePointColumns(o.points);
         cols.delimiter = delimiter;
@@ -118,10 +128,21 @@ HexField loadField(const FieldLoadOptions& o) {
         b.bin_size = o.bin_size;
         b.hex_cols = o.bins;
         PointTable points = table;
-        const std::string projected = projectPoints(points, parseProjection(o.project), o.crs);
+        double metres_per_unit = 0;
+        const std::string projected = projectPoints(points, parseProjection(o.project), o.crs, &metres_per_unit);
         HexField f = binPoints(points, b);
         f.source = o.input;
         f.input.kind = "points";
+        // (All points at one place give one hexagon of an arbitrary size: no ground to state.)
+        if (metres_per_unit > 0 && (f.grid.cellCount() > 1 || o.bin_size > 0)) {
+            // The ground the lattice covers (its bounding box) and each hexagon's
+            // area: a count per hexagon is then a density a reader can use.
+            const double pitch_m = f.pitch_data * metres_per_unit;
+            f.input.metres_per_unit = metres_per_unit;
+            f.input.ground_width_m = pitch_m * (double(f.grid.cols) + (f.grid.rows > 1 ? 0.5 : 0.0));
+            f.input.ground_depth_m = pitch_m * (3.0 * double(f.grid.rows) + 1.0) / (2.0 * kSqrt3);
+            f.input.hexagon_area_km2 = pitch_m * pitch_m * kSqrt3 / 2.0 / 1e6;
+        }
         describeValues(table.weight, f.input);
         f.input.values = int64_t(table.size());
         if (!projected.empty()) f.how += "; " + projected;
@@ -132,7 +153,12 @@ HexField loadField(const FieldLoadOptions& o) {
     ro.decimal = o.decimal_comma ? DecimalMark::Comma : DecimalMark::Detect;
     ro.band = o.band;
     ro.variable = o.variable;
+    ro.ignore_georef = o.ignore_georef;
     Raster raster = readRaster(o.input, ro);
+    if (o.ignore_georef) {  // the plain grid, also of formats that carry a cell size (ESRI ASCII)
+        raster.metres_per_unit = 0;
+        raster.longitude_scale = 0;
+    }
     if (o.categorical && !raster.categorical) {
         raster.categorical = true;
         raster.facts.push_back({"values", "classes (--categorical)"});
@@ -144,6 +170,23 @@ HexField loadField(const FieldLoadOptions& o) {
                 v = NAN;
                 ++nodata_cells;
             }
+    if ((!o.class_names.empty() || !o.class_groups.empty()) && !raster.categorical)
+        throw InputError(std::string(o.class_names.empty() ? "--class-groups" : "--class-names") + " is for class maps: the values of " +
+                         o.input + " are measurements (give --categorical if they are class codes)");
+    if (!o.class_names.empty()) {
+        const std::vector<RasterClass> names = parseClassNames(readFileBytes(o.class_names, kMaxClassNamesBytes), o.class_names);
+        raster.classes = mergeClassNames(raster.classes, names);
+        raster.facts.push_back({"class names", std::to_string(names.size()) + " from " + o.class_names + " (--class-names)"});
+    }
+    if (!o.class_groups.empty()) {
+        const std::vector<ClassGroup> groups = parseClassGroups(o.class_groups);
+        const int64_t joined = applyClassGroups(raster.values, raster.classes, groups);
+        std::string list;
+        for (const ClassGroup& g : groups)
+            list += (list.empty() ? "" : "; ") + formatSignificant(g.lo) + (g.hi > g.lo ? " to " + formatSignificant(g.hi) : "") +
+                    " as " + g.name;
+        raster.facts.push_back({"class groups", list + " (--class-groups; " + std::to_string(joined) + " values joined)"});
+    }
     FieldInput input;
     input.kind = raster.kind;
     input.cols = raster.cols;

@@ -32,6 +32,9 @@ struct FieldLoadOptions {
     int bins = 0;               ///< target number of hex columns (points and rasters); 0 = default
     int band = 1;               ///< rasters GDAL reads: which band (1-based)
     std::string variable;       ///< rasters GDAL reads: which variable of a file with several ("" = the only one)
+    /// Rasters: ignore the file's georeference (geotransform, CRS, ground
+    /// size) and read the plain grid, square pixels (--ignore-georef).
+    bool ignore_georef = false;
     /// raster -> hexes: auto (mode for class codes, Raster::categorical, else
     /// mean) | mean | mode | nearest | bilinear
     std::string sample = "auto";
@@ -44,6 +47,12 @@ struct FieldLoadOptions {
     /// height above the one before (the values become the ranks 1..N).
     /// Every class the model holds must be listed. Class maps only.
     std::string class_order;
+    /// A CSV of code,name naming a class map's classes (over the file's own
+    /// names; gen/readers/class_labels.h). "" = none.
+    std::string class_names;
+    /// "21-24=Developed;41-43=Forest": codes joined into one class each,
+    /// named (gen/readers/class_labels.h). "" = none. Class maps only.
+    std::string class_groups;
     std::string delimiter;      ///< CSV delimiter: "," ";" "tab" "space" (or the character); "" = detect
     bool decimal_comma = false; ///< grid CSV: "1,5" is 1.5 (default: detected, gen/readers/decimal_mark.h)
     std::optional<double> nodata;  ///< rasters: this value means "no data" (e.g. -9999)

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "gen/field/raster.h"
 #include "gen/readers/gdal_reader.h"
 #include "gen/util/error.h"
 #include "gen/util/number_format.h"
@@ -75,6 +76,64 @@ double areaDistortion(const std::vector<double>& lon, const std::vector<double>&
     return hi > 0 && lo > 0 ? hi / lo - 1 : 0.0;
 }
 
+/// Where lon/lat points lie on the sphere: their spherical mean (the
+/// normalised sum of their unit vectors; a pole whatever the longitudes
+/// given there), the largest angle from it to a point, and the middle of
+/// their longitudes unwrapped across the antimeridian (the largest gap
+/// between sorted longitudes is where the map is cut).
+struct SphereExtent {
+    double lat0 = 0, lon0 = 0;  ///< the spherical mean, degrees
+    double max_angle_deg = 0;   ///< the farthest point from it, degrees of arc
+    double lon_middle = 0;      ///< the middle of the unwrapped longitudes, in [-180, 180)
+    double lon_span = 0;        ///< their span, degrees
+};
+
+// Below this length per point the sum of the unit vectors has no direction
+// (points spread evenly round the globe), and below this share of its
+// length its horizontal part has none (a mean at a pole): both far above the
+// rounding of a sum of unit vectors, far below any real spread.
+constexpr double kNoMeanPerPoint = 1e-9;
+constexpr double kAtPole = 1e-12;
+
+SphereExtent sphereExtent(const std::vector<double>& lon, const std::vector<double>& lat) {
+    SphereExtent e;
+    double sx = 0, sy = 0, sz = 0;
+    for (size_t k = 0; k < lon.size(); ++k) {
+        const double cl = std::cos(lat[k] * kDeg);
+        sx += cl * std::cos(lon[k] * kDeg);
+        sy += cl * std::sin(lon[k] * kDeg);
+        sz += std::sin(lat[k] * kDeg);
+    }
+    const double norm = std::sqrt(sx * sx + sy * sy + sz * sz);
+    // Points that cancel out (spread evenly round the globe) have no mean: the
+    // farthest-angle test below then sends them to the world projection.
+    if (norm > kNoMeanPerPoint * double(lon.size())) {
+        e.lat0 = std::asin(std::clamp(sz / norm, -1.0, 1.0)) / kDeg;
+        e.lon0 = std::hypot(sx, sy) > kAtPole * norm ? std::atan2(sy, sx) / kDeg : 0.0;
+        for (size_t k = 0; k < lon.size(); ++k) {
+            const double cl = std::cos(lat[k] * kDeg);
+            const double dot = (cl * std::cos(lon[k] * kDeg) * sx + cl * std::sin(lon[k] * kDeg) * sy +
+                                std::sin(lat[k] * kDeg) * sz) / norm;
+            e.max_angle_deg = std::max(e.max_angle_deg, std::acos(std::clamp(dot, -1.0, 1.0)) / kDeg);
+        }
+    } else {
+        e.max_angle_deg = 180;
+    }
+    std::vector<double> sorted = lon;
+    for (double& v : sorted) v = v >= 180 ? v - 360 : v;  // 180 and -180 are one meridian
+    std::sort(sorted.begin(), sorted.end());
+    double gap = sorted.front() + 360 - sorted.back(), start = sorted.front();  // the gap across the antimeridian
+    for (size_t k = 1; k < sorted.size(); ++k)
+        if (sorted[k] - sorted[k - 1] > gap) {
+            gap = sorted[k] - sorted[k - 1];
+            start = sorted[k];
+        }
+    e.lon_span = 360 - gap;
+    e.lon_middle = start + e.lon_span / 2;
+    if (e.lon_middle >= 180) e.lon_middle -= 360;
+    return e;
+}
+
 std::string distortionText(double d) {
     return "area distortion at most " + formatFixed(100 * d, 1) + " %" +
            (d < 0.02 ? " (equal-area: a count per hexagon is a density)" : " (a count per hexagon is not a density)");
@@ -97,7 +156,9 @@ bool looksLikeLonLat(const PointTable& p) {
            nameIs(p.y_name, {"lat", "latitude", "lat_deg", "latitude_deg", "y_lat"}) && inRange(p);
 }
 
-std::string projectPoints(PointTable& p, const ProjectionChoice& projection, const std::string& crs) {
+std::string projectPoints(PointTable& p, const ProjectionChoice& projection, const std::string& crs,
+                          double* metres_per_unit) {
+    if (metres_per_unit) *metres_per_unit = 0;
     if (projection.kind == Projection::None || p.size() == 0) return "";
     std::string how;
     if (!crs.empty()) {
@@ -107,10 +168,19 @@ std::string projectPoints(PointTable& p, const ProjectionChoice& projection, con
     } else if (projection.kind == Projection::Auto && !looksLikeLonLat(p)) {
         return "";
     }
-    if (!inRange(p))
-        throw InputError(p.source, 0, 0,
-                         "--project: x must be a longitude in [-180, 180] and y a latitude in [-90, 90] (degrees); give "
-                         "--crs for columns in another coordinate system, or --project none");
+    for (size_t k = 0; k < p.size(); ++k)
+        if (!(std::fabs(p.x[k]) <= 180.0) || !(std::fabs(p.y[k]) <= 90.0)) {
+            const bool bad_lat = !(std::fabs(p.y[k]) <= 90.0);
+            throw InputError(p.source, 0, 0,
+                             "point " + std::to_string(k + 1) + ": " + (bad_lat ? p.y_name : p.x_name) + " " +
+                                 formatSignificant(bad_lat ? p.y[k] : p.x[k]) + " is not a " +
+                                 (bad_lat ? "latitude (-90 to 90 degrees)" : "longitude (-180 to 180 degrees)") +
+                                 (crs.empty() ? "; give --crs for columns in another coordinate system, or --project none"
+                                              : " after reading the columns in --crs " + crs + ": are they in that CRS?"));
+        }
+    // A pole is one point whatever longitude it is given: the same one for all.
+    for (size_t k = 0; k < p.size(); ++k)
+        if (std::fabs(p.y[k]) == 90.0) p.x[k] = 0.0;
     const std::vector<double> lon = p.x, lat = p.y;
     if (projection.kind == Projection::Equirect) {
         double sum = 0;
@@ -121,6 +191,7 @@ std::string projectPoints(PointTable& p, const ProjectionChoice& projection, con
         const double d = areaDistortion(lon, lat, [k](std::vector<double>& x, std::vector<double>&) {
             for (double& v : x) v *= k;
         });
+        if (metres_per_unit) *metres_per_unit = kMetresPerDegreeOfLatitude;
         char buf[200];
         std::snprintf(buf, sizeof buf, "projected %s/%s equirectangular about latitude %.2f (longitude x %.3f); ",
                       p.x_name.c_str(), p.y_name.c_str(), lat0, k);
@@ -128,13 +199,19 @@ std::string projectPoints(PointTable& p, const ProjectionChoice& projection, con
     }
     std::string definition = projection.definition, name;
     if (projection.kind != Projection::Definition) {
-        const auto [lon_lo, lon_hi] = std::minmax_element(p.x.begin(), p.x.end());
-        const auto [lat_lo, lat_hi] = std::minmax_element(p.y.begin(), p.y.end());
-        const double lon0 = (*lon_lo + *lon_hi) / 2, lat0 = (*lat_lo + *lat_hi) / 2;
+        // Centred on the points' spherical mean (a cluster across the
+        // antimeridian stays one cluster, points at a pole one point); points
+        // farther than a quarter of the globe from it (more than a
+        // hemisphere) keep a world map, cut where their longitudes leave the
+        // widest gap.
+        const SphereExtent e = sphereExtent(p.x, p.y);
+        const double lon0 = e.lon0, lat0 = e.lat0;
         char buf[160];
-        if (*lon_hi - *lon_lo > 180 || *lat_hi - *lat_lo > 100) {
-            std::snprintf(buf, sizeof buf, "+proj=eqearth +lon_0=%.6f +datum=WGS84 +units=km +no_defs", lon0);
-            name = "Equal Earth (the world)";
+        if (e.max_angle_deg > 90) {
+            std::snprintf(buf, sizeof buf, "+proj=eqearth +lon_0=%.6f +datum=WGS84 +units=km +no_defs", e.lon_middle);
+            name = "Equal Earth centred on " + formatFixed(std::fabs(e.lon_middle), 2) + (e.lon_middle < 0 ? " W" : " E") +
+                   " (the points span more than a hemisphere: a world map, equal-area, its scale and shapes true "
+                   "only near the equator and the central meridian)";
         } else {
             std::snprintf(buf, sizeof buf, "+proj=laea +lat_0=%.6f +lon_0=%.6f +datum=WGS84 +units=km +no_defs", lat0, lon0);
             name = "Lambert azimuthal equal-area centred at " + formatFixed(std::fabs(lat0), 2) + (lat0 < 0 ? " S, " : " N, ") +
@@ -143,6 +220,7 @@ std::string projectPoints(PointTable& p, const ProjectionChoice& projection, con
         definition = buf;
     }
     const std::string target = transformCoordinates(kLonLat, definition, p.x, p.y);
+    if (metres_per_unit && projection.kind != Projection::Definition) *metres_per_unit = 1000.0;  // +units=km
     if (name.empty()) name = target;
     const double d = areaDistortion(lon, lat, [&](std::vector<double>& x, std::vector<double>& y) {
         transformCoordinates(kLonLat, definition, x, y);

@@ -53,6 +53,10 @@ bool looksLikeLonLat(const PointTable& points);
 /// CRS the x, y columns are in. Returns a one-line description of what was
 /// done ("" when nothing was). Longitudes or latitudes out of range, an
 /// unknown definition or a point PROJ cannot project are InputErrors.
-std::string projectPoints(PointTable& points, const ProjectionChoice& projection, const std::string& crs = "");
+/// `metres_per_unit` (may be null) is set to the projected x, y's unit in
+/// metres when tsf chose the projection (1000: km; equirect: a degree of
+/// latitude), 0 otherwise.
+std::string projectPoints(PointTable& points, const ProjectionChoice& projection, const std::string& crs = "",
+                          double* metres_per_unit = nullptr);
 
 }  // namespace tsf

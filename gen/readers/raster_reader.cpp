@@ -104,7 +104,7 @@ Raster parseRaster(std::string_view bytes, const std::string& path, const Raster
         case RasterFormat::Pgm: return parsePgm(bytes, path);
         case RasterFormat::EsriAscii: return parseEsriAscii(bytes, path);
         case RasterFormat::Gdal:
-            return withMagicInErrors(bytes, [&] { return parseGdalRaster(bytes, path, opts.band, opts.variable); });
+            return withMagicInErrors(bytes, [&] { return parseGdalRaster(bytes, path, opts.band, opts.variable, opts.ignore_georef); });
         default: return parseCsvGrid(bytes, path, opts.delimiter, opts.decimal);
     }
 }
@@ -114,13 +114,13 @@ Raster readRaster(const std::string& path, const RasterReadOptions& opts) {
     // GDAL's own name of a variable in a file (NETCDF:"f.nc":pr) is GDAL's to open.
     std::error_code ec;
     if (isGdalDatasetName(path) && !std::filesystem::exists(path, ec))
-        return readGdalRaster(path, opts.band, opts.variable);
+        return readGdalRaster(path, opts.band, opts.variable, opts.ignore_georef);
     const std::string head = readFileHead(path, kMagicBytes);
     RasterReadOptions o = opts;
     if (o.format == RasterFormat::Auto) o.format = detectRasterFormat(head, path);
     // GDAL reads the file itself (and any sidecar: .prj, .hdr, .aux.xml).
     if (o.format == RasterFormat::Gdal)
-        return withMagicInErrors(head, [&] { return readGdalRaster(path, o.band, o.variable); });
+        return withMagicInErrors(head, [&] { return readGdalRaster(path, o.band, o.variable, o.ignore_georef); });
     if (!o.variable.empty())
         throw InputError(path, 0, 0, "--variable " + o.variable + ": this file holds one set of values (--variable is for "
                                      "files GDAL reads with several: NetCDF, HDF5, GeoPackage)");

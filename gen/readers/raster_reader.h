@@ -38,6 +38,9 @@ struct RasterReadOptions {
     /// Rasters GDAL reads: which variable of a file with several (NetCDF,
     /// HDF5, GeoPackage); "" = the only one.
     std::string variable;
+    /// Rasters GDAL reads: ignore the geotransform and the CRS and read the
+    /// plain grid (--ignore-georef; gdal_reader.h).
+    bool ignore_georef = false;
 };
 
 /// Reads `path`. Throws InputError for a missing file or any format error.

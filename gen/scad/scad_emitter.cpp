@@ -3,6 +3,7 @@
 #include "gen/scad/scad_attachments.h"
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -348,6 +349,15 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts, const std
     if (!s.faces.empty()) o += ",\n                  faces = orientation_marks ? marks : [], mark_height_mm = mark_height";
     const bool shaped = hasShapedTops(s);
     if (shaped) o += ",\n                  shapes = tops, min_thickness_units = tops_thickness";
+    if (s.params.bottom == Bottom::Mirrored) {
+        // The room tsf's Scene keeps below the lowest cell with data (a
+        // texture's relief; tilted tops: all of it): the model stands on z = 0.
+        int64_t room = std::numeric_limits<int64_t>::max();
+        for (size_t k = 0; k < s.keptCount(); ++k)
+            if (s.kind[k] == CellKind::Data) room = std::min(room, s.bottom[k]);
+        if (room > 0 && room != std::numeric_limits<int64_t>::max())
+            o += ",\n                  mirror_room_units = " + std::to_string(room);
+    }
     for (const ScadAttachment& a : attachments) o += a.model_argument;
     o += ");\n";
     if (shaped) {

@@ -67,5 +67,31 @@ TEST(MeshPicture, AnEmptyMeshIsABlankPicture) {
     EXPECT_EQ(drawnBox(img, 0, img.w).x1, -1);
 }
 
+// A class map's tops in the colours the caller gives (west half one class,
+// east half another): both colours show, lit, on the tops, and no top is
+// coloured by height where a colour was given.
+TEST(MeshPicture, TopsTakeTheColourTheCallerGives) {
+    const Mesh mesh = bumpMesh(Bottom::Flat);
+    const Bounds b = meshBounds(mesh);
+    const double middle = (b.min.x + b.max.x) / 2;
+    MeshPictureOptions o;
+    o.top_colour = [middle](double x_mm, double, uint32_t& rgb) {
+        rgb = x_mm < middle ? 0xff0000 : 0x0000ff;
+        return true;
+    };
+    const RgbImage img = drawMeshPicture(mesh, o);
+    int red = 0, blue = 0;
+    for (int y = 0; y < img.h; ++y)
+        for (int x = 0; x < img.w; ++x) {
+            const uint32_t c = img.get(x, y);
+            const int r = int(c >> 16) & 0xff, g = int(c >> 8) & 0xff, bl = int(c) & 0xff;
+            red += r > 80 && g == 0 && bl == 0;
+            blue += bl > 80 && r == 0 && g == 0;
+        }
+    EXPECT_GT(red, img.w * img.h / 20);
+    EXPECT_GT(blue, img.w * img.h / 20);
+    EXPECT_NEAR(double(red) / blue, 1.0, 0.5);
+}
+
 }  // namespace
 }  // namespace tsf

@@ -57,11 +57,14 @@ TEST(Sweep, CoversTheAirportsWithTheirHoles) {
     // Binned points: many cells hold no airport and print at the floor, level
     // here: this measures the sweep over the pillars and the holes between.
     const std::string airports = tsf::test::sourcePath("examples/airports-europe.csv") + " --points x=lon,y=lat --bins 40";
-    expectCovered(feelJson(airports + " --no-texture-structural"), 0.95);
+    // 92.7 % measured since the points are projected about their spherical
+    // mean (96.1 % about the middle of their extent, a model of other cells).
+    expectCovered(feelJson(airports + " --no-texture-structural"), 0.90);
     // With the default structural dimples (cones 1 mm under the floor) the
-    // sweep's lines lose contact over some of them: 89.6 % measured since the
-    // relief holds the orientation tab too (23 of its 173 mm, so each hexagon
-    // has 13 % less room in the same workspace; 93.3 % before).
+    // sweep's lines lose contact over some of them: 91.2 % measured (89.6 %
+    // about the extent's middle since the relief holds the orientation tab
+    // too, 23 of its 173 mm, so each hexagon has 13 % less room in the same
+    // workspace; 93.3 % before that).
     expectCovered(feelJson(airports), 0.88);
 }
 

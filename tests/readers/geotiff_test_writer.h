@@ -7,6 +7,7 @@
 #include <gdal_rat.h>
 #include <ogr_srs_api.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -30,6 +31,9 @@ struct GeoTiffSpec {
     /// and a Name column.
     std::vector<std::pair<int, std::string>> attribute_names;
     bool byte_band = false;     ///< an 8-bit band (class codes 0..255) without a colour table
+    /// GDAL's six numbers (x0, dx/dcol, dx/drow, y0, dy/dcol, dy/drow): a
+    /// rotated or sheared raster; empty = north-up from west, north and the pixel sizes.
+    std::vector<double> geotransform;
 };
 
 /// Writes spec as a Float32 GeoTIFF; returns false when GDAL refuses.
@@ -40,6 +44,7 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
     GDALDatasetH ds = GDALCreate(driver, path.c_str(), s.cols, s.rows, s.bands, s.classes || s.byte_band ? GDT_Byte : GDT_Float32, nullptr);
     if (!ds) return false;
     double gt[6] = {s.west, s.pixel_w, 0, s.north, 0, -s.pixel_h};
+    if (s.geotransform.size() == 6) std::copy(s.geotransform.begin(), s.geotransform.end(), gt);
     GDALSetGeoTransform(ds, gt);
     if (s.epsg != 0) {
         OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);

@@ -24,6 +24,7 @@ namespace tsf::test {
 
 struct NetCdfSpec {
     int steps = 3, rows = 4, cols = 5;
+    double lat_shift = 0;  ///< added to every latitude (degrees): a file whose y values are off the globe
 };
 
 inline double netcdfPr(int t, int lat, int lon) { return 100.0 * (t + 1) + 10.0 * lat + lon; }
@@ -63,7 +64,7 @@ inline bool writeNetCdf(const std::string& path, const NetCdfSpec& s = {}) {
         std::vector<double> v(n);
         for (size_t k = 0; k < n; ++k)
             v[k] = d == 0   ? (k == 0 ? 0.0 : k == 1 ? 31.0 : 60.0 + 30.0 * double(k - 2))
-                   : d == 1 ? double(k) - 0.5 * double(n - 1)  // centred on the equator: square pixels on the ground
+                   : d == 1 ? double(k) - 0.5 * double(n - 1) + s.lat_shift  // centred on the equator: square pixels on the ground
                             : 10.0 + double(k);
         const GUInt64 start = 0;
         const size_t count = n;

@@ -116,7 +116,9 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
             gy *= max_gradient / gradient;
             ++t.cells_slope_limited;
         }
-        const int64_t h = mirrored ? s.bottom[k] : s.top[k] - s.floor_units;  // height above the floor, units
+        const int64_t h = mirrored ? s.bottom[k] - s.floor_units : s.top[k] - s.floor_units;  // height above the floor, units
+        // Mirrored, the floor lies at or below the bed: no corner below the bed either.
+        const int64_t above_bed = mirrored ? s.bottom[k] : h;
         const LatticePoint c = hexCentre(s.grid, s.col[k], s.row[k]);
         double want[kHexCorners];
         int64_t lo[kHexCorners], hi[kHexCorners];
@@ -124,7 +126,7 @@ void resolveTopShapes(Scene& s, const std::vector<PlaneSlope>& slopes, double st
             const LatticePoint p = hexCorner(s.grid, s.col[k], s.row[k], e);
             const double dx = double(p.i - c.i) * s.pitch_mm * 0.5, dy = latticeY({0, p.j - c.j}, s.pitch_mm, s.y_scale);
             want[e] = (gx * dx + gy * dy) * unit_per_mm;
-            lo[e] = -h;                  // no corner below the floor
+            lo[e] = -above_bed;          // no corner below the floor (the bed)
             hi[e] = ceiling_units - h;   // nor above the height range
         }
         // An edge against a mark's face: both its ends stay on the side of the

@@ -261,8 +261,137 @@ bool cfLonLat(GDALDatasetH ds) {
     return east && north;
 }
 
+/// No data to NaN and packed values unpacked, with their facts.
+Raster finishValues(GDALRasterBandH band, bool has_nodata, double nodata, Raster& r) {
+    // Packed values (CF scale_factor, add_offset; GDAL's scale and offset):
+    // the stored number times the scale plus the offset is the value.
+    int has_scale = 0, has_offset = 0;
+    const double scale = GDALGetRasterScale(band, &has_scale), offset = GDALGetRasterOffset(band, &has_offset);
+    const bool unpack = (has_scale && scale != 1.0) || (has_offset && offset != 0.0);
+    for (double& v : r.values) {
+        if ((has_nodata && v == nodata) || !std::isfinite(v)) v = NAN;
+        else if (unpack) v = v * (has_scale ? scale : 1.0) + (has_offset ? offset : 0.0);
+    }
+    if (has_nodata) r.facts.push_back({"no-data value", formatSignificant(nodata) + " (from the file)"});
+    if (unpack)
+        r.facts.push_back({"packed", "stored values x " + formatSignificant(has_scale ? scale : 1.0) + " + " +
+                                         formatSignificant(has_offset ? offset : 0.0) + " (the file's scale and offset)"});
+    return r;
+}
+
+/// A raster whose geotransform is rotated or sheared, resampled north-up in
+/// its CRS's coordinates (see rotatedNorthUp).
+struct NorthUp {
+    std::vector<double> values;  ///< row 0 north, NaN outside the source raster and for its no data
+    int64_t cols = 0, rows = 0;
+    double x0 = 0, y0 = 0;       ///< the west and north edges (CRS units)
+    double px_w = 0, px_h = 0;   ///< pixel width and height (CRS units)
+};
+
+/// The source grid `src` (src_cols x src_rows, NaN for no data, laid out as
+/// the file's rows) placed by the geotransform gt (pixel, line -> x, y),
+/// resampled onto a north-up grid of its bounding box by nearest neighbour:
+/// each new pixel takes the source pixel its centre falls in, NaN outside.
+/// Pixels are x_scale times as wide in x units as high in y units (square on
+/// the ground for degrees of longitude), of the source pixel's ground area,
+/// grown when the box would hold more than kWholeReadCells.
+NorthUp rotatedNorthUp(const std::vector<double>& src, int64_t src_cols, int64_t src_rows, const double gt[6],
+                       double x_scale, int64_t max_cells) {
+    const double det = gt[1] * gt[5] - gt[2] * gt[4];
+    double xs[4], ys[4];
+    const double corner_px[4][2] = {{0, 0}, {double(src_cols), 0}, {0, double(src_rows)}, {double(src_cols), double(src_rows)}};
+    for (int k = 0; k < 4; ++k) {
+        xs[k] = gt[0] + gt[1] * corner_px[k][0] + gt[2] * corner_px[k][1];
+        ys[k] = gt[3] + gt[4] * corner_px[k][0] + gt[5] * corner_px[k][1];
+    }
+    const double west = *std::min_element(xs, xs + 4), east = *std::max_element(xs, xs + 4);
+    const double south = *std::min_element(ys, ys + 4), north = *std::max_element(ys, ys + 4);
+    // Ground area of a source pixel in y units squared, as a square of side h.
+    double h = std::sqrt(std::fabs(det) * x_scale);
+    // A box a whole number of pixels wide, up to the rounding of the corners'
+    // coordinates (relative, far below a pixel), gets no extra column.
+    constexpr double kWholePixelsSlack = 1e-9;
+    NorthUp out;
+    for (;;) {
+        out.px_h = h;
+        out.px_w = h / x_scale;
+        out.cols = std::max<int64_t>(1, std::llround(std::ceil((east - west) / out.px_w - kWholePixelsSlack)));
+        out.rows = std::max<int64_t>(1, std::llround(std::ceil((north - south) / out.px_h - kWholePixelsSlack)));
+        if (out.cols * out.rows <= max_cells && out.cols <= kMaxRasterSide && out.rows <= kMaxRasterSide) break;
+        h *= 1.01 * std::sqrt(double(out.cols) * double(out.rows) / double(max_cells));
+        h = std::max(h, out.px_h * 1.01);
+    }
+    out.x0 = west;
+    out.y0 = north;
+    out.values.assign(size_t(out.cols) * size_t(out.rows), NAN);
+    // Inverse of the geotransform's linear part: (x - gt0, y - gt3) -> (pixel, line).
+    const double inv00 = gt[5] / det, inv01 = -gt[2] / det, inv10 = -gt[4] / det, inv11 = gt[1] / det;
+    for (int64_t r = 0; r < out.rows; ++r) {
+        const double y = north - (double(r) + 0.5) * out.px_h - gt[3];
+        for (int64_t c = 0; c < out.cols; ++c) {
+            const double x = west + (double(c) + 0.5) * out.px_w - gt[0];
+            const double u = inv00 * x + inv01 * y, v = inv10 * x + inv11 * y;
+            if (!(u >= 0 && v >= 0 && u < double(src_cols) && v < double(src_rows))) continue;
+            out.values[size_t(r * out.cols + c)] = src[size_t(int64_t(v) * src_cols + int64_t(u))];
+        }
+    }
+    return out;
+}
+
+/// Reads a band whose geotransform is rotated or sheared into `r`,
+/// north-up (rotatedNorthUp): the source whole, or decimated to the block
+/// means (most common classes) when larger than tsf reads whole. Sets the
+/// values, size, cell size, origin and the facts that say what was done.
+void readRotated(GDALRasterBandH band, const std::string& path, int64_t cols, int64_t rows, const double gt[6],
+                 double x_scale, bool categorical, bool has_nodata, double nodata, Raster& r) {
+    std::vector<double> src;
+    const int64_t f = decimationFor(cols, rows);
+    int64_t src_cols = cols, src_rows = rows;
+    double sgt[6];
+    std::copy(gt, gt + 6, sgt);
+    if (f > 1) {
+        src_cols = (cols + f - 1) / f;
+        src_rows = (rows + f - 1) / f;
+        readDecimated(band, path, cols, rows, src_cols, src_rows, categorical, has_nodata, nodata, src);
+        const double sx = double(cols) / double(src_cols), sy = double(rows) / double(src_rows);
+        sgt[1] *= sx, sgt[4] *= sx, sgt[2] *= sy, sgt[5] *= sy;
+        r.decimation = int(f);
+    } else {
+        src.assign(size_t(cols) * size_t(rows), 0.0);
+        if (GDALRasterIO(band, GF_Read, 0, 0, int(cols), int(rows), src.data(), int(cols), int(rows), GDT_Float64, 0, 0) !=
+            CE_None)
+            throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
+        for (double& v : src)
+            if (has_nodata && v == nodata) v = NAN;
+    }
+    NorthUp n = rotatedNorthUp(src, src_cols, src_rows, sgt, x_scale, kWholeReadCells);
+    checkRasterSize(path, 0, n.cols, n.rows);
+    r.values = std::move(n.values);
+    r.cols = int32_t(n.cols);
+    r.rows = int32_t(n.rows);
+    r.cell_size = n.px_h;  // square on the ground: px_w * x_scale == px_h
+    r.row_aspect = 1.0;
+    r.x_origin = n.x0;
+    r.y_origin = n.y0 - n.px_h * double(n.rows);
+    // The raster's own sides on the ground and where its top edge faced.
+    const double side_x = std::hypot(gt[1] * x_scale, gt[4]) * double(cols);
+    const double side_y = std::hypot(gt[2] * x_scale, gt[5]) * double(rows);
+    double bearing = std::atan2(-gt[2] * x_scale, -gt[5]) * 180.0 / kPi;  // "up" in the raster, clockwise from north
+    if (bearing < 0) bearing += 360.0;
+    const double cos_angle = (gt[1] * x_scale * gt[2] * x_scale + gt[4] * gt[5]) /
+                             (std::hypot(gt[1] * x_scale, gt[4]) * std::hypot(gt[2] * x_scale, gt[5]));
+    const bool sheared = std::fabs(cos_angle) > 1e-6;
+    r.facts.push_back({"rotated", std::string("the geotransform is ") + (sheared ? "sheared and rotated" : "rotated") +
+                                      ": the raster's top edge faced " + formatFixed(bearing, 1) +
+                                      " degrees clockwise from north, its sides " + formatSignificant(side_x, 4) + " by " +
+                                      formatSignificant(side_y, 4) + " (CRS units); resampled north-up (nearest "
+                                      "neighbour, values unchanged) onto " + std::to_string(n.cols) + " x " +
+                                      std::to_string(n.rows) + " pixels of " + formatSignificant(n.px_h, 4) +
+                                      ", no data outside the raster's outline; --ignore-georef keeps the raster's own grid"});
+}
+
 Raster readDataset(const std::string& gdal_name, const std::string& path, int band_number,
-                   const std::string& variable = "") {
+                   const std::string& variable = "", bool ignore_georef = false) {
     registerDrivers();
     QuietGdal quiet;
     Dataset ds;
@@ -285,7 +414,7 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
             throw InputError(path, 0, 0, "holds " + std::to_string(vars.size()) + " variables: " + listVariables(vars) +
                                              "; choose one with --variable NAME");
         }
-        Raster r = readDataset(chosen->gdal_name, path, band_number);
+        Raster r = readDataset(chosen->gdal_name, path, band_number, "", ignore_georef);
         std::string names;
         for (const Variable& v : vars) names += (names.empty() ? "" : ", ") + v.name;
         r.facts.insert(r.facts.begin(), {"variable", chosen->name + (chosen->description.empty() ? "" : " " + chosen->description) +
@@ -357,16 +486,49 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
 
     // Pixel size on the ground (CRS units) and whether x is degrees of longitude.
     double gt[6] = {0, 1, 0, 0, -1, 0};
-    const bool has_gt = GDALGetGeoTransform(ds.h, gt) == CE_None;
+    const bool has_gt = !ignore_georef && GDALGetGeoTransform(ds.h, gt) == CE_None;
+    if (!has_gt) {
+        const double plain[6] = {0, 1, 0, double(rows), 0, -1};
+        std::copy(plain, plain + 6, gt);
+    }
+    // Rotated or sheared: the pixel grid is not north-up (resampled below).
+    const double det = gt[1] * gt[5] - gt[2] * gt[4];
+    const bool rotated = has_gt && (gt[2] != 0 || gt[4] != 0) && std::isfinite(det) && det != 0;
     double px_w = std::abs(gt[1]), px_h = std::abs(gt[5]);
+    if (rotated) px_w = px_h = std::sqrt(std::fabs(det));
     if (px_w == 0 || px_h == 0 || !std::isfinite(px_w) || !std::isfinite(px_h)) px_w = px_h = 1;
-    if (has_gt && (gt[2] != 0 || gt[4] != 0)) r.facts.push_back({"note", "rotated geotransform read as north-up"});
-    OGRSpatialReferenceH srs = GDALGetSpatialRef(ds.h);
+    // The latitude of the raster's centre (a geographic CRS's longitude scale).
+    const double centre_y = gt[3] + gt[4] * cols / 2.0 + gt[5] * rows / 2.0;
+    OGRSpatialReferenceH srs = ignore_georef ? nullptr : GDALGetSpatialRef(ds.h);
+    if (ignore_georef) r.facts.push_back({"georeference", "ignored (--ignore-georef): the plain grid, square pixels"});
     double x_scale = 1.0;  // ground width of one unit of x, in units of y
+    const bool lon_lat = has_gt && ((!srs && cfLonLat(ds.h)) || (srs && OSRIsGeographic(srs)));
+    if (lon_lat) {
+        // Degrees must be on the globe: a latitude of 435 is a file whose
+        // coordinates are not what it says (or a grid of indices). Pixel
+        // edges may pass a pole or +-180 by half a pixel.
+        double worst_lat = 0, worst_lon = 0;
+        for (const double c : {0.0, double(cols)})
+            for (const double rr : {0.0, double(rows)}) {
+                const double x = gt[0] + gt[1] * c + gt[2] * rr, y = gt[3] + gt[4] * c + gt[5] * rr;
+                if (!(std::fabs(y) <= std::fabs(worst_lat))) worst_lat = y;
+                if (!(std::fabs(x) <= std::fabs(worst_lon))) worst_lon = x;
+            }
+        const double slack = std::fabs(gt[1]) + std::fabs(gt[2]) + std::fabs(gt[4]) + std::fabs(gt[5]);
+        if (!(std::fabs(worst_lat) <= 90.0 + slack) || !(std::fabs(worst_lon) <= 360.0 + slack)) {
+            const bool lat = !(std::fabs(worst_lat) <= 90.0 + slack);
+            throw InputError(path, 0, 0, std::string("its coordinates are ") +
+                                             (srs ? "in a geographic CRS (degrees)" : "degrees east and north (CF units)") +
+                                             ", but its " + (lat ? "y values reach latitude " : "x values reach longitude ") +
+                                             formatSignificant(lat ? worst_lat : worst_lon) + " degrees, outside " +
+                                             (lat ? "-90 to 90" : "-360 to 360") +
+                                             ": the file's coordinates are wrong; --ignore-georef reads the plain grid");
+        }
+    }
     if (!srs && has_gt && cfLonLat(ds.h)) {
         // No CRS in the file, but CF coordinates in degrees east and north
         // (most climate files): longitude and latitude on the sphere.
-        const double lat = gt[3] + gt[5] * rows / 2.0;
+        const double lat = centre_y;
         x_scale = std::cos(lat * kPi / 180.0);
         r.metres_per_unit = kMetresPerDegreeOfLatitude;
         r.longitude_scale = x_scale;
@@ -374,7 +536,7 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
                                   "scaled by cos(" + formatSignificant(lat) + " deg) = " + formatSignificant(x_scale)});
         r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h) + " degrees"});
     } else if (srs && OSRIsGeographic(srs)) {
-        const double lat = gt[3] + gt[5] * rows / 2.0;  // mean latitude, degrees
+        const double lat = centre_y;  // mean latitude, degrees
         x_scale = std::cos(lat * kPi / 180.0);
         r.metres_per_unit = kMetresPerDegreeOfLatitude;
         r.longitude_scale = x_scale;
@@ -393,6 +555,13 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         if (has_gt) r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h)});
     }
 
+    int has_nodata = 0;
+    const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
+    if (rotated) {
+        readRotated(band, path, cols, rows, gt, x_scale, r.categorical, has_nodata != 0, nodata, r);
+        return finishValues(band, has_nodata != 0, nodata, r);
+    }
+
     // Square pixels on the ground: stretch the shorter side of the pixel.
     const double ground_w = px_w * x_scale;
     int64_t out_cols = cols, out_rows = rows;
@@ -400,8 +569,6 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
     else out_rows = std::llround(double(rows) * px_h / ground_w);
     r.x_origin = gt[0];
     r.y_origin = gt[3] + gt[5] * rows;
-    int has_nodata = 0;
-    const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
 
     // Larger than tsf holds whole: read decimated, each value the mean (the
     // most common class) of a block of pixels, strip by strip.
@@ -439,27 +606,16 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
             throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
     }
 
-    // Packed values (CF scale_factor, add_offset; GDAL's scale and offset):
-    // the stored number times the scale plus the offset is the value.
-    int has_scale = 0, has_offset = 0;
-    const double scale = GDALGetRasterScale(band, &has_scale), offset = GDALGetRasterOffset(band, &has_offset);
-    const bool unpack = (has_scale && scale != 1.0) || (has_offset && offset != 0.0);
-    for (double& v : r.values) {
-        if ((has_nodata && v == nodata) || !std::isfinite(v)) v = NAN;
-        else if (unpack) v = v * (has_scale ? scale : 1.0) + (has_offset ? offset : 0.0);
-    }
-    if (has_nodata) r.facts.push_back({"no-data value", formatSignificant(nodata) + " (from the file)"});
-    if (unpack)
-        r.facts.push_back({"packed", "stored values x " + formatSignificant(has_scale ? scale : 1.0) + " + " +
-                                         formatSignificant(has_offset ? offset : 0.0) + " (the file's scale and offset)"});
-    return r;
+    return finishValues(band, has_nodata != 0, nodata, r);
 }
 
-Raster readGdalFile(const std::string& path, int band, const std::string& variable) {
-    return readDataset(path, path, band, variable);
+
+Raster readGdalFile(const std::string& path, int band, const std::string& variable, bool ignore_georef) {
+    return readDataset(path, path, band, variable, ignore_georef);
 }
 
-Raster parseGdalBytes(std::string_view bytes, const std::string& path, int band, const std::string& variable) {
+Raster parseGdalBytes(std::string_view bytes, const std::string& path, int band, const std::string& variable,
+                      bool ignore_georef) {
     registerDrivers();
     static std::atomic<unsigned> counter{0};
     std::string ext;
@@ -474,7 +630,7 @@ Raster parseGdalBytes(std::string_view bytes, const std::string& path, int band,
         std::string n;
         ~Unlink() { VSIUnlink(n.c_str()); }
     } unlink{name};
-    return readDataset(name, path, band, variable);
+    return readDataset(name, path, band, variable, ignore_georef);
 }
 
 }  // namespace
@@ -510,8 +666,9 @@ int guarded(GdalModuleError* error, Work work) {
 extern "C" __attribute__((visibility("default"))) int tsf_gdal_read(const tsf::GdalCall* call) {
     return tsf::guarded(call->error, [call] {
         const std::string variable = call->variable ? *call->variable : std::string();
-        *call->raster = call->bytes ? tsf::parseGdalBytes(*call->bytes, *call->path, call->band, variable)
-                                    : tsf::readGdalFile(*call->path, call->band, variable);
+        *call->raster = call->bytes
+                            ? tsf::parseGdalBytes(*call->bytes, *call->path, call->band, variable, call->ignore_georef)
+                            : tsf::readGdalFile(*call->path, call->band, variable, call->ignore_georef);
     });
 }
 

@@ -16,7 +16,7 @@ namespace tsf {
 inline constexpr const char* kGdalModuleName = "tsf-gdal.so";
 
 /// Bumped whenever GdalCall, GdalModuleError or Raster change.
-inline constexpr int kGdalModuleAbi = 7;  // 7: Raster::classes; 6: Raster::decimation, units; 5: GdalCall::variable; 4: tsf_gdal_transform; 3: GdalCall::band; 2: Raster::categorical
+inline constexpr int kGdalModuleAbi = 8;  // 8: GdalCall::ignore_georef; 7: Raster::classes; 6: Raster::decimation, units; 5: GdalCall::variable; 4: tsf_gdal_transform; 3: GdalCall::band; 2: Raster::categorical
 
 inline constexpr int kGdalOk = 0;
 inline constexpr int kGdalInputError = 1;  ///< error holds an InputError's parts
@@ -35,6 +35,7 @@ struct GdalCall {
     GdalModuleError* error = nullptr;         ///< out, when the result is not kGdalOk
     int band = 1;                             ///< which band, 1-based (bands, time steps, levels)
     const std::string* variable = nullptr;    ///< which variable (subdataset) of a file with several; nullptr or "": the only one
+    bool ignore_georef = false;               ///< read the plain grid: no geotransform, no CRS (--ignore-georef)
 };
 
 /// Points from one coordinate reference system to another (PROJ, through
