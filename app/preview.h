@@ -12,8 +12,10 @@
 namespace tsf::cli {
 
 /// Draws `mesh` to png_path (width x height pixels); `underside` adds the
-/// view from below. Throws tsf::OutputError when the file cannot be written.
-void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, int width_px = 1200,
-                       int height_px = 800);
+/// view from below; colour_top_z_mm and size_text as MeshPictureOptions
+/// (a series' shared colour scale; the pieces' sizes). Throws
+/// tsf::OutputError when the file cannot be written.
+void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, double colour_top_z_mm = 0,
+                       const std::string& size_text = "", int width_px = 1200, int height_px = 800);
 
 }  // namespace tsf::cli

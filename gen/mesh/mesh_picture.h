@@ -11,6 +11,8 @@
 // finger reads from underneath.
 #pragma once
 
+#include <string>
+
 #include "gen/geometry/mesh.h"
 #include "gen/util/rgb_image.h"
 
@@ -20,6 +22,13 @@ struct MeshPictureOptions {
     int width_px = 1200;   ///< whole picture, both views
     int height_px = 800;
     bool underside = false;  ///< add the view from below
+    /// > 0: the colours run from the mesh's lowest z to this z (mm), not to
+    /// its highest: the pictures of a series share one colour scale, so the
+    /// same height is the same colour in each.
+    double colour_top_z_mm = 0;
+    /// The size text beside the scale bar; "" for the mesh's "model W x D x H mm"
+    /// (pieces laid out apart say each piece's size instead).
+    std::string size_text;
 };
 
 /// Background colour of the picture (0xRRGGBB); the model never uses it.

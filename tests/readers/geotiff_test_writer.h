@@ -30,6 +30,8 @@ struct GeoTiffSpec {
     /// and a Name column.
     std::vector<std::pair<int, std::string>> attribute_names;
     bool byte_band = false;     ///< an 8-bit band (class codes 0..255) without a colour table
+    std::string description;    ///< band 1's description ("elevation"); "" for none
+    std::string units;          ///< band 1's unit type ("m"); "" for none
 };
 
 /// Writes spec as a Float32 GeoTIFF; returns false when GDAL refuses.
@@ -49,6 +51,8 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
     }
     GDALRasterBandH band = GDALGetRasterBand(ds, 1);
     if (s.nodata) GDALSetRasterNoDataValue(band, *s.nodata);
+    if (!s.description.empty()) GDALSetDescription(band, s.description.c_str());
+    if (!s.units.empty()) GDALSetRasterUnitType(band, s.units.c_str());
     if (s.classes) {
         GDALColorTableH table = GDALCreateColorTable(GPI_RGB);
         for (int k = 0; k < 256; ++k) {
