@@ -84,7 +84,7 @@ std::string showsParagraph(const ModelKeyFacts& facts, const UnitWords& u) {
                            : !facts.variable.empty()  ? "the variable " + facts.variable + " of the file " + facts.input_name
                            : facts.points             ? "the points of the file " + facts.input_name
                                                       : "the values of the file " + facts.input_name;
-        if (!u.plural.empty()) what += ", in " + u.plural;
+        if (!u.plural.empty()) what += (facts.points && facts.description.empty() ? ", as " : ", in ") + u.plural;
         if (!facts.step.empty()) what += ", for " + stepWords(facts.step);
         p += what + ".";
     }

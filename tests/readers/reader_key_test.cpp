@@ -61,6 +61,9 @@ TEST(ReaderKey, AGeoTiffKeyOpensWithTheBandsDescriptionAndSaysWhereTheNoDataIs) 
     const std::string reader = test::readerPart(key);
     EXPECT_NE(reader.size(), key.size()) << "the key has its last section";
     EXPECT_EQ(joinedProblems(reader), "") << key;
+    // tsf info says the same words.
+    const test::RunResult info = test::runTsf("info " + tif, dir);
+    EXPECT_TRUE(has(info.out, "\n  data      elevation, in m\n")) << info.out;
     // The processing is in the last section, after the reader's part.
     EXPECT_TRUE(has(key.substr(reader.size()), "How this model was made\n\nOne pillar per value")) << key;
 }
@@ -236,6 +239,9 @@ TEST(ReaderKey, NoKeysReadersPartHoldsAnOptionENotationOrSpaceGroupedDigits) {
     EXPECT_TRUE(has(tiny_key, "kilograms per square metre per second")) << tiny_key;
     EXPECT_TRUE(has(tiny_key, "0.000015")) << tiny_key;
     EXPECT_TRUE(has(test::readText(dir / "huge.key.txt"), "2,500,000")) << test::readText(dir / "huge.key.txt");
+    const std::string airports = test::readText(dir / "airports.key.txt");
+    EXPECT_TRUE(has(airports, "What it shows: the points of the file airports-europe.csv, as airports.")) << airports;
+    EXPECT_TRUE(has(airports, "stands for how many points fall in it")) << airports;
     const std::string coupon = test::readText(dir / "coupon.key.txt");
     EXPECT_TRUE(has(coupon, "What it shows: a calibration coupon")) << coupon;
     EXPECT_TRUE(has(coupon, "The lesson:")) << coupon;
