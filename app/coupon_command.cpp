@@ -87,13 +87,28 @@ void runCoupon(const CouponOptions& o) {
     const std::string field = o.output + ".coupon.csv";
     writeFileAtomically(field, [&](std::ostream& out) { out << couponField(steps); });
 
+    // The key's first paragraph: the sections, where each is, and the lesson
+    // (the reader's part of a key names no option: the teacher reads the
+    // options in docs/tactile.md).
+    const std::string nb = "\u00A0";
+    std::string about = "a calibration coupon, to find with the reader's fingers the settings of the models to come. "
+                        "In the north, " + std::to_string(steps.size()) + " plateaus stand from west to east at";
+    for (size_t k = 0; k < steps.size(); ++k)
+        about += std::string(k == 0 ? " " : k + 1 == steps.size() ? " and " : ", ") + formatForReader(steps[k], 3) +
+                 (k + 1 == steps.size() ? nb + "millimetres" : "");
+    about += " above the floor. In the south, three rows of ridges " + formatForReader(kRidgeMm, 3) + nb +
+             "millimetre high, from north to south: single hexagons " + formatForReader(kCellMm, 3) + nb +
+             "millimetres wide, pairs " + formatForReader(2 * kCellMm, 3) + nb + "millimetres wide, and triples " +
+             formatForReader(3 * kCellMm, 3) + nb + "millimetres wide, each as far from the next as it is wide. "
+             "The lesson: the lowest plateau the reader tells apart from the floor is the smallest difference of height "
+             "worth asking for between values; the narrowest ridges that still feel separate give the hexagon size to use";
     std::string title = "steps";
     for (const double s : steps) title += " " + number(s);
     title += " cells 3 6 9";
     std::vector<std::string> args = {"gen",      field,          "--cell",       number(kCellMm), "--height",
                                      number(steps.back()), "--value-max", number(steps.back()), "--baseline", "zero",
                                      "--base",   number(base),   "--layer",      number(o.layer_mm), "--nozzle",
-                                     number(o.nozzle_mm), "--cull", "none", "--title", title,
+                                     number(o.nozzle_mm), "--cull", "none", "--title", title, "--about", about,
                                      "-o",       o.output};
     if (o.json) args.push_back("--json");
     if (o.print_check) args.push_back("--print-check");
@@ -105,7 +120,9 @@ void runCoupon(const CouponOptions& o) {
         for (const double s : steps) line += " " + number(s);
         line += " mm above the floor (north), ridges " + number(kRidgeMm) + " mm high 3, 6 and 9 mm wide (south), " +
                 "the orientation tab and a braille legend; its field is " + field + ", made as:\n  tsf";
-        for (const std::string& a : args) line += a.find(' ') == std::string::npos ? " " + a : " \"" + a + "\"";
+        for (size_t k = 0; k < args.size(); ++k)
+            if (args[k] == "--about") ++k;  // the key's words: long, and in the key
+            else line += args[k].find(' ') == std::string::npos ? " " + args[k] : " \"" + args[k] + "\"";
         std::printf("%s\n", line.c_str());
         std::fflush(stdout);
     }

@@ -31,6 +31,7 @@
 #include "pipeline/verified_model.h"
 #include "gen/key/braille_ready_file.h"
 #include "gen/key/model_key.h"
+#include "gen/key/spoken_text.h"
 #include "gen/readers/cf_time.h"
 #include "gen/util/atomic_file.h"
 #include "gen/util/file_bytes.h"
@@ -68,6 +69,8 @@ struct GenCommandOptions {
     bool print_check = false;  ///< --print-check: slice the written model with PrusaSlicer
     GivenOptions given;   ///< model options the user gave himself
     LegibilityGiven legibility_given;  ///< what defaults that pass may not change (app/legible_defaults.h)
+    std::string about;    ///< --about: what the model shows, in the maker's words (the key's first paragraph)
+    int series_index = 0, series_count = 0;  ///< --band A-B: this model's place in the series (1-based; 0: none)
 };
 
 // Largest existing parameter-set file read to decide whether tsf wrote it
@@ -182,15 +185,28 @@ void announceLargeInput(const std::string& input, bool progress) {
                  static_cast<long long>(bytes >> 20));
 }
 
-// One line per verifier outcome for the summary; failures are listed fully.
-std::string verifyLines(const VerifyReport& r) {
-    std::string passed, other;
-    for (const Check& c : r.checks) {
+/// The names of the checks passed, for the summary's details.
+std::string passedChecksLine(const VerifyReport& r) {
+    std::string passed;
+    for (const Check& c : r.checks)
         if (c.status == CheckStatus::Pass) passed += (passed.empty() ? "" : ", ") + c.title;
-        else if (c.status != CheckStatus::Skipped) other += "  " + std::string(toString(c.status)) + "      " + c.title +
-                                                          (c.note.empty() ? "" : ": " + c.note) + "\n";
+    return passed.empty() ? "" : "  checks    passed: " + passed + "\n";
+}
+
+/// The verifier's verdict, its read-back and every check not passed.
+std::string verifyLines(const VerifyReport& r) {
+    std::string other;
+    int passed = 0, failed = 0, warned = 0;
+    for (const Check& c : r.checks) {
+        if (c.status == CheckStatus::Pass) ++passed;
+        else if (c.status != CheckStatus::Skipped) {
+            (c.status == CheckStatus::Fail ? failed : warned) += 1;
+            other += "  " + std::string(toString(c.status)) + "      " + c.title + (c.note.empty() ? "" : ": " + c.note) + "\n";
+        }
     }
-    std::string out = "  verify    " + std::string(r.passed() ? "passed" : "FAILED") + " (" + passed + ")\n";
+    std::string out = "  verify    " + std::string(r.passed() ? "passed" : "FAILED") + ": " + std::to_string(passed) +
+                      " checks passed" + (failed ? ", " + std::to_string(failed) + " failed" : "") +
+                      (warned ? ", " + std::to_string(warned) + (warned == 1 ? " warning" : " warnings") : "") + "\n";
     if (r.readback) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "  read back %zu cells: heights within %.4f mm of the data (max error %.4f mm)\n",
@@ -426,6 +442,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     if (made.report) {
         summary.verify = toJson(*made.report);
         summary.verify_text = verifyLines(*made.report);
+        summary.checks_text = passedChecksLine(*made.report);
         if (!scene.halves) summary.supports_text = supportsText(*made.report);
     }
     const std::vector<MeshPart>& parts = made.parts;
@@ -460,13 +477,33 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     }
     if (!o.preview.empty()) {
         timer.begin("drawing preview");
-        if (halves) writeModelPreview(halvesSideBySide(*halves), o.preview, false);
-        else if (tiles) writeModelPreview(tilesApart(*tiles), o.preview, false);
-        else
-            writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored, 1200, 800,
+        // A series' pictures share one colour scale: from the bed to the
+        // top of the common height scale (the same height, the same colour).
+        const double colour_top = o.series_count > 1 ? scene.zMm(scene.floor_units) + scene.mapping.max_height_mm : 0.0;
+        auto piece = [](const Mesh& m) {
+            const Bounds b = meshBounds(m);
+            return formatFixed(b.max.x - b.min.x, 0) + " x " + formatFixed(b.max.y - b.min.y, 0) + " x " +
+                   formatFixed(b.max.z - b.min.z, 0);
+        };
+        if (halves) {
+            writeModelPreview(halvesSideBySide(*halves), o.preview, false, colour_top,
+                              "upper half " + piece(halves->upper) + ", lower " + piece(halves->lower) + " mm");
+        } else if (tiles) {
+            double w = 0, d = 0, h = 0;
+            for (const auto& t : tiles->tiles) {
+                const Bounds b = meshBounds(t.model.mesh);
+                w = std::max(w, b.max.x - b.min.x), d = std::max(d, b.max.y - b.min.y), h = std::max(h, b.max.z - b.min.z);
+            }
+            writeModelPreview(tilesApart(*tiles), o.preview, false, colour_top,
+                              std::to_string(tiles->tiles.size()) + " tiles, each at most " + formatFixed(w, 0) + " x " +
+                                  formatFixed(d, 0) + " x " + formatFixed(h, 0) + " mm");
+        } else {
+            writeModelPreview(mesh, o.preview, scene.params.bottom == Bottom::Mirrored, colour_top, "", 1200, 800,
                               field.input.categorical ? &scene : nullptr);
+        }
         summary.outputs.push_back({o.preview, halves ? "preview picture of the pieces as they print"
                                               : tiles ? "preview picture of the tiles, drawn apart"
+                                              : o.series_count > 1 ? "preview picture, coloured on the series' one height scale"
                                                       : "preview picture"});
     }
     if (!o.scad.empty()) {
@@ -498,12 +535,27 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         timer.begin("writing key");
         ModelKeyFacts facts;
         facts.input_name = std::filesystem::path(o.gen.input).filename().string();
-        facts.field_how = field.how;
+        facts.field_how = spokenText(field.how);
         facts.version = TSF_VERSION;
+        facts.about = o.about;
+        facts.description = field.input.description;
+        facts.variable = field.input.variable;
+        facts.step = field.input.step;
+        facts.units = field.input.units;
+        facts.per_hexagon = field.per_hexagon;
+        facts.points = field.input.kind == "points";
+        if (!facts.points) facts.data_min = field.input.min, facts.data_max = field.input.max;
+        for (int32_t r = 0; r < field.grid.rows; ++r)
+            for (int32_t c = 0; c < field.grid.cols; ++c)
+                if (!std::isfinite(field.at(c, r)) && scene.keptAt(c, r) < 0) facts.left_out_nodata.push_back({c, r});
+        facts.series_index = o.series_index;
+        facts.series_count = o.series_count;
+        // What was read, for the last section (the band list and class
+        // names are said elsewhere or are too long for a key).
         for (const ReadFact& f : field.input.facts)
-            if (f.name == "variable" || f.name == "band" || f.name == "units")
-                facts.read_facts.push_back((f.name == "band" ? std::string("Band") : f.name == "units" ? "Units" : "Variable") +
-                                           ": " + f.value);
+            if (!f.name.empty() && f.name != "bands" && f.name != "class names")
+                facts.read_facts.push_back(std::string(1, char(std::toupper(static_cast<unsigned char>(f.name[0])))) +
+                                           f.name.substr(1) + ": " + f.value);
         facts.categorical = field.input.categorical;
         facts.legibility = legibility_key;
         facts.class_names = field.input.classes;
@@ -522,8 +574,8 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });
         const std::string brf = brailleReadyFile(key, scene.params.legend.table);
         writeFileAtomically(brf_path, [&](std::ostream& out) { out << brf; });
-        summary.outputs.push_back({text_path, "key, plain text for a screen reader"});
-        summary.outputs.push_back({brf_path, "key in braille (" + scene.params.legend.table + ", BRF, 40 x 25) for an embosser"});
+        summary.outputs.push_back({text_path, "key in plain text for a screen reader"});
+        summary.outputs.push_back({brf_path, "key in braille for an embosser: BRF 40 by 25 in " + scene.params.legend.table});
     }
     std::optional<PrintCheckReport> printed;
     if (o.print_check) {
@@ -604,6 +656,8 @@ void runGenSeries(GenCommandOptions o) {
         one.output = bandPath(o.output, bands[k], width);
         one.scad = bandPath(o.scad, bands[k], width);
         one.preview = bandPath(o.preview, bands[k], width);
+        one.series_index = int(k) + 1;
+        one.series_count = int(bands.size());
         // The legend names the step: where the title says {band}, else after it.
         if (const size_t at = title.find("{band}"); at != std::string::npos)
             one.gen.scene.legend.title = title.substr(0, at) + labels[k] + title.substr(at + 6);
@@ -650,6 +704,9 @@ void addGenCommand(CLI::App& app) {
                     "Also draw the model to this PNG: framed to fill it, coloured by height, north arrow, scale bar "
                     "and size in mm; with --mirror the underside beside the top (drawn by tsf, no OpenSCAD needed)");
     cmd->add_flag("--no-verify", opts->no_verify, "Skip verifying the model before writing it");
+    cmd->add_option("--about", opts->about,
+                    "What the model shows, in your words, for the key's first paragraph (MODEL.key.txt and .brf; "
+                    "the file's own description, long_name and units by default)");
     cmd->add_flag("--no-key", opts->no_key,
                   "Leave out the model's key (MODEL.key.txt for a screen reader, MODEL.key.brf for an embosser: what "
                   "the model shows, its values and heights, how to find north)");

@@ -258,7 +258,7 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--units", p.legend.units, "Units of the values, after the range in the legend (e.g. airports)")
         ->group(legend);
     cmd->add_option("--braille-table", p.legend.table,
-                    "liblouis table for the legend (uncontracted US English by default; e.g. en-ueb-g1.ctb, de-g0.utb)")
+                    "liblouis table for the legend and the key's braille (Unified English Braille, uncontracted, by default; en-ueb-g2.ctb contracted, en-us-g1.ctb the older US code EBAE, de-g0.utb, ...)")
         ->capture_default_str()->group(legend);
     auto* scale = "Tactile scale (docs/model.md)";
     cmd->add_flag("--scale", p.scale.wanted,

@@ -7,6 +7,7 @@
 #include "gen/model/features/felt_heights.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene_classes.h"
+#include "gen/key/spoken_text.h"
 #include "gen/util/number_format.h"
 
 #include <cmath>
@@ -18,18 +19,23 @@ namespace tsf::cli {
 
 namespace {
 
+// A line a screen reader moves through at once: at most two rows of a
+// 40-cell braille display (continuations indented under the label column).
+constexpr size_t kSummaryLineChars = 80;
+constexpr size_t kSummaryIndent = 12;
+
 std::string mappingText(const Scene& s) {
     const ValueMapping& m = s.mapping;
     std::ostringstream o;
-    o << toString(m.transfer) << ": value " << m.baseline << " -> 0 mm, value " << m.value_max << " -> "
-      << formatFixed(m.max_height_mm, 2) << " mm above the floor";
+    o << toString(m.transfer) << ": value " << formatForReader(m.baseline, 6) << " at the floor; value "
+      << formatForReader(m.value_max, 6) << " at " << formatFixed(m.max_height_mm, 2) << " mm above it";
     if (m.transfer == Transfer::Linear && m.value_max > m.baseline && m.max_height_mm > 0) {
         // The span of two finite values can exceed the largest double
         // (1e308 and -1e308): divide the halves, then double.
         double per_mm = (m.value_max - m.baseline) / m.max_height_mm;
         if (!std::isfinite(per_mm)) per_mm = 2.0 * ((m.value_max / 2 - m.baseline / 2) / m.max_height_mm);
-        o << " (1 mm = " << (std::isfinite(per_mm) ? formatSignificant(per_mm, 4) : std::string("more than 1.797e+308"))
-          << " data units)";
+        o << "; 1 mm is " << (std::isfinite(per_mm) ? formatForReader(per_mm, 4) : std::string("more than the largest double"))
+          << " data units";
     }
     return o.str();
 }
@@ -94,7 +100,7 @@ nlohmann::json sceneFactsJson(const Scene& s) {
     return j;
 }
 
-std::string formatSceneFacts(const Scene& s) {
+std::string formatSceneFacts(const Scene& s, bool with_size_and_heights) {
     std::ostringstream o;
     const double w = gridWidth(s.grid, s.pitch_mm), d = gridDepth(s.grid, s.pitch_mm, s.y_scale);
     const double zmax = s.zMm(highestPillarTop(s));
@@ -102,19 +108,21 @@ std::string formatSceneFacts(const Scene& s) {
       << s.grid.cellCount() << " (" << s.cells_nonempty << " above the floor, " << s.cells_with_data - s.cells_nonempty
       << " at the floor, " << s.grid.cellCount() - s.cells_with_data << " without data; culling: "
       << toString(s.params.cull) << ")\n";
-    o << "  size      " << formatFixed(w, 1) << " x " << formatFixed(d, 1) << " x " << formatFixed(zmax, 1)
-      << " mm (grid box), hexagons " << formatFixed(s.pitch_mm, 2) << " mm across flats";
-    if (s.keptCount() > 0 && !attachmentBoxes(s).empty()) {
-        const BoxMm f = sceneFootprint(s);
-        o << "; " << formatFixed(f.x1 - f.x0, 1) << " x " << formatFixed(f.y1 - f.y0, 1)
-          << " mm with what stands beside the pillars";
+    if (with_size_and_heights) {
+        o << "  size      " << formatFixed(w, 1) << " x " << formatFixed(d, 1) << " x " << formatFixed(zmax, 1)
+          << " mm (grid box), hexagons " << formatFixed(s.pitch_mm, 2) << " mm across flats";
+        if (s.keptCount() > 0 && !attachmentBoxes(s).empty()) {
+            const BoxMm f = sceneFootprint(s);
+            o << "; " << formatFixed(f.x1 - f.x0, 1) << " x " << formatFixed(f.y1 - f.y0, 1)
+              << " mm with what stands beside the pillars";
+        }
+        o << "\n";
     }
-    o << "\n";
     if (s.textures)
         o << "  heights   one height for every class, " << formatFixed(s.zMm(s.textures->height_units), 2)
           << " mm above the floor: a class map's codes are names, not amounts (--class-order stands ordered "
              "classes at heights)\n";
-    else
+    else if (with_size_and_heights)
         o << "  heights   " << mappingText(s) << "\n"
           << "  levels    " << feltLevelsSentence(s.mapping.max_height_mm, s.scale.has_value()) << "\n";
     if (s.params.bottom == Bottom::Flat)
@@ -185,7 +193,15 @@ static std::string classesLine(const Scene& scene, const FieldInput& input) {
 nlohmann::json summaryJson(const GenSummary& s) {
     nlohmann::json j;
     j["input"] = s.input;
-    if (s.field) j["field"] = {{"how", s.field->how}, {"pitch_data_units", s.field->pitch_data}};
+    if (s.field)
+        j["field"] = {{"how", s.field->how},
+                      {"pitch_data_units", s.field->pitch_data},
+                      // The data in the file's own words, as the key says them.
+                      {"description", s.field->input.description},
+                      {"variable", s.field->input.variable},
+                      {"step", s.field->input.step},
+                      {"units", s.field->input.units},
+                      {"per_hexagon", s.field->per_hexagon}};
     if (s.scene) j["scene"] = sceneFactsJson(*s.scene);
     j["ground"] = nullptr;
     if (s.scene && s.field)
@@ -228,27 +244,55 @@ nlohmann::json summaryJson(const GenSummary& s) {
 }
 
 std::string formatSummary(const GenSummary& s) {
+    // Essentials first: what was written, then what to check (the
+    // verdict, warnings, supports, pieces), then the model's size and
+    // heights; the details after.
     std::ostringstream o;
     o << "tsf gen: " << s.input << "\n";
+    if (!s.outputs.empty()) {
+        o << "Wrote:\n";
+        for (const auto& [path, what] : s.outputs) o << "  " << path << " (" << what << ")\n";
+    }
+    if (!s.verify_text.empty() || !s.supports_text.empty() || !s.halves_text.empty() || !s.tiles_text.empty() ||
+        !s.printer_notes.empty() || !s.legibility.empty()) {
+        o << "Check:\n" << s.verify_text << s.supports_text << s.halves_text << s.tiles_text;
+        for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
+        // What tsf changed so a hand can read the model, or why it could not.
+        for (const std::string& n : s.legibility) o << "  legible   " << n << "\n";
+    }
+    if (s.scene) {
+        const Scene& sc = *s.scene;
+        const double w = gridWidth(sc.grid, sc.pitch_mm), d = gridDepth(sc.grid, sc.pitch_mm, sc.y_scale);
+        o << "Model:\n  size      " << formatFixed(w, 1) << " by " << formatFixed(d, 1) << " by "
+          << formatFixed(sc.zMm(highestPillarTop(sc)), 1) << " mm (grid box), " << sc.keptCount() << " pillars "
+          << formatFixed(sc.pitch_mm, 2) << " mm across flats";
+        if (sc.keptCount() > 0 && !attachmentBoxes(sc).empty()) {
+            const BoxMm f = sceneFootprint(sc);
+            o << "; " << formatFixed(f.x1 - f.x0, 1) << " by " << formatFixed(f.y1 - f.y0, 1)
+              << " mm with what stands beside the pillars";
+        }
+        o << "\n";
+        if (!sc.textures)
+            o << "  heights   " << mappingText(sc) << "\n"
+              << "  levels    " << feltLevelsSentence(sc.mapping.max_height_mm, sc.scale.has_value()) << "\n";
+    }
+    o << "Details:\n";
     if (s.field) o << "  input     " << s.field->how << "\n";
-    for (const std::string& n : s.printer_notes) o << "  printer   " << n << "\n";
-    for (const std::string& n : s.legibility) o << "  legible   " << n << "\n";
-    if (s.scene) o << formatSceneFacts(*s.scene);
+    if (s.scene) o << formatSceneFacts(*s.scene, false);
     if (s.scene && s.field)
         if (const auto g = groundScale(*s.scene, *s.field)) o << groundLine(*g, s.field->input);
     if (s.scene && s.field && s.field->input.categorical) o << classesLine(*s.scene, s.field->input);
     if (s.mesh)
         o << "  mesh      " << s.mesh->vertexCount() << " vertices, " << s.mesh->triangleCount() << " triangles, volume "
           << formatFixed(signedVolume(*s.mesh), 1) << " mm^3\n";
-    if (!s.verify_text.empty()) o << s.verify_text;
-    o << s.supports_text << s.halves_text << s.tiles_text;
-    for (const auto& [path, what] : s.outputs) o << "  wrote     " << path << " (" << what << ")\n";
+    o << s.checks_text;
     if (!s.timings_ms.empty()) {
         o << "  time     ";
-        for (const auto& [stage, ms] : s.timings_ms) o << " " << stage << " " << formatFixed(ms, 0) << " ms";
+        for (const auto& [stage, ms] : s.timings_ms) o << " " << stage << " " << formatFixed(ms, 0) << " ms;";
+        o.seekp(-1, std::ios_base::cur);
         o << "\n";
     }
-    return o.str();
+    return shortLines(spokenText(o.str()), kSummaryLineChars, kSummaryIndent);
 }
 
 }  // namespace tsf::cli

@@ -2,7 +2,9 @@
 #include "app/ground_scale.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 
 #include "gen/util/number_format.h"
 
@@ -11,13 +13,34 @@ namespace tsf::cli {
 namespace {
 
 std::string groundLength(double m) {
-    return m >= 10000 ? formatSignificant(m / 1000, 4) + " km" : formatSignificant(m, 4) + " m";
+    return m >= 10000 ? formatForReader(m / 1000, 4) + " km" : formatForReader(m, 4) + " m";
+}
+
+/// Two lengths in one unit (never "9946 m by 10.03 km"): kilometres when
+/// the larger is 10 km or more. `sep` joins a number to its unit.
+std::pair<std::string, std::string> groundLengths(double a_m, double b_m, bool words, const std::string& sep) {
+    const bool km = std::max(a_m, b_m) >= 10000;
+    const double f = km ? 0.001 : 1.0;
+    auto one = [&](double m) {
+        const double v = m * f;
+        const std::string unit = words ? (km ? (v == 1 ? "kilometre" : "kilometres") : (v == 1 ? "metre" : "metres"))
+                                       : (km ? "km" : "m");
+        return formatForReader(v, 4) + sep + unit;
+    };
+    return {one(a_m), one(b_m)};
+}
+
+/// One length for the key: "15 metres", "1.2 kilometres".
+std::string groundWords(double m, const std::string& sep) {
+    const bool km = m >= 1000;
+    const double v = km ? m / 1000 : m;
+    return formatForReader(v, 4) + sep + (km ? (v == 1 ? "kilometre" : "kilometres") : (v == 1 ? "metre" : "metres"));
 }
 
 // An area for a reader: square kilometres, or hectares below one.
 std::string areaText(double km2) {
     if (km2 >= 1) return "about " + scaleNumber(km2) + " square kilometres";
-    return "about " + formatSignificant(km2 * 100, 3) + " hectares";
+    return "about " + formatForReader(km2 * 100, 3) + " hectares";
 }
 
 }  // namespace
@@ -39,18 +62,16 @@ std::optional<GroundScale> groundScale(const Scene& scene, const HexField& field
 }
 
 std::string scaleNumber(double n) {
-    if (!(n >= 1) || !std::isfinite(n)) return formatSignificant(n, 3);
+    if (!(n >= 1) || !std::isfinite(n)) return formatForReader(n, 3);
     const double unit = std::pow(10.0, std::max(0.0, std::floor(std::log10(n)) - 2));
-    std::string digits = std::to_string(int64_t(std::llround(n / unit) * int64_t(unit)));
-    for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(size_t(at), " ");
-    return digits;
+    return formatForReader(double(std::llround(n / unit)) * unit, 15);
 }
 
 std::string groundLine(const GroundScale& g, const FieldInput& in) {
-    std::string o = "  ground    " + groundLength(g.width_m) + " x " + groundLength(g.depth_m) + "; scale 1 : " +
-                    scaleNumber(g.east_west) + " (1 mm on the model is " + groundLength(g.east_west / 1000) +
-                    " on the ground)";
-    if (std::abs(g.north_south / g.east_west - 1) > 1e-6) o += ", north-south 1 : " + scaleNumber(g.north_south);
+    const auto [w, d] = groundLengths(g.width_m, g.depth_m, false, " ");
+    std::string o = "  ground    " + w + " by " + d + "; scale 1 to " + scaleNumber(g.east_west) +
+                    " (1 mm on the model is " + groundLength(g.east_west / 1000) + " on the ground)";
+    if (std::abs(g.north_south / g.east_west - 1) > 1e-6) o += ", north-south 1 to " + scaleNumber(g.north_south);
     if (g.hexagon_area_km2 > 0) o += "; each hexagon " + areaText(g.hexagon_area_km2);
     if (in.longitude_scale > 0)
         o += "; longitude and latitude: a degree of longitude counted as cos(mean latitude) = " +
@@ -59,11 +80,13 @@ std::string groundLine(const GroundScale& g, const FieldInput& in) {
 }
 
 std::string groundSentence(const GroundScale& g) {
-    std::string o = "The model shows " + groundLength(g.width_m) + " by " + groundLength(g.depth_m) +
-                    " of ground at a scale of 1 : " + scaleNumber(g.east_west) + ": 1 mm on it is " +
-                    groundLength(g.east_west / 1000) + " on the ground";
+    const std::string nb = "\u00A0";  // a number and its unit stay on one braille line
+    const auto [w, d] = groundLengths(g.width_m, g.depth_m, true, nb);
+    std::string o = "The model shows ground " + w + " from west to east and " + d +
+                    " from south to north, at a scale of 1 to " + scaleNumber(g.east_west) + ": 1" + nb +
+                    "millimetre on the model is " + groundWords(g.east_west / 1000, nb) + " on the ground";
     if (std::abs(g.north_south / g.east_west - 1) > 1e-6)
-        o += " from west to east, and 1 : " + scaleNumber(g.north_south) + " from south to north";
+        o += " from west to east, and 1 to " + scaleNumber(g.north_south) + " from south to north";
     if (g.hexagon_area_km2 > 0) o += ". Each hexagon covers " + areaText(g.hexagon_area_km2) + " of ground";
     return o + ".";
 }

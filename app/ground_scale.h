@@ -1,5 +1,5 @@
 // The ground a georeferenced raster covers and the model's scale on it, for
-// the summary and the key: "1800 m x 1200 m; scale 1 : 15 000".
+// the summary and the key: "1,800 m by 1,200 m; scale 1 to 15,000".
 #pragma once
 
 #include <optional>
@@ -19,15 +19,20 @@ struct GroundScale {
 /// None when the file does not say how long its units are (FieldInput::metres_per_unit).
 std::optional<GroundScale> groundScale(const Scene& scene, const HexField& field);
 
-/// N of a scale 1 : N as a map gives it: three significant digits, whole,
-/// thousands apart ("15 000", "1 250 000").
+/// N of a scale "1 to N": three significant digits, whole, thousands
+/// grouped by commas ("15,000", "1,250,000"). Commas, not spaces: braille
+/// reads "1 250 000" as three numbers and so does a screen reader. "1 to N"
+/// rather than "1 : N", as a scale is said aloud; in braille a colon
+/// between numbers is a lower-cell sign a reader can take for a digit.
 std::string scaleNumber(double n);
 
 /// The summary's "  ground    ..." line.
 std::string groundLine(const GroundScale& g, const FieldInput& in);
 
-/// The key's sentence: "The model shows 1800 m x 1200 m of ground at a scale
-/// of 1 : 15 000: 1 mm on it is 15 m on the ground." For points, and the
+/// The key's sentence: "The model shows ground 1,800 metres from west to
+/// east and 1,200 metres from south to north, at a scale of 1 to 15,000: 1
+/// millimetre on the model is 15 metres on the ground." Numbers joined to
+/// their units by no-break spaces (model_key.h). For points, also the
 /// area of ground one hexagon covers.
 std::string groundSentence(const GroundScale& g);
 

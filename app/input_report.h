@@ -11,11 +11,14 @@
 
 namespace tsf::cli {
 
-/// Lines "  read      ..." and "  values    ..." (raw min, max, mean, no-data count).
+/// Lines "  read      ...", "  data      ..." (the file's own description
+/// of the values, units and step, when it gives them) and "  values    ..."
+/// (raw min, max, mean, no-data count).
 std::string formatFieldInput(const FieldInput& in);
 
 /// {"kind", "cols", "rows", "values", "nodata_values", "min", "max", "mean"
-/// (null when no value has data), "detected": {fact name: value}}.
+/// (null when no value has data), "detected": {fact name: value},
+/// "description", "variable", "step", "units" (the file's words; "" when none)}.
 nlohmann::json fieldInputJson(const FieldInput& in);
 
 }  // namespace tsf::cli

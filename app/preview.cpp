@@ -19,9 +19,11 @@ constexpr uint32_t kClassColours[] = {0xe69f00, 0x56b4e9, 0x009e73, 0xf0e442, 0x
 
 }  // namespace
 
-void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, int width_px, int height_px,
-                       const Scene* classes) {
+void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, double colour_top_z_mm,
+                       const std::string& size_text, int width_px, int height_px, const Scene* classes) {
     MeshPictureOptions po;
+    po.colour_top_z_mm = colour_top_z_mm;
+    po.size_text = size_text;
     if (classes) {
         // A colour per class value, the commonest class first.
         std::map<double, int64_t> count;

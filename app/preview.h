@@ -13,11 +13,14 @@
 namespace tsf::cli {
 
 /// Draws `mesh` to png_path (width x height pixels); `underside` adds the
-/// view from below. Throws tsf::OutputError when the file cannot be written.
+/// view from below; colour_top_z_mm and size_text as MeshPictureOptions
+/// (a series' shared colour scale; the pieces' sizes). Throws
+/// tsf::OutputError when the file cannot be written.
 /// `classes` (may be null): the Scene of a class map, whose tops are then
 /// coloured by class (a distinct colour per class, commonest first) instead
 /// of by height, so classes standing at one height still differ.
-void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, int width_px = 1200,
-                       int height_px = 800, const Scene* classes = nullptr);
+void writeModelPreview(const Mesh& mesh, const std::string& png_path, bool underside, double colour_top_z_mm = 0,
+                       const std::string& size_text = "", int width_px = 1200, int height_px = 800,
+                       const Scene* classes = nullptr);
 
 }  // namespace tsf::cli

@@ -21,6 +21,9 @@ struct FieldInput {
     double min = NAN, max = NAN, mean = NAN;  ///< over the values with data; NaN when none
     std::vector<ReadFact> facts;  ///< what the reader detected, in reading order
     std::string units;            ///< the values' units as the file names them ("" when it does not)
+    std::string description;      ///< what the values are in the file's words (Raster::description)
+    std::string variable;         ///< the variable read (Raster::variable)
+    std::string step;             ///< the band's time step or level (Raster::step)
     /// The values are class codes (a colour table or class names in the
     /// file, or --categorical): a hexagon takes one class, never a mean.
     bool categorical = false;

@@ -21,6 +21,9 @@ struct HexField {
     std::vector<double> values;  ///< grid.cols * grid.rows, row-major, NaN = no data
     std::string source;          ///< input file, for reports and headers
     std::string how;             ///< one line: how the values were made ("mean of 2x2 px", "count of points")
+    /// What one hexagon's value is, in words for the model's key ("the mean
+    /// of the values that fall in it"); "" when one value of the data.
+    std::string per_hexagon;
     /// Centre spacing of the lattice in data units (1 = one raster pixel), so a
     /// reader of the model can relate millimetres back to data coordinates.
     double pitch_data = 1.0;

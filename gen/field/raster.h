@@ -41,6 +41,12 @@ struct Raster {
     /// table's name column), by code; empty when it names none.
     std::vector<RasterClass> classes;
     std::string units;           ///< the values' units as the file names them ("" when it does not)
+    /// What the values are, in the file's own words: a NetCDF variable's
+    /// long_name, a band's description ("elevation"); "" when it says none.
+    std::string description;
+    std::string variable;        ///< the variable read from a file of several ("pr"); "" otherwise
+    /// The band's time step or level, short ("2000-02-01"); "" for a file of one band without one.
+    std::string step;
     /// 1: every value is one of the file's. More: the file was too large to
     /// read whole, and each value is the mean (or most common class) of a
     /// block of about decimation x decimation of its pixels.

@@ -192,10 +192,22 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
 
     std::string what;
     switch (opts.method) {
-        case ResampleOptions::Method::Mean: what = "mean of the pixels in each hexagon"; break;
-        case ResampleOptions::Method::Nearest: what = "nearest pixel to each hexagon centre"; break;
-        case ResampleOptions::Method::Bilinear: what = "bilinear interpolation at each hexagon centre"; break;
-        case ResampleOptions::Method::Mode: what = "most common class of the pixels in each hexagon"; break;
+        case ResampleOptions::Method::Mean:
+            what = "mean of the pixels in each hexagon";
+            field.per_hexagon = "the mean of the values that fall in it";
+            break;
+        case ResampleOptions::Method::Nearest:
+            what = "nearest pixel to each hexagon centre";
+            field.per_hexagon = "the value nearest its centre";
+            break;
+        case ResampleOptions::Method::Bilinear:
+            what = "bilinear interpolation at each hexagon centre";
+            field.per_hexagon = "the values around its centre, blended";
+            break;
+        case ResampleOptions::Method::Mode:
+            what = "most common class of the pixels in each hexagon";
+            field.per_hexagon = "the most common class of the values that fall in it";
+            break;
     }
     field.how = decimatedPrefix(raster) + what + ": " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " px -> " + std::to_string(grid.cols) + " x " + std::to_string(grid.rows) + " hexagons, pitch " +
@@ -250,6 +262,9 @@ HexField rasterOneToOne(const Raster& raster) {
     field.one_to_one = raster.decimation <= 1 && !raster.pixels_repeated;
     field.rows_a_pitch_apart = true;
     field.row_aspect = raster.row_aspect;
+    if (raster.decimation > 1)
+        field.per_hexagon = raster.categorical ? "the most common class of a block of the file's values"
+                                               : "the mean of a block of the file's values";
     field.how = decimatedPrefix(raster) + (raster.pixels_repeated ? "one pillar per square pixel: " : "one pillar per value: ") +
                 std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +
                 " values -> " + std::to_string(raster.cols) + " x " + std::to_string(raster.rows) +

@@ -37,11 +37,17 @@ std::string brailleReadyFile(const std::vector<std::string>& paragraphs, const s
     std::string out;
     int line = 0;  // lines written on the current page
     for (size_t p = 0; p < paragraphs.size(); ++p) {
-        const Cells cells = translateToBraille(paragraphs[p], table);
-        // Words: runs of cells between blank cells.
+        std::vector<int> source;
+        std::vector<uint32_t> code_points;
+        const Cells cells = translateToBraille(paragraphs[p], table, source, code_points);
+        // Words: runs of cells between blank cells; a blank from a no-break
+        // space (a number and its unit) stays inside its word.
         std::vector<Cells> words(1);
-        for (uint8_t c : cells) {
-            if ((c & 0x3F) == 0) {
+        for (size_t k = 0; k < cells.size(); ++k) {
+            const uint8_t c = cells[k];
+            const int from = source[k];
+            const bool glued = from >= 0 && size_t(from) < code_points.size() && code_points[size_t(from)] == 0xA0;
+            if ((c & 0x3F) == 0 && !glued) {
                 if (!words.back().empty()) words.emplace_back();
             } else {
                 words.back().push_back(c);

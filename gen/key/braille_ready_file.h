@@ -7,7 +7,8 @@
 // page, 11 x 11.5 in), lines ending CR LF, pages ending with a form feed.
 // Each paragraph starts on a new line, indented two cells (BANA's
 // paragraph form); the first paragraph (the title) is not indented. Lines
-// break between words; a word longer than a line is split.
+// break between words, never at a no-break space (U+00A0: the key puts one
+// between a number and its unit); a word longer than a line is split.
 #pragma once
 
 #include <cstdint>

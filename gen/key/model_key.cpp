@@ -1,13 +1,17 @@
 #include "gen/key/model_key.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
 #include "gen/field/hex_grid.h"
+#include "gen/key/places_in_words.h"
+#include "gen/key/unit_words.h"
+#include "gen/model/features/braille.h"
+#include "gen/model/features/class_textures.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
-#include "gen/model/features/class_textures.h"
 #include "gen/model/features/felt_heights.h"
 #include "gen/model/scene_classes.h"
 #include "gen/util/number_format.h"
@@ -15,21 +19,91 @@
 namespace tsf {
 namespace {
 
-std::string num(double v) { return formatSignificant(v, 4); }
-std::string mm(double v) { return formatSignificant(v, 3) + " mm"; }
+/// Joins a number to its unit: the BRF keeps them on one line.
+const std::string kNoBreak = "\u00A0";
 
-/// " airports" (with a space) or "" when no units were given.
-std::string unitsAfter(const Scene& s) { return s.params.legend.units.empty() ? "" : " " + s.params.legend.units; }
+std::string num(double v) { return formatForReader(v, 4); }
 
-std::string heightsParagraph(const Scene& s) {
+/// "5 millimetres" (up to 3 significant digits).
+std::string mm(double v) { return formatForReader(v, 3) + kNoBreak + (v == 1 ? "millimetre" : "millimetres"); }
+
+/// The value with its unit words, joined: "12.5 degrees Celsius".
+std::string amount(double v, const UnitWords& u) {
+    const std::string& w = v == 1 ? u.singular : u.plural;
+    return num(v) + (w.empty() ? "" : kNoBreak + w);
+}
+
+/// "from 1 to 5 millimetres per day".
+std::string range(double lo, double hi, const UnitWords& u) { return "from " + num(lo) + " to " + amount(hi, u); }
+
+/// The units a reader is told: --units as the maker wrote them (spelled
+/// out when they are a known unit), else the file's.
+UnitWords readerUnits(const Scene& s, const ModelKeyFacts& facts) {
+    return unitWords(s.params.legend.units.empty() ? facts.units : s.params.legend.units);
+}
+
+std::string capitalised(std::string text) {
+    if (!text.empty()) text[0] = char(std::toupper(static_cast<unsigned char>(text[0])));
+    return text;
+}
+
+/// A step "2000-02-01" (or "2000-02-01 06:00") as "1 February 2000" (", 06:00"):
+/// read as a date aloud, and in braille one number each (a hyphen between
+/// numbers needs a new number sign, which not every braille table writes).
+/// Any other step as it is.
+std::string stepWords(const std::string& step) {
+    static constexpr const char* kMonths[] = {"January", "February", "March",     "April",   "May",      "June",
+                                              "July",    "August",   "September", "October", "November", "December"};
+    auto digits = [&](size_t from, size_t n) {
+        for (size_t k = from; k < from + n; ++k)
+            if (k >= step.size() || !std::isdigit(static_cast<unsigned char>(step[k]))) return false;
+        return true;
+    };
+    if (!(step.size() == 10 || (step.size() == 16 && step[10] == ' ' && step[13] == ':' && digits(11, 2) && digits(14, 2))) ||
+        !digits(0, 4) || step[4] != '-' || !digits(5, 2) || step[7] != '-' || !digits(8, 2))
+        return step;
+    const int month = std::stoi(step.substr(5, 2)), day = std::stoi(step.substr(8, 2));
+    if (month < 1 || month > 12 || day < 1 || day > 31) return step;
+    return std::to_string(day) + " " + kMonths[month - 1] + " " + step.substr(0, 4) +
+           (step.size() == 16 ? ", " + step.substr(11) : "");
+}
+
+std::string titleParagraph(const Scene& s, const ModelKeyFacts& facts) {
+    if (!s.params.legend.title.empty()) return s.params.legend.title;
+    if (!facts.description.empty())
+        return capitalised(facts.description) + (facts.step.empty() ? "" : ", " + stepWords(facts.step));
+    return "Model of " + facts.input_name;
+}
+
+std::string showsParagraph(const ModelKeyFacts& facts, const UnitWords& u) {
+    std::string p = "What it shows: ";
+    if (!facts.about.empty()) {
+        p += facts.about;
+        if (p.back() != '.') p += ".";
+    } else {
+        std::string what = !facts.description.empty() ? facts.description
+                           : !facts.variable.empty()  ? "the variable " + facts.variable + " of the file " + facts.input_name
+                           : facts.points             ? "the points of the file " + facts.input_name
+                                                      : "the values of the file " + facts.input_name;
+        if (!u.plural.empty()) what += (facts.points && facts.description.empty() ? ", as " : ", in ") + u.plural;
+        if (!facts.step.empty()) what += ", for " + stepWords(facts.step);
+        p += what + ".";
+    }
+    if (facts.series_count > 1)
+        p += " This is model " + std::to_string(facts.series_index) + " of " + std::to_string(facts.series_count) +
+             " in a series, all on one height scale: a pillar of the same height means the same value in every model "
+             "of the series.";
+    return p;
+}
+
+std::string heightsParagraph(const Scene& s, const UnitWords& u) {
     const ValueMapping& m = s.mapping;
-    const std::string u = unitsAfter(s);
-    std::string p = "A pillar's height above the floor shows its value: " + num(m.baseline) + u + " at the floor, " +
-                    num(m.value_max) + u + " at " + mm(m.max_height_mm) + " above it. ";
+    std::string p = "How to read a height: a pillar's height above the floor shows its value. The floor is " +
+                    amount(m.baseline, u) + "; a pillar " + mm(m.max_height_mm) + " high is " + amount(m.value_max, u) + ". ";
     switch (m.transfer) {
     case Transfer::Linear: {
         const double per_mm = (m.value_max - m.baseline) / m.max_height_mm;
-        p += "Heights are proportional to the values: each millimetre is " + num(per_mm) + u + ".";
+        p += "Heights are proportional to the values: each millimetre of height is " + amount(per_mm, u) + ".";
         break;
     }
     case Transfer::Sqrt:
@@ -64,36 +138,11 @@ std::string orientationParagraph(const Scene& s) {
     return p;
 }
 
-}  // namespace
-
-std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts& facts) {
-    std::vector<std::string> out;
-    const std::string u = unitsAfter(s);
-    out.push_back(s.params.legend.title.empty() ? "Model of " + facts.input_name : s.params.legend.title);
-    std::string shows = "What it shows: " + facts.field_how + ".";
-    for (const std::string& f : facts.read_facts) shows += " " + f + ".";
-    out.push_back(shows + " Made by tsf " + facts.version + " from the file " + facts.input_name + ".");
-
-    // The values as modelled (kept cells with data).
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    int64_t pits = 0;
-    for (size_t k = 0; k < s.keptCount(); ++k) {
-        if (s.kind[k] == CellKind::NoData || !std::isfinite(s.value[k])) {
-            ++pits;
-            continue;
-        }
-        lo = std::min(lo, s.value[k]);
-        hi = std::max(hi, s.value[k]);
-    }
-    std::string values = "Each hexagon is " + mm(s.pitch_mm) + " across";
-    values += s.one_to_one ? (s.textures ? " and stands for one value of the data. "
-                                         : " and stands for one value of the data, at its own height. ")
-                           : " and stands for the values that fell in it, as said above. ";
-    if (facts.categorical) {
-        // Class codes: their range and a height per unit mean nothing; each
-        // class is told by name and height.
-        const std::vector<SceneClass> classes = sceneClasses(s, facts.class_names, facts.class_order);
-        values += "The values are classes, not amounts: " + std::to_string(classes.size()) +
+void classParagraphs(const Scene& s, const ModelKeyFacts& facts, std::vector<std::string>& out) {
+    // Class codes: their range and a height per unit mean nothing; each
+    // class is told by name and height.
+    const std::vector<SceneClass> classes = sceneClasses(s, facts.class_names, facts.class_order);
+    out.push_back("The values are classes, not amounts: " + std::to_string(classes.size()) +
                   (classes.size() == 1 ? " class" : " classes") +
                   ". Each hexagon holds one class, the most common where it stands, never a mix. " +
                   (s.textures ? "Every class stands at one height, " + mm(s.zMm(s.textures->height_units)) +
@@ -103,68 +152,109 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
                        ? std::string("Each class stands at its own height, in the order of its code in the file; a "
                                      "higher pillar is not more of anything.")
                        : std::string("The classes are ordered, lowest first, as the model's maker gave them: each "
-                                     "stands one even step above the one before."));
-        out.push_back(values);
-        if (s.textures) {
-            // One sentence per texture, the classes that have it, commonest first.
-            std::string list = "The textures:";
-            for (int t = 0; t < s.textures->textures_used; ++t) {
-                std::string who;
-                int64_t cells = 0;
-                size_t named = 0;
-                for (const SceneClass& c : classes)
-                    if (c.texture == textureName(Texture(t))) {
-                        who += std::string(named++ == 0 ? "" : ", ") + "class " + className(c);
-                        cells += c.cells;
-                    }
-                if (named == 0) continue;
-                list += std::string(t == 0 ? " " : "; ") + textureName(Texture(t)) + " (" + textureFeel(Texture(t)) +
-                        "): " + who + (named > 1 ? " (these classes share it)" : "") + ", " + std::to_string(cells) +
-                        (cells == 1 ? " hexagon" : " hexagons");
-            }
-            out.push_back(list + ".");
-        } else {
-            std::string list = "The classes, by height:";
-            for (size_t k = 0; k < classes.size(); ++k)
-                list += std::string(k == 0 ? " " : "; ") + "class " + className(classes[k]) + ", " +
-                        mm(classes[k].height_mm) + ", " + std::to_string(classes[k].cells) +
-                        (classes[k].cells == 1 ? " hexagon" : " hexagons");
-            out.push_back(list + ".");
+                                     "stands one even step above the one before.")));
+    auto hexagons = [](int64_t n) { return num(double(n)) + (n == 1 ? " hexagon" : " hexagons"); };
+    if (s.textures) {
+        // One sentence per texture, the classes that have it, commonest first.
+        std::string list = "The textures:";
+        for (int t = 0; t < s.textures->textures_used; ++t) {
+            std::string who;
+            int64_t cells = 0;
+            size_t named = 0;
+            for (const SceneClass& c : classes)
+                if (c.texture == textureName(Texture(t))) {
+                    who += std::string(named++ == 0 ? "" : ", ") + "class " + className(c);
+                    cells += c.cells;
+                }
+            if (named == 0) continue;
+            list += std::string(t == 0 ? " " : "; ") + textureName(Texture(t)) + " (" + textureFeel(Texture(t)) +
+                    "): " + who + (named > 1 ? " (these classes share it)" : "") + ", " + hexagons(cells);
         }
-        if (const std::string b = backgroundSentence(classes); !b.empty()) out.push_back(b);
+        out.push_back(list + ".");
     } else {
-        if (std::isfinite(lo))
-            values += "The values go from " + num(lo) + " to " + num(hi) + u + ".";
-        out.push_back(values);
-        out.push_back(heightsParagraph(s));
+        std::string list = "The classes, by height:";
+        for (size_t k = 0; k < classes.size(); ++k)
+            list += std::string(k == 0 ? " " : "; ") + "class " + className(classes[k]) + ", " +
+                    mm(classes[k].height_mm) + ", " + hexagons(classes[k].cells);
+        out.push_back(list + ".");
     }
-    if (pits > 0)
-        out.push_back(std::to_string(pits) + (pits == 1 ? " cell has" : " cells have") +
-                      " no data: each is a pit " + mm(s.zMm(s.nodata_pit_units)) +
+    if (const std::string b = backgroundSentence(classes); !b.empty()) out.push_back(b);
+}
+
+}  // namespace
+
+std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts& facts) {
+    std::vector<std::string> out;
+    const UnitWords u = readerUnits(s, facts);
+    out.push_back(titleParagraph(s, facts));
+    out.push_back(showsParagraph(facts, u));
+
+    // The values as modelled (kept cells with data), and where the pits are.
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    std::vector<std::pair<int32_t, int32_t>> pits;
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        if (s.kind[k] == CellKind::NoData || !std::isfinite(s.value[k])) {
+            pits.push_back({s.col[k], s.row[k]});
+            continue;
+        }
+        lo = std::min(lo, s.value[k]);
+        hi = std::max(hi, s.value[k]);
+    }
+    std::string values = "Each hexagon is " + mm(s.pitch_mm) + " across";
+    if (s.one_to_one) values += " and stands for one value of the data.";
+    else if (!facts.per_hexagon.empty()) values += " and stands for " + facts.per_hexagon + ".";
+    else values += " and stands for the values that fell in it.";
+    if (facts.categorical) {
+        out.push_back(values);
+        classParagraphs(s, facts, out);
+    } else {
+        const bool data_range = std::isfinite(facts.data_min) && std::isfinite(facts.data_max);
+        if (data_range) values += " The data's own values go " + range(facts.data_min, facts.data_max, u) + ".";
+        if (std::isfinite(lo)) {
+            const bool same = data_range && lo == facts.data_min && hi == facts.data_max;
+            if (!data_range) values += " The pillars' values go " + range(lo, hi, u) + ".";
+            else if (!same)
+                values += std::string(s.one_to_one ? " The pillars' values, of the hexagons kept, go "
+                                                    : " The pillars' values, one for each hexagon, go ") +
+                          range(lo, hi, u) + ".";
+        }
+        out.push_back(values);
+        out.push_back(heightsParagraph(s, u));
+    }
+    if (!pits.empty()) {
+        const int64_t n = int64_t(pits.size());
+        out.push_back(num(double(n)) + (n == 1 ? " cell has" : " cells have") + " no data, " +
+                      placesInWords(s.grid.cols, s.grid.rows, pits) + ": each is a pit " + mm(s.zMm(s.nodata_pit_units)) +
                       " below the floor, never a value. Between tall pillars its bottom may be out of a fingertip's "
                       "reach: a hole you cannot feel the bottom of holds no data.");
+    }
+    if (!facts.left_out_nodata.empty())
+        out.push_back("The data has no values " + placesInWords(s.grid.cols, s.grid.rows, facts.left_out_nodata) +
+                      ": the model leaves " + (facts.left_out_nodata.size() == 1 ? "that place" : "those places") +
+                      " out, so its edge follows the data.");
     if (s.shapes.cells_textured > 0)
-        out.push_back(std::to_string(s.shapes.cells_textured) +
+        out.push_back(num(double(s.shapes.cells_textured)) +
                       " cells at the floor hold no data and are there only to hold the model together: each has a "
                       "cone-shaped dimple " + mm(s.zMm(s.shapes.dimple_units)) + " deep at its centre. They are not values.");
     if (s.shapes.cells_tilted > 0 && s.params.tilt != TiltSource::None)
         out.push_back(std::string("Pillar tops lean: each leans the way ") +
                       (s.params.tilt == TiltSource::Points ? "the points crowd within its hexagon"
                                                            : "the data rises across its hexagon") +
-                      ", at most " + formatSignificant(s.params.max_slope_deg, 3) +
-                      " degrees. The height at a top's centre is its value.");
+                      ", at most " + num(s.params.max_slope_deg) + kNoBreak +
+                      "degrees. The height at a top's centre is its value.");
     out.push_back(orientationParagraph(s));
     if (s.legend) {
-        std::string p = "Braille on the plate north of the pillars reads:";
+        std::string p = "Braille on the plate north of the pillars, in " + brailleCodeName(s.params.legend.table) + ", reads:";
         for (const std::string& line : s.legend->layout.text) p += " \"" + line + "\".";
         out.push_back(p);
     }
     if (s.scale) {
         std::string steps;
         for (size_t k = 0; k < s.scale->steps.size(); ++k)
-            steps += (k == 0 ? "" : k + 1 == s.scale->steps.size() ? " and " : ", ") + num(s.scale->steps[k].value);
+            steps += (k == 0 ? "" : k + 1 == s.scale->steps.size() ? " and " : ", ") +
+                     (k + 1 == s.scale->steps.size() ? amount(s.scale->steps[k].value, u) : num(s.scale->steps[k].value));
         out.push_back("A tactile scale stands east of the pillars: " + std::to_string(s.scale->steps.size()) +
-                      " steps, the lowest in the south, at " + steps + u +
+                      " steps, the lowest in the south, at " + steps +
                       ". Put a finger on a pillar and one on the steps to read its value.");
     }
     const double top = s.zMm(highestPillarTop(s));
@@ -183,12 +273,25 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
         out.push_back("The model prints in two halves, upper and lower, joined by pins that fit one way only.");
     if (!facts.assembly.empty()) out.push_back(facts.assembly);
     if (!facts.legibility.empty()) out.push_back(facts.legibility);
+
+    // The last section: how the values were made, and the file's details.
+    out.push_back(kModelKeyMadeHeading);
+    std::string made = capitalised(facts.field_how) + ".";
+    for (const std::string& f : facts.read_facts) made += " " + f + ".";
+    for (const std::string& n : facts.made_notes) made += " " + n + (n.empty() || n.back() == '.' ? "" : ".");
+    out.push_back(made);
+    out.push_back("The braille of the plate and of this key's BRF file is " + brailleCodeName(s.params.legend.table) +
+                  " (liblouis table " + s.params.legend.table + "). Made by tsf " + facts.version + " from the file " +
+                  facts.input_name + ".");
     return out;
 }
 
 std::string modelKeyText(const std::vector<std::string>& paragraphs) {
     std::string out = std::string(kModelKeyHeader) + "\n";
-    for (const std::string& p : paragraphs) out += "\n" + p + "\n";
+    for (std::string p : paragraphs) {
+        for (size_t at; (at = p.find(kNoBreak)) != std::string::npos;) p.replace(at, kNoBreak.size(), " ");
+        out += "\n" + p + "\n";
+    }
     return out;
 }
 

@@ -74,7 +74,7 @@ void drawView(RgbImage& img, int x0, int y0, int w, int h, const Mesh& mesh, con
     };
     std::vector<double> depth(size_t(w) * size_t(h), -std::numeric_limits<double>::infinity());
     const Vec3 light = unit({-0.5, 0.6, from_below ? -0.65 : 0.65});  // from the north-west, on the viewed side
-    const double z_range = std::max(b.max.z - b.min.z, 1e-9);
+    const double z_range = std::max((opts.colour_top_z_mm > 0 ? opts.colour_top_z_mm : b.max.z) - b.min.z, 1e-9);
     for (const auto& t : mesh.triangles) {
         const Vec3 &a = mesh.positions[t[0]], &bb = mesh.positions[t[1]], &c = mesh.positions[t[2]];
         const Vec3 n = unit(cross(sub(bb, a), sub(c, a)));
@@ -126,8 +126,11 @@ void drawView(RgbImage& img, int x0, int y0, int w, int h, const Mesh& mesh, con
     const double bar_mm = niceLength(b.max.x - b.min.x);
     const int bx = x0 + kMarginPx, by = y0 + h - kMarginPx - textHeight(kFontScale);
     img.fill(bx, by, bx + int(std::lround(bar_mm * scale)), by + kFontScale * 2, kInk);
-    const std::string size = formatFixed(bar_mm, 0) + " mm;  model " + formatFixed(b.max.x - b.min.x, 0) + " x " + formatFixed(b.max.y - b.min.y, 0) +
-                             " x " + formatFixed(b.max.z - b.min.z, 0) + " mm";
+    const std::string size = formatFixed(bar_mm, 0) + " mm;  " +
+                             (!opts.size_text.empty() ? opts.size_text
+                                                      : "model " + formatFixed(b.max.x - b.min.x, 0) + " x " +
+                                                            formatFixed(b.max.y - b.min.y, 0) + " x " +
+                                                            formatFixed(b.max.z - b.min.z, 0) + " mm");
     drawText(img, bx + int(std::lround(bar_mm * scale)) + 2 * kFontScale, by - kFontScale, size, kFontScale, kInk);
 }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 #include "gen/geometry/mesh.h"
 #include "gen/util/rgb_image.h"
@@ -26,6 +27,13 @@ struct MeshPictureOptions {
     /// once per triangle at its centre (a class map's class); false, or no
     /// function: coloured by height.
     std::function<bool(double x_mm, double y_mm, uint32_t& rgb)> top_colour;
+    /// > 0: the colours run from the mesh's lowest z to this z (mm), not to
+    /// its highest: the pictures of a series share one colour scale, so the
+    /// same height is the same colour in each.
+    double colour_top_z_mm = 0;
+    /// The size text beside the scale bar; "" for the mesh's "model W x D x H mm"
+    /// (pieces laid out apart say each piece's size instead).
+    std::string size_text;
 };
 
 /// Background colour of the picture (0xRRGGBB); the model never uses it.

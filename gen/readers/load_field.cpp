@@ -193,6 +193,9 @@ HexField loadField(const FieldLoadOptions& o) {
     input.rows = raster.rows;
     input.facts = raster.facts;
     input.units = raster.units;
+    input.description = raster.description;
+    input.variable = raster.variable;
+    input.step = raster.step;
     input.categorical = raster.categorical;
     input.classes = raster.classes;
     input.metres_per_unit = raster.metres_per_unit;

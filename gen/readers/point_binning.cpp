@@ -128,9 +128,18 @@ HexField binPoints(const PointTable& points, const BinOptions& opts) {
     }
     std::string what;
     switch (opts.aggregate) {
-        case BinOptions::Aggregate::Count: what = "count of points"; break;
-        case BinOptions::Aggregate::Sum: what = "sum of " + points.weight_name; break;
-        case BinOptions::Aggregate::Mean: what = "mean of " + points.weight_name; break;
+        case BinOptions::Aggregate::Count:
+            what = "count of points";
+            field.per_hexagon = "how many points fall in it";
+            break;
+        case BinOptions::Aggregate::Sum:
+            what = "sum of " + points.weight_name;
+            field.per_hexagon = "the sum of " + points.weight_name + " over the points that fall in it";
+            break;
+        case BinOptions::Aggregate::Mean:
+            what = "mean of " + points.weight_name;
+            field.per_hexagon = "the mean of " + points.weight_name + " over the points that fall in it";
+            break;
     }
     field.how = what + " per hexagon: " + std::to_string(points.size()) + " points (" + points.x_name + ", " +
                 points.y_name + ") -> " + std::to_string(grid.cols) + " x " + std::to_string(grid.rows) +

@@ -20,9 +20,24 @@ TEST(Braille, LettersAndNumbersInUncontractedEnglish) {
     // Digits: the number sign, then a-j.
     EXPECT_EQ(translateToBraille("12", kDefaultBrailleTable),
               (std::vector<uint8_t>{kDot3 | kDot4 | kDot5 | kDot6, kDot1, kDot1 | kDot2}));
-    // A space is the empty cell; a letter standing alone gets the letter sign (dots 5-6).
-    EXPECT_EQ(translateToBraille("ab c", kDefaultBrailleTable),
+    // A space is the empty cell; in Unified English Braille (the default)
+    // a letter standing alone is the letter, where EBAE (en-us-g1.ctb)
+    // puts the letter sign (dots 5-6) before it.
+    EXPECT_EQ(kDefaultBrailleTable, std::string("en-ueb-g1.ctb"));
+    EXPECT_EQ(translateToBraille("ab c", kDefaultBrailleTable), (std::vector<uint8_t>{kDot1, kDot1 | kDot2, 0, kDot1 | kDot4}));
+    EXPECT_EQ(translateToBraille("ab c", "en-us-g1.ctb"),
               (std::vector<uint8_t>{kDot1, kDot1 | kDot2, 0, kDot5 | kDot6, kDot1 | kDot4}));
+    // The decimal point: dots 2-5-6 in UEB, dots 4-6 in EBAE; the comma
+    // inside a number (dot 2 in both) keeps one number sign.
+    EXPECT_EQ(translateToBraille("1.5", kDefaultBrailleTable),
+              (std::vector<uint8_t>{kDot3 | kDot4 | kDot5 | kDot6, kDot1, kDot2 | kDot5 | kDot6, kDot1 | kDot5}));
+    EXPECT_EQ(translateToBraille("1.5", "en-us-g1.ctb"),
+              (std::vector<uint8_t>{kDot3 | kDot4 | kDot5 | kDot6, kDot1, kDot4 | kDot6, kDot1 | kDot5}));
+    for (const char* table : {kDefaultBrailleTable, "en-us-g1.ctb"})
+        EXPECT_EQ(translateToBraille("15,000", table),
+                  (std::vector<uint8_t>{kDot3 | kDot4 | kDot5 | kDot6, kDot1, kDot1 | kDot5, kDot2, kDot2 | kDot4 | kDot5,
+                                        kDot2 | kDot4 | kDot5, kDot2 | kDot4 | kDot5}))
+            << table;
     EXPECT_EQ(brailleUnicode({kDot1, kDot1 | kDot2, kDot1 | kDot4}), "\u2801\u2803\u2809");
     EXPECT_TRUE(translateToBraille("", kDefaultBrailleTable).empty());
 }
@@ -72,7 +87,14 @@ TEST(Legend, LongLinesBreakAtSpacesAndAnOverlongWordSaysWhatToChange) {
     EXPECT_EQ(l.text, (std::vector<std::string>{"abc def", "ghi"}));
     p.max_cells = 2;
     EXPECT_INPUT_ERROR(layoutLegend(p), "give a shorter --title or --units");
-    EXPECT_EQ(legendRangeText(0, 27, "airports"), "0 to 27 airports");
+    // The unit is joined to its number by a no-break space: one line.
+    EXPECT_EQ(legendRangeText(0, 27, "airports"), "0 to 27\u00A0airports");
+    EXPECT_EQ(legendRangeText(0, 1.5e-5, ""), "0 to 0.000015");
+    EXPECT_EQ(legendRangeText(0, 2.5e6, ""), "0 to 2,500,000");
+    p.lines = {"142 to 537.3\u00A0m"};
+    p.max_cells = 14;  // "142 to 537.3" fits; "537.3 m" must go whole to the next line
+    const LegendLayout unit = layoutLegend(p);
+    EXPECT_EQ(unit.text, (std::vector<std::string>{"142 to", "537.3 m"}));
     EXPECT_EQ(legendRangeText(-1.5, 2500.25, ""), "-1.5 to 2500");
 }
 

@@ -10,6 +10,7 @@
 #include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
+#include "tests/support/meshes.h"
 
 namespace tsf {
 namespace {
@@ -46,6 +47,27 @@ TEST(MeshPicture, TheModelFillsMostOfTheFrame) {
     for (int y = 0; y < img.h; y += 3)
         for (int x = 0; x < img.w; x += 3) colours.insert(img.get(x, y));
     EXPECT_GT(colours.size(), 50u);
+}
+
+// The pictures of a series share one colour scale: a block 10 mm high is
+// yellow at its top on a scale of its own, but only a quarter of the way
+// up (blue-green) on a scale that runs to 40 mm.
+TEST(MeshPicture, ASharedColourScaleColoursTheSameHeightTheSame) {
+    const Mesh block = test::box({0, 0, 0}, {50, 50, 10});
+    auto reddest = [](const RgbImage& img) {
+        uint32_t red = 0;
+        for (int y = 0; y < img.h; ++y)
+            for (int x = 0; x < img.w; ++x)
+                if (img.get(x, y) != kPictureBackground) red = std::max(red, img.get(x, y) >> 16);
+        return red;
+    };
+    MeshPictureOptions own, shared;
+    shared.colour_top_z_mm = 40;
+    EXPECT_GT(reddest(drawMeshPicture(block, own)), 150u);  // yellow: 240 red at full light
+    EXPECT_LT(reddest(drawMeshPicture(block, shared)), 60u);   // the scale's lower quarter: 30-35 red
+    // The caption says the pieces' sizes when given them.
+    shared.size_text = "upper half 50 x 50 x 5, lower 50 x 50 x 5 mm";
+    EXPECT_NE(drawMeshPicture(block, shared).rgb, drawMeshPicture(block, MeshPictureOptions{.colour_top_z_mm = 40}).rgb);
 }
 
 TEST(MeshPicture, TheUndersideViewDiffersFromTheTop) {

@@ -23,11 +23,8 @@ namespace {
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-std::string joined(const std::vector<std::string>& paragraphs) {
-    std::string all;
-    for (const std::string& p : paragraphs) all += p + "\n";
-    return all;
-}
+// The key as its text file says it (no-break spaces written as spaces).
+std::string joined(const std::vector<std::string>& paragraphs) { return modelKeyText(paragraphs); }
 
 // Every six-dot cell's character is the one liblouis' US Braille ASCII
 // display table gives (parsed here from the table file itself).
@@ -116,9 +113,38 @@ TEST(BrailleReadyFile, PagesOfFortyByTwentyFiveWithWholeWords) {
     EXPECT_EQ(got, want);
 }
 
-// The sentences come from the Scene: the title, the range in the units, the
-// heights, the pits, the orientation and how to turn the model, the braille
-// lines, the scale's steps, the size.
+// A number and its unit, joined by a no-break space, are never split
+// between lines, wherever the line ends fall; a plain space may split them.
+TEST(BrailleReadyFile, ANumberStaysOnTheLineOfItsUnit) {
+    auto ascii = [](const std::string& text) {
+        std::string out;
+        for (uint8_t c : translateToBraille(text, kDefaultBrailleTable)) out += brailleAsciiOf(c);
+        return out;
+    };
+    const std::string number = ascii("537.3"), unit = ascii("millimetres");
+    int split_plain = 0;
+    for (int shift = 0; shift < 40; ++shift) {
+        std::string lead;
+        for (int k = 0; k < shift; ++k) lead += "x ";
+        for (const bool glued : {true, false}) {
+            const std::string brf = brailleReadyFile(
+                {"T", lead + "537.3" + (glued ? "\u00A0" : " ") + "millimetres end"}, kDefaultBrailleTable);
+            std::istringstream lines(brf);
+            for (std::string line; std::getline(lines, line);) {
+                if (line.find(number) == std::string::npos) continue;
+                const bool together = line.find(unit) != std::string::npos;
+                if (glued) EXPECT_TRUE(together) << "shift " << shift << ": " << line;
+                else split_plain += !together;
+            }
+        }
+    }
+    EXPECT_GT(split_plain, 0) << "some shift puts the unit on the next line when nothing joins them";
+}
+
+// The sentences come from the Scene: the title, the range in the units
+// spelled out, the heights, the pits and where they are, the orientation
+// and how to turn the model, the braille lines and their code, the scale's
+// steps, the size; the processing comes last, after its heading.
 TEST(ModelKey, SaysWhatAReaderNeedsFromTheScene) {
     HexField f = test::fieldFromFunction(14, 14, [](int c, int r) { return r < 3 ? 0.0 : 1.0 + (c + r) % 5; });
     f.values[size_t(f.grid.index(7, 8))] = NAN;
@@ -134,15 +160,21 @@ TEST(ModelKey, SaysWhatAReaderNeedsFromTheScene) {
     const std::vector<std::string> key = modelKeyParagraphs(s, facts);
     const std::string all = joined(key);
     EXPECT_EQ(key.front(), "Rain");
-    EXPECT_TRUE(has(all, "What it shows: one value per hexagon. Made by tsf 9.9 from the file rain.csv.")) << all;
-    EXPECT_TRUE(has(all, "The values go from 1 to 5 mm.")) << all;  // the rows of 0 are culled
-    EXPECT_TRUE(has(all, "0 mm at the floor, 5 mm at 10 mm above it")) << all;
-    EXPECT_TRUE(has(all, "1 cell has no data: each is a pit")) << all;
+    EXPECT_TRUE(has(all, "\nWhat it shows: the values of the file rain.csv, in millimetres.\n")) << all;
+    EXPECT_TRUE(has(all, "The pillars' values go from 1 to 5 millimetres.")) << all;  // the rows of 0 are culled
+    EXPECT_TRUE(has(all, "The floor is 0 millimetres; a pillar 10 millimetres high is 5 millimetres.")) << all;
+    EXPECT_TRUE(has(all, "each millimetre of height is 0.5 millimetres")) << all;
+    EXPECT_TRUE(has(all, "1 cell has no data, in the centre: each is a pit")) << all;
     EXPECT_TRUE(has(all, "Turn the model so the notch is at your near left: north is then away from you")) << all;
     EXPECT_TRUE(has(all, "longer leg running east")) << all;
-    EXPECT_TRUE(has(all, "Braille on the plate north of the pillars reads: \"Rain\".")) << all;
+    EXPECT_TRUE(has(all, "Braille on the plate north of the pillars, in Unified English Braille, uncontracted, reads: "
+                         "\"Rain\".")) << all;
     EXPECT_TRUE(has(all, "A tactile scale stands east of the pillars")) << all;
-    EXPECT_TRUE(has(all, "on a flat base 2 mm thick")) << all;
+    EXPECT_TRUE(has(all, "on a flat base 2 millimetres thick")) << all;
+    const size_t made = all.find("\nHow this model was made\n\nOne value per hexagon.\n");
+    ASSERT_NE(made, std::string::npos) << all;
+    EXPECT_TRUE(has(all.substr(made), "Made by tsf 9.9 from the file rain.csv.")) << all;
+    EXPECT_EQ(all.find("tsf 9.9"), all.find("tsf 9.9", made)) << "the version only in the last section";
     for (const std::string& para : key) EXPECT_EQ(para.find('\n'), std::string::npos);
     const std::string text = modelKeyText(key);
     EXPECT_TRUE(isTsfModelKey(text));
@@ -175,6 +207,7 @@ TEST(ModelKeyCli, EveryModelHasItsTextAndBrailleKeys) {
     EXPECT_TRUE(isTsfModelKey(text));
     EXPECT_TRUE(has(text, "\nVolcano\n")) << text;
     EXPECT_TRUE(has(text, "from the file volcano.csv")) << text;
+    EXPECT_TRUE(has(text, "What it shows: the values of the file volcano.csv.")) << text;
     EXPECT_FALSE(has(text, dir.string())) << "no folder of the user's";
     const std::string brf = test::readText(dir / "volcano.key.brf");
     EXPECT_EQ(brf.substr(0, 9), ",VOLCANO\r");

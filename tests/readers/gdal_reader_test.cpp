@@ -147,16 +147,19 @@ TEST(GdalReader, OnePillarPerValueKeepsTheGroundsAspect) {
     EXPECT_NEAR(j["scene"]["y_scale"].get<double>(), 2 / std::sqrt(3.0), 1e-15);
     EXPECT_NEAR(j["ground"]["width_m"].get<double>(), 1800.0, 1e-9);
     EXPECT_NEAR(j["ground"]["depth_m"].get<double>(), 1200.0, 1e-9);
-    // 30 m a cell, 2 mm a cell: 1 : 15 000 both ways.
+    // 30 m a cell, 2 mm a cell: 1 to 15,000 both ways.
     EXPECT_NEAR(j["ground"]["scale"].get<double>(), 15000.0, 1e-6);
     EXPECT_NEAR(j["ground"]["scale_north_south"].get<double>(), 15000.0, 1e-6);
     EXPECT_TRUE(j["ground"]["longitude_scale"].is_null());
     const auto text = test::runTsf("gen " + path + " --cell 2 -o " + (dir / "t.stl").string());
-    EXPECT_NE(text.output.find("scale 1 : 15 000 (1 mm on the model is 15 m on the ground)"), std::string::npos)
+    EXPECT_NE(text.output.find("scale 1 to 15,000 (1 mm on the model is 15 m on the ground)"), std::string::npos)
         << text.output;
     EXPECT_NE(text.output.find("aspect    true"), std::string::npos) << text.output;
     const std::string key = test::readText(dir / "t.key.txt");
-    EXPECT_NE(key.find("The model shows 1800 m by 1200 m of ground at a scale of 1 : 15 000"), std::string::npos) << key;
+    EXPECT_NE(key.find("The model shows ground 1800 metres from west to east and 1200 metres from south to north, at a "
+                       "scale of 1 to 15,000: 1 millimetre on the model is 15 metres on the ground."),
+              std::string::npos)
+        << key;
 
     const auto regular = test::runTsf("gen " + path + " --cell 2 --regular-hexagons -o " +
                                       (dir / "regular.stl").string() + " --json");
@@ -388,7 +391,7 @@ TEST(GdalReader, ClassOrderGivesEachClassOneEvenStepInTheOrderGiven) {
     }
     EXPECT_EQ(j["classes"][0]["name"], "Woody Wetlands");
     const std::string key = test::readText(dir / "lc.key.txt");
-    EXPECT_NE(key.find("class 90 Woody Wetlands, 4 mm"), std::string::npos) << key;
+    EXPECT_NE(key.find("class 90 Woody Wetlands, 4 millimetres"), std::string::npos) << key;
     EXPECT_NE(key.find("one even step"), std::string::npos) << key;
     // The model verifies against its sidecar.
     const auto verified = test::runTsf("verify " + model + " --scene " + model + ".scene.json");

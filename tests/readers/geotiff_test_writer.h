@@ -34,6 +34,8 @@ struct GeoTiffSpec {
     /// GDAL's six numbers (x0, dx/dcol, dx/drow, y0, dy/dcol, dy/drow): a
     /// rotated or sheared raster; empty = north-up from west, north and the pixel sizes.
     std::vector<double> geotransform;
+    std::string description;    ///< band 1's description ("elevation"); "" for none
+    std::string units;          ///< band 1's unit type ("m"); "" for none
 };
 
 /// Writes spec as a Float32 GeoTIFF; returns false when GDAL refuses.
@@ -54,6 +56,8 @@ inline bool writeGeoTiff(const std::string& path, const GeoTiffSpec& s) {
     }
     GDALRasterBandH band = GDALGetRasterBand(ds, 1);
     if (s.nodata) GDALSetRasterNoDataValue(band, *s.nodata);
+    if (!s.description.empty()) GDALSetDescription(band, s.description.c_str());
+    if (!s.units.empty()) GDALSetRasterUnitType(band, s.units.c_str());
     if (s.classes) {
         GDALColorTableH table = GDALCreateColorTable(GPI_RGB);
         for (int k = 0; k < 256; ++k) {

@@ -43,28 +43,83 @@ void appendUtf8(uint32_t cp, std::string& out) {
 // liblouis keeps loaded tables in global state: one translation at a time.
 std::mutex g_louis;
 
+void loadTable(const std::string& table) {
+    if (table.empty() || !lou_getTable(table.c_str()))
+        throw InputError("--braille-table: liblouis cannot load the table '" + table +
+                         "' (a name such as en-ueb-g1.ctb, en-ueb-g2.ctb, en-us-g1.ctb or de-g0.utb; the tables are in "
+                         "/usr/share/liblouis/tables)");
+}
+
 }  // namespace
 
-std::vector<uint8_t> translateToBraille(const std::string& utf8_text, const std::string& table) {
+std::vector<uint8_t> translateToBraille(const std::string& utf8_text, const std::string& table,
+                                        std::vector<int>& source_of_cell, std::vector<uint32_t>& code_points) {
     static_assert(sizeof(widechar) == 4 || sizeof(widechar) == 2, "liblouis widechar");
     std::vector<widechar> in;
     if (!decodeUtf8(utf8_text, in)) throw InputError("braille: the text is not UTF-8: '" + utf8_text + "'");
+    code_points.assign(in.begin(), in.end());
+    source_of_cell.clear();
     if (in.empty()) return {};
+    // A no-break space is a space to liblouis (not every table defines
+    // U+00A0); the caller keeps its words together by its position.
+    for (widechar& c : in)
+        if (c == 0xA0) c = ' ';
     std::lock_guard<std::mutex> lock(g_louis);
-    if (table.empty() || !lou_getTable(table.c_str()))
-        throw InputError("--braille-table: liblouis cannot load the table '" + table +
-                         "' (a name such as en-us-g1.ctb, en-ueb-g1.ctb or de-g0.utb; the tables are in "
-                         "/usr/share/liblouis/tables)");
+    loadTable(table);
     // A translation is rarely longer than 4 cells per character (number and capital signs).
     std::vector<widechar> out(in.size() * 4 + 16);
+    std::vector<int> input_pos(out.size());
     int inlen = int(in.size()), outlen = int(out.size());
-    if (!lou_translateString(table.c_str(), in.data(), &inlen, out.data(), &outlen, nullptr, nullptr, dotsIO) ||
+    if (!lou_translate(table.c_str(), in.data(), &inlen, out.data(), &outlen, nullptr, nullptr, nullptr,
+                       input_pos.data(), nullptr, dotsIO) ||
         inlen != int(in.size()))
         throw InputError("braille: liblouis could not translate '" + utf8_text + "' with " + table);
     std::vector<uint8_t> cells;
     cells.reserve(size_t(outlen));
-    for (int k = 0; k < outlen; ++k) cells.push_back(uint8_t(out[size_t(k)] & 0xFF));  // LOU_DOTS bit dropped
+    for (int k = 0; k < outlen; ++k) {
+        cells.push_back(uint8_t(out[size_t(k)] & 0xFF));  // LOU_DOTS bit dropped
+        source_of_cell.push_back(input_pos[size_t(k)]);
+    }
     return cells;
+}
+
+std::vector<uint8_t> translateToBraille(const std::string& utf8_text, const std::string& table) {
+    std::vector<int> source;
+    std::vector<uint32_t> code_points;
+    return translateToBraille(utf8_text, table, source, code_points);
+}
+
+std::string backTranslateBraille(const std::vector<uint8_t>& cells, const std::string& table) {
+    if (cells.empty()) return "";
+    std::vector<widechar> in;
+    for (const uint8_t c : cells) in.push_back(widechar(0x8000 | c));  // LOU_DOTS: a cell, not a character
+    std::lock_guard<std::mutex> lock(g_louis);
+    loadTable(table);
+    std::vector<widechar> out(in.size() * 4 + 16);
+    int inlen = int(in.size()), outlen = int(out.size());
+    if (!lou_backTranslateString(table.c_str(), in.data(), &inlen, out.data(), &outlen, nullptr, nullptr, dotsIO))
+        throw InputError("braille: liblouis could not back-translate " + std::to_string(cells.size()) + " cells with " + table);
+    std::string text;
+    for (int k = 0; k < outlen; ++k) appendUtf8(uint32_t(out[size_t(k)]), text);
+    return text;
+}
+
+std::string brailleCodeName(const std::string& table) {
+    struct Known {
+        const char* table;
+        const char* name;
+    };
+    static constexpr Known kKnown[] = {
+        {"en-ueb-g1.ctb", "Unified English Braille, uncontracted"},
+        {"en-ueb-g2.ctb", "Unified English Braille, contracted"},
+        {"en-us-g1.ctb", "English Braille American Edition, uncontracted"},
+        {"en-us-g2.ctb", "English Braille American Edition, contracted"},
+        {"en-gb-g1.utb", "British English braille, uncontracted"},
+        {"en-GB-g2.ctb", "British English braille, contracted"},
+    };
+    for (const Known& k : kKnown)
+        if (table == k.table) return k.name;
+    return "the liblouis table " + table;
 }
 
 std::string brailleUnicode(const std::vector<uint8_t>& cells) {

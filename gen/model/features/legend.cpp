@@ -7,6 +7,7 @@
 
 #include "gen/model/features/braille.h"
 #include "gen/util/error.h"
+#include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
@@ -56,7 +57,10 @@ LegendLayout layoutLegend(const LegendParams& p) {
     for (const std::string& line : p.lines) {
         if (words(line).empty()) continue;
         for (const std::string& part : breakLine(line, p)) {
-            l.text.push_back(part);
+            // The line as read: a no-break space (legendRangeText) is a space.
+            std::string read = part;
+            for (size_t at; (at = read.find("\u00A0")) != std::string::npos;) read.replace(at, 2, " ");
+            l.text.push_back(read);
             l.cells.push_back(translateToBraille(part, p.table));
         }
     }
@@ -87,10 +91,8 @@ LegendLayout layoutLegend(const LegendParams& p) {
 }
 
 std::string legendRangeText(double low, double high, const std::string& units) {
-    char a[32], b[32];
-    std::snprintf(a, sizeof a, "%.4g", low);
-    std::snprintf(b, sizeof b, "%.4g", high);
-    return std::string(a) + " to " + b + (units.empty() ? "" : " " + units);
+    // A no-break space keeps the unit on the line of its number (layoutLegend).
+    return formatForReader(low, 4) + " to " + formatForReader(high, 4) + (units.empty() ? "" : "\u00A0" + units);
 }
 
 }  // namespace tsf

@@ -44,7 +44,7 @@ double printedDotHeightMm(double dot_height_mm, double layer_mm);
 
 struct LegendParams {
     std::vector<std::string> lines;            ///< text, UTF-8; empty lines are skipped
-    std::string table = "en-us-g1.ctb";        ///< liblouis table (braille.h)
+    std::string table = "en-ueb-g1.ctb";       ///< liblouis table (braille.h)
     BrailleStandard standard = kNlsSpec800;
     double margin_mm = 3.0;                    ///< clear space around the dots
     int max_cells = 0;                         ///< cells per line before a break; 0 = no limit
@@ -67,7 +67,7 @@ struct LegendLayout {
 struct LegendRequest {
     std::string title;                      ///< first line, UTF-8
     std::string units;                      ///< after the value range ("0 to 27 airports")
-    std::string table = "en-us-g1.ctb";     ///< liblouis table
+    std::string table = "en-ueb-g1.ctb";    ///< liblouis table
     /// The printer's layer (mm, 0: not known): the dots are made a whole
     /// number of layers high, the fewest that reach the standard's height
     /// (a 0.48 mm dot prints 0.4 mm at 0.2 mm layers; 0.6 mm is three).
@@ -102,7 +102,10 @@ struct SceneLegend {
 LegendLayout layoutLegend(const LegendParams& params);
 
 /// "0 to 27 airports" (units "" -> "0 to 27"): the value range a legend states,
-/// with up to 4 significant digits.
+/// with up to 4 significant digits as a reader reads them (formatForReader:
+/// no e-notation, thousands by commas), the units joined to the number by
+/// a no-break space so a line of braille never ends between them
+/// (layoutLegend breaks only at spaces and writes the line with a space).
 std::string legendRangeText(double low, double high, const std::string& units);
 
 }  // namespace tsf

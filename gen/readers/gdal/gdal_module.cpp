@@ -415,6 +415,7 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
                                              "; choose one with --variable NAME");
         }
         Raster r = readDataset(chosen->gdal_name, path, band_number, "", ignore_georef);
+        r.variable = chosen->name;
         std::string names;
         for (const Variable& v : vars) names += (names.empty() ? "" : ", ") + v.name;
         r.facts.insert(r.facts.begin(), {"variable", chosen->name + (chosen->description.empty() ? "" : " " + chosen->description) +
@@ -458,6 +459,15 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         }
         if (!all.empty()) r.facts.push_back({"bands", all + (bands > kListedBands ? "; ... (" + std::to_string(bands) + " in all)" : "")});
     }
+    // The file's own words for what the values are: a CF long_name (or
+    // standard_name), else the band's description.
+    if (const char* d = GDALGetMetadataItem(band, "long_name", nullptr); d && *d) r.description = d;
+    else if (const char* sn = GDALGetMetadataItem(band, "standard_name", nullptr); sn && *sn) {
+        r.description = sn;
+        std::replace(r.description.begin(), r.description.end(), '_', ' ');
+    } else if (const char* bd = GDALGetDescription(band); bd && *bd) r.description = bd;
+    if (const char* v = GDALGetMetadataItem(band, "NETCDF_VARNAME", nullptr); v && *v) r.variable = v;
+    r.step = stepLabel(bandCoordinates(ds.h, band));
     if (const char* units = GDALGetRasterUnitType(band); units && *units) {
         r.units = units;
         r.facts.push_back({"units", units});

@@ -16,7 +16,7 @@ namespace tsf {
 inline constexpr const char* kGdalModuleName = "tsf-gdal.so";
 
 /// Bumped whenever GdalCall, GdalModuleError or Raster change.
-inline constexpr int kGdalModuleAbi = 8;  // 8: GdalCall::ignore_georef; 7: Raster::classes; 6: Raster::decimation, units; 5: GdalCall::variable; 4: tsf_gdal_transform; 3: GdalCall::band; 2: Raster::categorical
+inline constexpr int kGdalModuleAbi = 9;  // 9: Raster::description, variable, step; 8: GdalCall::ignore_georef; 7: Raster::classes; 6: Raster::decimation, units; 5: GdalCall::variable; 4: tsf_gdal_transform; 3: GdalCall::band; 2: Raster::categorical
 
 inline constexpr int kGdalOk = 0;
 inline constexpr int kGdalInputError = 1;  ///< error holds an InputError's parts
