@@ -1,6 +1,10 @@
 #include "gen/mesh_io/three_mf_writer.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <sys/types.h>
 #include <limits>
 #include <vector>
 
@@ -78,6 +82,34 @@ void startModel(Lib3mfHandle& model, const std::string& title) {
                 "lib3mf_model_addmetadatautf8(Application)");
 }
 
+// Where lib3mf's package goes: the temporary file, written by us. lib3mf's
+// own file writer, when a write fails (a full disk, a file-size limit),
+// throws again from a destructor while it unwinds, which ends the process
+// (std::terminate). Here a failed write or seek is only recorded and lib3mf
+// is told it succeeded, so it finishes normally; the first failure is then
+// reported as an OutputError with the OS reason. (A callback's 0 is
+// lib3mf's success.)
+struct PackageSink {
+    std::FILE* file = nullptr;
+    int error_number = 0;  ///< errno of the first failed write or seek (0: none)
+};
+
+// lib3mf's write callback: a chunk of the package. Returns 0, lib3mf's "done".
+uint32_t writePackageChunk(unsigned char* data, uint32_t bytes, void* user) {
+    auto* sink = static_cast<PackageSink*>(user);
+    if (sink->error_number == 0 && bytes > 0 && std::fwrite(data, 1, bytes, sink->file) != bytes)
+        sink->error_number = errno != 0 ? errno : EIO;
+    return 0;  // lib3mf's "no error"
+}
+
+// lib3mf's seek callback: back to a ZIP header to fill in its sizes.
+uint32_t seekPackage(uint64_t position, void* user) {
+    auto* sink = static_cast<PackageSink*>(user);
+    if (sink->error_number == 0 && ::fseeko(sink->file, off_t(position), SEEK_SET) != 0)
+        sink->error_number = errno != 0 ? errno : EIO;
+    return 0;  // lib3mf's "no error"
+}
+
 // One build item of object, no transform; the package to file's temporary path, then renamed.
 void finishModel(Lib3mfHandle& model, Lib3mfHandle& object, AtomicFile& file, const std::string& path) {
     Lib3mfHandle build_item;
@@ -85,10 +117,17 @@ void finishModel(Lib3mfHandle& model, Lib3mfHandle& object, AtomicFile& file, co
                 "lib3mf_model_addbuilditem");
     Lib3mfHandle writer;
     checkLib3mf(NMR::lib3mf_model_querywriter(model.get(), "3mf", writer.out()), model.get(), "lib3mf_model_querywriter");
-    const int result = NMR::lib3mf_writer_writetofileutf8(writer.get(), file.tempPath().c_str());
-    if (result != LIB3MF_OK) {
-        throw OutputError(path, "writing failed: " + lib3mfErrorText(result, writer.get()));
-    }
+    PackageSink sink;
+    sink.file = std::fopen(file.tempPath().c_str(), "wb");
+    if (!sink.file)
+        throw OutputError(path, "cannot open '" + file.tempPath() + "' for writing: " + std::strerror(errno));
+    errno = 0;
+    const int result = NMR::lib3mf_writer_writetocallback(writer.get(), reinterpret_cast<void*>(&writePackageChunk),
+                                                          reinterpret_cast<void*>(&seekPackage), &sink);
+    if (std::fflush(sink.file) != 0 && sink.error_number == 0) sink.error_number = errno != 0 ? errno : EIO;
+    if (std::fclose(sink.file) != 0 && sink.error_number == 0) sink.error_number = errno != 0 ? errno : EIO;
+    if (sink.error_number != 0) throw OutputError(path, "writing failed: " + std::string(std::strerror(sink.error_number)));
+    if (result != LIB3MF_OK) throw OutputError(path, "writing failed: " + lib3mfErrorText(result, writer.get()));
     file.commit();
 }
 

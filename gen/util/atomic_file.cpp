@@ -155,12 +155,18 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
         if (!out) {
             throw OutputError(path, "cannot open '" + file.tempPath() + "' for writing: " + osMessage(errno));
         }
+        // The first failed write sets errno (EFBIG, ENOSPC) and the stream's
+        // state; errno is kept from then on, whatever the writer calls after.
+        errno = 0;
         write(out);
+        const int write_errno = out.fail() ? errno : 0;
         errno = 0;
         out.flush();
         out.close();
         if (out.fail()) {
-            const std::string reason = errno != 0 ? osMessage(errno) : std::string("write error (is the disk full?)");
+            const int error_number = write_errno != 0 ? write_errno : errno;
+            const std::string reason =
+                error_number != 0 ? osMessage(error_number) : std::string("write error (is the disk full?)");
             throw OutputError(path, "writing failed: " + reason);
         }
     }
