@@ -18,7 +18,9 @@ std::string binaryFileKind(std::string_view head) {
     if (startsWith(head, "BM"sv) && head.find('\0') != std::string_view::npos) return "a BMP image";
     if (startsWith(head, "PK\x03\x04"sv)) return "a ZIP archive (an .xlsx or .ods spreadsheet?)";
     if (startsWith(head, "\x89HDF\r\n\x1a\n"sv)) return "an HDF5 file";
-    if (startsWith(head, "CDF\x01"sv) || startsWith(head, "CDF\x02"sv)) return "a netCDF file";
+    if (startsWith(head, "CDF\x01"sv) || startsWith(head, "CDF\x02"sv) ||
+        startsWith(head, "CDF\x05"sv))
+        return "a netCDF file";
     if (startsWith(head, "%PDF"sv)) return "a PDF document";
     if (head.find('\0') != std::string_view::npos) return "a binary file";
     return "";

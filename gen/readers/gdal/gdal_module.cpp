@@ -54,6 +54,16 @@ struct QuietGdal {
     }
 };
 
+// Reads a window of the band as doubles. False when GDAL says it failed,
+// by its return value or by an error it only reported (a driver may log a
+// failure and still return CE_None with the buffer partly unread).
+bool readPixels(GDALRasterBandH band, int64_t x0, int64_t y0, int64_t cols, int64_t rows, double* out) {
+    CPLErrorReset();
+    const CPLErr status = GDALRasterIO(band, GF_Read, int(x0), int(y0), int(cols), int(rows), out, int(cols), int(rows),
+                                       GDT_Float64, 0, 0);
+    return status == CE_None && CPLGetLastErrorType() != CE_Failure && CPLGetLastErrorType() != CE_Fatal;
+}
+
 struct Dataset {
     GDALDatasetH h = nullptr;
     ~Dataset() {
@@ -210,8 +220,7 @@ void readDecimated(GDALRasterBandH band, const std::string& path, int64_t cols, 
         }
         const int64_t y0 = r * rows / dec_rows, y1 = std::max(y0 + 1, (r + 1) * rows / dec_rows);
         strip.resize(size_t(cols) * size_t(y1 - y0));
-        if (GDALRasterIO(band, GF_Read, 0, int(y0), int(cols), int(y1 - y0), strip.data(), int(cols), int(y1 - y0),
-                         GDT_Float64, 0, 0) != CE_None)
+        if (!readPixels(band, 0, y0, cols, y1 - y0, strip.data()))
             throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
         std::fill(sum.begin(), sum.end(), 0.0);
         std::fill(count.begin(), count.end(), 0.0);
@@ -434,8 +443,7 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         r.cols = int32_t(cols);
         r.rows = int32_t(rows);
         r.values.assign(size_t(cols) * size_t(rows), 0.0);
-        if (GDALRasterIO(band, GF_Read, 0, 0, cols, rows, r.values.data(), int(cols), int(rows), GDT_Float64, 0, 0) !=
-            CE_None)
+        if (!readPixels(band, 0, 0, cols, rows, r.values.data()))
             throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
     }
 
