@@ -386,6 +386,10 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     }
     const std::optional<VerifiedHalves>& halves = made.halves;
     if (halves) summarizeHalves(*halves, summary);
+    // Every file of this run is written to a temporary file first and all
+    // are renamed together at the end (a signal then leaves the old files
+    // or the new ones, never a mix).
+    std::optional<OutputSet> written(std::in_place);
     if (!o.output.empty()) {
         timer.begin("writing");
         MeshWriteOptions wo;
@@ -437,7 +441,9 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         // that pair instead of judging one model by another's data.
         const std::string sidecar = sidecarPath(o);
         std::optional<SceneModelRecord> model;
-        if (!o.output.empty()) model = SceneModelRecord{std::filesystem::path(o.output).filename().string(), stampFile(o.output)};
+        if (!o.output.empty())
+            model = SceneModelRecord{std::filesystem::path(o.output).filename().string(),
+                                     stampFile(written->currentPath(o.output))};
         writeSceneJson(scene, sidecar, model ? &*model : nullptr);
         summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
     }
@@ -473,6 +479,14 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         summary.outputs.push_back({text_path, "key, plain text for a screen reader"});
         summary.outputs.push_back({brf_path, "key in braille (" + scene.params.legend.table + ", BRF, 40 x 25) for an embosser"});
     }
+    written->commit();
+    written.reset();
+    // Tiles an earlier run wrote under this name that this run did not:
+    // left beside the new ones they would be printed with them.
+    if (!o.output.empty())
+        for (const std::string& stale : removeStaleTiles(o.output, tiles ? tilePaths(*tiles, o.output) : std::vector<std::string>()))
+            summary.printer_notes.push_back("removed " + std::filesystem::path(stale).filename().string() +
+                                            ", a tile of an earlier run under this name");
     std::optional<PrintCheckReport> printed;
     if (o.print_check) {
         timer.begin("print check");

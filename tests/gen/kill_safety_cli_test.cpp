@@ -149,6 +149,59 @@ TEST(KillSafety, GenKilledAnywhereLeavesTheOldModelOrTheNewOneAndNeverAMismatche
     EXPECT_EQ(v.exit_code, kExitOk) << v.output;
 }
 
+// Starts tsf, sends it `sig` after `delay_s`, waits for it.
+void signalAfter(const std::vector<std::string>& args, double delay_s, int sig) {
+    const pid_t pid = startTsf(args);
+    std::this_thread::sleep_for(std::chrono::duration<double>(delay_s));
+    ::kill(pid, sig);
+    while (::waitpid(-1, nullptr, 0) > 0) {
+    }
+}
+
+// SIGTERM (what kill, a service manager or a closing session sends) at any
+// moment while tsf gen replaces a model, its sidecar and its two keys: the
+// four files are all the old ones or all the new ones, never a mix (the
+// renames are made with the signal held off), and no temporary file stays.
+TEST(KillSafety, GenTerminatedAnywhereLeavesTheOldSetOrTheNewOne) {
+    Subreaper subreaper;
+    const fs::path dir = scratchDir(), ref = dir / "reference", work = dir / "work";
+    fs::create_directories(ref);
+    fs::create_directories(work);
+    writeText(dir / "old.csv", field(1));
+    writeText(dir / "new.csv", field(2));
+    const auto gen = [&](const fs::path& out_dir, const std::string& input) {
+        return std::vector<std::string>{"gen", (dir / input).string(), "-o", (out_dir / "m.stl").string(),
+                                        "--no-verify", "--cull", "none", "--title", "T"};
+    };
+    const char* names[] = {"m.stl", "m.stl.scene.json", "m.key.txt", "m.key.brf"};
+    const auto read = [&](const fs::path& d) {
+        std::vector<std::string> files;
+        for (const char* n : names) files.push_back(readText(d / n));
+        return files;
+    };
+    timedRun(gen(ref, "new.csv"));
+    const std::vector<std::string> new_set = read(ref);
+    const double full_s = timedRun(gen(work, "old.csv"));
+    const std::vector<std::string> old_set = read(work);
+    for (size_t k = 0; k < old_set.size(); ++k) ASSERT_NE(old_set[k], new_set[k]) << names[k];
+
+    std::mt19937 rng(46);
+    std::uniform_real_distribution<double> moment(0.3 * full_s, 1.1 * full_s);
+    int seen_new = 0;
+    for (int k = 0; k < kKills; ++k) {
+        for (size_t f = 0; f < old_set.size(); ++f) writeText(work / names[f], old_set[f]);
+        signalAfter(gen(work, "new.csv"), moment(rng), SIGTERM);
+        const std::vector<std::string> now = read(work);
+        ASSERT_TRUE(now == old_set || now == new_set)
+            << "kill " << k << ": a mix (model " << (now[0] == new_set[0] ? "new" : "old") << ", sidecar "
+            << (now[1] == new_set[1] ? "new" : "old") << ", key " << (now[2] == new_set[2] ? "new" : "old") << ", braille key "
+            << (now[3] == new_set[3] ? "new" : "old") << ")";
+        seen_new += now == new_set;
+        EXPECT_EQ(temporaryFiles(work), 0) << "kill " << k;
+    }
+    std::fprintf(stderr, "%d SIGTERMs: %d left the new set, %d the old one\n", kKills, seen_new, kKills - seen_new);
+}
+
 TEST(KillSafety, RenderKilledAnywhereLeavesTheOldFileOrTheNewOne) {
     Subreaper subreaper;
     const fs::path dir = scratchDir();
