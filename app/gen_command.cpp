@@ -16,6 +16,7 @@
 #include "app/halves_output.h"
 #include "app/tiles_output.h"
 #include "app/input_report.h"
+#include "app/key_stamp.h"
 #include "app/stage_timer.h"
 #include "app/preview.h"
 #include "app/printer_fit.h"
@@ -33,6 +34,7 @@
 #include "gen/readers/cf_time.h"
 #include "gen/util/atomic_file.h"
 #include "gen/util/file_bytes.h"
+#include "gen/util/file_stamp.h"
 #include "gen/util/number_format.h"
 #include "gen/util/output_paths.h"
 #include "runners/prusa_slicer/print_check.h"
@@ -433,6 +435,10 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
                                                  : so.write_parameter_sets && k == 1 ? "OpenSCAD parameter sets, openscad -p"
                                                                                      : "OpenSCAD library"});
     }
+    // The model file's stamp, for its sidecar and its keys (tiles and halves
+    // are several files: none).
+    std::optional<FileStamp> model_stamp;
+    if (!o.output.empty() && !halves && !tiles) model_stamp = stampFile(written->currentPath(o.output));
     if (!o.no_sidecar) {
         // The scene sidecar lets `tsf verify --scene` check any mesh of this
         // model later. It is committed after the model and names the model
@@ -441,9 +447,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         // that pair instead of judging one model by another's data.
         const std::string sidecar = sidecarPath(o);
         std::optional<SceneModelRecord> model;
-        if (!o.output.empty())
-            model = SceneModelRecord{std::filesystem::path(o.output).filename().string(),
-                                     stampFile(written->currentPath(o.output))};
+        if (model_stamp) model = SceneModelRecord{std::filesystem::path(o.output).filename().string(), *model_stamp};
         writeSceneJson(scene, sidecar, model ? &*model : nullptr);
         summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
     }
@@ -473,8 +477,23 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
                              "going east, and one for each row number going south. " + tilesMarksSentence(*tiles);
         const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
         const auto [text_path, brf_path] = keyPaths(o);
-        writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });
-        const std::string brf = brailleReadyFile(key, scene.params.legend.table);
+        // The model's stamp ends each key, after all a reader reads (key_stamp.h).
+        const std::string stamp = model_stamp ? keyStampLine(std::filesystem::path(o.output).filename().string(), *model_stamp)
+                                              : std::string();
+        writeFileAtomically(text_path, [&](std::ostream& out) {
+            out << modelKeyText(key);
+            if (!stamp.empty()) out << "\n" << stamp << "\n";
+        });
+        std::string brf = brailleReadyFile(key, scene.params.legend.table);
+        if (!stamp.empty()) {
+            std::string line = stamp;
+            // Braille ASCII is 0x20 to 0x5F: capitals; anything else of a file name a '?'.
+            for (char& c : line) {
+                c = char(std::toupper(static_cast<unsigned char>(c)));
+                if (c < 0x20 || c > 0x5F) c = '?';
+            }
+            brf += line + "\r\n\f";
+        }
         writeFileAtomically(brf_path, [&](std::ostream& out) { out << brf; });
         summary.outputs.push_back({text_path, "key, plain text for a screen reader"});
         summary.outputs.push_back({brf_path, "key in braille (" + scene.params.legend.table + ", BRF, 40 x 25) for an embosser"});

@@ -116,22 +116,37 @@ TEST(KillSafety, GenKilledAnywhereLeavesTheOldModelOrTheNewOneAndNeverAMismatche
     const std::string new_stl = readText(ref / "m.stl"), new_scene = readText(ref / "m.stl.scene.json");
     const double full_s = timedRun(gen(work, "old.csv"));
     const std::string old_stl = readText(work / "m.stl"), old_scene = readText(work / "m.stl.scene.json");
+    const std::string new_key = readText(ref / "m.key.txt"), new_brf = readText(ref / "m.key.brf");
+    const std::string old_key = readText(work / "m.key.txt"), old_brf = readText(work / "m.key.brf");
+    ASSERT_NE(old_key, new_key);
     ASSERT_FALSE(old_stl.empty());
     ASSERT_EQ(old_stl.size(), new_stl.size()) << "same size on purpose: only the bytes tell them apart";
     ASSERT_NE(old_stl, new_stl);
 
     std::mt19937 rng(15);
     std::uniform_real_distribution<double> moment(0.2 * full_s, 1.1 * full_s);
-    int seen_new = 0, seen_mismatch = 0;
+    int seen_new = 0, seen_mismatch = 0, seen_key_mismatch = 0;
     for (int k = 0; k < kKills; ++k) {
         // A good old model, then a run that replaces it is killed.
         writeText(work / "m.stl", old_stl);
         writeText(work / "m.stl.scene.json", old_scene);
+        writeText(work / "m.key.txt", old_key);
+        writeText(work / "m.key.brf", old_brf);
         killAfter(gen(work, "new.csv"), moment(rng));
         const std::string stl = readText(work / "m.stl"), scene = readText(work / "m.stl.scene.json");
         ASSERT_TRUE(stl == old_stl || stl == new_stl) << "kill " << k << ": a model of " << stl.size() << " bytes";
         ASSERT_TRUE(scene == old_scene || scene == new_scene) << "kill " << k << ": a sidecar of " << scene.size();
         seen_new += stl == new_stl;
+        // Keys from another run than the model are named by tsf verify.
+        const std::string key = readText(work / "m.key.txt"), brf = readText(work / "m.key.brf");
+        ASSERT_TRUE(key == old_key || key == new_key) << "kill " << k;
+        ASSERT_TRUE(brf == old_brf || brf == new_brf) << "kill " << k;
+        if ((stl == new_stl) != (key == new_key) || (stl == new_stl) != (brf == new_brf)) {
+            ++seen_key_mismatch;
+            const auto v = runTsf("verify " + (work / "m.stl").string());
+            EXPECT_EQ(v.exit_code, kExitBadInput) << v.output;
+            EXPECT_NE(v.output.find("is the key of another version of m.stl"), std::string::npos) << v.output;
+        }
         if ((stl == new_stl) != (scene == new_scene)) {
             ++seen_mismatch;
             // A pair from two runs is refused, never judged.
@@ -140,7 +155,8 @@ TEST(KillSafety, GenKilledAnywhereLeavesTheOldModelOrTheNewOneAndNeverAMismatche
             EXPECT_NE(v.output.find("different runs of tsf gen"), std::string::npos) << v.output;
         }
     }
-    std::fprintf(stderr, "%d kills: %d left the new model, %d a mismatched pair (refused)\n", kKills, seen_new, seen_mismatch);
+    std::fprintf(stderr, "%d kills: %d left the new model, %d a mismatched pair (refused), %d keys of another run (named)\n",
+                 kKills, seen_new, seen_mismatch, seen_key_mismatch);
     // The next complete run removes what the killed ones left.
     timedRun(gen(work, "new.csv"));
     EXPECT_EQ(temporaryFiles(work), 0);
@@ -200,6 +216,19 @@ TEST(KillSafety, GenTerminatedAnywhereLeavesTheOldSetOrTheNewOne) {
         EXPECT_EQ(temporaryFiles(work), 0) << "kill " << k;
     }
     std::fprintf(stderr, "%d SIGTERMs: %d left the new set, %d the old one\n", kKills, seen_new, kKills - seen_new);
+    // What a SIGKILL between two renames can leave, made on purpose: each
+    // key carries its model's stamp, and tsf verify names the key of the
+    // other run; the same run writes the same keys.
+    for (size_t f = 0; f < old_set.size(); ++f) writeText(work / names[f], new_set[f]);
+    EXPECT_EQ(runTsf("verify " + (work / "m.stl").string()).exit_code, kExitOk);
+    for (const char* key : {"m.key.txt", "m.key.brf"}) {
+        writeText(work / key, old_set[std::string(key) == "m.key.txt" ? 2 : 3]);
+        const auto v = runTsf("verify " + (work / "m.stl").string() + " --scene " + (work / "m.stl.scene.json").string());
+        EXPECT_EQ(v.exit_code, kExitBadInput) << v.output;
+        EXPECT_NE(v.output.find(std::string(key) + ": is the key of another version of m.stl"), std::string::npos) << v.output;
+        writeText(work / key, new_set[std::string(key) == "m.key.txt" ? 2 : 3]);
+    }
+    EXPECT_NE(new_set[2].find("\nModel stamp: m.stl, "), std::string::npos) << "the stamp ends the key";
 }
 
 TEST(KillSafety, RenderKilledAnywhereLeavesTheOldFileOrTheNewOne) {
