@@ -116,6 +116,7 @@ RasterFormat parseRasterFormat(const std::string& name) {
 
 Raster parseRaster(std::string_view bytes, const std::string& path, const RasterReadOptions& opts) {
     checkCsvDelimiter(opts.delimiter);
+    refuseUtf16Text(bytes.substr(0, kMagicBytes), path);
     const RasterFormat format = opts.format == RasterFormat::Auto ? detectRasterFormat(bytes, path) : opts.format;
     switch (format) {
         case RasterFormat::Png: return parsePng(bytes, path);
@@ -135,6 +136,7 @@ Raster readRaster(const std::string& path, const RasterReadOptions& opts) {
     if (isGdalDatasetName(path) && !std::filesystem::exists(path, ec))
         return readGdalRaster(path, opts.band, opts.variable);
     const std::string head = readFileHead(path, kMagicBytes);
+    refuseUtf16Text(head, path);
     RasterReadOptions o = opts;
     if (o.format == RasterFormat::Auto) o.format = detectRasterFormat(head, path);
     // GDAL reads the file itself (and any sidecar: .prj, .hdr, .aux.xml).

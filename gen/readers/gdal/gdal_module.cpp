@@ -534,10 +534,18 @@ struct Srs {
 void transformPoints(const GdalTransformCall& c) {
     QuietGdal quiet;
     Srs from, to;
+    // GDAL often says nothing more than that it failed: then what is accepted.
+    const auto why = [] {
+        const char* m = CPLGetLastErrorMsg();
+        return m && *m ? std::string(" (") + m + ")" : std::string();
+    };
     if (OSRSetFromUserInput(from.h, c.from->c_str()) != OGRERR_NONE)
-        throw InputError("'" + *c.from + "' is not a coordinate reference system GDAL and PROJ know: " + QuietGdal::lastMessage());
+        throw InputError("--crs '" + *c.from + "' is not a coordinate reference system GDAL and PROJ know" + why() +
+                         ": give an EPSG code (EPSG:3857), a PROJ string (+proj=utm +zone=32 +datum=WGS84) or WKT");
     if (OSRSetFromUserInput(to.h, c.to->c_str()) != OGRERR_NONE)
-        throw InputError("'" + *c.to + "' is not a projection GDAL and PROJ know: " + QuietGdal::lastMessage());
+        throw InputError("--project '" + *c.to + "' is not a projection GDAL and PROJ know" + why() +
+                         ": give auto, none, equal-area, equirect, an EPSG code (EPSG:3035) or a PROJ string "
+                         "(+proj=laea +lat_0=52 +lon_0=10)");
     // x east (longitude), y north (latitude), whatever order the authority gives.
     OSRSetAxisMappingStrategy(from.h, OAMS_TRADITIONAL_GIS_ORDER);
     OSRSetAxisMappingStrategy(to.h, OAMS_TRADITIONAL_GIS_ORDER);
