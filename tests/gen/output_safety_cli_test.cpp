@@ -4,7 +4,9 @@
 // temporary file, a file-size limit included.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <vector>
 #include <fstream>
 
 #include "tests/support/run.h"
@@ -173,6 +175,32 @@ TEST(OutputSafety, EveryWritersFailureIsAnErrorAndKeepsTheOldFile) {
     EXPECT_NE(limited.output.find("File too large"), std::string::npos) << limited.output;
     EXPECT_EQ(readText(dir / "p.png"), old);
     EXPECT_EQ(temporaryFiles(dir), 0);
+}
+
+// The same run writes the same bytes, 3MF included (lib3mf gave each object
+// and build item a random UUID; tsf derives them from the content), so the
+// model's stamp at the end of its keys is the same each time; every UUID in
+// a package is still its own.
+TEST(OutputSafety, TheSameRunWritesTheSameBytes) {
+    const auto dir = scratchDir();
+    writeText(dir / "f.csv", kField);
+    for (const std::string layout : {"", " --parts", " --parts --parts-layout prusaslicer"}) {
+        std::string first[2], key[2];
+        for (int k = 0; k < 2; ++k) {
+            ASSERT_EQ(runTsf("gen " + (dir / "f.csv").string() + " -o " + (dir / "m.3mf").string() + layout).exit_code, 0);
+            first[k] = readText(dir / "m.3mf");
+            key[k] = readText(dir / "m.key.txt");
+        }
+        EXPECT_EQ(first[0], first[1]) << layout;
+        EXPECT_EQ(key[0], key[1]) << layout;
+        const auto model = runCommand("unzip -p " + (dir / "m.3mf").string() + " 3D/3dmodel.model");
+        std::vector<std::string> uuids;
+        for (size_t at = model.output.find("UUID=\""); at != std::string::npos; at = model.output.find("UUID=\"", at + 1))
+            uuids.push_back(model.output.substr(at + 6, 36));
+        EXPECT_GE(uuids.size(), 3u) << layout;
+        std::sort(uuids.begin(), uuids.end());
+        EXPECT_EQ(std::unique(uuids.begin(), uuids.end()), uuids.end()) << layout << ": a UUID used twice";
+    }
 }
 
 // A shared model carries no folder of the person who made it: the .scad
