@@ -127,6 +127,9 @@ AtomicFile::AtomicFile(const std::string& target_path) : target_path_(target_pat
     for (;;) {
         const unsigned n = g_temp_counter.fetch_add(1);
         std::string candidate = prefix + "." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(n);
+        // Created and registered with termination signals held off: a signal
+        // between the two would leave the file behind.
+        const TerminationSignalsHeld held;
         const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) {
             ::close(fd);
