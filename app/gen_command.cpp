@@ -17,6 +17,7 @@
 #include "app/tiles_output.h"
 #include "app/input_report.h"
 #include "app/legible_defaults.h"
+#include "app/key_stamp.h"
 #include "app/stage_timer.h"
 #include "app/preview.h"
 #include "app/printer_fit.h"
@@ -35,6 +36,7 @@
 #include "gen/readers/cf_time.h"
 #include "gen/util/atomic_file.h"
 #include "gen/util/file_bytes.h"
+#include "gen/util/file_stamp.h"
 #include "gen/util/number_format.h"
 #include "gen/util/output_paths.h"
 #include "runners/prusa_slicer/print_check.h"
@@ -452,6 +454,10 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     }
     const std::optional<VerifiedHalves>& halves = made.halves;
     if (halves) summarizeHalves(*halves, summary);
+    // Every file of this run is written to a temporary file first and all
+    // are renamed together at the end (a signal then leaves the old files
+    // or the new ones, never a mix).
+    std::optional<OutputSet> written(std::in_place);
     if (!o.output.empty()) {
         timer.begin("writing");
         MeshWriteOptions wo;
@@ -517,6 +523,10 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
                                                  : so.write_parameter_sets && k == 1 ? "OpenSCAD parameter sets, openscad -p"
                                                                                      : "OpenSCAD library"});
     }
+    // The model file's stamp, for its sidecar and its keys (tiles and halves
+    // are several files: none).
+    std::optional<FileStamp> model_stamp;
+    if (!o.output.empty() && !halves && !tiles) model_stamp = stampFile(written->currentPath(o.output));
     if (!o.no_sidecar) {
         // The scene sidecar lets `tsf verify --scene` check any mesh of this
         // model later. It is committed after the model and names the model
@@ -525,7 +535,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         // that pair instead of judging one model by another's data.
         const std::string sidecar = sidecarPath(o);
         std::optional<SceneModelRecord> model;
-        if (!o.output.empty()) model = SceneModelRecord{std::filesystem::path(o.output).filename().string(), stampFile(o.output)};
+        if (model_stamp) model = SceneModelRecord{std::filesystem::path(o.output).filename().string(), *model_stamp};
         writeSceneJson(scene, sidecar, model ? &*model : nullptr);
         summary.outputs.push_back({sidecar, "scene for tsf verify --scene"});
     }
@@ -571,12 +581,35 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
                              "going east, and one for each row number going south. " + tilesMarksSentence(*tiles);
         const std::vector<std::string> key = modelKeyParagraphs(scene, facts);
         const auto [text_path, brf_path] = keyPaths(o);
-        writeFileAtomically(text_path, [&](std::ostream& out) { out << modelKeyText(key); });
-        const std::string brf = brailleReadyFile(key, scene.params.legend.table);
+        // The model's stamp ends each key, after all a reader reads (key_stamp.h).
+        const std::string stamp = model_stamp ? keyStampLine(std::filesystem::path(o.output).filename().string(), *model_stamp)
+                                              : std::string();
+        writeFileAtomically(text_path, [&](std::ostream& out) {
+            out << modelKeyText(key);
+            if (!stamp.empty()) out << "\n" << stamp << "\n";
+        });
+        std::string brf = brailleReadyFile(key, scene.params.legend.table);
+        if (!stamp.empty()) {
+            std::string line = stamp;
+            // Braille ASCII is 0x20 to 0x5F: capitals; anything else of a file name a '?'.
+            for (char& c : line) {
+                c = char(std::toupper(static_cast<unsigned char>(c)));
+                if (c < 0x20 || c > 0x5F) c = '?';
+            }
+            brf += line + "\r\n\f";
+        }
         writeFileAtomically(brf_path, [&](std::ostream& out) { out << brf; });
         summary.outputs.push_back({text_path, "key in plain text for a screen reader"});
         summary.outputs.push_back({brf_path, "key in braille for an embosser: BRF 40 by 25 in " + scene.params.legend.table});
     }
+    written->commit();
+    written.reset();
+    // Tiles an earlier run wrote under this name that this run did not:
+    // left beside the new ones they would be printed with them.
+    if (!o.output.empty())
+        for (const std::string& stale : removeStaleTiles(o.output, tiles ? tilePaths(*tiles, o.output) : std::vector<std::string>()))
+            summary.printer_notes.push_back("removed " + std::filesystem::path(stale).filename().string() +
+                                            ", a tile of an earlier run under this name");
     std::optional<PrintCheckReport> printed;
     if (o.print_check) {
         timer.begin("print check");

@@ -1,6 +1,7 @@
 // The tiles of `tsf gen --tile`. See tiles_output.h.
 #include "app/tiles_output.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "app/commands.h"
@@ -12,6 +13,51 @@ std::string tilePath(const std::string& output, const TilePlace& t) {
     const std::filesystem::path p(output);
     return ((p.parent_path() / p.stem()).string()) + "-tile-" + std::to_string(t.row + 1) + "-" + std::to_string(t.col + 1) +
            p.extension().string();
+}
+
+std::vector<std::string> tilePaths(const VerifiedTiles& v, const std::string& output) {
+    std::vector<std::string> out;
+    for (const VerifiedTile& t : v.tiles) out.push_back(tilePath(output, t.scene.tile->place));
+    return out;
+}
+
+namespace {
+
+// "-tile-<digits>-<digits>" exactly.
+bool isTilePlace(const std::string& text) {
+    const std::string prefix = "-tile-";
+    if (text.compare(0, prefix.size(), prefix) != 0) return false;
+    const std::string rest = text.substr(prefix.size());
+    const size_t dash = rest.find('-');
+    if (dash == 0 || dash == std::string::npos || dash + 1 == rest.size()) return false;
+    for (size_t k = 0; k < rest.size(); ++k)
+        if (k != dash && (rest[k] < '0' || rest[k] > '9')) return false;
+    return true;
+}
+
+}  // namespace
+
+std::vector<std::string> removeStaleTiles(const std::string& output, const std::vector<std::string>& keep) {
+    const std::filesystem::path p(output);
+    const std::string stem = p.stem().string(), ext = p.extension().string();
+    const std::filesystem::path folder = p.parent_path().empty() ? std::filesystem::path(".") : p.parent_path();
+    std::vector<std::string> removed;
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() <= stem.size() + ext.size() || name.compare(0, stem.size(), stem) != 0 ||
+            name.compare(name.size() - ext.size(), ext.size(), ext) != 0)
+            continue;
+        if (!isTilePlace(name.substr(stem.size(), name.size() - stem.size() - ext.size()))) continue;
+        const std::string path = (p.parent_path() / name).string();
+        bool kept = false;
+        for (const std::string& k : keep) kept = kept || std::filesystem::path(k).filename() == name;
+        std::error_code file_ec;
+        if (kept || !it->is_regular_file(file_ec)) continue;
+        if (std::filesystem::remove(it->path(), file_ec)) removed.push_back(path);
+    }
+    std::sort(removed.begin(), removed.end());
+    return removed;
 }
 
 void summarizeTiles(const VerifiedTiles& v, GenSummary& summary) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "app/gen_summary.h"
 #include "gen/geometry/mesh.h"
@@ -14,6 +15,15 @@ namespace tsf::cli {
 
 /// The file -o MODEL.ext becomes for a tile: MODEL-tile-ROW-COL.ext (from 1, rows from the north).
 std::string tilePath(const std::string& output, const TilePlace& place);
+
+/// Every tile's file: tilePath(output, ...) of each tile.
+std::vector<std::string> tilePaths(const VerifiedTiles& tiles, const std::string& output);
+
+/// Removes the files in output's folder named as tiles of output
+/// (MODEL-tile-ROW-COL.ext, ROW and COL numbers) that are not in `keep`:
+/// the tiles of an earlier run that cut the model differently. Returns
+/// the paths removed. Never throws.
+std::vector<std::string> removeStaleTiles(const std::string& output, const std::vector<std::string>& keep);
 
 /// The tiles' figures and checks for the summary: summary.tiles and tiles_text.
 void summarizeTiles(const VerifiedTiles& tiles, GenSummary& summary);

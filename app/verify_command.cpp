@@ -8,6 +8,7 @@
 #include "app/bed_size.h"
 #include "app/commands.h"
 #include "app/gen_options.h"
+#include "app/key_stamp.h"
 #include "gen/util/error.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/mesh_io/mesh_writer.h"
@@ -60,6 +61,10 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
                 throw InputError(opt->get_name() + " describes how a field becomes a model; it needs --against FIELD");
         }
     }
+
+    // Keys beside the model from another run of tsf gen (a run killed while
+    // it renamed its files) would tell a reader about another model.
+    checkKeysMatchModel(o.model);
 
     MeshReadReport read;
     // A 3MF written in parts (tsf gen --parts: the components of its one

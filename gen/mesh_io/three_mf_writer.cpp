@@ -1,12 +1,17 @@
 #include "gen/mesh_io/three_mf_writer.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <sys/types.h>
 #include <limits>
 #include <vector>
 
 #include "Model/COM/NMR_DLLInterfaces.h"
 #include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
+#include "gen/util/file_stamp.h"
 #include "gen/mesh_io/lib3mf_handle.h"
 #include "gen/mesh_io/mesh_write_checks.h"
 #include "gen/mesh_io/three_mf_volumes.h"
@@ -47,6 +52,36 @@ void check3mfLimits(const Mesh& mesh, const std::string& path) {
     }
 }
 
+// A UUID made from a hash of what the object holds (lib3mf gives each
+// object a random one): the same model is written as the same bytes, so a
+// run's files carry the same stamp each time (key_stamp.h). RFC 4122
+// layout, version 8 (made by the application).
+std::string contentUuid(uint64_t a, uint64_t b) {
+    char text[40];
+    a = (a & ~uint64_t(0xF000)) | 0x8000;                  // version 8 in the third group
+    b = (b & ~(uint64_t(0xC) << 60)) | (uint64_t(0x8) << 60);  // variant 10
+    std::snprintf(text, sizeof text, "%08x-%04x-%04x-%04x-%012llx", unsigned(a >> 32), unsigned((a >> 16) & 0xFFFF),
+                  unsigned(a & 0xFFFF), unsigned(b >> 48), static_cast<unsigned long long>(b & 0xFFFFFFFFFFFFull));
+    return text;
+}
+
+void setContentUuid(Lib3mfHandle& object, uint64_t hash, const std::string& name) {
+    const uint64_t second = xxh3_64(name.data(), name.size(), hash);
+    checkLib3mf(NMR::lib3mf_object_setuuidutf8(object.get(), contentUuid(hash, second).c_str()), object.get(),
+                "lib3mf_object_setuuidutf8");
+}
+
+// A UUID for something made of `object` (its build item, its component):
+// a hash of the object's own UUID and of `what`.
+std::string derivedUuid(Lib3mfHandle& object, const std::string& what) {
+    BOOL has = 0;
+    char uuid[64] = {};
+    checkLib3mf(NMR::lib3mf_object_getuuidutf8(object.get(), &has, uuid), object.get(), "lib3mf_object_getuuidutf8");
+    const std::string key = std::string(uuid) + "/" + what;
+    const uint64_t a = xxh3_64(key.data(), key.size());
+    return contentUuid(a, xxh3_64(key.data(), key.size(), a));
+}
+
 // Adds mesh as a mesh object named name; object receives it.
 void addMeshObject(Lib3mfHandle& model, const Mesh& mesh, const std::string& name, Lib3mfHandle& object) {
     std::vector<NMR::MODELMESHVERTEX> vertices(mesh.positions.size());
@@ -65,6 +100,9 @@ void addMeshObject(Lib3mfHandle& model, const Mesh& mesh, const std::string& nam
     checkLib3mf(NMR::lib3mf_meshobject_setgeometry(object.get(), vertices.data(), static_cast<DWORD>(vertices.size()),
                                                    triangles.data(), static_cast<DWORD>(triangles.size())),
                 object.get(), "lib3mf_meshobject_setgeometry");
+    const uint64_t hash = xxh3_64(triangles.data(), triangles.size() * sizeof(triangles[0]),
+                                  xxh3_64(vertices.data(), vertices.size() * sizeof(vertices[0])));
+    setContentUuid(object, hash, name);
 }
 
 // A model in millimetres with the Title and Application metadata.
@@ -78,17 +116,56 @@ void startModel(Lib3mfHandle& model, const std::string& title) {
                 "lib3mf_model_addmetadatautf8(Application)");
 }
 
+// Where lib3mf's package goes: the temporary file, written by us. lib3mf's
+// own file writer, when a write fails (a full disk, a file-size limit),
+// throws again from a destructor while it unwinds, which ends the process
+// (std::terminate). Here a failed write or seek is only recorded and lib3mf
+// is told it succeeded, so it finishes normally; the first failure is then
+// reported as an OutputError with the OS reason. (A callback's 0 is
+// lib3mf's success.)
+struct PackageSink {
+    std::FILE* file = nullptr;
+    int error_number = 0;  ///< errno of the first failed write or seek (0: none)
+};
+
+// lib3mf's write callback: a chunk of the package. Returns 0, lib3mf's "done".
+uint32_t writePackageChunk(unsigned char* data, uint32_t bytes, void* user) {
+    auto* sink = static_cast<PackageSink*>(user);
+    if (sink->error_number == 0 && bytes > 0 && std::fwrite(data, 1, bytes, sink->file) != bytes)
+        sink->error_number = errno != 0 ? errno : EIO;
+    return 0;  // lib3mf's "no error"
+}
+
+// lib3mf's seek callback: back to a ZIP header to fill in its sizes.
+uint32_t seekPackage(uint64_t position, void* user) {
+    auto* sink = static_cast<PackageSink*>(user);
+    if (sink->error_number == 0 && ::fseeko(sink->file, off_t(position), SEEK_SET) != 0)
+        sink->error_number = errno != 0 ? errno : EIO;
+    return 0;  // lib3mf's "no error"
+}
+
 // One build item of object, no transform; the package to file's temporary path, then renamed.
 void finishModel(Lib3mfHandle& model, Lib3mfHandle& object, AtomicFile& file, const std::string& path) {
     Lib3mfHandle build_item;
     checkLib3mf(NMR::lib3mf_model_addbuilditem(model.get(), object.get(), nullptr, build_item.out()), model.get(),
                 "lib3mf_model_addbuilditem");
+    checkLib3mf(NMR::lib3mf_builditem_setuuidutf8(build_item.get(), derivedUuid(object, "build item").c_str()),
+                build_item.get(), "lib3mf_builditem_setuuidutf8");
+    checkLib3mf(NMR::lib3mf_model_setbuilduuidutf8(model.get(), derivedUuid(object, "build").c_str()), model.get(),
+                "lib3mf_model_setbuilduuidutf8");
     Lib3mfHandle writer;
     checkLib3mf(NMR::lib3mf_model_querywriter(model.get(), "3mf", writer.out()), model.get(), "lib3mf_model_querywriter");
-    const int result = NMR::lib3mf_writer_writetofileutf8(writer.get(), file.tempPath().c_str());
-    if (result != LIB3MF_OK) {
-        throw OutputError(path, "writing failed: " + lib3mfErrorText(result, writer.get()));
-    }
+    PackageSink sink;
+    sink.file = std::fopen(file.tempPath().c_str(), "wb");
+    if (!sink.file)
+        throw OutputError(path, "cannot open '" + file.tempPath() + "' for writing: " + std::strerror(errno));
+    errno = 0;
+    const int result = NMR::lib3mf_writer_writetocallback(writer.get(), reinterpret_cast<void*>(&writePackageChunk),
+                                                          reinterpret_cast<void*>(&seekPackage), &sink);
+    if (std::fflush(sink.file) != 0 && sink.error_number == 0) sink.error_number = errno != 0 ? errno : EIO;
+    if (std::fclose(sink.file) != 0 && sink.error_number == 0) sink.error_number = errno != 0 ? errno : EIO;
+    if (sink.error_number != 0) throw OutputError(path, "writing failed: " + std::string(std::strerror(sink.error_number)));
+    if (result != LIB3MF_OK) throw OutputError(path, "writing failed: " + lib3mfErrorText(result, writer.get()));
     file.commit();
 }
 
@@ -205,10 +282,17 @@ void writePortableParts(const std::vector<MeshPart>& parts, const std::string& p
                 "lib3mf_model_addcomponentsobject");
     checkLib3mf(NMR::lib3mf_object_setnameutf8(assembly.get(), title.c_str()), assembly.get(),
                 "lib3mf_object_setnameutf8");
+    uint64_t parts_hash = 0;
+    for (const MeshPart& p : parts)
+        parts_hash = xxh3_64(p.mesh.triangles.data(), p.mesh.triangles.size() * sizeof(p.mesh.triangles[0]),
+                             xxh3_64(p.mesh.positions.data(), p.mesh.positions.size() * sizeof(p.mesh.positions[0]), parts_hash));
+    setContentUuid(assembly, parts_hash, title);
     for (Lib3mfHandle& object : objects) {
         Lib3mfHandle component;
         checkLib3mf(NMR::lib3mf_componentsobject_addcomponent(assembly.get(), object.get(), nullptr, component.out()),
                     assembly.get(), "lib3mf_componentsobject_addcomponent");
+        checkLib3mf(NMR::lib3mf_component_setuuidutf8(component.get(), derivedUuid(object, "component").c_str()),
+                    component.get(), "lib3mf_component_setuuidutf8");
     }
     finishModel(model, assembly, file, path);
 }

@@ -15,4 +15,10 @@ namespace tsf {
 /// images, which tsf reads itself, are not named here.
 std::string binaryFileKind(std::string_view head);
 
+/// Throws tsf::InputError naming `path` when `head` (the file's first
+/// bytes) is UTF-16 text: a byte-order mark FF FE or FE FF, or a NUL in
+/// every other byte of an ASCII-looking start (spreadsheets save
+/// "Unicode text" so). tsf reads UTF-8; the message says how to save it.
+void refuseUtf16Text(std::string_view head, const std::string& path);
+
 }  // namespace tsf

@@ -63,13 +63,40 @@ BinLayout binLayout(const PointTable& points, const BinOptions& opts) {
     if (!std::isfinite(w) || !std::isfinite(h))
         throw InputError("bin size " + formatSignificant(p, 4) + " is too small for points spanning " + formatSignificant(width, 4) +
                          " x " + formatSignificant(depth, 4));
-    const double rows = rowsFor(h + 2.0 * kCoverMargin);
-    const double x_lo = rows > 1.0 ? 0.5 : 0.0;  // a single row has no shifted odd row
-    const double cols = std::max(1.0, std::ceil(w + x_lo + 2.0 * kCoverMargin));
-    if (cols * rows > double(kMaxBinCells))
+    // Columns and rows of the covering grid at a pitch.
+    const auto gridAt = [&](double pitch, double& cols_out, double& rows_out) {
+        rows_out = rowsFor(depth / pitch + 2.0 * kCoverMargin);
+        const double lo = rows_out > 1.0 ? 0.5 : 0.0;  // a single row has no shifted odd row
+        cols_out = std::max(1.0, std::ceil(width / pitch + lo + 2.0 * kCoverMargin));
+    };
+    double cols = 0, rows = 0;
+    gridAt(p, cols, rows);
+    const double x_lo = rows > 1.0 ? 0.5 : 0.0;
+    if (cols * rows > double(kMaxBinCells)) {
+        // The option the user gave, and a value of it that fits.
+        const auto fits = [&](double pitch) {
+            double c = 0, r = 0;
+            gridAt(pitch, c, r);
+            return c * r <= double(kMaxBinCells);
+        };
+        std::string fix;
+        if (opts.bin_size > 0.0) {
+            double larger = p * std::sqrt(cols * rows / double(kMaxBinCells));
+            while (!fits(larger)) larger *= 1.01;
+            // Rounded up to 3 significant digits, so the value shown fits too.
+            const double step = std::pow(10.0, std::floor(std::log10(larger)) - 2);
+            fix = "give a --bin of at least " + formatSignificant(std::ceil(larger / step) * step, 3);
+        } else {
+            const int bins = opts.hex_cols > 0 ? opts.hex_cols : kDefaultPointBins;
+            int fewer = std::max(1, int(double(bins) * std::sqrt(double(kMaxBinCells) / (cols * rows))));
+            while (fewer > 1 && !fits(longer / (fewer - 0.5 - 4.0 * kCoverMargin))) --fewer;
+            fix = "give --bins " + std::to_string(fewer) + " or fewer (--bins " + std::to_string(bins) + " asks for " +
+                  std::to_string(bins) + " hexagons along the longer side)";
+        }
         throw InputError("bin size " + formatSignificant(p, 4) + " gives " + formatSignificant(cols, 4) + " x " + formatSignificant(rows, 4) +
                          " hexagons for points spanning " + formatSignificant(width, 4) + " x " + formatSignificant(depth, 4) +
-                         "; the most is " + std::to_string(kMaxBinCells) + " (use a larger bin size)");
+                         "; the most is " + std::to_string(kMaxBinCells) + ": " + fix);
+    }
     layout.grid = {int32_t(cols), int32_t(rows)};
     // Centre the bounding box in the covered rectangle.
     layout.u_min = 0.5 * (x_lo + cols) - 0.5 * w;

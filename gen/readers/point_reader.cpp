@@ -5,6 +5,7 @@
 #include "gen/util/error.h"
 #include "gen/readers/csv_grid_reader.h"
 #include "gen/readers/csv_tokenizer.h"
+#include "gen/readers/file_magic.h"
 #include "gen/readers/number_field.h"
 #include "gen/readers/raster_limits.h"
 #include "gen/util/file_bytes.h"
@@ -40,6 +41,33 @@ struct Resolved {
 std::string columnLabel(const Resolved& w) {
     if (w.label.rfind("column ", 0) == 0) return w.label;
     return "'" + w.label + "', index " + std::to_string(w.index);
+}
+
+// How --delimiter names a delimiter.
+std::string delimiterOption(char d) { return d == '\t' ? "tab" : d == ' ' ? "space" : std::string(1, d); }
+
+// When the header line split by another delimiter has the column `name`:
+// the delimiter seems wrong, and which one works. "" otherwise.
+std::string wrongDelimiterHint(const std::vector<CsvField>& fields, char used, bool given, const std::string& name) {
+    std::string line;
+    for (size_t k = 0; k < fields.size(); ++k) line += (k ? std::string(1, used) : std::string()) + fields[k].text;
+    for (const char d : {',', ';', '\t', ' '}) {
+        if (d == used) continue;
+        size_t start = 0;
+        for (;;) {
+            const size_t end = std::min(line.find(d, start), line.size());
+            std::string field = line.substr(start, end - start);
+            while (!field.empty() && (field.front() == ' ' || field.front() == '"')) field.erase(0, 1);
+            while (!field.empty() && (field.back() == ' ' || field.back() == '"' || field.back() == '\r')) field.pop_back();
+            if (field == name)
+                return std::string(". The delimiter seems wrong: the line was split at '") + delimiterOption(used) + "'" +
+                       (given ? " (--delimiter " + delimiterOption(used) + ")" : " (detected)") +
+                       ", and split at '" + delimiterOption(d) + "' it has the column: give --delimiter " + delimiterOption(d);
+            if (end >= line.size()) break;
+            start = end + 1;
+        }
+    }
+    return "";
 }
 
 }  // namespace
@@ -81,6 +109,7 @@ PointColumns parsePointColumns(const std::string& spec) {
 }
 
 PointTable parsePointsCsv(std::string_view text, const std::string& path, const PointColumns& cols) {
+    refuseUtf16Text(text.substr(0, 4096), path);
     checkCsvDelimiter(cols.delimiter);
     if (!cols.x.isSet() || !cols.y.isSet()) throw InputError("point columns: both x and y are required");
     const char delim = cols.delimiter != 0 ? cols.delimiter : detectCsvDelimiter(text);
@@ -116,7 +145,8 @@ PointTable parsePointsCsv(std::string_view text, const std::string& path, const 
                     if (it == fields.end())
                         throw InputError(path, line, 0,
                                          "no column named " + quoteForMessage(refs[k]->name) + " for " +
-                                             wanted[k].role + " in the header line; it has: " + headerList(fields));
+                                             wanted[k].role + " in the header line; it has: " + headerList(fields) +
+                                             wrongDelimiterHint(fields, delim, cols.delimiter != 0, refs[k]->name));
                     wanted[k].index = int(it - fields.begin());
                 }
             } else {

@@ -8,6 +8,7 @@
 #include "gen/readers/esri_ascii_reader.h"
 #include "gen/readers/file_magic.h"
 #include "gen/readers/gdal_reader.h"
+#include "gen/readers/netcdf_classic_size.h"
 #include "gen/readers/number_field.h"
 #include "gen/readers/pgm_reader.h"
 #include "gen/readers/png_reader.h"
@@ -46,6 +47,23 @@ Raster withMagicInErrors(std::string_view head, Read read) {
         if (kind.empty()) throw;
         throw InputError(e.path(), e.line(), e.column(), "is " + kind + "; " + e.detail());
     }
+}
+
+// Bytes read of a classic netCDF header that is longer than the magic bytes
+// (long attribute lists); a header longer still is left to the netCDF library.
+constexpr int64_t kMaxNetcdfHeaderBytes = int64_t(16) << 20;
+
+// A classic netCDF file shorter than its header says is refused here: the
+// netCDF library reads what is missing as zeros without an error.
+void checkNetcdfFile(const std::string& path, const std::string& head) {
+    if (!isNetcdfClassic(head)) return;
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) return;
+    const auto extent = netcdfClassicExtent(head);
+    if ((extent && !extent->header_cut) || head.size() >= size) return checkNetcdfClassicComplete(head, int64_t(size), path);
+    const std::string header = readFileHead(path, size_t(std::min<int64_t>(int64_t(size), kMaxNetcdfHeaderBytes)));
+    checkNetcdfClassicComplete(header, int64_t(size), path);
 }
 
 }  // namespace
@@ -98,12 +116,14 @@ RasterFormat parseRasterFormat(const std::string& name) {
 
 Raster parseRaster(std::string_view bytes, const std::string& path, const RasterReadOptions& opts) {
     checkCsvDelimiter(opts.delimiter);
+    refuseUtf16Text(bytes.substr(0, kMagicBytes), path);
     const RasterFormat format = opts.format == RasterFormat::Auto ? detectRasterFormat(bytes, path) : opts.format;
     switch (format) {
         case RasterFormat::Png: return parsePng(bytes, path);
         case RasterFormat::Pgm: return parsePgm(bytes, path);
         case RasterFormat::EsriAscii: return parseEsriAscii(bytes, path);
         case RasterFormat::Gdal:
+            checkNetcdfClassicComplete(bytes, int64_t(bytes.size()), path);
             return withMagicInErrors(bytes, [&] { return parseGdalRaster(bytes, path, opts.band, opts.variable, opts.ignore_georef); });
         default: return parseCsvGrid(bytes, path, opts.delimiter, opts.decimal);
     }
@@ -116,11 +136,14 @@ Raster readRaster(const std::string& path, const RasterReadOptions& opts) {
     if (isGdalDatasetName(path) && !std::filesystem::exists(path, ec))
         return readGdalRaster(path, opts.band, opts.variable, opts.ignore_georef);
     const std::string head = readFileHead(path, kMagicBytes);
+    refuseUtf16Text(head, path);
     RasterReadOptions o = opts;
     if (o.format == RasterFormat::Auto) o.format = detectRasterFormat(head, path);
     // GDAL reads the file itself (and any sidecar: .prj, .hdr, .aux.xml).
-    if (o.format == RasterFormat::Gdal)
+    if (o.format == RasterFormat::Gdal) {
+        checkNetcdfFile(path, head);
         return withMagicInErrors(head, [&] { return readGdalRaster(path, o.band, o.variable, o.ignore_georef); });
+    }
     if (!o.variable.empty())
         throw InputError(path, 0, 0, "--variable " + o.variable + ": this file holds one set of values (--variable is for "
                                      "files GDAL reads with several: NetCDF, HDF5, GeoPackage)");

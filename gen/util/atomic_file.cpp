@@ -1,5 +1,6 @@
 #include "gen/util/atomic_file.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -7,6 +8,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <pthread.h>
 #include <stdexcept>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -73,6 +75,21 @@ bool isTempNameOf(const std::string& name, const std::string& stem, pid_t& pid) 
 
 bool processExists(pid_t pid) { return ::kill(pid, 0) == 0 || errno == EPERM; }
 
+// The set of the command that is writing, if any (see OutputSet).
+OutputSet* g_output_set = nullptr;
+
+// SIGINT, SIGTERM and SIGHUP held off for a scope; delivered when it ends.
+struct TerminationSignalsHeld {
+    sigset_t old{};
+    TerminationSignalsHeld() {
+        sigset_t held;
+        sigemptyset(&held);
+        for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, sig);
+        ::pthread_sigmask(SIG_BLOCK, &held, &old);
+    }
+    ~TerminationSignalsHeld() { ::pthread_sigmask(SIG_SETMASK, &old, nullptr); }
+};
+
 }  // namespace
 
 int removeStaleTempFiles(const std::string& target_path) {
@@ -110,6 +127,9 @@ AtomicFile::AtomicFile(const std::string& target_path) : target_path_(target_pat
     for (;;) {
         const unsigned n = g_temp_counter.fetch_add(1);
         std::string candidate = prefix + "." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(n);
+        // Created and registered with termination signals held off: a signal
+        // between the two would leave the file behind.
+        const TerminationSignalsHeld held;
         const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) {
             ::close(fd);
@@ -139,6 +159,13 @@ void AtomicFile::commit() {
         throw OutputError(target_path_, "cannot flush '" + temp_path_ + "' to disk: " + osMessage(error_number));
     }
     ::close(fd);
+    if (g_output_set != nullptr) {
+        // Renamed with the rest of the set; until then the set owns the file.
+        g_output_set->pending_.push_back({temp_path_, target_path_, cleanup_slot_});
+        cleanup_slot_ = -1;
+        committed_ = true;
+        return;
+    }
     if (::rename(temp_path_.c_str(), target_path_.c_str()) != 0) {
         throw OutputError(target_path_, "cannot replace the file: " + osMessage(errno));
     }
@@ -148,6 +175,51 @@ void AtomicFile::commit() {
     syncFolder(folderOf(target_path_));
 }
 
+OutputSet::OutputSet() {
+    if (g_output_set != nullptr) throw std::logic_error("OutputSet: one set at a time");
+    g_output_set = this;
+}
+
+OutputSet::~OutputSet() {
+    if (g_output_set == this) g_output_set = nullptr;
+    for (const Pending& p : pending_) {
+        if (!committed_) ::unlink(p.temp_path.c_str());
+        unregisterTempFile(p.cleanup_slot);
+    }
+}
+
+std::string OutputSet::currentPath(const std::string& target) const {
+    for (auto it = pending_.rbegin(); it != pending_.rend(); ++it)
+        if (it->target_path == target) return it->temp_path;
+    return target;
+}
+
+void OutputSet::commit() {
+    if (committed_) throw std::logic_error("OutputSet::commit called twice");
+    g_output_set = nullptr;
+    std::vector<std::string> folders;
+    {
+        const TerminationSignalsHeld held;
+        for (size_t k = 0; k < pending_.size(); ++k) {
+            Pending& p = pending_[k];
+            if (::rename(p.temp_path.c_str(), p.target_path.c_str()) != 0) {
+                const int error_number = errno;
+                const std::string target = p.target_path;
+                // What is not renamed is removed by the destructor.
+                pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(k));
+                throw OutputError(target, "cannot replace the file: " + osMessage(error_number));
+            }
+            unregisterTempFile(p.cleanup_slot);
+            p.cleanup_slot = -1;
+            folders.push_back(folderOf(p.target_path));
+        }
+        committed_ = true;
+    }
+    std::sort(folders.begin(), folders.end());
+    folders.erase(std::unique(folders.begin(), folders.end()), folders.end());
+    for (const std::string& folder : folders) syncFolder(folder);
+}
+
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
     AtomicFile file(path);
     {
@@ -155,12 +227,18 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
         if (!out) {
             throw OutputError(path, "cannot open '" + file.tempPath() + "' for writing: " + osMessage(errno));
         }
+        // The first failed write sets errno (EFBIG, ENOSPC) and the stream's
+        // state; errno is kept from then on, whatever the writer calls after.
+        errno = 0;
         write(out);
+        const int write_errno = out.fail() ? errno : 0;
         errno = 0;
         out.flush();
         out.close();
         if (out.fail()) {
-            const std::string reason = errno != 0 ? osMessage(errno) : std::string("write error (is the disk full?)");
+            const int error_number = write_errno != 0 ? write_errno : errno;
+            const std::string reason =
+                error_number != 0 ? osMessage(error_number) : std::string("write error (is the disk full?)");
             throw OutputError(path, "writing failed: " + reason);
         }
     }

@@ -29,6 +29,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace tsf {
 
@@ -49,7 +50,8 @@ public:
     const std::string& tempPath() const { return temp_path_; }
     bool committed() const { return committed_; }
 
-    /// fsync the temporary file, rename it over the target, fsync the folder.
+    /// fsync the temporary file, rename it over the target, fsync the folder
+    /// (with an OutputSet alive: fsync and hand the file to the set).
     /// Throws tsf::OutputError with the OS message when the sync or the
     /// rename fails (the temporary file is then still removed by the
     /// destructor). Calling it twice is a bug.
@@ -60,6 +62,46 @@ private:
     std::string temp_path_;
     bool committed_ = false;
     int cleanup_slot_ = -1;  ///< registerTempFile slot while the temporary file exists
+};
+
+/// OutputSet: every file one command writes, replaced together.
+///
+/// While an OutputSet exists, AtomicFile::commit() (and so
+/// writeFileAtomically) only makes its temporary file durable and hands it
+/// to the set; the targets are left as they were. OutputSet::commit() then
+/// renames every temporary file over its target with SIGINT, SIGTERM and
+/// SIGHUP held off, so a signal a person or a service manager sends (Ctrl-C,
+/// kill, a closed terminal) leaves the old files or the new set, never a
+/// mix: before the renames the handler removes the temporary files, after
+/// them it finds none. SIGKILL or a power cut during the renames can still
+/// leave a mix; what tsf verify checks (the sidecar's model stamp) names it.
+/// If the set is destroyed without commit() (an error while writing), its
+/// temporary files are removed and no target changes. One set at a time, on
+/// the thread that writes.
+class OutputSet {
+public:
+    OutputSet();
+    ~OutputSet();
+    OutputSet(const OutputSet&) = delete;
+    OutputSet& operator=(const OutputSet&) = delete;
+
+    /// Renames every file handed to the set over its target, in the order
+    /// they were written. Throws tsf::OutputError when a rename fails (the
+    /// files renamed before it stay renamed; the rest are removed).
+    void commit();
+    /// Where the bytes of `target` are now: its temporary file while it
+    /// waits in the set, else `target` itself.
+    std::string currentPath(const std::string& target) const;
+
+    struct Pending {
+        std::string temp_path, target_path;
+        int cleanup_slot = -1;
+    };
+
+private:
+    friend class AtomicFile;
+    std::vector<Pending> pending_;
+    bool committed_ = false;
 };
 
 /// Removes the temporary files a killed run left for target_path (see the

@@ -23,6 +23,8 @@ uint64_t fnv1a64(const void* data, size_t size, uint64_t hash) {
     return hash;
 }
 
+uint64_t xxh3_64(const void* data, size_t size, uint64_t seed) { return XXH3_64bits_withSeed(data, size, seed); }
+
 const char* stampHashName(StampHash algorithm) { return algorithm == StampHash::Fnv1a64 ? "fnv1a64" : "xxh3_64"; }
 
 FileStamp stampFile(const std::string& path, StampHash algorithm) {

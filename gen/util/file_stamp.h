@@ -36,6 +36,9 @@ const char* stampHashName(StampHash algorithm);
 inline constexpr uint64_t kFnv1a64Basis = 0xcbf29ce484222325ull;
 uint64_t fnv1a64(const void* data, size_t size, uint64_t hash = kFnv1a64Basis);
 
+/// XXH3 64 of `size` bytes with `seed` (0: the hash stamps record).
+uint64_t xxh3_64(const void* data, size_t size, uint64_t seed = 0);
+
 /// The stamp of the file at path, hashed with `algorithm`. Throws
 /// tsf::InputError naming path when it cannot be opened or read.
 FileStamp stampFile(const std::string& path, StampHash algorithm = StampHash::Xxh3_64);

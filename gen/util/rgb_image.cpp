@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ostream>
 
 #include "gen/util/error.h"
 #include "gen/util/atomic_file.h"
@@ -100,31 +101,38 @@ void drawText(RgbImage& img, int x, int y, std::string_view text, int scale, uin
 
 int textWidth(std::string_view text, int scale) { return text.empty() ? 0 : int(text.size()) * 4 * scale - scale; }
 
+namespace {
+
+// libpng's write callback: the encoded bytes go into a string.
+void appendPngBytes(png_structp png, png_bytep data, png_size_t size) {
+    static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(data), size);
+}
+
+}  // namespace
+
 void writePng(const std::string& path, const RgbImage& img) {
-    AtomicFile out(path);
-    FILE* f = std::fopen(out.tempPath().c_str(), "wb");
-    if (!f) throw OutputError(path, std::string("cannot write: ") + std::strerror(errno));
+    // Encoded in memory (a preview is a few hundred KB), then written like
+    // every other output, so a full disk or a file-size limit reports the
+    // OS's reason and leaves an earlier file as it was.
+    std::string bytes;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!png || !info) {
         png_destroy_write_struct(&png, &info);
-        std::fclose(f);
         throw OutputError(path, "libpng could not start writing");
     }
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
-        std::fclose(f);
-        throw OutputError(path, "writing failed (is the disk full?)");
+        throw OutputError(path, "libpng could not encode the picture");
     }
-    png_init_io(png, f);
+    png_set_write_fn(png, &bytes, appendPngBytes, nullptr);
     png_set_IHDR(png, info, png_uint_32(img.w), png_uint_32(img.h), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (int y = 0; y < img.h; ++y) png_write_row(png, const_cast<png_bytep>(&img.rgb[size_t(y) * size_t(img.w) * 3]));
     png_write_end(png, info);
     png_destroy_write_struct(&png, &info);
-    if (std::fclose(f) != 0) throw OutputError(path, std::string("cannot finish writing: ") + std::strerror(errno));
-    out.commit();
+    writeFileAtomically(path, [&](std::ostream& out) { out.write(bytes.data(), std::streamsize(bytes.size())); });
 }
 
 }  // namespace tsf

@@ -116,22 +116,37 @@ TEST(KillSafety, GenKilledAnywhereLeavesTheOldModelOrTheNewOneAndNeverAMismatche
     const std::string new_stl = readText(ref / "m.stl"), new_scene = readText(ref / "m.stl.scene.json");
     const double full_s = timedRun(gen(work, "old.csv"));
     const std::string old_stl = readText(work / "m.stl"), old_scene = readText(work / "m.stl.scene.json");
+    const std::string new_key = readText(ref / "m.key.txt"), new_brf = readText(ref / "m.key.brf");
+    const std::string old_key = readText(work / "m.key.txt"), old_brf = readText(work / "m.key.brf");
+    ASSERT_NE(old_key, new_key);
     ASSERT_FALSE(old_stl.empty());
     ASSERT_EQ(old_stl.size(), new_stl.size()) << "same size on purpose: only the bytes tell them apart";
     ASSERT_NE(old_stl, new_stl);
 
     std::mt19937 rng(15);
     std::uniform_real_distribution<double> moment(0.2 * full_s, 1.1 * full_s);
-    int seen_new = 0, seen_mismatch = 0;
+    int seen_new = 0, seen_mismatch = 0, seen_key_mismatch = 0;
     for (int k = 0; k < kKills; ++k) {
         // A good old model, then a run that replaces it is killed.
         writeText(work / "m.stl", old_stl);
         writeText(work / "m.stl.scene.json", old_scene);
+        writeText(work / "m.key.txt", old_key);
+        writeText(work / "m.key.brf", old_brf);
         killAfter(gen(work, "new.csv"), moment(rng));
         const std::string stl = readText(work / "m.stl"), scene = readText(work / "m.stl.scene.json");
         ASSERT_TRUE(stl == old_stl || stl == new_stl) << "kill " << k << ": a model of " << stl.size() << " bytes";
         ASSERT_TRUE(scene == old_scene || scene == new_scene) << "kill " << k << ": a sidecar of " << scene.size();
         seen_new += stl == new_stl;
+        // Keys from another run than the model are named by tsf verify.
+        const std::string key = readText(work / "m.key.txt"), brf = readText(work / "m.key.brf");
+        ASSERT_TRUE(key == old_key || key == new_key) << "kill " << k;
+        ASSERT_TRUE(brf == old_brf || brf == new_brf) << "kill " << k;
+        if ((stl == new_stl) != (key == new_key) || (stl == new_stl) != (brf == new_brf)) {
+            ++seen_key_mismatch;
+            const auto v = runTsf("verify " + (work / "m.stl").string());
+            EXPECT_EQ(v.exit_code, kExitBadInput) << v.output;
+            EXPECT_NE(v.output.find("is the key of another version of m.stl"), std::string::npos) << v.output;
+        }
         if ((stl == new_stl) != (scene == new_scene)) {
             ++seen_mismatch;
             // A pair from two runs is refused, never judged.
@@ -140,13 +155,80 @@ TEST(KillSafety, GenKilledAnywhereLeavesTheOldModelOrTheNewOneAndNeverAMismatche
             EXPECT_NE(v.output.find("different runs of tsf gen"), std::string::npos) << v.output;
         }
     }
-    std::fprintf(stderr, "%d kills: %d left the new model, %d a mismatched pair (refused)\n", kKills, seen_new, seen_mismatch);
+    std::fprintf(stderr, "%d kills: %d left the new model, %d a mismatched pair (refused), %d keys of another run (named)\n",
+                 kKills, seen_new, seen_mismatch, seen_key_mismatch);
     // The next complete run removes what the killed ones left.
     timedRun(gen(work, "new.csv"));
     EXPECT_EQ(temporaryFiles(work), 0);
     EXPECT_EQ(readText(work / "m.stl"), new_stl);
     const auto v = runTsf("verify " + (work / "m.stl").string() + " --scene " + (work / "m.stl.scene.json").string());
     EXPECT_EQ(v.exit_code, kExitOk) << v.output;
+}
+
+// Starts tsf, sends it `sig` after `delay_s`, waits for it.
+void signalAfter(const std::vector<std::string>& args, double delay_s, int sig) {
+    const pid_t pid = startTsf(args);
+    std::this_thread::sleep_for(std::chrono::duration<double>(delay_s));
+    ::kill(pid, sig);
+    while (::waitpid(-1, nullptr, 0) > 0) {
+    }
+}
+
+// SIGTERM (what kill, a service manager or a closing session sends) at any
+// moment while tsf gen replaces a model, its sidecar and its two keys: the
+// four files are all the old ones or all the new ones, never a mix (the
+// renames are made with the signal held off), and no temporary file stays.
+TEST(KillSafety, GenTerminatedAnywhereLeavesTheOldSetOrTheNewOne) {
+    Subreaper subreaper;
+    const fs::path dir = scratchDir(), ref = dir / "reference", work = dir / "work";
+    fs::create_directories(ref);
+    fs::create_directories(work);
+    writeText(dir / "old.csv", field(1));
+    writeText(dir / "new.csv", field(2));
+    const auto gen = [&](const fs::path& out_dir, const std::string& input) {
+        return std::vector<std::string>{"gen", (dir / input).string(), "-o", (out_dir / "m.stl").string(),
+                                        "--no-verify", "--cull", "none", "--title", "T"};
+    };
+    const char* names[] = {"m.stl", "m.stl.scene.json", "m.key.txt", "m.key.brf"};
+    const auto read = [&](const fs::path& d) {
+        std::vector<std::string> files;
+        for (const char* n : names) files.push_back(readText(d / n));
+        return files;
+    };
+    timedRun(gen(ref, "new.csv"));
+    const std::vector<std::string> new_set = read(ref);
+    const double full_s = timedRun(gen(work, "old.csv"));
+    const std::vector<std::string> old_set = read(work);
+    for (size_t k = 0; k < old_set.size(); ++k) ASSERT_NE(old_set[k], new_set[k]) << names[k];
+
+    std::mt19937 rng(46);
+    std::uniform_real_distribution<double> moment(0.3 * full_s, 1.1 * full_s);
+    int seen_new = 0;
+    for (int k = 0; k < kKills; ++k) {
+        for (size_t f = 0; f < old_set.size(); ++f) writeText(work / names[f], old_set[f]);
+        signalAfter(gen(work, "new.csv"), moment(rng), SIGTERM);
+        const std::vector<std::string> now = read(work);
+        ASSERT_TRUE(now == old_set || now == new_set)
+            << "kill " << k << ": a mix (model " << (now[0] == new_set[0] ? "new" : "old") << ", sidecar "
+            << (now[1] == new_set[1] ? "new" : "old") << ", key " << (now[2] == new_set[2] ? "new" : "old") << ", braille key "
+            << (now[3] == new_set[3] ? "new" : "old") << ")";
+        seen_new += now == new_set;
+        EXPECT_EQ(temporaryFiles(work), 0) << "kill " << k;
+    }
+    std::fprintf(stderr, "%d SIGTERMs: %d left the new set, %d the old one\n", kKills, seen_new, kKills - seen_new);
+    // What a SIGKILL between two renames can leave, made on purpose: each
+    // key carries its model's stamp, and tsf verify names the key of the
+    // other run; the same run writes the same keys.
+    for (size_t f = 0; f < old_set.size(); ++f) writeText(work / names[f], new_set[f]);
+    EXPECT_EQ(runTsf("verify " + (work / "m.stl").string()).exit_code, kExitOk);
+    for (const char* key : {"m.key.txt", "m.key.brf"}) {
+        writeText(work / key, old_set[std::string(key) == "m.key.txt" ? 2 : 3]);
+        const auto v = runTsf("verify " + (work / "m.stl").string() + " --scene " + (work / "m.stl.scene.json").string());
+        EXPECT_EQ(v.exit_code, kExitBadInput) << v.output;
+        EXPECT_NE(v.output.find(std::string(key) + ": is the key of another version of m.stl"), std::string::npos) << v.output;
+        writeText(work / key, new_set[std::string(key) == "m.key.txt" ? 2 : 3]);
+    }
+    EXPECT_NE(new_set[2].find("\nModel stamp: m.stl, "), std::string::npos) << "the stamp ends the key";
 }
 
 TEST(KillSafety, RenderKilledAnywhereLeavesTheOldFileOrTheNewOne) {

@@ -4,7 +4,9 @@
 // temporary file, a file-size limit included.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <vector>
 #include <fstream>
 
 #include "tests/support/run.h"
@@ -120,6 +122,85 @@ TEST(OutputSafety, AFileSizeLimitFailsCleanly) {
     EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "m.stl"));
     EXPECT_EQ(temporaryFiles(dir), 0);
+}
+
+// Every writer's failure is the user's to fix, whatever the format: with a
+// file-size limit (prlimit --fsize, in bytes) below the size of the file
+// that fails, tsf gen ends with exit 2 and the OS's reason naming that file,
+// the file of an earlier run is left as it was, and no temporary file stays.
+// lib3mf, which throws from a destructor when its own file writer fails,
+// once ended the process here (exit 134, the temporary file left behind).
+TEST(OutputSafety, EveryWritersFailureIsAnErrorAndKeepsTheOldFile) {
+    const auto dir = scratchDir();
+    std::string field;
+    for (int r = 0; r < 12; ++r)
+        for (int c = 0; c < 12; ++c) field += std::to_string((r * c) % 7) + (c + 1 < 12 ? "," : "\n");
+    writeText(dir / "f.csv", field);
+    struct Case {
+        const char* outputs;  // the run's output options; the file that fails is `fails`
+        const char* fails;
+    };
+    const Case cases[] = {
+        {"-o m.stl --no-key --no-scene", "m.stl"},
+        {"-o m.stl --ascii --no-key --no-scene", "m.stl"},
+        {"-o m.3mf --no-key --no-scene", "m.3mf"},
+        {"-o m.3mf --parts --no-key --no-scene", "m.3mf"},
+        {"-o m.3mf --parts --parts-layout prusaslicer --no-key --no-scene", "m.3mf"},
+        {"-o m.obj --no-key --no-scene", "m.obj"},
+        {"-o m.off --no-key --no-scene", "m.off"},
+        {"--scad m.scad --no-key --no-scene", "m.json"},  // the parameter sets come first
+    };
+    for (const Case& c : cases) {
+        const std::string gen = "cd " + dir.string() + " && " + TSF_BINARY + " gen f.csv " + c.outputs;
+        ASSERT_EQ(runCommand(gen).exit_code, 0) << c.outputs;
+        const std::string old = readText(dir / c.fails);
+        ASSERT_GT(old.size(), 600u) << c.outputs;
+        const auto limited = runCommand("cd " + dir.string() + " && prlimit --fsize=512 " + TSF_BINARY + " gen f.csv " +
+                                        c.outputs + " --height 31");
+        EXPECT_EQ(limited.exit_code, kExitBadInput) << c.outputs << "\n" << limited.output;
+        EXPECT_NE(limited.output.find(c.fails), std::string::npos) << c.outputs << "\n" << limited.output;
+        EXPECT_NE(limited.output.find("File too large"), std::string::npos) << c.outputs << "\n" << limited.output;
+        EXPECT_EQ(limited.output.find("terminate"), std::string::npos) << limited.output;
+        EXPECT_EQ(readText(dir / c.fails), old) << c.outputs << ": the earlier file is intact";
+        EXPECT_EQ(temporaryFiles(dir), 0) << c.outputs;
+    }
+    // The preview picture: with --scad, the preview is written first.
+    const std::string gen = "cd " + dir.string() + " && " + TSF_BINARY + " gen f.csv --scad p.scad --preview p.png --no-key --no-scene";
+    ASSERT_EQ(runCommand(gen).exit_code, 0);
+    const std::string old = readText(dir / "p.png");
+    const auto limited = runCommand("cd " + dir.string() + " && prlimit --fsize=512 " + TSF_BINARY +
+                                    " gen f.csv --scad p.scad --preview p.png --no-key --no-scene --height 31");
+    EXPECT_EQ(limited.exit_code, kExitBadInput) << limited.output;
+    EXPECT_NE(limited.output.find("p.png"), std::string::npos) << limited.output;
+    EXPECT_NE(limited.output.find("File too large"), std::string::npos) << limited.output;
+    EXPECT_EQ(readText(dir / "p.png"), old);
+    EXPECT_EQ(temporaryFiles(dir), 0);
+}
+
+// The same run writes the same bytes, 3MF included (lib3mf gave each object
+// and build item a random UUID; tsf derives them from the content), so the
+// model's stamp at the end of its keys is the same each time; every UUID in
+// a package is still its own.
+TEST(OutputSafety, TheSameRunWritesTheSameBytes) {
+    const auto dir = scratchDir();
+    writeText(dir / "f.csv", kField);
+    for (const std::string layout : {"", " --parts", " --parts --parts-layout prusaslicer"}) {
+        std::string first[2], key[2];
+        for (int k = 0; k < 2; ++k) {
+            ASSERT_EQ(runTsf("gen " + (dir / "f.csv").string() + " -o " + (dir / "m.3mf").string() + layout).exit_code, 0);
+            first[k] = readText(dir / "m.3mf");
+            key[k] = readText(dir / "m.key.txt");
+        }
+        EXPECT_EQ(first[0], first[1]) << layout;
+        EXPECT_EQ(key[0], key[1]) << layout;
+        const auto model = runCommand("unzip -p " + (dir / "m.3mf").string() + " 3D/3dmodel.model");
+        std::vector<std::string> uuids;
+        for (size_t at = model.output.find("UUID=\""); at != std::string::npos; at = model.output.find("UUID=\"", at + 1))
+            uuids.push_back(model.output.substr(at + 6, 36));
+        EXPECT_GE(uuids.size(), 3u) << layout;
+        std::sort(uuids.begin(), uuids.end());
+        EXPECT_EQ(std::unique(uuids.begin(), uuids.end()), uuids.end()) << layout << ": a UUID used twice";
+    }
 }
 
 // A shared model carries no folder of the person who made it: the .scad

@@ -3,6 +3,7 @@
 // in the summary; what --tile cannot do yet is refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -54,6 +55,42 @@ TEST(TilesCli, BundledAirportsOnASmallBed) {
     // The key tells a reader how the tiles go together.
     const std::string key = test::readText(dir / "eu.key.txt");
     EXPECT_NE(key.find("The model prints in " + std::to_string(t["count"].get<int>()) + " tiles"), std::string::npos) << key;
+}
+
+// Tiling again to the same name with another bed leaves exactly the new
+// tiles: the tiles of the first run that the second did not write are
+// removed (and said so), not left to be printed with the new ones.
+TEST(TilesCli, TilingAgainLeavesExactlyTheNewTiles) {
+    const auto dir = test::scratchDir();
+    const std::string gen = "gen " + test::sourcePath("examples/volcano.csv") + " --no-verify --tile --json -o " +
+                            (dir / "v.stl").string() + " --bed ";
+    const auto tiles = [&](const test::RunResult& r) {
+        std::vector<std::string> names;
+        const auto j = nlohmann::json::parse(r.out);
+        for (const auto& f : j["tiles"]["files"])
+            names.push_back(std::filesystem::path(f.get<std::string>()).filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    };
+    const auto on_disk = [&] {
+        std::vector<std::string> names;
+        for (const auto& e : std::filesystem::directory_iterator(dir))
+            if (e.path().filename().string().find("-tile-") != std::string::npos)
+                names.push_back(e.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    };
+    const auto small = test::runTsf(gen + "60x60", dir);
+    ASSERT_EQ(small.exit_code, test::kExitOk) << small.err;
+    const auto large = test::runTsf(gen + "100x100", dir);
+    ASSERT_EQ(large.exit_code, test::kExitOk) << large.err;
+    ASSERT_LT(tiles(large).size(), tiles(small).size());
+    EXPECT_EQ(on_disk(), tiles(large));
+    EXPECT_NE(large.out.find("a tile of an earlier run under this name"), std::string::npos) << large.out;
+    // A user's own file that only looks similar is kept.
+    test::writeText(dir / "v-tile-notes.stl", "mine");
+    ASSERT_EQ(test::runTsf(gen + "100x100", dir).exit_code, test::kExitOk);
+    EXPECT_TRUE(std::filesystem::exists(dir / "v-tile-notes.stl"));
 }
 
 // The tab's tile need not hold the model's southernmost pillars: it carries

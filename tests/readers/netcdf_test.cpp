@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gen/readers/gdal_reader.h"
+#include "gen/readers/netcdf_classic_size.h"
 #include "gen/readers/raster_reader.h"
 #include "gen/util/error.h"
 #include "tests/readers/netcdf_test_writer.h"
@@ -154,6 +155,57 @@ TEST(NetCdf, ABandSeriesIsOneModelPerStepOnOneScale) {
         EXPECT_EQ(test::runTsf("gen " + path + " --variable pr --band " + bad + " -o " + (dir / "bad.stl").string(), dir).exit_code, 2)
             << bad;
     EXPECT_EQ(test::runTsf("info " + path + " --variable pr --band 1-3", dir).exit_code, 2);
+}
+
+// A classic netCDF file cut short (a download that stopped half way) is
+// refused, naming the size its header asks for: the netCDF library reads
+// what is missing as zeros without an error, so GDAL alone would hand on a
+// model with half its values on the floor. The whole file still reads.
+TEST(NetCdf, ATruncatedClassicFileIsRefusedNotReadAsZeros) {
+    const auto dir = test::scratchDir();
+    for (const char* format : {"NC", "NC2"}) {
+        const std::string path = (dir / (std::string(format) + ".nc")).string();
+        // 24 x 18 values a step, as in a CF file cut in half that was once read with half its cells at 0.
+        const test::NetCdfSpec spec{.steps = 3, .rows = 24, .cols = 18};
+        ASSERT_TRUE(test::writeNetCdf(path, spec, format)) << format;
+        const std::string bytes = test::readText(path);
+        ASSERT_TRUE(isNetcdfClassic(bytes)) << format << " is a classic netCDF file";
+        const auto extent = netcdfClassicExtent(bytes);
+        ASSERT_TRUE(extent) << format;
+        // The header asks for the data of pr and tas: 3 x 24 x 18 floats and as many 16-bit integers.
+        EXPECT_FALSE(extent->header_cut);
+        EXPECT_LE(extent->end_bytes, int64_t(bytes.size())) << format;
+        EXPECT_GE(extent->end_bytes, int64_t(1296 * 4 + 1296 * 2)) << format;
+        RasterReadOptions o;
+        o.variable = "pr";
+        o.band = 3;
+        EXPECT_DOUBLE_EQ(readRaster(path, o).at(4, 0), test::netcdfPr(2, 23, 4)) << "the whole file reads";
+        for (const size_t keep : {bytes.size() / 2, size_t(extent->end_bytes) - 1}) {
+            const std::string cut = (dir / (std::string(format) + "-cut.nc")).string();
+            test::writeText(cut, bytes.substr(0, keep));
+            const InputError e = test::catchInputError([&] { readRaster(cut, o); });
+            EXPECT_EQ(e.path(), cut);
+            EXPECT_TRUE(has(e.detail(), "truncated netCDF file")) << e.what();
+            EXPECT_TRUE(has(e.detail(), "runs to byte " + std::to_string(extent->end_bytes))) << e.what();
+            EXPECT_TRUE(has(e.detail(), "the file has " + std::to_string(keep) + " bytes")) << e.what();
+            // The same from bytes in memory.
+            const InputError m = test::catchInputError([&] { parseRaster(bytes.substr(0, keep), cut, o); });
+            EXPECT_TRUE(has(m.detail(), "truncated netCDF file")) << m.what();
+        }
+        // Cut inside the header: said so, not GDAL's "unknown error".
+        const std::string header_cut = (dir / (std::string(format) + "-header.nc")).string();
+        test::writeText(header_cut, bytes.substr(0, 64));
+        const InputError h = test::catchInputError([&] { readRaster(header_cut, o); });
+        EXPECT_TRUE(has(h.detail(), "ends inside its header, after 64 bytes")) << h.what();
+        // From the user's end: exit 2, the reason, no model.
+        const std::string cut = (dir / (std::string(format) + "-cut.nc")).string();
+        test::writeText(cut, bytes.substr(0, bytes.size() / 2));
+        const test::RunResult r =
+            test::runTsf("gen " + cut + " --variable pr --band 3 -o " + (dir / "cut.stl").string(), dir);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_TRUE(has(r.err, "truncated netCDF file")) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "cut.stl"));
+    }
 }
 
 }  // namespace

@@ -31,11 +31,15 @@ inline double netcdfPr(int t, int lat, int lon) { return 100.0 * (t + 1) + 10.0 
 inline double netcdfTas(int t, int lat, int lon) { return 200.0 + 0.5 * (2 * lon + lat + t); }
 
 /// Writes the file; returns false when GDAL has no netCDF driver or refuses.
-inline bool writeNetCdf(const std::string& path, const NetCdfSpec& s = {}) {
+/// format: the driver's FORMAT (NC: classic, NC2: 64-bit offsets, NC4:
+/// HDF5-based), or empty for the driver's default.
+inline bool writeNetCdf(const std::string& path, const NetCdfSpec& s = {}, const std::string& format = "") {
     GDALAllRegister();
     GDALDriverH driver = GDALGetDriverByName("netCDF");
     if (!driver) return false;
-    GDALDatasetH ds = GDALCreateMultiDimensional(driver, path.c_str(), nullptr, nullptr);
+    const std::string format_option = "FORMAT=" + format;
+    const char* options[] = {format_option.c_str(), nullptr};
+    GDALDatasetH ds = GDALCreateMultiDimensional(driver, path.c_str(), nullptr, format.empty() ? nullptr : options);
     if (!ds) return false;
     GDALGroupH root = GDALDatasetGetRootGroup(ds);
     GDALExtendedDataTypeH f64 = GDALExtendedDataTypeCreate(GDT_Float64);

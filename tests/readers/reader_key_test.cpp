@@ -189,10 +189,13 @@ TEST(ReaderKey, TheBrailleKeyReadBackSaysTheSameNumbersAndUnits) {
                              (table.empty() ? "" : " --braille-table " + table) + " -o " + stem + ".stl",
                          dir);
         ASSERT_EQ(r.exit_code, 0) << r.output;
-        const std::string text = test::readText(stem + ".key.txt");
+        // The model's stamp ends each key, for tsf verify, not for a reader:
+        // on the BRF's last page as plain Braille ASCII, untranslated.
+        auto beforeStamp = [](const std::string& key, const std::string& mark) { return key.substr(0, key.rfind(mark)); };
+        const std::string text = beforeStamp(test::readText(stem + ".key.txt"), "Model stamp:");
         const std::string code = table.empty() ? "en-ueb-g1.ctb" : table;
         EXPECT_TRUE(has(text, table.empty() ? "Unified English Braille" : "en-us-g1.ctb")) << text;
-        std::string back = backTranslateBraille(brfCells(test::readText(stem + ".key.brf")), code);
+        std::string back = backTranslateBraille(brfCells(beforeStamp(test::readText(stem + ".key.brf"), "MODEL STAMP:")), code);
         if (!table.empty()) back = ebaeDigitsAfterPoint(back);
         // The reader's part (in UEB the whole key: its last section too).
         const std::string body = text.substr(text.find("\n\n") + 2);

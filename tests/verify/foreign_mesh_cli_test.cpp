@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -175,6 +176,30 @@ TEST(ForeignMeshes, AnEndlessStreamIsRefusedBeforeItIsRead) {
     const auto s = runTsf("verify " + (dir / "cube.stl").string() + " --scene /dev/zero", dir);
     EXPECT_EQ(s.exit_code, kExitBadInput) << s.output;
     EXPECT_NE(s.err.find("/dev/zero: is a device, not a file"), std::string::npos) << s.err;
+}
+
+// A large file of another kind (a disk image, a video) is refused from its
+// first bytes and its size, before it is read: 2 GiB of a sparse file with
+// no mesh extension (not a ZIP, an OFF, an ASCII STL, nor the size its
+// binary STL count says), and the same named .3mf (not a ZIP). Reading it
+// whole first took seconds and 2 GiB of memory. The peak memory says it was
+// not read.
+TEST(ForeignMeshes, ALargeFileOfAnotherKindIsRefusedBeforeItIsRead) {
+    const auto dir = scratchDir();
+    for (const char* name : {"disk.img", "disk.3mf", "disk"}) {
+        const std::string path = (dir / name).string();
+        ASSERT_EQ(test::runCommand("truncate -s 2G " + path).exit_code, 0);
+        const auto [code, peak_mib] = test::runMeasured(std::string(TSF_BINARY) + " verify " + path + " >" +
+                                                        (dir / "out.txt").string() + " 2>&1");
+        const std::string out = test::readText(dir / "out.txt");
+        EXPECT_EQ(code, kExitBadInput) << name << ": " << out;
+        EXPECT_NE(out.find(name), std::string::npos) << out;
+        EXPECT_NE(out.find(std::string(name) == "disk.3mf" ? "is not a 3MF file" : "unknown mesh file type"),
+                  std::string::npos)
+            << out;
+        EXPECT_LT(peak_mib, 200.0) << name << ": the file was read";
+        std::filesystem::remove(path);
+    }
 }
 
 }  // namespace

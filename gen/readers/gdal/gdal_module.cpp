@@ -54,6 +54,16 @@ struct QuietGdal {
     }
 };
 
+// Reads a window of the band as doubles. False when GDAL says it failed,
+// by its return value or by an error it only reported (a driver may log a
+// failure and still return CE_None with the buffer partly unread).
+bool readPixels(GDALRasterBandH band, int64_t x0, int64_t y0, int64_t cols, int64_t rows, double* out) {
+    CPLErrorReset();
+    const CPLErr status = GDALRasterIO(band, GF_Read, int(x0), int(y0), int(cols), int(rows), out, int(cols), int(rows),
+                                       GDT_Float64, 0, 0);
+    return status == CE_None && CPLGetLastErrorType() != CE_Failure && CPLGetLastErrorType() != CE_Fatal;
+}
+
 struct Dataset {
     GDALDatasetH h = nullptr;
     ~Dataset() {
@@ -210,8 +220,7 @@ void readDecimated(GDALRasterBandH band, const std::string& path, int64_t cols, 
         }
         const int64_t y0 = r * rows / dec_rows, y1 = std::max(y0 + 1, (r + 1) * rows / dec_rows);
         strip.resize(size_t(cols) * size_t(y1 - y0));
-        if (GDALRasterIO(band, GF_Read, 0, int(y0), int(cols), int(y1 - y0), strip.data(), int(cols), int(y1 - y0),
-                         GDT_Float64, 0, 0) != CE_None)
+        if (!readPixels(band, 0, y0, cols, y1 - y0, strip.data()))
             throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
         std::fill(sum.begin(), sum.end(), 0.0);
         std::fill(count.begin(), count.end(), 0.0);
@@ -611,8 +620,7 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         r.cols = int32_t(cols);
         r.rows = int32_t(rows);
         r.values.assign(size_t(cols) * size_t(rows), 0.0);
-        if (GDALRasterIO(band, GF_Read, 0, 0, cols, rows, r.values.data(), int(cols), int(rows), GDT_Float64, 0, 0) !=
-            CE_None)
+        if (!readPixels(band, 0, 0, cols, rows, r.values.data()))
             throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
     }
 
@@ -693,10 +701,18 @@ struct Srs {
 void transformPoints(const GdalTransformCall& c) {
     QuietGdal quiet;
     Srs from, to;
+    // GDAL often says nothing more than that it failed: then what is accepted.
+    const auto why = [] {
+        const char* m = CPLGetLastErrorMsg();
+        return m && *m ? std::string(" (") + m + ")" : std::string();
+    };
     if (OSRSetFromUserInput(from.h, c.from->c_str()) != OGRERR_NONE)
-        throw InputError("'" + *c.from + "' is not a coordinate reference system GDAL and PROJ know: " + QuietGdal::lastMessage());
+        throw InputError("--crs '" + *c.from + "' is not a coordinate reference system GDAL and PROJ know" + why() +
+                         ": give an EPSG code (EPSG:3857), a PROJ string (+proj=utm +zone=32 +datum=WGS84) or WKT");
     if (OSRSetFromUserInput(to.h, c.to->c_str()) != OGRERR_NONE)
-        throw InputError("'" + *c.to + "' is not a projection GDAL and PROJ know: " + QuietGdal::lastMessage());
+        throw InputError("--project '" + *c.to + "' is not a projection GDAL and PROJ know" + why() +
+                         ": give auto, none, equal-area, equirect, an EPSG code (EPSG:3035) or a PROJ string "
+                         "(+proj=laea +lat_0=52 +lon_0=10)");
     // x east (longitude), y north (latitude), whatever order the authority gives.
     OSRSetAxisMappingStrategy(from.h, OAMS_TRADITIONAL_GIS_ORDER);
     OSRSetAxisMappingStrategy(to.h, OAMS_TRADITIONAL_GIS_ORDER);
