@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/haptics/fake_falcon.h"
+#include "tests/haptics/fake_falcon_report.h"
 #include "tests/support/run.h"
 
 namespace fs = std::filesystem;
@@ -45,14 +46,8 @@ tsf::test::RunResult runWithFakeFalcon(const std::string& env, const std::string
                                  " " + args);
 }
 
-/// key=value lines of the stand-in's report.
 std::map<std::string, std::string> readReport(const fs::path& p) {
-    std::map<std::string, std::string> m;
-    std::ifstream f(p);
-    std::string line;
-    while (std::getline(f, line))
-        if (const auto eq = line.find('='); eq != std::string::npos) m[line.substr(0, eq)] = line.substr(eq + 1);
-    return m;
+    return tsf::haptics::testing::readFakeFalconReport(p.string());
 }
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }

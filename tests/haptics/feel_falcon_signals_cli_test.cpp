@@ -23,6 +23,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/haptics/fake_falcon_report.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -35,12 +37,7 @@ fs::path scratchFile(const std::string& suffix) {
 }
 
 std::map<std::string, std::string> readReport(const fs::path& p) {
-    std::map<std::string, std::string> m;
-    std::ifstream f(p);
-    std::string line;
-    while (std::getline(f, line))
-        if (const auto eq = line.find('='); eq != std::string::npos) m[line.substr(0, eq)] = line.substr(eq + 1);
-    return m;
+    return tsf::haptics::testing::readFakeFalconReport(p.string());
 }
 
 /// A feel session on the fake Falcon (firmware running), until a signal

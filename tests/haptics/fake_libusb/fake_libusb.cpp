@@ -36,6 +36,7 @@
 #include <string>
 
 #include "tests/haptics/fake_falcon.h"
+#include "tests/haptics/fake_falcon_report.h"
 
 struct libusb_context {
     int unused = 0;
@@ -80,14 +81,8 @@ Vec3 handTarget(double t) {
 bool g_open = false;   // the device is open in this process (open=1 in the report)
 int g_opens = 0;       // how many processes have opened it since the report began
 
-/// key=value lines of a report (empty when there is none).
 std::map<std::string, std::string> readReport(const std::string& path) {
-    std::map<std::string, std::string> m;
-    std::ifstream f(path);
-    std::string line;
-    while (std::getline(f, line))
-        if (const auto eq = line.find('='); eq != std::string::npos) m[line.substr(0, eq)] = line.substr(eq + 1);
-    return m;
+    return tsf::haptics::testing::readFakeFalconReport(path);
 }
 
 void writeReport() {
