@@ -4,9 +4,12 @@
 // hidden with its customizer switch. Every render must be clean (closed,
 // manifold, one piece, no self-intersection, no zero-area triangle: a
 // defect is a failure, never a tolerance) and the direct mesher's solid of
-// the same Scene, plane by plane. The tab, the legend's plate and the scale
-// are joined into the terrain's one polyhedron (scad_lib/tsf_joined.scad):
-// no boolean, so OpenSCAD 2021 never turns the model into Nef polyhedra.
+// the same Scene, plane by plane. Besides the list of models, a
+// true-aspect grid of topography and bathymetry: its stretched hexagons are
+// where OpenSCAD 2021's union once wrote intersecting and zero-area
+// triangles. The tab, the legend's plate and the scale are joined into the
+// terrain's one polyhedron (scad_lib/tsf_joined.scad): no boolean, so
+// OpenSCAD 2021 never turns the model into Nef polyhedra.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,6 +69,15 @@ DefaultModel modelNamed(const std::string& name) {
                     return double((c * c + 3 * r) % 9);
                 })),
                 defaults(Bottom::Mirrored)};
+    if (name == "true_aspect") {  // topography and bathymetry, one pillar per value (stretched hexagons)
+        HexField f = test::fieldFromFunction(40, 40, [](int c, int r) {
+            return 40.0 * std::sin(c * 0.17) * std::cos(r * 0.11) + 0.3 * ((c * 5 + r * 3) % 4) - 10.0;
+        });
+        f.rows_a_pitch_apart = true;
+        SceneParams p = defaults();
+        p.pitch_mm = 3.0;
+        return {name, f, p};
+    }
     // the volcano with --title --units --scale
     FieldLoadOptions in;
     in.input = test::sourcePath("examples/volcano.csv");
@@ -93,6 +105,7 @@ TEST_P(DefaultScadFile, RendersCleanAndEqualToTheDirectMesh) {
     const DefaultModel m = modelNamed(model_name);
     const Scene scene = buildScene(m.field, m.params);
     ASSERT_TRUE(scene.marks.tab.has_value()) << "the default model carries the tab";
+    if (model_name == "true_aspect") EXPECT_EQ(scene.y_scale, kRowsAPitchApart);
     if (model_name == "volcano") {
         ASSERT_TRUE(scene.legend.has_value());
         ASSERT_TRUE(scene.scale.has_value());
@@ -114,7 +127,8 @@ TEST_P(DefaultScadFile, RendersCleanAndEqualToTheDirectMesh) {
 
 INSTANTIATE_TEST_SUITE_P(
     ModelsEnginesTab, DefaultScadFile,
-    ::testing::Combine(::testing::Values("near_equal", "nodata", "checkerboard", "islands", "mirrored_points", "volcano"),
+    ::testing::Combine(::testing::Values("near_equal", "nodata", "checkerboard", "islands", "mirrored_points", "true_aspect",
+                                         "volcano"),
                        ::testing::Values("openscad", "wasm"), ::testing::Bool()),
     [](const auto& info) {
         return std::get<0>(info.param) + "_" + std::get<1>(info.param) + (std::get<2>(info.param) ? "_tab" : "_no_tab");
