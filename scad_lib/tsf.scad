@@ -30,4 +30,5 @@ include <tsf_tilt.scad>
 include <tsf_legend.scad>
 include <tsf_scale.scad>
 include <tsf_tab.scad>
+include <tsf_joined.scad>
 include <tsf_halves.scad>

@@ -2,6 +2,8 @@
 // with the title and the value range embossed in domed braille dots.
 //
 // Part of the tsf OpenSCAD library (use <tsf.scad> to get all of it).
+// Used by files of the CSG strategy; the polyhedron strategy joins the legend plate
+// into the terrain's one polyhedron instead (tsf_joined.scad: no boolean).
 //
 // tsf lays the legend out (liblouis braille, NLS Specification 800 dot
 // sizes; docs/printing.md) and meshes the plate with its dots; the generated

@@ -376,7 +376,8 @@ function _tsf_mirrored_spans(heights, base_units, min_t) =
 function _tsf_is_height_grid(h) =
     is_list(h) && len([for (row = h) if (!is_list(row) || len([for (v = row) if (!is_undef(v) && !_tsf_is_count(v)) 1]) > 0) 1]) == 0;
 
-function _tsf_is_marked(mask, col, row) = len([for (c = mask[row]) if (c == col) 1]) > 0;
+// search() is OpenSCAD's own loop: the check runs for every cell of a model.
+function _tsf_is_marked(mask, col, row) = let(m = mask[row]) is_list(m) && len(m) > 0 && len(search(col, m)) > 0;
 
 function _tsf_check_model(m, who) =
     assert(is_list(m) && len(m) == 12 && m[0] == "tsf_model", str(who, ": expected a model made by tsf_model()"))

@@ -32,7 +32,11 @@
 //   or subtracting other shapes still works (OpenSCAD then runs CGAL on the
 //   result, which is slower).
 // Arguments:
-//   m = a model from tsf_model().
+//   m      = a model from tsf_model().
+//   joined = bodies tsf placed beside the pillars, each [walls, points,
+//            corners, triangles] or [] (hidden), joined into the same
+//            polyhedron through the pillars' own corners (tsf_joined.scad).
+//            Default: none.
 // Example:
 //   m = tsf_model([[1, 3, 2], [2, 0, 1], [3, "nodata", 2]], cell_mm=10, max_height_mm=15, base_mm=2,
 //                 value_max=3, z_step_mm=0.2);
@@ -41,9 +45,10 @@
 //   m = tsf_model([[1, 3, 2], [2, 0, 1], [3, undef, 2]], cell_mm=10, max_height_mm=15, base_mm=2,
 //                 value_max=3, mirrored=true);
 //   tsf_terrain_polyhedron(m);
-module tsf_terrain_polyhedron(m) {
+module tsf_terrain_polyhedron(m, joined = []) {
     model = _tsf_check_model(m, "tsf_terrain_polyhedron");
-    _tsf_polyhedron(_tsf_model_points(model, model[5], model[10], model[11]));
+    assert(is_list(joined), str("tsf_terrain_polyhedron: joined must be a list of attachments written by tsf, got ", joined));
+    _tsf_polyhedron(_tsf_model_points(model, model[5], model[10], model[11], joined));
 }
 
 // Module: tsf_hull_base()
@@ -94,10 +99,13 @@ function _tsf_range_chunk() = 500000;
 // The boundary of a model whose cells have the given spans: plain cells as
 // hexagons, the cells of the marks' faces (model[8], tsf_marks.scad) through
 // those faces, the triangle raised by raise_units; with shapes (tsf_tilt.scad)
-// tilted and dimpled tops as tsf resolved them.
-function _tsf_model_points(model, spans, raise_units, shapes) =
-    concat(len(shapes) > 0 ? _tsf_shaped_span_points(model[1], model[2], model[3], model[4], spans, shapes, model[9])
-                           : _tsf_span_points(model[1], model[2], model[3], model[4], spans, model[9]),
+// tilted and dimpled tops as tsf resolved them; with joined bodies
+// (tsf_joined.scad) the cells they touch and the bodies.
+function _tsf_model_points(model, spans, raise_units, shapes, joined = []) =
+    let(mask = len(joined) > 0 ? _tsf_joined_mask(model, spans, joined) : model[9])
+    concat(len(shapes) > 0 ? _tsf_shaped_span_points(model[1], model[2], model[3], model[4], spans, shapes, mask)
+                           : _tsf_span_points(model[1], model[2], model[3], model[4], spans, mask),
+           len(joined) > 0 ? _tsf_joined_points(model, spans, shapes, joined) : [],
            [for (f = [0:1:len(model[8]) - 1])
                each _tsf_face_points(model[8], f, spans, raise_units, model[3], model[4], shapes, model[1])]);
 

@@ -3,6 +3,8 @@
 // the floor, so a reader measures a pillar in value units.
 //
 // Part of the tsf OpenSCAD library (use <tsf.scad> to get all of it).
+// Used by files of the CSG strategy; the polyhedron strategy joins the scale
+// into the terrain's one polyhedron instead (tsf_joined.scad: no boolean).
 //
 // tsf chooses the step and places the staircase (gen/model/features/scale.h, docs/model.md);
 // the generated file carries it as data,

@@ -6,7 +6,9 @@
 // Part of the tsf OpenSCAD library (use <tsf.scad> to get all of it).
 //
 // tsf places the tab (gen/model/features/orientation_tab.h) against the
-// westernmost hexagon walls of the pillars and writes it as data,
+// westernmost hexagon walls of the pillars. A file of the polyhedron strategy
+// joins it into the terrain's one polyhedron (tsf_joined.scad: no boolean);
+// a file of the CSG strategy writes it as data,
 //   orientation_tab = [points, triangles]
 // the closed body tsf's own mesh has (mm; each triangle counter-clockwise
 // seen from outside, as tsf's meshes are): every corner is the one tsf's mesh

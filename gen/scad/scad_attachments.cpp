@@ -7,9 +7,10 @@
 
 namespace tsf {
 
-std::vector<ScadAttachment> scadAttachments(const Scene& scene) {
+std::vector<ScadAttachment> scadAttachments(const Scene& scene, bool join) {
     std::vector<ScadAttachment> out;
-    for (std::optional<ScadAttachment> a : {scadLegend(scene), scadScale(scene), scadTab(scene), scadHalves(scene)})
+    for (std::optional<ScadAttachment> a :
+         {scadLegend(scene, join), scadScale(scene, join), scadTab(scene, join), scadHalves(scene)})
         if (a) out.push_back(std::move(*a));
     return out;
 }

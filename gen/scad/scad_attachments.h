@@ -15,6 +15,10 @@ struct Scene;
 /// carries their data and library files (the legend, the scale, the
 /// orientation tab, the halves); the terrain call is wrapped in the reverse
 /// order, so the first is innermost.
-std::vector<ScadAttachment> scadAttachments(const Scene& scene);
+/// join: the terrain is one polyhedron (the polyhedron strategy, or any
+/// shaped model), so an attachment that can be joined (gen/scad/scad_joined.h)
+/// is written as its contacts and open body; otherwise as a closed body the
+/// terrain is unioned with.
+std::vector<ScadAttachment> scadAttachments(const Scene& scene, bool join);
 
 }  // namespace tsf

@@ -64,10 +64,15 @@ Parameters parametersOf(const Scene& s) {
 std::vector<std::string> libraryParts(ScadOptions::Strategy strategy, bool marks, bool shaped,
                                       const std::vector<ScadAttachment>& attachments) {
     std::vector<std::string> parts{"tsf_model.scad", "tsf_polyhedron.scad"};
-    if (strategy == ScadOptions::Strategy::Csg && !shaped) parts.push_back("tsf_csg.scad");
-    if (marks) parts.push_back("tsf_marks.scad");
-    if (shaped) parts.push_back("tsf_tilt.scad");
-    for (const ScadAttachment& a : attachments) parts.push_back(a.library_file);
+    const auto add = [&parts](const std::string& part) {
+        if (std::find(parts.begin(), parts.end(), part) == parts.end()) parts.push_back(part);
+    };
+    if (strategy == ScadOptions::Strategy::Csg && !shaped) add("tsf_csg.scad");
+    if (marks) add("tsf_marks.scad");
+    // A joined attachment's cells are drawn by corner, as shaped tops are.
+    const bool joined = std::any_of(attachments.begin(), attachments.end(), [](const ScadAttachment& a) { return !a.joined.empty(); });
+    if (shaped || joined) add("tsf_tilt.scad");
+    for (const ScadAttachment& a : attachments) add(a.library_file);
     return parts;
 }
 
@@ -339,8 +344,12 @@ void emitValues(std::string& o, const Scene& s) {
 
 void emitCall(std::string& o, const Scene& s, const ScadOptions& opts, const std::vector<ScadAttachment>& attachments) {
     // The features' modules wrap the terrain call, the first innermost.
-    std::string wrap;
+    std::string wrap, joined;
     for (auto a = attachments.rbegin(); a != attachments.rend(); ++a) wrap += a->call_prefix;
+    for (const ScadAttachment& a : attachments)
+        if (!a.joined.empty()) joined += (joined.empty() ? "" : ",\n                                  ") + a.joined;
+    const std::string polyhedron =
+        joined.empty() ? "tsf_terrain_polyhedron(model);\n" : "tsf_terrain_polyhedron(model, joined = [" + joined + "]);\n";
     o += "// ----------------------------------------------------------------- Model ---\n";
     if (!opts.inline_library) o += std::string("use <") + kScadLibraryCopyDir + "/" + kScadLibraryEntry + ">\n";
     o += "model = tsf_model(values, cell_mm = cell, max_height_mm = height, base_mm = base,\n"
@@ -366,11 +375,11 @@ void emitCall(std::string& o, const Scene& s, const ScadOptions& opts, const std
         // The CSG strategy's prisms have level tops: a shaped model is one polyhedron.
         if (opts.strategy == ScadOptions::Strategy::Csg)
             o += "// Tilted tops are drawn as one polyhedron (the CSG strategy's prisms have level tops).\n";
-        o += wrap + "tsf_terrain_polyhedron(model);\n";
+        o += wrap + polyhedron;
         return;
     }
     o += wrap;
-    o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : "tsf_terrain_polyhedron(model);\n";
+    o += opts.strategy == ScadOptions::Strategy::Csg ? "tsf_terrain_csg(model);\n" : polyhedron;
 }
 
 void emitInlineLibrary(std::string& o, const Scene& s, const ScadOptions& opts,
@@ -419,7 +428,9 @@ std::string emitScad(const Scene& scene, const ScadOptions& opts, const std::str
     emitValues(o, scene);
     emitMarks(o, scene);
     emitTops(o, scene);
-    const std::vector<ScadAttachment> attachments = scadAttachments(scene);
+    // The terrain is one polyhedron unless it is the CSG strategy's union of level prisms.
+    const bool one_polyhedron = opts.strategy == ScadOptions::Strategy::Polyhedron || hasShapedTops(scene);
+    const std::vector<ScadAttachment> attachments = scadAttachments(scene, one_polyhedron);
     for (const ScadAttachment& a : attachments) o += a.data;
     emitCall(o, scene, opts, attachments);
     if (opts.inline_library) emitInlineLibrary(o, scene, opts, attachments);
@@ -469,7 +480,7 @@ std::string emitScadParameterSets(const Scene& scene) {
     // orientation tab, the legend's plate; the file asserts the tab's): the
     // other sets leave it out (a mirrored model's plate would float over a
     // flat one).
-    for (const ScadAttachment& a : scadAttachments(scene)) {
+    for (const ScadAttachment& a : scadAttachments(scene, /*join=*/false)) {
         if (a.placed_switch.empty()) continue;
         all[a.placed_switch] = "true";
         for (nlohmann::ordered_json* set : {&layers, &flip, &half}) (*set)[a.placed_switch] = "false";

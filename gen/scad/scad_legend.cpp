@@ -3,12 +3,13 @@
 #include "gen/model/features/legend_join.h"
 #include "gen/mesh_io/number_text.h"
 #include "gen/model/scene.h"
+#include "gen/scad/scad_joined.h"
 
 namespace tsf {
 namespace {
 
-void emitLegendData(std::string& o, const Scene& s) {
-    const Mesh plate = legendPlateMesh(s);
+// joined: the plate as tsf_joined.scad joins it; null: the closed plate.
+void emitLegendData(std::string& o, const Scene& s, const Attachment* joined) {
     o += "/* [Braille legend] */\n"
          "// Title and value range in braille on a plate north of the pillars (docs/printing.md).\n"
          "braille_legend = true;\n\n"
@@ -17,6 +18,13 @@ void emitLegendData(std::string& o, const Scene& s) {
          "// generated (the plate does not follow cell, base or mirror; regenerate with tsf\n"
          "// gen to change it). Lines:";
     for (const std::string& line : s.legend->layout.text) o += " \"" + line + "\"";
+    if (joined) {
+        o += "\n// The walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n"
+             "legend_plate = " + scadJoinedData(s, *joined) + ";\n" +
+             scadJoinedAssert(s, "braille_legend", "the braille legend");
+        return;
+    }
+    const Mesh plate = legendPlateMesh(s);
     o += "\nlegend_plate = [[\n";
     for (size_t k = 0; k < plate.positions.size(); ++k) {
         const Vec3& p = plate.positions[k];
@@ -40,13 +48,20 @@ void emitLegendData(std::string& o, const Scene& s) {
 
 }  // namespace
 
-std::optional<ScadAttachment> scadLegend(const Scene& s) {
+std::optional<ScadAttachment> scadLegend(const Scene& s, bool join) {
     if (!s.legend) return std::nullopt;
     ScadAttachment a;
-    a.library_file = "tsf_legend.scad";
-    emitLegendData(a.data, s);
-    a.call_prefix = "tsf_with_legend(legend_plate, braille_legend) ";
     a.placed_switch = "braille_legend";
+    const std::optional<Attachment> joined = join ? legendAttachment(s, Assembly::OnePiece) : std::nullopt;
+    if (joined && scadCanJoin(s, *joined)) {
+        a.library_file = "tsf_joined.scad";
+        emitLegendData(a.data, s, &*joined);
+        a.joined = "braille_legend ? legend_plate : []";
+        return a;
+    }
+    a.library_file = "tsf_legend.scad";
+    emitLegendData(a.data, s, nullptr);
+    a.call_prefix = "tsf_with_legend(legend_plate, braille_legend) ";
     return a;
 }
 

@@ -15,6 +15,7 @@ struct Scene;
 /// legend" switch and `legend_plate = [points, faces];` (mm; faces clockwise
 /// from outside, as polyhedron() wants) for scad_lib/tsf_legend.scad,
 /// wrapping the terrain in tsf_with_legend(legend_plate, braille_legend).
-std::optional<ScadAttachment> scadLegend(const Scene& scene);
+/// join: written for scad_lib/tsf_joined.scad when it can be (gen/scad/scad_joined.h).
+std::optional<ScadAttachment> scadLegend(const Scene& scene, bool join);
 
 }  // namespace tsf

@@ -7,11 +7,14 @@
 #include "gen/mesh_io/number_text.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
+#include "gen/model/features/scale.h"
+#include "gen/scad/scad_joined.h"
 
 namespace tsf {
 namespace {
 
-void emitScaleData(std::string& o, const Scene& s) {
+// joined: the staircase as tsf_joined.scad joins it; null: boxes to union.
+void emitScaleData(std::string& o, const Scene& s, const Attachment* joined) {
     const SceneScale& sc = *s.scale;
     o += "/* [Tactile scale] */\n"
          "// A staircase east of the pillars: each tread at the height of a value (docs/model.md).\n"
@@ -21,6 +24,12 @@ void emitScaleData(std::string& o, const Scene& s) {
          "// follow cell, height or base; regenerate with tsf gen to change it): one step\n"
          "// every " + formatShortest(sc.step) + " from the floor (" + formatShortest(s.mapping.baseline) + "), treads for";
     for (const ScaleStep& st : sc.steps) o += " " + formatShortest(st.value);
+    if (joined) {
+        o += ".\n// The walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n"
+             "tactile_scale = " + scadJoinedData(s, *joined) + ";\n" +
+             scadJoinedAssert(s, "show_scale", "the tactile scale");
+        return;
+    }
     o += ".\ntactile_scale = [[" + formatShortest(sc.x0_mm) + ", " + formatShortest(sc.xs_mm) + ", " + formatShortest(sc.x1_mm) + "], [" +
          formatShortest(sc.y0_mm) + ", " + formatShortest(sc.y1_mm) + "], " + formatShortest(s.zMm(sc.foot_top_units)) + ", [\n";
     for (size_t k = 0; k < sc.steps.size(); ++k) {
@@ -46,11 +55,19 @@ void emitScaleData(std::string& o, const Scene& s) {
 
 }  // namespace
 
-std::optional<ScadAttachment> scadScale(const Scene& s) {
+std::optional<ScadAttachment> scadScale(const Scene& s, bool join) {
     if (!s.scale) return std::nullopt;
     ScadAttachment a;
+    a.placed_switch = "show_scale";
+    const std::optional<Attachment> joined = join ? scaleAttachment(s, Assembly::OnePiece) : std::nullopt;
+    if (joined && scadCanJoin(s, *joined)) {
+        a.library_file = "tsf_joined.scad";
+        emitScaleData(a.data, s, &*joined);
+        a.joined = "show_scale ? tactile_scale : []";
+        return a;
+    }
     a.library_file = "tsf_scale.scad";
-    emitScaleData(a.data, s);
+    emitScaleData(a.data, s, nullptr);
     a.call_prefix = "tsf_with_scale(tactile_scale, show_scale) ";
     return a;
 }

@@ -14,6 +14,7 @@ struct Scene;
 /// scale" switch and `tactile_scale = [...];` (mm) for
 /// scad_lib/tsf_scale.scad, wrapping the terrain in
 /// tsf_with_scale(tactile_scale, show_scale).
-std::optional<ScadAttachment> scadScale(const Scene& scene);
+/// join: written for scad_lib/tsf_joined.scad when it can be (gen/scad/scad_joined.h).
+std::optional<ScadAttachment> scadScale(const Scene& scene, bool join);
 
 }  // namespace tsf

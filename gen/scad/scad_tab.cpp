@@ -2,25 +2,19 @@
 
 #include "gen/model/features/orientation_tab.h"
 #include "gen/model/scene.h"
+#include "gen/scad/scad_joined.h"
 #include "gen/util/number_format.h"
 
 namespace tsf {
 namespace {
 
-void emitTabData(std::string& o, const Scene& s) {
+void emitTabBody(std::string& o, const Scene& s) {
     // The tab as the closed body tsf meshes it (gen/model/features/orientation_tab.h:
     // meshTabBody), every face a triangle: OpenSCAD then takes each corner as
     // written, where a polygon face it must tessellate itself would have its
     // corners moved to its 2^-20 mm grid (and the union with them).
     const JoinedBody body = meshTabBody(s, /*joined=*/false);
-    o += "/* [Orientation marks] */\n"
-         "// The tab west of the pillars: the notch cut into its south-west corner, the\n"
-         "// triangle (right angle south-west, the longer leg east) on its top (docs/model.md).\n"
-         "show_orientation_tab = true;\n\n"
-         "/* [Hidden] */\n"
-         "// The tab as tsf placed it, in mm, for the parameters as generated (it does not\n"
-         "// follow cell, base, snap or mirror; regenerate with tsf gen to change them):\n"
-         "// [points, triangles] of a closed body, triangles counter-clockwise seen from outside.\n"
+    o += "// [points, triangles] (mm) of a closed body, triangles counter-clockwise seen from outside.\n"
          "orientation_tab = [[";
     for (size_t v = 0; v < body.mesh.positions.size(); ++v) {
         const Vec3& p = body.mesh.positions[v];
@@ -32,6 +26,9 @@ void emitTabData(std::string& o, const Scene& s) {
         o += std::string(t ? ", " : "") + "[" + std::to_string(f[0]) + ", " + std::to_string(f[1]) + ", " + std::to_string(f[2]) + "]";
     }
     o += "]];\n";
+}
+
+void emitTabAssert(std::string& o, const Scene& s) {
     // The tab stands against the pillars' walls where tsf put them: another
     // cell, base, snap or mirror would move the walls away from it; on a
     // mirrored model it lies in the band its pillar spans, which every
@@ -50,15 +47,40 @@ void emitTabData(std::string& o, const Scene& s) {
          " it wrote: set show_orientation_tab = false, or run tsf gen again to change them\");\n\n";
 }
 
+// joined: the tab as tsf_joined.scad joins it; null: the closed body.
+void emitTabData(std::string& o, const Scene& s, const Attachment* joined) {
+    o += "/* [Orientation marks] */\n"
+         "// The tab west of the pillars: the notch cut into its south-west corner, the\n"
+         "// triangle (right angle south-west, the longer leg east) on its top (docs/model.md).\n"
+         "show_orientation_tab = true;\n\n"
+         "/* [Hidden] */\n"
+         "// The tab as tsf placed it, for the parameters as generated (it does not\n"
+         "// follow cell, base, snap or mirror; regenerate with tsf gen to change them):\n";
+    if (joined) {
+        o += "// the walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n"
+             "orientation_tab = " + scadJoinedData(s, *joined) + ";\n";
+    } else {
+        emitTabBody(o, s);
+    }
+    emitTabAssert(o, s);
+}
+
 }  // namespace
 
-std::optional<ScadAttachment> scadTab(const Scene& s) {
+std::optional<ScadAttachment> scadTab(const Scene& s, bool join) {
     if (!s.marks.tab) return std::nullopt;
     ScadAttachment a;
-    a.library_file = "tsf_tab.scad";
-    emitTabData(a.data, s);
-    a.call_prefix = "tsf_with_tab(orientation_tab, show_orientation_tab) ";
     a.placed_switch = "show_orientation_tab";
+    const std::optional<Attachment> joined = join ? tabAttachment(s, Assembly::OnePiece) : std::nullopt;
+    if (joined && scadCanJoin(s, *joined)) {
+        a.library_file = "tsf_joined.scad";
+        emitTabData(a.data, s, &*joined);
+        a.joined = "show_orientation_tab ? orientation_tab : []";
+        return a;
+    }
+    a.library_file = "tsf_tab.scad";
+    emitTabData(a.data, s, nullptr);
+    a.call_prefix = "tsf_with_tab(orientation_tab, show_orientation_tab) ";
     return a;
 }
 

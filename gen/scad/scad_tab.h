@@ -14,6 +14,7 @@ struct Scene;
 /// marks" switch `show_orientation_tab` and `orientation_tab = [...];` (mm)
 /// for scad_lib/tsf_tab.scad, wrapping the terrain in
 /// tsf_with_tab(orientation_tab, show_orientation_tab).
-std::optional<ScadAttachment> scadTab(const Scene& scene);
+/// join: written for scad_lib/tsf_joined.scad when it can be (gen/scad/scad_joined.h).
+std::optional<ScadAttachment> scadTab(const Scene& scene, bool join);
 
 }  // namespace tsf

@@ -195,10 +195,21 @@ TEST(ScadEmitter, ParameterSetsLeaveTheOrientationTabOutWhereItWouldNotStand) {
     EXPECT_EQ(sets["as generated"]["show_orientation_tab"], "true");
     for (const char* name : {"layer steps 0.2 mm", "mirrored bottom", "half size"})
         EXPECT_EQ(sets[name]["show_orientation_tab"], "false") << name;
-    const std::string scad = emitScad(scene, options(), "model.scad");
-    EXPECT_TRUE(contains(scad, "orientation_tab = [[")) << scad;
+    // The polyhedron strategy joins the tab into the terrain's one polyhedron
+    // (its walls and open body, tsf_joined.scad); the CSG strategy unions the closed body.
+    ScadOptions poly = options();
+    poly.strategy = ScadOptions::Strategy::Polyhedron;
+    const std::string scad = emitScad(scene, poly, "model.scad");
+    EXPECT_TRUE(contains(scad, "orientation_tab = [\n  // walls [col, row, edge, bottom, top] (z steps)")) << scad;
     EXPECT_TRUE(contains(scad, "assert(!show_orientation_tab || [cell, base, snap, mirror] == ["));
-    EXPECT_TRUE(contains(scad, "tsf_with_tab(orientation_tab, show_orientation_tab) "));
+    EXPECT_TRUE(contains(scad, "tsf_terrain_polyhedron(model, joined = [show_orientation_tab ? orientation_tab : []]);"));
+    EXPECT_FALSE(contains(scad, "tsf_with_tab("));
+    ScadOptions csg = options();
+    csg.strategy = ScadOptions::Strategy::Csg;
+    const std::string unioned = emitScad(scene, csg, "model.scad");
+    EXPECT_TRUE(contains(unioned, "orientation_tab = [[")) << unioned;
+    EXPECT_TRUE(contains(unioned, "assert(!show_orientation_tab || [cell, base, snap, mirror] == ["));
+    EXPECT_TRUE(contains(unioned, "tsf_with_tab(orientation_tab, show_orientation_tab) "));
 }
 
 // The legend's plate too: drawn for the parameters as generated (a mirrored

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "engine_fixtures.h"
+#include "same_solid.h"
 #include "tests/support/fields.h"
 #include "gen/mesh/direct_mesher.h"
 #include "gen/mesh/halves_mesh.h"
@@ -24,62 +25,10 @@ namespace tsf {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The bar for "the same solid": volumes equal to 1e-6 relative.
-constexpr double kVolumeRelativeTolerance = 1e-6;
-
-const test::EngineOrReason& engineNamed(const std::string& name) {
-    return name == "wasm" ? test::wasmEngine() : test::nativeEngine();
-}
-
-// Largest |coordinate| of a mesh (mm): scales the float32 rounding of STL.
-double maxAbsCoordinate(const Mesh& m) {
-    double r = 0;
-    for (const Vec3& p : m.positions) r = std::max({r, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    return r;
-}
-
-// Checks `mesh` (an engine's render, read back) against `direct`, the direct
-// mesher's mesh of `scene`: volume, bounding box, the same surface plane by
-// plane, every cell read back, the solid checks.
-void expectSameMesh(const std::string& engine_name, const Mesh& mesh, const Scene& scene, const Mesh& direct,
-                    const fs::path& out) {
-    const double direct_volume_mm3 = signedVolume(direct);
-    EXPECT_LE(std::abs(signedVolume(mesh) - direct_volume_mm3), kVolumeRelativeTolerance * direct_volume_mm3)
-        << engine_name << ": volume " << signedVolume(mesh) << " vs direct " << direct_volume_mm3;
-    const Bounds a = meshBounds(mesh), b = meshBounds(direct);
-    const double rounding_mm = maxAbsCoordinate(direct) * kStlCoordinateRoundoff;
-    for (auto [x, y] : {std::pair{a.min.x, b.min.x}, {a.min.y, b.min.y}, {a.min.z, b.min.z}, {a.max.x, b.max.x},
-                        {a.max.y, b.max.y}, {a.max.z, b.max.z}})
-        EXPECT_NEAR(x, y, rounding_mm) << engine_name << ": bounding boxes differ";
-
-    VerifyOptions vo;
-    vo.name = out.string();
-    vo.printability = false;
-    vo.reference = &direct;  // the same surface, plane by plane (verify/agreement.h)
-    vo.reference_name = "direct mesher";
-    vo.exact = true;  // exact predicates and constructions: a self-touching corner is found for sure
-    const VerifyReport report = verifyModel(mesh, &scene, vo);
-    EXPECT_TRUE(report.passed()) << engine_name << ":\n" << formatReport(report);
-    ASSERT_TRUE(report.readback.has_value());
-    EXPECT_EQ(report.readback->cells_checked, scene.keptCount());
-    EXPECT_EQ(report.readback->over_tolerance, 0u);
-}
-
-// Renders `scad` with `engine` and checks the result against `scene`.
-void expectSameSolid(const ScadEngine& engine, const Scene& scene, const fs::path& scad, const fs::path& out,
-                     const ScadRenderRequest& base = {}) {
-    ScadRenderRequest rq = base;
-    rq.scad_path = scad.string();
-    rq.output_path = out.string();
-    rq.timeout_s = 300;
-    const Mesh direct = meshScene(scene);
-    EngineOutputCheck check;
-    const ScadRenderResult r = renderScadChecked(engine, rq, {}, {signedVolume(direct)}, &check);
-    ASSERT_TRUE(r.ok()) << engine.name() << ": " << r.summary << "\n" << r.output;
-    EXPECT_TRUE(check.ok) << check.problem;
-    expectSameMesh(engine.name(), readStl(out.string()), scene, direct, out);
-}
+using test::engineNamed;
+using test::expectSameMesh;
+using test::expectSameSolid;
+using test::maxAbsCoordinate;
 
 // engine, strategy, bottom
 using Case = std::tuple<std::string, std::string, Bottom>;
