@@ -29,13 +29,35 @@ std::string spokenText(const std::string& text) {
 
 namespace {
 
+/// Brackets this long or shorter stay on one line: a place "(76.0, 38.5)",
+/// a cell "(col 17, row 1)"; longer ones are clauses like any other.
+constexpr size_t kWholeBracketChars = 24;
+
 /// Splits after each `sep` ("; " or ", "), keeping the separator's mark on
-/// the piece before it: "a; b" -> {"a;", "b"}.
+/// the piece before it: "a; b" -> {"a;", "b"}; never inside a short
+/// bracketed group (kWholeBracketChars).
 std::vector<std::string> splitAfter(const std::string& text, const std::string& sep) {
+    std::vector<bool> whole(text.size(), false);
+    std::vector<size_t> open;
+    for (size_t k = 0; k < text.size(); ++k) {
+        if (text[k] == '(') open.push_back(k);
+        else if (text[k] == ')' && !open.empty()) {
+            const size_t o = open.back();
+            open.pop_back();
+            if (k - o + 1 <= kWholeBracketChars)
+                for (size_t j = o; j <= k; ++j) whole[j] = true;
+        }
+    }
     std::vector<std::string> out;
     size_t from = 0;
-    for (size_t at; (at = text.find(sep, from)) != std::string::npos; from = at + sep.size())
+    for (size_t at = 0; (at = text.find(sep, at)) != std::string::npos;) {
+        if (whole[at]) {
+            at += sep.size();
+            continue;
+        }
         out.push_back(text.substr(from, at + sep.size() - 1 - from));
+        from = at += sep.size();
+    }
     out.push_back(text.substr(from));
     return out;
 }

@@ -89,6 +89,12 @@ TEST(SpokenText, DimensionsByArrowsToAndShortLines) {
     for (char c : long_line)
         if (c != ' ' && c != '\n') want += c;
     EXPECT_EQ(words, want);
+    // A place in brackets is one item: its two numbers stay on one line.
+    const std::string place = "  legible   fails at 2 places ((76.0, 38.5) mm: " + std::string(40, 'e') +
+                              ", over 12.8 square mm; (70.0, 41.5) mm: " + std::string(40, 'f') + ")\n";
+    const std::string kept = shortLines(place, 60, 12);
+    EXPECT_NE(kept.find("(76.0, 38.5) mm"), std::string::npos) << kept;
+    EXPECT_NE(kept.find("(70.0, 41.5) mm"), std::string::npos) << kept;
 }
 
 }  // namespace
