@@ -243,9 +243,12 @@ LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const
                              ? std::string("no setting passes that keeps the options given (") +
                                    (given.height ? "--height" : "") + (given.height && given.transfer ? ", " : "") +
                                    (given.transfer ? "--transfer" : "") + ")"
-                             : "no height from " + formatSignificant(p0.max_height_mm, 3) + " down to " +
-                                   formatSignificant(heights.empty() ? p0.max_height_mm : heights.back(), 3) +
-                                   " mm and no transfer passes";
+                             : heights.empty()
+                                   ? "no transfer passes, and no height below " + formatSignificant(p0.max_height_mm, 3) +
+                                         " mm keeps every neighbour step now at least " +
+                                         formatSignificant(kFeltHeightStepMm, 2) + " mm felt"
+                                   : "no height from " + formatSignificant(p0.max_height_mm, 3) + " down to " +
+                                         formatSignificant(heights.back(), 3) + " mm and no transfer passes";
     if (!refused.empty()) reason += "; others would flatten the data (" + refused + ")";
     out.lines.push_back(reason);
     j["why"] = reason;
