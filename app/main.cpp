@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
                "2 bad input, a bad option, or an output\n"
                "that cannot be written (missing folder, no permission, disk full, an output\n"
                "that would overwrite an input or another output); 3 only when an external\n"
-               "tool (openscad, node, prusa-slicer) failed or is missing; 4 a device failed; 130 interrupted.");
+               "tool (openscad, node, prusa-slicer) failed or is missing; 4 a device failed;\n"
+               "130 interrupted (Ctrl-C); ended by another signal, 128 + its number (143 SIGTERM).");
     tsf::cli::addGenCommand(app);
     tsf::cli::addInfoCommand(app);
     tsf::cli::addRenderCommand(app);
