@@ -204,8 +204,9 @@ void addVerifyCommand(CLI::App& app) {
     cmd->add_flag("--tactile", opts->tactile,
                   "Also check the model as a hand reads it: no sharp points or knife edges, no pit or valley a "
                   "fingertip cannot reach the bottom of, and (with --scene) orientation marks of tactile size, "
-                  "pillars that stand a hand's push, neighbouring steps of 0.5 mm (the pits of cells without data "
-                  "are holes, not places a value is read: docs/tactile.md)")
+                  "pillars that stand a hand's push, neighbouring steps of 0.5 mm (with --scene only the data "
+                  "tops must be reached: the pits of cells without data and the groove beside the pillars hold no "
+                  "value: docs/tactile.md)")
         ->group(print);
     cmd->add_flag("--quick", opts->quick,
                   "Only the checks tsf gen's self-check keeps on a model above 3 million triangles: topology, "

@@ -200,19 +200,34 @@ void checkPointsAndEdges(const Mesh& m, const TactileOptions& o, TactileResult& 
     r.stages.push_back({"tactile_angles", ms});
 }
 
-// Samples of `top` over the kept cells without data (their pits), from the
-// Scene: a hole there says "no data", and no value is read at its bottom.
-std::vector<uint8_t> noDataSamples(const TopHeightField& top, const Scene* s) {
+// Samples of `top` where no value stands, from the Scene: the pits of kept
+// cells without data (a hole there says "no data"), and everything off the
+// data cells (the groove that separates the pillars from the scale or the
+// plate beside them, the floor of a notch). Nothing is read at their
+// bottom; the data tops are what a fingertip must reach. Empty without a
+// Scene: then every pit counts.
+std::vector<uint8_t> noValueSamples(const TopHeightField& top, const Scene* s) {
+    constexpr double kRimMm = 0.01;
     std::vector<uint8_t> out;
-    if (!s || s->cells_nodata_kept == 0) return out;
-    out.assign(top.z.size(), 0);
+    if (!s) return out;
+    out.assign(top.z.size(), 1);
     for (int j = 0; j < top.ny; ++j)
         for (int i = 0; i < top.nx; ++i) {
-            int32_t col = 0, row = 0;
             const double x = top.x0 + i * top.step, y = top.y0 + j * top.step;
-            if (!hexCellAt(s->grid, x / s->pitch_mm, y / (s->pitch_mm * s->y_scale), col, row)) continue;
-            const int32_t k = s->keptAt(col, row);
-            if (k >= 0 && s->kind[size_t(k)] == CellKind::NoData) out[size_t(j) * size_t(top.nx) + size_t(i)] = 1;
+            // A sample on a cell's rim (the grid anchors samples on whole
+            // half millimetres, where walls can stand) reads the wall or
+            // the floor below it, not the top: a data sample lies inside
+            // the cell, a hundredth of a millimetre from every side.
+            int32_t cell = -2;
+            for (const auto& [dx, dy] : {std::pair{0.0, 0.0}, {kRimMm, 0.0}, {-kRimMm, 0.0}, {0.0, kRimMm}, {0.0, -kRimMm}}) {
+                int32_t col = 0, row = 0;
+                const int32_t k = hexCellAt(s->grid, (x + dx) / s->pitch_mm, (y + dy) / (s->pitch_mm * s->y_scale), col, row)
+                                      ? s->keptAt(col, row)
+                                      : -1;
+                if (cell == -2) cell = k;
+                if (k != cell) cell = -1;
+            }
+            if (cell >= 0 && s->kind[size_t(cell)] == CellKind::Data) out[size_t(j) * size_t(top.nx) + size_t(i)] = 0;
         }
     return out;
 }
@@ -225,7 +240,7 @@ void checkFingerReach(const Mesh& m, const Scene* scene, const TactileOptions& o
     const FingerReachResult reach =
         top.z.empty() ? FingerReachResult{}
                       : fingerReach(top, meshBounds(m).min.z, {kAdultFingertipRadiusMm, kChildFingertipRadiusMm},
-                                    noDataSamples(top, scene));
+                                    noValueSamples(top, scene));
     if (reach.fingers.size() != 2) {
         c.status = CheckStatus::Skipped;
         c.note = "skipped: an empty mesh";
@@ -243,8 +258,9 @@ void checkFingerReach(const Mesh& m, const Scene* scene, const TactileOptions& o
         c.note = "an adult's fingertip (" + formatFixed(2 * kAdultFingertipRadiusMm, 0) + " mm) leaves " + said(adult) +
                  " more than " + formatFixed(kUnreachedDepthMm, 1) + " mm deep unreached, a child's (" +
                  formatFixed(2 * kChildFingertipRadiusMm, 0) + " mm) " + said(child) +
-                 (adult.no_value_area_mm2 > 0 ? "; the pits of cells without data (" + formatFixed(adult.no_value_area_mm2, 1) +
-                                                    " mm^2 out of reach) hold no value to read"
+                 (adult.no_value_area_mm2 > 0 ? "; where no value stands (pits of cells without data, the groove beside the "
+                                                    "pillars: " + formatFixed(adult.no_value_area_mm2, 1) +
+                                                    " mm^2 out of reach) nothing is read"
                                               : std::string()) +
                  "; top sampled every " + formatSignificant(reach.step_mm, 2) + " mm";
     }

@@ -39,18 +39,19 @@ TEST(LegendCli, TitleAndRangeInBrailleOnAPlateNorthOfThePillars) {
     // "Depth" in uncontracted braille: capital sign (dot 6), d (1-4-5), e (1-5), p (1-2-3-4), t (2-3-4-5), h (1-2-5).
     EXPECT_EQ(legend["lines"][0]["braille"], "\u2820\u2819\u2811\u280f\u281e\u2813");
     EXPECT_DOUBLE_EQ(legend["dot_base_mm"].get<double>(), 1.44);
-    EXPECT_DOUBLE_EQ(legend["dot_height_mm"].get<double>(), 0.48);
+    // No --layer: 0.6 mm, whole layers at the common layer heights.
+    EXPECT_DOUBLE_EQ(legend["dot_height_mm"].get<double>(), 0.6);
 
     const Mesh m = readMesh(model);
     const test::Invariants inv = test::checkInvariants(m);
     EXPECT_TRUE(inv.closedManifold()) << inv.describe();
     EXPECT_EQ(inv.components, 1u);
-    // The plate reaches north of the grid; the dots stand 0.48 mm on the 2 mm floor there.
+    // The plate reaches north of the grid; the dots stand 0.6 mm on the 2 mm floor there.
     const Bounds b = meshBounds(m);
     EXPECT_GT(b.max.y, j["scene"]["size_mm"][1].get<double>() + 10.0);
     size_t dot_tops = 0;
     for (const Vec3& p : m.positions)
-        dot_tops += std::fabs(p.z - 2.48) < 1e-5 && p.y > j["scene"]["size_mm"][1].get<double>();  // STL: float32
+        dot_tops += std::fabs(p.z - 2.6) < 1e-5 && p.y > j["scene"]["size_mm"][1].get<double>();  // STL: float32
     EXPECT_EQ(dot_tops, legend["dots"].get<size_t>());
 
     const auto ok = test::runTsf("verify " + model + " --scene " + model + ".scene.json", dir);

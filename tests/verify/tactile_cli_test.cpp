@@ -154,6 +154,24 @@ TEST(TactileCli, TheVolcanosDefaultModelPasses) {
         EXPECT_EQ(statusOf(r.out, id), "pass") << id;
 }
 
+// The tactile scale stands a groove away from the pillars (so the hand tells
+// it from the data); the groove is too narrow for a fingertip to reach its
+// floor, but no value stands there: with the Scene the model passes, and
+// the note gives the groove's area apart. Without the Scene every pit counts.
+TEST(TactileCli, TheGrooveBesideTheScaleHoldsNoValue) {
+    const auto dir = test::scratchDir();
+    const std::string model = (dir / "v.stl").string();
+    const auto g = test::runTsf("gen " + test::sourcePath("examples/volcano.vrt") + " --title Volcano --scale -o " + model, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    const auto with = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile --json", dir);
+    EXPECT_EQ(with.exit_code, test::kExitOk) << with.out;
+    EXPECT_EQ(statusOf(with.out, "tactile_finger_reach"), "pass") << with.out;
+    const std::string note = noteOf(with.out, "tactile_finger_reach");
+    EXPECT_NE(note.find("the groove beside the pillars: "), std::string::npos) << note;
+    const auto without = test::runTsf("verify " + model + " --tactile --json", dir);
+    EXPECT_EQ(statusOf(without.out, "tactile_finger_reach"), "fail") << without.out;
+}
+
 // A pillar 3 mm across standing 20 mm above its neighbours breaks under a
 // hand; 8 mm across it stands. Neighbouring values closer than a layer are
 // a warning, not a failure.
@@ -185,21 +203,31 @@ TEST(TactileCli, SlenderPillarsFailAndCloseHeightsWarn) {
     EXPECT_GT(countOf(r.out, "tactile_height_steps"), 0) << r.out;
 }
 
-// Braille as it will print: 0.48 mm dots print 0.4 mm at 0.2 mm layers
-// (fail), 0.5 mm at 0.1 mm layers (pass); made with --layer 0.2 they are
-// three whole layers, 0.6 mm (pass).
+// Braille as it will print: without --layer the dots are 0.6 mm, whole
+// layers at 0.2 and 0.3 mm (pass at both). Made for 0.12 mm layers they
+// are four, 0.48 mm, and print 0.4 mm at 0.2 mm layers (fail), 0.5 mm at
+// 0.1 mm (pass); made with --layer 0.2 they are three, 0.6 mm (pass).
 TEST(TactileCli, BrailleDotsAreCheckedAsTheyWillPrint) {
     const auto dir = test::scratchDir();
-    const std::string plain = (dir / "plain.stl").string(), layered = (dir / "layered.stl").string();
+    const std::string plain = (dir / "plain.stl").string(), fine = (dir / "fine.stl").string(),
+                      layered = (dir / "layered.stl").string();
     const std::string field = test::sourcePath("examples/volcano.csv");
     const auto g = test::runTsf("gen " + field + " --title Volcano -o " + plain, dir);
     ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
-    EXPECT_NE(g.out.find("0.48 mm high"), std::string::npos) << g.out;
-    EXPECT_NE(g.out.find("print 0.40 mm at 0.2 mm layers"), std::string::npos) << g.out;
-    const auto at02 = test::runTsf("verify " + plain + " --scene " + plain + ".scene.json --tactile --json", dir);
+    EXPECT_NE(g.out.find("0.60 mm high"), std::string::npos) << g.out;
+    for (const char* layer : {"0.2", "0.3"}) {
+        const auto r = test::runTsf("verify " + plain + " --scene " + plain + ".scene.json --tactile --layer " + layer + " --json", dir);
+        EXPECT_EQ(statusOf(r.out, "tactile_braille"), "pass") << layer << "\n" << r.out;
+    }
+
+    const auto f = test::runTsf("gen " + field + " --title Volcano --layer 0.12 -o " + fine, dir);
+    ASSERT_EQ(f.exit_code, test::kExitOk) << f.out << f.err;
+    EXPECT_NE(f.out.find("0.48 mm high (4 whole layers of 0.12 mm"), std::string::npos) << f.out;
+    const auto at02 = test::runTsf("verify " + fine + " --scene " + fine + ".scene.json --tactile --json", dir);
     EXPECT_EQ(at02.exit_code, test::kExitCheckFailed) << at02.out;
     EXPECT_EQ(statusOf(at02.out, "tactile_braille"), "fail") << at02.out;
-    const auto at01 = test::runTsf("verify " + plain + " --scene " + plain + ".scene.json --tactile --layer 0.1 --json", dir);
+    EXPECT_NE(at02.out.find("print 0.40 mm at 0.2 mm layers"), std::string::npos) << at02.out;
+    const auto at01 = test::runTsf("verify " + fine + " --scene " + fine + ".scene.json --tactile --layer 0.1 --json", dir);
     EXPECT_EQ(statusOf(at01.out, "tactile_braille"), "pass") << at01.out;
 
     const auto l = test::runTsf("gen " + field + " --title Volcano --layer 0.2 -o " + layered, dir);
@@ -272,6 +300,7 @@ TEST(TactileCli, GenAndVerifyGiveTheSameVerdicts) {
         {"volcano", volcano, ""},
         {"mirrored", volcano + " --mirror", ""},
         {"titled", volcano + " --title Volcano --units m --layer 0.2", " --layer 0.2"},
+        {"scaled", test::sourcePath("examples/volcano.vrt") + " --title Volcano --scale", ""},
         {"pit", (dir / "pit.csv").string() + " --cell 3 --height 10 --transfer linear --baseline zero", ""},
         {"holes", (dir / "holes.csv").string() + " --cell 3", ""},
     };

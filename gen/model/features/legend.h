@@ -37,6 +37,11 @@ inline constexpr BrailleStandard kNlsSpec800{"NLS Specification 800 (2008) 3.2",
 /// tactile signs (2010 ADA Standards for Accessible Design, 703.3.1).
 inline constexpr double kMaxBrailleDotHeightMm = 0.94;
 
+/// The dot height (mm) when the printer's layer is not known: whole layers
+/// at 0.1, 0.12, 0.15, 0.2 and 0.3 mm, 0.5 mm at 0.25 mm; the standard's
+/// 0.48 mm would print 0.4 mm at 0.2 mm layers, under what a reader expects.
+inline constexpr double kUnknownLayerDotHeightMm = 0.6;
+
 /// The dot height (mm) printed at `layer_mm` layers: the slicer keeps a
 /// layer where the dot reaches past its middle, so the height rounds to
 /// whole layers. layer_mm <= 0 gives the height as it is.

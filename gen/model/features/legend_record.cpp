@@ -165,9 +165,10 @@ std::string legendFactsLines(const Scene& s) {
           << formatSignificant(s.params.legend.layer_mm, 3) << " mm; ";
     o << st.name << ")\n";
     if (s.params.legend.layer_mm <= 0)
-        o << "  note      braille dots " << formatFixed(st.dot_height_mm, 2) << " mm high print "
-          << formatFixed(printedDotHeightMm(st.dot_height_mm, 0.2), 2)
-          << " mm at 0.2 mm layers: give --layer (your printer's layer height) and the dots are made whole layers\n";
+        o << "  note      braille dots " << formatFixed(st.dot_height_mm, 2)
+          << " mm high: whole layers at 0.1, 0.15, 0.2 and 0.3 mm layers; give --layer (your printer's layer height) "
+             "and they are the fewest whole layers of it that reach the standard's "
+          << formatFixed(kNlsSpec800.dot_height_mm, 2) << " mm\n";
     for (size_t k = 0; k < l.layout.text.size(); ++k)
         o << "            " << brailleUnicode(l.layout.cells[k]) << "  " << l.layout.text[k] << "\n";
     return o.str();

@@ -92,6 +92,10 @@ void placeLegend(Scene& s) {
         // that is higher than a reader expects (a layer thicker than the range).
         const double layers = std::ceil(p.standard.dot_height_mm / rq.layer_mm - 1e-9);
         if (layers * rq.layer_mm <= kMaxBrailleDotHeightMm) p.standard.dot_height_mm = std::max(1.0, layers) * rq.layer_mm;
+    } else {
+        // The layer is not known: a height that is whole layers at the
+        // common ones, so the printed dot stays in the standards' range.
+        p.standard.dot_height_mm = kUnknownLayerDotHeightMm;
     }
     const double width = gridWidth(s.grid, s.pitch_mm);
     const BrailleStandard& st = p.standard;
