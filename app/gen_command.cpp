@@ -392,16 +392,31 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     // legibility check is made again with what the user left to tsf
     // (app/legible_defaults.h); the summary says what changed and why.
     std::string legibility_key;
+    std::string legibility_change;  // what the search changed, for the key's last section
     if (made.report) {
         const std::vector<std::string> failed = failedLegibility(*made.report);
         if (!failed.empty()) {
             timer.begin("legibility");
-            const LegibleDefaults ld = legibleDefaults(field, scene, failed, o.legibility_given, rq.verify_options);
+            const LegibleDefaults ld = legibleDefaults(
+                field, scene, failed, o.legibility_given, rq.verify_options, [&](int bins) -> std::optional<HexField> {
+                    GenOptions at = o.gen;
+                    at.bins = bins;
+                    try {
+                        return loadField(at);
+                    } catch (const InputError&) {
+                        return std::nullopt;
+                    }
+                });
             summary.legibility = ld.lines;
             summary.legibility_json = ld.json;
             if (ld.params) {
                 o.gen.scene = *ld.params;
+                if (ld.bins > 0) {
+                    o.gen.bins = ld.bins;
+                    field = loadField(o.gen);
+                }
                 scene = buildScene(field, o.gen.scene);
+                legibility_change = ld.key_note;
                 try {
                     made = makeVerifiedModel(scene, rq, [&](const std::string& stage) { timer.begin(stage.c_str()); });
                 } catch (const ModelVerificationFailed& e) {
@@ -568,6 +583,7 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
                                            f.name.substr(1) + ": " + f.value);
         facts.categorical = field.input.categorical;
         facts.legibility = legibility_key;
+        if (!legibility_change.empty()) facts.made_notes.push_back(legibility_change);
         facts.class_names = field.input.classes;
         facts.class_order = field.input.class_order;
         if (const auto g = groundScale(scene, field)) facts.ground = groundSentence(*g);
@@ -799,6 +815,8 @@ void addGenCommand(CLI::App& app) {
         const bool series = !opts->gen.band_series.empty();
         opts->legibility_given.height = series || cmd->get_option("--height")->count() > 0;
         opts->legibility_given.transfer = series || cmd->get_option("--transfer")->count() > 0;
+        opts->legibility_given.cell = series || cmd->get_option("--cell")->count() > 0 ||
+                                      cmd->get_option("--bins")->count() > 0 || cmd->get_option("--bin")->count() > 0;
         // The pieces are not the model the sidecar describes: none is written for them.
         if (opts->gen.scene.halves || opts->printer.tile) opts->no_sidecar = true;
         if (!opts->gen.band_series.empty()) runGenSeries(*opts);

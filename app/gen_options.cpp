@@ -82,7 +82,8 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--bins", o.bins,
                     "Number of hexagon columns (points: hexagons across the longer side of the points' extent, so N "
                     "columns when it is wider than tall and fewer when taller, default 30; rasters: default one per "
-                    "raster column, at most 1000)")
+                    "raster column, at most 1000; left out, tsf gen uses fewer where a raster it resampled to fit would "
+                    "not read by fingertip: docs/tactile.md)")
         ->check(CLI::Range(1, 100000))->group(in);
     cmd->add_option_function<std::string>(
            "--band",

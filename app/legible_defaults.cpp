@@ -64,17 +64,25 @@ std::string flattened(const Scene& before, const Scene& after) {
 
 struct Trial {
     SceneParams params;
+    int bins = 0;               // the field read at this many hexagons across (0: the first field)
+    double pitch_mm = 0;        // the model's cell
+    int cols = 0;               // its hexagons across
     std::vector<Check> checks;  // the fixable checks, as the verifier found them
     int64_t failing = 0;        // their offenders together
     std::string flattens;       // why it was refused ("" when it was tried)
 };
 
-// Builds, meshes and checks one setting with the verifier's tactile checks.
-Trial tryParams(const HexField& field, const Scene& first, const SceneParams& p, const VerifyOptions& vo) {
+// Builds, meshes and checks one setting with the verifier's tactile checks;
+// `reference` is the model of the same field at the first setting, whose
+// felt steps the setting must keep.
+Trial tryParams(const HexField& field, const Scene& reference, const SceneParams& p, const VerifyOptions& vo, int bins = 0) {
     Trial t;
     t.params = p;
+    t.bins = bins;
     const Scene s = buildScene(field, p);
-    t.flattens = flattened(first, s);
+    t.pitch_mm = s.pitch_mm;
+    t.cols = s.grid.cols;
+    t.flattens = flattened(reference, s);
     if (!t.flattens.empty()) return t;
     TactileOptions to;
     to.sample_mm = vo.tactile_sample_mm;
@@ -95,11 +103,33 @@ std::string settingText(const SceneParams& p) {
 }
 
 // The options that differ between two settings, as a user would type them.
-std::string changedOptions(const SceneParams& from, const SceneParams& to) {
+std::string changedOptions(const SceneParams& from, const Trial& to) {
     std::string out;
-    if (std::fabs(from.max_height_mm - to.max_height_mm) > 1e-9) out += "--height " + formatSignificant(to.max_height_mm, 3);
-    if (from.transfer != to.transfer) out += std::string(out.empty() ? "" : " ") + "--transfer " + toString(to.transfer);
+    if (to.bins > 0) out += "--bins " + std::to_string(to.bins);
+    if (std::fabs(from.max_height_mm - to.params.max_height_mm) > 1e-9)
+        out += std::string(out.empty() ? "" : " ") + "--height " + formatSignificant(to.params.max_height_mm, 3);
+    if (from.transfer != to.params.transfer) out += std::string(out.empty() ? "" : " ") + "--transfer " + toString(to.params.transfer);
     return out;
+}
+
+// The first values of the options `to` changed, as a user would type them.
+std::string firstOptions(const Scene& first, const Trial& to) {
+    const SceneParams& p0 = first.params;
+    std::string out;
+    auto add = [&out](const std::string& option) { out += (out.empty() ? "" : " ") + option; };
+    if (to.bins > 0) add("--bins " + std::to_string(first.grid.cols));
+    if (std::fabs(p0.max_height_mm - to.params.max_height_mm) > 1e-9) add("--height " + formatSignificant(p0.max_height_mm, 3));
+    if (p0.transfer != to.params.transfer) add("--transfer " + std::string(toString(p0.transfer)));
+    return out;
+}
+
+// What larger cells cost and generalise, for the summary.
+std::string cellCost(const Scene& first, const Trial& t) {
+    const double area = (t.pitch_mm / first.pitch_mm) * (t.pitch_mm / first.pitch_mm);
+    return "cells " + formatSignificant(t.pitch_mm, 3) + " mm across instead of " + formatSignificant(first.pitch_mm, 3) +
+           " (" + std::to_string(t.cols) + " instead of " + std::to_string(first.grid.cols) +
+           " hexagons across, the model's size kept): each hexagon now stands for about " + formatSignificant(area, 2) +
+           " times the ground it did";
 }
 
 std::string failText(const Check& c) {
@@ -141,88 +171,151 @@ std::vector<std::string> failedLegibility(const VerifyReport& report) {
 }
 
 LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const std::vector<std::string>& failed,
-                                const LegibilityGiven& given, const VerifyOptions& vo) {
+                                const LegibilityGiven& given, const VerifyOptions& vo, const FieldAtBins& field_at) {
     LegibleDefaults out;
     if (failed.empty() || first.textures) return out;
     const SceneParams& p0 = first.params;
     const Trial at_first = tryParams(field, first, p0, vo);
     if (at_first.failing == 0) return out;
 
-    // Lower heights scale every step alike (and a gentler transfer shrinks
-    // the steps between high values): heights are tried down to the lowest
-    // that keeps every felt step felt.
-    const double felt = smallestFeltStep(first);
-    const double lowest = std::max(kLowestHeightMm, std::isfinite(felt) ? p0.max_height_mm * kFeltHeightStepMm / felt : 0.0);
-    std::vector<double> heights;  // below the first, highest first, in half millimetres
-    for (double f : {0.75, 0.5, 0.35, 0.25, 0.15, 0.1}) {
-        const double h = std::round(p0.max_height_mm * f * 2) / 2;
-        if (h >= lowest - 1e-9 && h < (heights.empty() ? p0.max_height_mm : heights.back()) - 1e-9) heights.push_back(h);
-    }
-    if (const double h = std::ceil(lowest * 2 - 1e-9) / 2; h < (heights.empty() ? p0.max_height_mm : heights.back()) - 1e-9)
-        heights.push_back(h);
-
     // Every trial is a build, a mesh and the tactile checks: each setting once.
     std::deque<Trial> tried;  // a deque: the trials found stay where they are
     std::string refused;
-    auto trial = [&](double height, Transfer transfer) -> const Trial* {
+    auto passes = [](const Trial* t) { return t && t->flattens.empty() && t->failing == 0; };
+    // One field to search: the first, or the input read again at other --bins.
+    struct Field {
+        const HexField& field;
+        const Scene& reference;  // at the first setting: the felt steps to keep
+        int bins;                // 0: the first field
+        std::vector<double> heights;  // below the first, highest first, in half millimetres
+    };
+    // Lower heights scale every step alike (and a gentler transfer shrinks
+    // the steps between high values): heights are tried down to the lowest
+    // that keeps every felt step felt.
+    auto lowerHeights = [&p0](const Scene& reference) {
+        const double felt = smallestFeltStep(reference);
+        const double lowest = std::max(kLowestHeightMm, std::isfinite(felt) ? p0.max_height_mm * kFeltHeightStepMm / felt : 0.0);
+        std::vector<double> heights;
+        for (double f : {0.75, 0.5, 0.35, 0.25, 0.15, 0.1}) {
+            const double h = std::round(p0.max_height_mm * f * 2) / 2;
+            if (h >= lowest - 1e-9 && h < (heights.empty() ? p0.max_height_mm : heights.back()) - 1e-9) heights.push_back(h);
+        }
+        if (const double h = std::ceil(lowest * 2 - 1e-9) / 2; h < (heights.empty() ? p0.max_height_mm : heights.back()) - 1e-9)
+            heights.push_back(h);
+        return heights;
+    };
+    auto trial = [&](const Field& f, double height, Transfer transfer) -> const Trial* {
         for (const Trial& t : tried)
-            if (t.params.max_height_mm == height && t.params.transfer == transfer) return &t;
+            if (t.bins == f.bins && t.params.max_height_mm == height && t.params.transfer == transfer) return &t;
         SceneParams p = p0;
         p.max_height_mm = height;
         p.transfer = transfer;
         try {
-            tried.push_back(tryParams(field, first, p, vo));
+            tried.push_back(tryParams(f.field, f.reference, p, vo, f.bins));
         } catch (const InputError&) {
             return nullptr;  // a setting the field cannot take
         }
         const Trial& t = tried.back();
-        if (!t.flattens.empty() && refused.empty()) refused = settingText(p) + ": " + t.flattens;
+        if (!t.flattens.empty() && refused.empty() && f.bins == 0) refused = settingText(p) + ": " + t.flattens;
         return &t;
     };
-    auto passes = [](const Trial* t) { return t && t->flattens.empty() && t->failing == 0; };
-    // The setting that changes least and passes: the first height with a
-    // gentler transfer, else the highest height that passes (a lower one
-    // makes pits shallower and pillars shorter: found by bisection).
-    auto search = [&](bool transfers, bool lower) -> const Trial* {
+    // The setting that changes least and passes: the first height and
+    // transfer (on another field), a gentler transfer, else the highest
+    // height that passes (a lower one makes pits shallower and pillars
+    // shorter: found by bisection, once the lowest passes).
+    auto search = [&](const Field& f, bool transfers, bool lower) -> const Trial* {
+        if (f.bins > 0)
+            if (const Trial* x = trial(f, p0.max_height_mm, p0.transfer); passes(x)) return x;
         if (transfers)
             for (const Transfer t : {Transfer::Sqrt, Transfer::Log})
                 if (t != p0.transfer)
-                    if (const Trial* x = trial(p0.max_height_mm, t); passes(x)) return x;
-        if (!lower || heights.empty()) return nullptr;
-        const Trial* low = trial(heights.back(), p0.transfer);
+                    if (const Trial* x = trial(f, p0.max_height_mm, t); passes(x)) return x;
+        if (!lower || f.heights.empty()) return nullptr;
+        const Trial* low = trial(f, f.heights.back(), p0.transfer);
         if (!passes(low)) return nullptr;
-        size_t pass_at = heights.size() - 1, fail_at = size_t(-1);  // heights[fail_at] fails (-1: the first height)
+        size_t pass_at = f.heights.size() - 1, fail_at = size_t(-1);  // heights[fail_at] fails (-1: the first height)
         while (pass_at - (fail_at + 1) > 0) {
             const size_t mid = (fail_at + 1 + pass_at) / 2;
-            if (passes(trial(heights[mid], p0.transfer))) pass_at = mid;
+            if (passes(trial(f, f.heights[mid], p0.transfer))) pass_at = mid;
             else fail_at = mid;
         }
-        return trial(heights[pass_at], p0.transfer);
+        return trial(f, f.heights[pass_at], p0.transfer);
     };
-    const Trial* pass = search(!given.transfer, !given.height);
-    const Trial* pass_given = pass || (!given.height && !given.transfer) ? nullptr : search(true, true);
+    const Field at_first_field{field, first, 0, lowerHeights(first)};
+    const std::vector<double>& heights = at_first_field.heights;
+    const Trial* pass = search(at_first_field, !given.transfer, !given.height);
+    const Trial* pass_given = pass || (!given.height && !given.transfer) ? nullptr : search(at_first_field, true, true);
+
+    // Larger cells, last: a coarser generalisation of what tsf already
+    // resampled (or binned) to fit. Fewer hexagons across the same box,
+    // each the mean of more pixels: narrow lows widen (a fingertip reaches
+    // about w^2 / (8 r) down a pit w wide) and single-pixel noise evens out.
+    // At each cell the same search (what the user gave kept), keeping that
+    // field's felt steps. A field of one pillar per value is not resampled
+    // for it: the --bins that would pass is named.
+    const Trial* by_cell = nullptr;
+    int coarsest = 0;  // the fewest hexagons across tried
+    if (!pass && !pass_given && field_at) {
+        int last_bins = first.grid.cols;
+        for (const double factor : {4.0 / 3.0, 5.0 / 3.0, 2.0}) {
+            const int bins = int(std::floor(first.grid.cols / factor + 1e-9));
+            if (bins < 2 || bins >= last_bins) continue;
+            last_bins = bins;
+            const std::optional<HexField> coarser = field_at(bins);
+            if (!coarser) continue;
+            coarsest = bins;
+            try {
+                const Scene reference = buildScene(*coarser, p0);
+                by_cell = search(Field{*coarser, reference, bins, lowerHeights(reference)}, !given.transfer, !given.height);
+            } catch (const InputError&) {
+                continue;  // a setting the field cannot take
+            }
+            if (by_cell) break;
+        }
+        if (by_cell && !given.cell && !field.one_to_one) pass = by_cell;
+    }
 
     nlohmann::json j = {{"failed_at_first", failed}};
     if (pass) {
         out.params = pass->params;
-        const std::string what = changedOptions(p0, pass->params);
+        out.bins = pass->bins;
+        const std::string what = changedOptions(p0, *pass);
+        const std::string was = firstOptions(first, *pass);
+        std::string reader;
+        if (pass->bins)
+            reader += "hexagons " + formatSignificant(pass->pitch_mm, 3) + " millimetres across instead of " +
+                      formatSignificant(first.pitch_mm, 3) + ", each standing for more ground";
+        if (pass->params.max_height_mm != p0.max_height_mm)
+            reader += std::string(reader.empty() ? "" : ", ") + "the highest value " +
+                      formatSignificant(pass->params.max_height_mm, 3) + " millimetres high instead of " +
+                      formatSignificant(p0.max_height_mm, 3);
+        if (pass->params.transfer != p0.transfer)
+            reader += std::string(reader.empty() ? "" : ", ") + "heights following the " +
+                      (pass->params.transfer == Transfer::Log ? "logarithm" : "square root") +
+                      " of the values, so steps between high values are gentler";
+        out.key_note = "So that a fingertip reaches the bottom of every low, this model differs from tsf's defaults: " +
+                       reader + " (" + what + ")";
         std::string why;
         for (const Check& c : at_first.checks)
             if (c.status == CheckStatus::Fail) why += (why.empty() ? "" : "; ") + failText(c);
-        out.lines.push_back("changed " + what + " (was " + settingText(p0) + "): " + why +
-                            ". With it every check passes and every neighbouring step of " +
-                            formatSignificant(kFeltHeightStepMm, 2) + " mm or more stays one; give " + settingText(p0) +
+        out.lines.push_back("changed " + what + " (was " + was + "): " + why + ". With it every check passes" +
+                            (pass->bins ? "; " + cellCost(first, *pass) + ", and" : " and") + " every neighbouring step of " +
+                            formatSignificant(kFeltHeightStepMm, 2) + " mm or more stays one; give " + was +
                             " to keep the first");
         j["changed"] = what;
-        j["was"] = settingText(p0);
+        j["was"] = was;
         j["why"] = why;
+        if (pass->bins) j["generalised"] = cellCost(first, *pass);
         out.json = j;
         return out;
     }
-    if (pass_given) {
-        const std::string what = changedOptions(p0, pass_given->params);
-        out.lines.push_back("tried: " + what + " passes every tactile check (tried, and no felt step lost); the options "
-                            "given are kept");
+    if (const Trial* would = pass_given ? pass_given : by_cell) {
+        const std::string what = changedOptions(p0, *would);
+        out.lines.push_back("tried: " + what + " passes every tactile check (tried, and no felt step lost" +
+                            (would->bins ? "; " + cellCost(first, *would) : std::string()) + "); " +
+                            (would->bins && field.one_to_one && !given.cell
+                                 ? "one pillar per value is kept (the data as read)"
+                                 : "the options given are kept"));
         j["would_pass"] = what;
     }
     const Trial& kept = at_first;
@@ -239,16 +332,21 @@ LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const
             out.lines.push_back("still " + why);
             j["fails"].push_back(why);
         }
-    std::string reason = given.height || given.transfer
-                             ? std::string("no setting passes that keeps the options given (") +
-                                   (given.height ? "--height" : "") + (given.height && given.transfer ? ", " : "") +
-                                   (given.transfer ? "--transfer" : "") + ")"
-                             : heights.empty()
-                                   ? "no transfer passes, and no height below " + formatSignificant(p0.max_height_mm, 3) +
-                                         " mm keeps every neighbour step now at least " +
-                                         formatSignificant(kFeltHeightStepMm, 2) + " mm felt"
-                                   : "no height from " + formatSignificant(p0.max_height_mm, 3) + " down to " +
-                                         formatSignificant(heights.back(), 3) + " mm and no transfer passes";
+    std::string given_list;
+    for (const auto& [is, name] : {std::pair{given.height, "--height"}, {given.transfer, "--transfer"}, {given.cell, "--cell or --bins"}})
+        if (is) given_list += std::string(given_list.empty() ? "" : ", ") + name;
+    std::string reason = !given_list.empty()
+                             ? "no setting passes that keeps the options given (" + given_list + ")"
+                         : heights.empty()
+                             ? "no transfer passes, and no height below " + formatSignificant(p0.max_height_mm, 3) +
+                                   " mm keeps every neighbour step now at least " + formatSignificant(kFeltHeightStepMm, 2) +
+                                   " mm felt"
+                             : "no height from " + formatSignificant(p0.max_height_mm, 3) + " down to " +
+                                   formatSignificant(heights.back(), 3) + " mm and no transfer passes";
+    if (by_cell && field.one_to_one && !given.cell)
+        reason += "; larger cells pass, but they would resample a raster that stands one pillar per value";
+    else if (!by_cell && coarsest > 0)
+        reason += "; nor do larger cells, tried down to --bins " + std::to_string(coarsest);
     if (!refused.empty()) reason += "; others would flatten the data (" + refused + ")";
     out.lines.push_back(reason);
     j["why"] = reason;

@@ -3,9 +3,14 @@
 // cell's top, a pillar would break under a hand), gen tries what the user
 // left to it and keeps the first setting that passes.
 //
-// What it may change: the height of the largest value (--height) and the
-// value -> height transfer (--transfer); an option the user gave is kept,
-// and the setting that would pass is named instead (tried, not guessed).
+// What it may change: the height of the largest value (--height), the
+// value -> height transfer (--transfer), and, for a field tsf already
+// resampled or binned to fit, the number of hexagons across (--bins: larger
+// cells, each the mean of more pixels, so narrow lows widen and single-pixel
+// noise evens out). A raster that fits one pillar per value is never
+// resampled for it (the data is kept as read; the --bins that would pass is
+// named). An option the user gave is kept, and the setting that would pass
+// is named instead (tried, not guessed).
 // Never by flattening: a setting is refused when a neighbouring step of
 // kFeltHeightStepMm or more would drop below it. Each candidate is built,
 // meshed and checked by the verifier's own tactile checks at its own
@@ -14,6 +19,7 @@
 // check fails where and why (docs/tactile.md).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,11 +37,18 @@ namespace tsf::cli {
 struct LegibilityGiven {
     bool height = false;
     bool transfer = false;
+    bool cell = false;  ///< --cell, --bins or --bin
 };
+
+/// The field read again at `bins` hexagons across (tsf gen --bins); none
+/// when the input cannot be (too few pixels, a bad option).
+using FieldAtBins = std::function<std::optional<HexField>(int bins)>;
 
 struct LegibleDefaults {
     std::optional<SceneParams> params;  ///< the parameters to build the model with; none: keep the first
+    int bins = 0;                       ///< with params: read the field again at this many hexagons across (0: as it is)
     std::vector<std::string> lines;     ///< for the summary: what changed and why, what would pass, or why nothing does
+    std::string key_note;               ///< with params: what changed, in a reader's words, for the model's key
     nlohmann::json json;                ///< the same for --json
 };
 
@@ -45,8 +58,10 @@ struct LegibleDefaults {
 std::vector<std::string> failedLegibility(const VerifyReport& report);
 
 /// Searches the settings for a model of `field` that passes every check in
-/// `failed`, starting from `first` (built from first.params).
+/// `failed`, starting from `first` (built from first.params). `field_at`
+/// reads the input at other --bins (empty: the cell is not tried).
 LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const std::vector<std::string>& failed,
-                                const LegibilityGiven& given, const VerifyOptions& verify_options);
+                                const LegibilityGiven& given, const VerifyOptions& verify_options,
+                                const FieldAtBins& field_at = {});
 
 }  // namespace tsf::cli

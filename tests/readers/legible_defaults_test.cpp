@@ -118,6 +118,73 @@ TEST(LegibleDefaults, ANarrowValleyIsReachedByALowerModel) {
     EXPECT_NE(g.out.find("passes every tactile check (tried"), std::string::npos) << "a value that works is named:\n" << g.out;
 }
 
+// A plateau 1000 m high pocked by single-pixel sinks 300 m deep on a
+// 4-pixel lattice, with a ramp whose steps are just felt (so no lower model
+// keeps them): `scale` pixels per original pixel.
+test::GeoTiffSpec pockedPlateau(int scale) {
+    test::GeoTiffSpec s;
+    s.cols = s.rows = 48 * scale;
+    s.epsg = 32633;
+    s.west = 500000;
+    s.north = 5200000;
+    s.pixel_w = s.pixel_h = 30.0 / scale;
+    for (int r = 0; r < s.rows; ++r)
+        for (int c = 0; c < s.cols; ++c) {
+            const int pr = r / scale, pc = c / scale;
+            const bool sink = pr % 4 == 1 && pc % 4 == 1 && pr < 44;
+            const bool ramp = pr >= 46 && pc < 12;  // steps of 28 m, 0.56 mm at 20 mm for 1000 m
+            s.values.push_back(sink ? 700.0f : ramp ? float(1000 - 28 * pc) : 1000.0f);
+        }
+    return s;
+}
+
+// A raster tsf resamples to fit (192 by 192 pixels: 49 hexagons across at
+// 3 mm) whose sinks a fingertip cannot reach and whose felt steps forbid a
+// lower model: gen reads it again with larger hexagons (fewer across, each
+// the mean of more pixels), says what it changed, what that generalises and
+// how to keep the first, and the key says so. --bins given is kept.
+TEST(LegibleDefaults, AResampledRasterGetsLargerCellsWhenNothingElsePasses) {
+    const auto dir = test::scratchDir();
+    const std::string path = (dir / "pocked.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, pockedPlateau(4)));
+    const nlohmann::json j = genAndVerify(dir, path, "pocked");
+    ASSERT_TRUE(j.contains("legibility")) << j.dump(1);
+    const std::string changed = j["legibility"].value("changed", "");
+    EXPECT_EQ(changed.rfind("--bins ", 0), 0u) << j["legibility"].dump(1);
+    EXPECT_NE(j["legibility"].value("generalised", "").find("times the ground it did"), std::string::npos)
+        << j["legibility"].dump(1);
+    const int bins = std::stoi(changed.substr(7));
+    EXPECT_LT(bins, 49);
+    EXPECT_EQ(j["scene"]["grid"]["cols"].get<int>(), bins) << j["scene"].dump(1).substr(0, 400);
+    const std::string key = test::readText(dir / "pocked.key.txt");
+    EXPECT_NE(key.find("So that a fingertip reaches the bottom of every low"), std::string::npos) << key;
+
+    const std::string kept = (dir / "kept.stl").string();
+    const auto g = test::runTsf("gen " + path + " --bins 49 -o " + kept, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    EXPECT_NE(g.out.find("warn      a fingertip reaches the bottom"), std::string::npos) << g.out;
+    EXPECT_NE(g.out.find("tried: --bins "), std::string::npos) << "the --bins that passes is named:\n" << g.out;
+    EXPECT_NE(g.out.find("the options given are kept"), std::string::npos) << g.out;
+}
+
+// The same field as one pillar per value (48 by 48 pixels fit at 3.1 mm):
+// the data is kept as read, never resampled for legibility; the summary
+// names the --bins that would pass.
+TEST(LegibleDefaults, OnePillarPerValueIsNeverResampledToPass) {
+    const auto dir = test::scratchDir();
+    const std::string path = (dir / "pocked.tif").string();
+    ASSERT_TRUE(test::writeGeoTiff(path, pockedPlateau(1)));
+    const std::string model = (dir / "one.stl").string();
+    const auto g = test::runTsf("gen " + path + " --json -o " + model, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    const nlohmann::json j = nlohmann::json::parse(g.out);
+    EXPECT_EQ(j["scene"]["grid"]["cols"].get<int>(), 48) << "one pillar per value";
+    ASSERT_TRUE(j.contains("legibility")) << j.dump(1);
+    EXPECT_FALSE(j["legibility"].contains("changed")) << j["legibility"].dump(1);
+    EXPECT_EQ(j["legibility"].value("would_pass", "").rfind("--bins ", 0), 0u) << j["legibility"].dump(1);
+    EXPECT_NE(j["legibility"].value("why", "").find("one pillar per value"), std::string::npos) << j["legibility"].dump(1);
+}
+
 // CF NetCDF: precipitation with a fill value, and packed air temperature.
 TEST(LegibleDefaults, NetCdfVariablesPass) {
     const auto dir = test::scratchDir();
