@@ -31,6 +31,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "gen/geometry/joint_stress.h"
 #include "gen/geometry/mesh.h"
 #include "verify/finger_reach.h"
 #include "verify/report.h"
@@ -68,12 +69,7 @@ inline constexpr double kMergeSpacingMm = 3.2;
 inline constexpr double kMinPrintedDotHeightMm = 0.48;
 /// Narrowest dot base, in nozzle widths: two perimeters make a dome.
 inline constexpr double kMinDotBaseNozzles = 2.0;
-/// A push at a pillar's top (N) it must stand: a hand leaning on the model,
-/// several times the 0.5-2 N of exploring touch.
-inline constexpr double kHandPushN = 10.0;
-/// Strength of printed PLA across its layers (MPa = N/mm^2), where a pillar
-/// pushed sideways breaks.
-inline constexpr double kPrintedPlaInterlayerMpa = 20.0;
+// kHandPushN and kPrintedPlaInterlayerMpa: gen/geometry/joint_stress.h.
 
 /// Every threshold above with its source (docs/tactile.md prints the same table).
 const std::vector<TactileThreshold>& tactileThresholds();

@@ -8,6 +8,8 @@
 // with pits at its west edge, tilted and concave models.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -191,6 +193,31 @@ TEST(OrientationTab, BundledExamplesCarryFullMarks) {
     expectOrientable("airports", test::sourcePath("examples/airports-europe.csv") + " --points x=lon,y=lat");
 }
 
+// On an irregular west side the tab follows the outline, so it stands
+// against many walls and holds a hand's push at its far corner (on the
+// westernmost line alone it touched one pillar: 448 MPa on three-bumps, 37
+// MPa on a 10 by 10 grid of 15 mm cells); the notch stays the model's
+// south-west corner and the model verifies, tactile checks included.
+TEST(OrientationTab, OnAnIrregularOutlineTheTabFollowsItAndHolds) {
+    std::string big;
+    for (int r = 0; r < 10; ++r)
+        for (int c = 0; c < 10; ++c) big += std::to_string(250 + r + c) + (c == 9 ? "\n" : ",");
+    const std::string grid = test::writeScratch("big_cells.csv", big);
+    for (const auto& [name, args] : {std::pair<std::string, std::string>{"three_bumps", test::sourcePath("examples/three-bumps.pgm")},
+                                     {"big_cells", grid},
+                                     {"airports", test::sourcePath("examples/airports-europe.csv") + " --points x=lon,y=lat"}}) {
+        const auto dir = test::scratchDir("outline_tab_" + name);
+        const std::string model = (dir / "m.stl").string();
+        const auto r = test::runTsf("gen " + args + " -o " + model, dir);
+        ASSERT_EQ(r.exit_code, test::kExitOk) << name << "\n" << r.out << r.err;
+        EXPECT_EQ(r.out.find("warn      every attachment holds"), std::string::npos) << name << "\n" << r.out;
+        expectMarks(name, findMarks(readMesh(model)));
+        const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json --tactile", dir);
+        EXPECT_EQ(v.exit_code, test::kExitOk) << name << "\n" << v.out;
+        EXPECT_NE(v.out.find("PASS  every attachment holds a hand's push"), std::string::npos) << name << "\n" << v.out;
+    }
+}
+
 TEST(OrientationTab, DenseRastersCarryFullMarks) {
     const std::string grid = denseGrid("dense.csv", 120, 120, false);
     expectOrientable("dense_resampled", grid);
@@ -245,14 +272,19 @@ TEST(OrientationTab, OptionsChooseTheMarks) {
     EXPECT_NE(data.out.find("notch     V"), std::string::npos) << data.out;
     EXPECT_EQ(data.out.find("  tab "), std::string::npos) << data.out;
 
-    // One value with a braille legend: the legend's plate leaves the tab no
-    // room, so the marks go in the data, and the summary says why.
+    // One value with a braille legend: the plate takes the west line's
+    // whole height, so the tab stands against the pillar's south-west wall
+    // below it, the notch at the model's south-west corner, and holds.
     test::writeText(dir / "one.csv", "5\n");
-    const auto one = test::runTsf("gen " + (dir / "one.csv").string() + " --title T -o " + (dir / "c.stl").string(), dir);
+    const std::string c = (dir / "c.stl").string();
+    const auto one = test::runTsf("gen " + (dir / "one.csv").string() + " --title T -o " + c, dir);
     ASSERT_EQ(one.exit_code, test::kExitOk) << one.err;
-    EXPECT_NE(one.out.find("no orientation tab"), std::string::npos) << one.out;
-    EXPECT_NE(one.out.find("braille legend's plate"), std::string::npos) << one.out;
+    EXPECT_NE(one.out.find("  tab "), std::string::npos) << one.out;
     EXPECT_NE(one.out.find("notch     V 6.0 mm deep"), std::string::npos) << one.out;
+    EXPECT_NE(one.out.find("at the model's south-west corner"), std::string::npos) << one.out;
+    const auto v = test::runTsf("verify " + c + " --scene " + c + ".scene.json --tactile", dir);
+    EXPECT_EQ(v.exit_code, test::kExitOk) << v.out;
+    EXPECT_NE(v.out.find("PASS  every attachment holds a hand's push"), std::string::npos) << v.out;
 }
 
 }  // namespace

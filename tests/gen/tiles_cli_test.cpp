@@ -117,13 +117,18 @@ TEST(TilesCli, RefusedWhereItCannotCutYet) {
     const std::string out = " -o " + (dir / "eu.stl").string();
     for (const std::string& extra : {std::string("--tile"), std::string("--bed 100x100 --tile --mirror"),
                                      std::string("--bed 100x100 --tile --scad ") + (dir / "eu.scad").string(),
-                                     std::string("--bed 100x100 --tile --title Airports"),
-                                     std::string("--bed 120x50 --tile")}) {  // the tab is deeper than the bed
+                                     std::string("--bed 100x100 --tile --title Airports")}) {
         const auto r = test::runTsf("gen " + in + extra + out, dir);
         EXPECT_EQ(r.exit_code, test::kExitBadInput) << extra << "\n" << r.out << r.err;
         EXPECT_NE(r.err.find("--tile"), std::string::npos) << extra << "\n" << r.err;
         EXPECT_FALSE(std::filesystem::exists(dir / "eu-tile-1-1.stl")) << extra;
     }
+    // The tab wider than a tile: three-bumps' follows its diagonal outline,
+    // 86.6 mm from the west edge to where it joins the pillars.
+    const auto r = test::runTsf("gen " + test::sourcePath("examples/three-bumps.pgm") + " --bed 80x80 --tile" + out, dir);
+    EXPECT_EQ(r.exit_code, test::kExitBadInput) << r.out << r.err;
+    EXPECT_NE(r.err.find("--tile: the orientation tab is 86.6 x 19.2 mm, larger than"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "eu-tile-1-1.stl"));
 }
 
 }  // namespace

@@ -253,14 +253,14 @@ TEST(Tilt, AirportsPointTiltsPrintAndRead) {
     EXPECT_NE(steep.err.find("--max-slope (at most 14 degrees"), std::string::npos) << steep.err;
 }
 
-// A model whose walls would not print (thinner than the nozzle) is refused:
-// exit 2, the walls' widths and places, nothing written; --keep-unprintable
-// writes it.
+// A model whose walls would not print (pillars 0.3 mm across, thinner than
+// the nozzle) is refused: exit 2, the walls' widths and places, nothing
+// written; --keep-unprintable writes it.
 TEST(Tilt, AModelWithWallsThinnerThanTheNozzleIsRefusedUnlessKept) {
     const auto dir = test::scratchDir("unprintable");
     test::writeText(dir / "board.csv", "0,1\n1,0\n0,1\n");
     const std::string out = (dir / "board.stl").string();
-    const std::string args = "gen " + (dir / "board.csv").string() + " --title Rain --bins 200 -o " + out;
+    const std::string args = "gen " + (dir / "board.csv").string() + " --cell 0.3 -o " + out;
     const test::RunResult refused = test::runTsf(args, dir);
     EXPECT_EQ(refused.exit_code, 2) << refused.output;
     EXPECT_NE(refused.err.find("walls thinner than the 0.4 mm nozzle"), std::string::npos) << refused.err;

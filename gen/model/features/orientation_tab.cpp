@@ -5,8 +5,10 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "gen/field/hex_grid.h"
+#include "gen/geometry/joint_stress.h"
 #include "gen/geometry/polygon_triangulation.h"
 #include "gen/model/features/foot_contacts.h"
 #include "gen/model/features/top_shapes.h"
@@ -68,70 +70,50 @@ TabPoint corner(const Scene& s, int32_t k, int c) {
     return {p.x, p.y, hexCornerId(s.grid, s.col[kk], s.row[kk], c)};
 }
 
-// Builds the tab against `contacts` (a run of cells on the west line, one
-// row of the outline's notches apart, south to north, with the `fillers` in
-// those notches), from y_south to y_north mm. Beyond the run its east edge is
-// set back kTabSetbackMm, so it leaves no slot narrower than that beside a pillar.
-OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y_north, const std::vector<int32_t>& contacts,
-                        const std::vector<int32_t>& fillers, const TabSize& size, Band band) {
-    const MarkParams& m = s.params.marks;
-    OrientationTab t;
-    t.bottom_units = band.bottom;
-    t.top_units = band.top;
-    t.x_east_mm = s.point(LatticePoint{i_west, 0}, 0).x;
-    t.x_west_mm = snapXy(t.x_east_mm - size.width);
-    t.y_south_mm = y_south;
-    t.y_north_mm = y_north;
-    const double x_back = snapXy(t.x_east_mm - kTabSetbackMm);
-    auto add = [&](TabPoint p, bool joined_after) {
-        if (!t.outline.empty() && t.outline.back().x_mm == p.x_mm && t.outline.back().y_mm == p.y_mm) {
-            t.joined.back() = joined_after ? 1 : 0;
-            return;
-        }
-        t.outline.push_back(p);
-        t.joined.push_back(joined_after ? 1 : 0);
-    };
-    const double apex = m.notch_depth_mm / std::sqrt(2.0);
-    // The V's sides leave the apex at 45 +- opening/2 degrees from the edges
-    // and meet them `mouth` from the corner.
-    const double mouth = apex * (1.0 - std::tan((45.0 - kTabNotchOpeningDeg / 2) * kPi / 180.0));
-    add({m.notch ? snapXy(t.x_west_mm + mouth) : t.x_west_mm, t.y_south_mm, -1}, false);
-    const TabPoint first = corner(s, contacts.front(), kLowerLeft), last = corner(s, contacts.back(), kUpperLeft);
-    add({x_back, t.y_south_mm, -1}, false);
-    add({x_back, first.y_mm, -1}, false);
-    // The tab fills the outline's notches between contacts (else a hole
-    // would reach down to the bed); a mirrored model's tab has one contact.
-    for (size_t n = 0; n < contacts.size(); ++n) {
-        const int32_t c = contacts[n];
-        add(corner(s, c, kLowerLeft), true);  // the west wall, south to north
-        if (n + 1 < contacts.size()) {
-            // The outline's notch up to the next contact: c's north-west
-            // wall, the filler's west wall, the next one's south-west wall.
-            add(corner(s, c, kUpperLeft), true);
-            add(corner(s, c, kTop), true);
-            add(corner(s, contacts[n + 1], kBottom), true);
-        } else {
-            add(corner(s, c, kUpperLeft), false);
-        }
+// Appends an outline corner; joined_after: the edge from it to the next
+// corner is a pillar's wall.
+void addCorner(OrientationTab& t, TabPoint p, bool joined_after) {
+    if (!t.outline.empty() && t.outline.back().x_mm == p.x_mm && t.outline.back().y_mm == p.y_mm) {
+        t.joined.back() = joined_after ? 1 : 0;
+        return;
     }
-    add({x_back, last.y_mm, -1}, false);
-    add({x_back, t.y_north_mm, -1}, false);
-    add({t.x_west_mm, t.y_north_mm, -1}, false);
+    t.outline.push_back(p);
+    t.joined.push_back(joined_after ? 1 : 0);
+}
+
+// The notch's V: its apex's x and y from the south-west corner, and where
+// its sides meet the south and west edges (`mouth` from the corner).
+struct NotchShape {
+    double apex = 0, mouth = 0;
+};
+NotchShape notchShape(const MarkParams& m) {
+    NotchShape n;
+    n.apex = m.notch_depth_mm / std::sqrt(2.0);
+    // The V's sides leave the apex at 45 +- opening/2 degrees from the edges.
+    n.mouth = n.apex * (1.0 - std::tan((45.0 - kTabNotchOpeningDeg / 2) * kPi / 180.0));
+    return n;
+}
+
+// The outline's first corner: the notch's mouth on the south edge (or the
+// south-west corner without a notch). t's box must be set.
+void beginOutline(const Scene& s, OrientationTab& t) {
+    const NotchShape v = notchShape(s.params.marks);
+    addCorner(t, {s.params.marks.notch ? snapXy(t.x_west_mm + v.mouth) : t.x_west_mm, t.y_south_mm, -1}, false);
+}
+
+// Closes the outline from its north-east corner: the north-west corner, the
+// west edge down to the notch and the notch's apex; then the triangle.
+void endOutline(const Scene& s, OrientationTab& t, const TabSize& size) {
+    const MarkParams& m = s.params.marks;
+    const NotchShape v = notchShape(m);
+    addCorner(t, {t.x_west_mm, t.y_north_mm, -1}, false);
     if (m.notch) {
-        add({t.x_west_mm, snapXy(t.y_south_mm + mouth), -1}, false);
-        add({snapXy(t.x_west_mm + apex), snapXy(t.y_south_mm + apex), -1}, false);
+        addCorner(t, {t.x_west_mm, snapXy(t.y_south_mm + v.mouth), -1}, false);
+        addCorner(t, {snapXy(t.x_west_mm + v.apex), snapXy(t.y_south_mm + v.apex), -1}, false);
         t.has_notch = true;
         t.notch_depth_mm = std::hypot(t.outline.back().x_mm - t.x_west_mm, t.outline.back().y_mm - t.y_south_mm);
         t.notch_width_mm = std::hypot(t.outline.front().x_mm - t.x_west_mm, t.outline[t.outline.size() - 2].y_mm - t.y_south_mm);
         t.notch_opening_deg = kTabNotchOpeningDeg;
-    }
-    for (size_t n = 0; n < contacts.size(); ++n) {
-        t.touched.push_back({contacts[n], kWestEdge});
-        if (n + 1 < contacts.size()) {
-            t.touched.push_back({contacts[n], kNorthWestEdge});
-            t.touched.push_back({fillers[n], kWestEdge});
-            t.touched.push_back({contacts[n + 1], kSouthWestEdge});
-        }
     }
     if (m.triangle) {
         const double x = snapXy(t.x_west_mm + size.inset), y = snapXy(t.y_south_mm + size.inset);
@@ -141,7 +123,215 @@ OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y
         t.has_triangle = true;
         t.under_triangle = s.params.bottom == Bottom::Mirrored;
     }
+}
+
+// Whether the only kept cell with a corner at `p` (a lattice corner of
+// kept cell k) is k: where the tab's own edge meets k's wall there, no
+// other pillar's wall (a pit's, whose top is below the tab's) starts at
+// that corner.
+bool aloneAt(const Scene& s, const TabPoint& p, int32_t k) {
+    if (p.lattice < 0) return false;
+    int32_t cols[3], rows[3];
+    latticeVertexCells(s.grid, p.lattice, cols, rows);
+    for (int n = 0; n < 3; ++n) {
+        const int32_t other = s.grid.contains(cols[n], rows[n]) ? s.keptAt(cols[n], rows[n]) : -1;
+        if (other >= 0 && other != k) return false;
+    }
+    return true;
+}
+
+// Builds the tab against `contacts` (a run of cells on the west line, one
+// row of the outline's notches apart, south to north, with the `fillers` in
+// those notches), from y_south to y_north mm. Beyond the run its east edge is
+// set back kTabSetbackMm, so it leaves no slot narrower than that beside a pillar.
+OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y_north, const std::vector<int32_t>& contacts,
+                        const std::vector<int32_t>& fillers, const TabSize& size, Band band) {
+    OrientationTab t;
+    t.bottom_units = band.bottom;
+    t.top_units = band.top;
+    t.x_east_mm = s.point(LatticePoint{i_west, 0}, 0).x;
+    t.x_west_mm = snapXy(t.x_east_mm - size.width);
+    t.y_south_mm = y_south;
+    t.y_north_mm = y_north;
+    const double x_back = snapXy(t.x_east_mm - kTabSetbackMm);
+    beginOutline(s, t);
+    const TabPoint first = corner(s, contacts.front(), kLowerLeft), last = corner(s, contacts.back(), kUpperLeft);
+    addCorner(t, {x_back, t.y_south_mm, -1}, false);
+    addCorner(t, {x_back, first.y_mm, -1}, false);
+    // The tab fills the outline's notches between contacts (else a hole
+    // would reach down to the bed); a mirrored model's tab has one contact.
+    for (size_t n = 0; n < contacts.size(); ++n) {
+        const int32_t c = contacts[n];
+        addCorner(t, corner(s, c, kLowerLeft), true);  // the west wall, south to north
+        if (n + 1 < contacts.size()) {
+            // The outline's notch up to the next contact: c's north-west
+            // wall, the filler's west wall, the next one's south-west wall.
+            addCorner(t, corner(s, c, kUpperLeft), true);
+            addCorner(t, corner(s, c, kTop), true);
+            addCorner(t, corner(s, contacts[n + 1], kBottom), true);
+        } else {
+            addCorner(t, corner(s, c, kUpperLeft), false);
+        }
+    }
+    addCorner(t, {x_back, last.y_mm, -1}, false);
+    addCorner(t, {x_back, t.y_north_mm, -1}, false);
+    for (size_t n = 0; n < contacts.size(); ++n) {
+        t.touched.push_back({contacts[n], kWestEdge});
+        if (n + 1 < contacts.size()) {
+            t.touched.push_back({contacts[n], kNorthWestEdge});
+            t.touched.push_back({fillers[n], kWestEdge});
+            t.touched.push_back({contacts[n + 1], kSouthWestEdge});
+        }
+    }
+    endOutline(s, t, size);
     return t;
+}
+
+// The stress (MPa) on the tab's joint under a hand's push at its far
+// corner (gen/geometry/joint_stress.h), as tsf verify --tactile measures it:
+// each wall it covers over the band both hold.
+double tabJointStressMpa(const Scene& s, const OrientationTab& t) {
+    std::vector<JointWall> walls;
+    for (const auto& [k, e] : t.touched) {
+        const size_t kk = size_t(k);
+        const int e1 = (e + 1) % kHexCorners;
+        const int64_t lo = std::max({t.bottom_units, cornerBottom(s, kk, e), cornerBottom(s, kk, e1)});
+        const int64_t hi = std::min({t.top_units, cornerTop(s, kk, e), cornerTop(s, kk, e1)});
+        walls.push_back({s.point(hexCorner(s.grid, s.col[kk], s.row[kk], e), 0),
+                         s.point(hexCorner(s.grid, s.col[kk], s.row[kk], e1), 0), s.zMm(lo), s.zMm(hi)});
+    }
+    const int64_t raise = t.has_triangle ? t.triangle_raise_units : 0;
+    const Bounds box{{t.x_west_mm, t.y_south_mm, s.zMm(t.bottom_units - (t.under_triangle ? raise : 0))},
+                     {t.x_east_mm, t.y_north_mm, s.zMm(t.top_units + raise)}};
+    return jointLoad(walls, box, kHandPushN).stress_MPa;
+}
+
+// Where a point lies against a simple polygon (mm): -1 outside, 0 on its
+// boundary, 1 inside.
+int pointInOutline(const std::vector<TabPoint>& poly, double x, double y) {
+    bool inside = false;
+    for (size_t a = 0, n = poly.size(), b = n - 1; a < n; b = a++) {
+        const TabPoint &p = poly[a], &q = poly[b];
+        const double cross = (q.x_mm - p.x_mm) * (y - p.y_mm) - (q.y_mm - p.y_mm) * (x - p.x_mm);
+        const double len2 = (q.x_mm - p.x_mm) * (q.x_mm - p.x_mm) + (q.y_mm - p.y_mm) * (q.y_mm - p.y_mm);
+        if (std::fabs(cross) <= 1e-9 * std::max(1.0, len2) && x >= std::min(p.x_mm, q.x_mm) - 1e-9 &&
+            x <= std::max(p.x_mm, q.x_mm) + 1e-9 && y >= std::min(p.y_mm, q.y_mm) - 1e-9 && y <= std::max(p.y_mm, q.y_mm) + 1e-9)
+            return 0;
+        if ((p.y_mm > y) != (q.y_mm > y) && x < (q.x_mm - p.x_mm) * (y - p.y_mm) / (q.y_mm - p.y_mm) + p.x_mm) inside = !inside;
+    }
+    return inside ? 1 : -1;
+}
+
+// Whether the tab's outline is clear of the pillars `near` (kept indices):
+// no centre, corner or edge middle of one inside it, and no corner on its
+// own edges (on the walls it stands against only at the walk's corners).
+bool clearOfPillars(const Scene& s, const OrientationTab& t, const std::vector<TabPoint>& walk, const std::vector<int32_t>& near) {
+    const double reach_y = s.pitch_mm * s.y_scale;
+    for (const int32_t k : near) {
+        const size_t kk = size_t(k);
+        const Vec3 c = s.point(hexCentre(s.grid, s.col[kk], s.row[kk]), 0);
+        if (c.x - s.pitch_mm > t.x_east_mm || c.y + reach_y < t.y_south_mm || c.y - reach_y > t.y_north_mm) continue;
+        if (pointInOutline(t.outline, c.x, c.y) >= 0) return false;
+        for (int e = 0; e < kHexCorners; ++e) {
+            const TabPoint p = corner(s, k, e), q = corner(s, k, (e + 1) % kHexCorners);
+            const int where = pointInOutline(t.outline, p.x_mm, p.y_mm);
+            if (where > 0) return false;
+            if (where == 0 && std::none_of(walk.begin(), walk.end(), [&](const TabPoint& w) { return w.x_mm == p.x_mm && w.y_mm == p.y_mm; }))
+                return false;
+            if (pointInOutline(t.outline, 0.5 * (p.x_mm + q.x_mm), 0.5 * (p.y_mm + q.y_mm)) > 0) return false;
+        }
+    }
+    return true;
+}
+
+// A flat model's tab that follows the pillars' outline: on an irregular
+// west side (a round or diagonal outline) the tab on the westernmost line
+// touches one pillar at its north end and would snap off under a hand.
+// This one walks the outline from the bottom tip of a southernmost pillar
+// (so the notch stays the model's south-west corner) north along the
+// pillars it meets, standing against every wall between (the outline's
+// notches filled, as the legend's plate fills them), at least size.depth
+// north, to the top tip of a pillar whose north-west wall faces out or the
+// lower-left corner of one whose west wall does. Of every such walk, the
+// shortest whose joint holds a hand's push (gen/geometry/joint_stress.h),
+// else the one that holds best. Its south and north edges meet the walk at
+// a hexagon's corners, at right angles to the walls beside them (no sliver
+// of floor). None when no walk fits.
+std::optional<OrientationTab> outlineTab(const Scene& s, int64_t i_west, double y_south, const TabSize& size) {
+    const HexGrid& g = s.grid;
+    // Every wall facing out, by the lattice corner a northward walk leaves
+    // it from (the walk keeps the pillars on its right: corner e + 1 to e).
+    std::map<std::pair<int64_t, int64_t>, std::vector<std::pair<int32_t, int>>> leaving;
+    const double x_line = s.point(LatticePoint{i_west, 0}, 0).x;
+    const double y_cap = y_south + 3 * size.depth;
+    std::vector<int32_t> near;  // the pillars a tab up to y_cap could meet
+    for (size_t k = 0; k < s.keptCount(); ++k) {
+        if (s.point(hexCentre(g, s.col[k], s.row[k]), 0).y - s.pitch_mm * s.y_scale > y_cap) continue;
+        near.push_back(int32_t(k));
+        for (int e = 0; e < kHexCorners; ++e)
+            if (s.keptNeighbour(k, e) < 0) {
+                const LatticePoint p = hexCorner(g, s.col[k], s.row[k], (e + 1) % kHexCorners);
+                leaving[{p.i, p.j}].push_back({int32_t(k), e});
+            }
+    }
+    std::optional<OrientationTab> best;
+    double best_stress = INFINITY;
+    for (const int32_t k0 : near) {
+        if (s.keptNeighbour(size_t(k0), kSouthWestEdge) >= 0 || !footCanTouch(s, k0)) continue;
+        const TabPoint start = corner(s, k0, kBottom);
+        if (start.y_mm != y_south || !aloneAt(s, start, k0)) continue;
+        std::vector<std::pair<int32_t, int>> walk;
+        std::vector<TabPoint> at{start};
+        int32_t k = k0;
+        int e = kSouthWestEdge;
+        for (int steps = 0; steps < 400; ++steps) {
+            if (!footCanTouch(s, k)) break;
+            walk.push_back({k, e});
+            at.push_back(corner(s, k, e));
+            const TabPoint& v = at.back();
+            if (v.y_mm < start.y_mm || v.y_mm > y_cap) break;
+            // The north edge leaves at a right angle to the wall above it:
+            // at a top tip, or at a lower-left corner below an open west wall.
+            const bool exit = (e == kNorthWestEdge || (e == kSouthWestEdge && s.keptNeighbour(size_t(k), kWestEdge) < 0)) &&
+                              aloneAt(s, v, k);
+            if (exit && v.y_mm - start.y_mm >= size.depth - 1e-9 &&
+                !(s.legend && v.y_mm + kTabLegendClearanceMm > s.legend->plate_south_mm)) {
+                OrientationTab t;
+                t.bottom_units = 0;
+                t.top_units = s.floor_units;
+                t.x_west_mm = snapXy(x_line - size.width);
+                t.y_south_mm = start.y_mm;
+                t.y_north_mm = v.y_mm;
+                beginOutline(s, t);
+                bool simple = true;
+                double east = x_line;
+                for (size_t n = 0; n < at.size(); ++n) {
+                    // Between its ends the walk stays strictly between the south and north edges.
+                    if (n > 0 && n + 1 < at.size() && !(at[n].y_mm > start.y_mm && at[n].y_mm < v.y_mm)) simple = false;
+                    addCorner(t, at[n], n + 1 < at.size());
+                    east = std::max(east, at[n].x_mm);
+                }
+                t.x_east_mm = east;
+                t.touched = walk;
+                endOutline(s, t, size);
+                if (simple && clearOfPillars(s, t, at, near)) {
+                    // The shortest that holds; else the one that holds best.
+                    const double stress = tabJointStressMpa(s, t);
+                    const bool holds = stress <= kPrintedPlaInterlayerMpa, held = best_stress <= kPrintedPlaInterlayerMpa;
+                    if (!best || (holds && !held) || (holds && held && t.y_north_mm < best->y_north_mm) ||
+                        (!holds && !held && stress < best_stress)) {
+                        best_stress = stress;
+                        best = std::move(t);
+                    }
+                }
+            }
+            const auto next = leaving.find({hexCorner(g, s.col[size_t(k)], s.row[size_t(k)], e).i,
+                                            hexCorner(g, s.col[size_t(k)], s.row[size_t(k)], e).j});
+            if (next == leaving.end() || next->second.size() != 1) break;  // the outline pinches: stop
+            std::tie(k, e) = next->second.front();
+        }
+    }
+    return best;
 }
 
 // Inside the triangle (edges included), mm.
@@ -258,8 +448,18 @@ void placeTab(Scene& s) {
         }
         const int64_t last_j = hexCentre(s.grid, s.col[size_t(best.back())], s.row[size_t(best.back())]).j;
         s.marks.tab = buildTab(s, i_west, y_south, std::max(y_reach, yOf(last_j + 1)), best, best_fillers, size, best_band);
-        return;
     }
+    // On a flat model whose west side is not a straight line, the tab on
+    // the westernmost line may touch one pillar and snap off: one that
+    // follows the outline stands against more of it.
+    if (!mirrored && !cut_band) {
+        const double stress = s.marks.tab ? tabJointStressMpa(s, *s.marks.tab) : INFINITY;
+        if (stress > kPrintedPlaInterlayerMpa)
+            if (std::optional<OrientationTab> along = outlineTab(s, i_west, y_south, size);
+                along && tabJointStressMpa(s, *along) < stress)
+                s.marks.tab = std::move(along);
+    }
+    if (s.marks.tab) return;
     s.notes.push_back("no orientation tab: the tab that carries the marks (" + formatSignificant(size.width, 3) + " x " +
                       formatSignificant(size.depth, 3) + " mm) finds no pillar on the model's west side to stand "
                       "against, clear of " + blocked);

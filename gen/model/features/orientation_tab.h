@@ -18,7 +18,10 @@
 // corner (their "contacts"), from 0 to the floor, exactly as the tactile
 // scale's foot stands against the east walls (gen/model/features/scale.h),
 // and fills the notch of the hexagon outline between two contacts one row
-// apart. Every vertex where it meets the pillars is a lattice corner at
+// apart. On a flat model whose west side is not a straight line, where that
+// joint would not hold a hand's push (gen/geometry/joint_stress.h), the tab
+// follows the outline instead: from a southernmost pillar's bottom tip
+// north along every wall it meets. Every vertex where it meets the pillars is a lattice corner at
 // height 0 or the floor, so the joined model needs no boolean operation.
 //
 // On a mirrored model (every pillar the same thickness, the underside the
