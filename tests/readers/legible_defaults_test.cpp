@@ -7,7 +7,9 @@
 // that passes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -183,6 +185,85 @@ TEST(LegibleDefaults, OnePillarPerValueIsNeverResampledToPass) {
     EXPECT_FALSE(j["legibility"].contains("changed")) << j["legibility"].dump(1);
     EXPECT_EQ(j["legibility"].value("would_pass", "").rfind("--bins ", 0), 0u) << j["legibility"].dump(1);
     EXPECT_NE(j["legibility"].value("why", "").find("one pillar per value"), std::string::npos) << j["legibility"].dump(1);
+}
+
+// A deterministic noise in [-0.5, 0.5) (a hash of the pixel), for texture.
+double pixelNoise(int c, int r) {
+    uint32_t h = uint32_t(c) * 374761393u + uint32_t(r) * 668265263u;
+    h = (h ^ (h >> 13)) * 1274126177u;
+    return double(h ^ (h >> 16)) / 4294967296.0 - 0.5;
+}
+
+// Hills on a grid: four Gaussian bumps (heights and widths in pixels) over a
+// base, with noise of `noise` peak to peak and a lake that floods what lies
+// below `lake`.
+std::vector<float> hills(int n, double base, double noise, double lake) {
+    const double bumps[4][4] = {{0.3, 0.4, 0.25, 250}, {0.7, 0.3, 0.2, 180}, {0.5, 0.75, 0.3, 300}, {0.15, 0.8, 0.15, 120}};
+    std::vector<float> v;
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            double z = base + noise * pixelNoise(c, r);
+            for (const auto& b : bumps) {
+                const double dx = c - b[0] * n, dy = r - b[1] * n, w = b[2] * n;
+                z += b[3] * std::exp(-(dx * dx + dy * dy) / (w * w));
+            }
+            v.push_back(float(std::max(z, lake)));
+        }
+    return v;
+}
+
+// More rasters as users have them: a geographic DEM at 60 degrees north (its
+// pixels narrower east-west than north-south on the ground) with a lake; a
+// Landsat-like byte band of reflectance with pixel texture; a polar
+// stereographic 10 by 10 grid; a land cover class map with single-pixel
+// speckle. Each default model passes.
+TEST(LegibleDefaults, MoreRastersAsUsersHaveThemPass) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec dem;
+    dem.cols = dem.rows = 121;
+    dem.epsg = 4326;
+    dem.west = 10;
+    dem.north = 61;
+    dem.pixel_w = dem.pixel_h = 1.0 / 120;
+    dem.values = hills(121, 80, 8, 100);
+    test::GeoTiffSpec landsat;
+    landsat.cols = landsat.rows = 60;
+    landsat.epsg = 32611;
+    landsat.west = 300000;
+    landsat.north = 4001800;
+    landsat.pixel_w = landsat.pixel_h = 30;
+    landsat.byte_band = true;
+    for (const float z : hills(60, 60, 32, 0)) landsat.values.push_back(std::min(255.0f, z / 5));
+    test::GeoTiffSpec polar;
+    polar.cols = polar.rows = 10;
+    polar.epsg = 3413;
+    polar.west = -1000000;
+    polar.north = -750000;
+    polar.pixel_w = polar.pixel_h = 25000;
+    for (int r = 0; r < 10; ++r)
+        for (int c = 0; c < 10; ++c) polar.values.push_back(float(250 + 0.8 * r + 0.5 * c + 2 * pixelNoise(c, r)));
+    test::GeoTiffSpec cover;
+    cover.cols = cover.rows = 80;
+    cover.epsg = 32617;
+    cover.west = 500000;
+    cover.north = 4002400;
+    cover.pixel_w = cover.pixel_h = 30;
+    cover.classes = true;
+    const int codes[] = {11, 21, 41, 42, 52, 71, 81, 82, 90};
+    for (int r = 0; r < 80; ++r)
+        for (int c = 0; c < 80; ++c) {
+            const int region = (r / 27) * 3 + c / 27;  // nine blocks
+            const bool speckle = pixelNoise(c, r) > 0.42;
+            cover.values.push_back(float(codes[speckle ? (region + 4) % 9 : region % 9]));
+        }
+    for (const auto& [name, spec] : {std::pair<std::string, const test::GeoTiffSpec*>{"dem", &dem},
+                                     {"landsat", &landsat},
+                                     {"polar", &polar},
+                                     {"cover", &cover}}) {
+        const std::string path = (dir / (name + ".tif")).string();
+        ASSERT_TRUE(test::writeGeoTiff(path, *spec)) << name;
+        genAndVerify(dir, path, name);
+    }
 }
 
 // CF NetCDF: precipitation with a fill value, and packed air temperature.
