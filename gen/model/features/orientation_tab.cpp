@@ -437,17 +437,33 @@ void placeTab(Scene& s) {
             best_band = {0, s.floor_units};
         } else if (cut_band) {
             best_band = *cut_band;
-        } else {
-            // As thick as a flat model's base (at least `thick`), in the
-            // middle of the band: a plate, not a block as tall as the pillars.
-            const int64_t want = std::max(thick, snapUnits(s.params.base_mm, s.z_snap_mm));
-            if (best_band.top - best_band.bottom > want) {
-                best_band.bottom += (best_band.top - best_band.bottom - want) / 2;
-                best_band.top = best_band.bottom + want;
-            }
         }
         const int64_t last_j = hexCentre(s.grid, s.col[size_t(best.back())], s.row[size_t(best.back())]).j;
-        s.marks.tab = buildTab(s, i_west, y_south, std::max(y_reach, yOf(last_j + 1)), best, best_fillers, size, best_band);
+        const double y_north = std::max(y_reach, yOf(last_j + 1));
+        if (mirrored && !cut_band) {
+            // As thick as a flat model's base (at least `thick`), in the
+            // middle of the band: a plate, not a block as tall as the
+            // pillars. Its one contact is a short joint: where that plate
+            // would snap off under a hand, it is made thicker, a millimetre
+            // at a time up to the band, until it holds (the stress falls with
+            // the square of the thickness).
+            const Band held = best_band;
+            auto centred = [&held](int64_t want) {
+                Band b = held;
+                if (b.top - b.bottom > want) {
+                    b.bottom += (b.top - b.bottom - want) / 2;
+                    b.top = b.bottom + want;
+                }
+                return b;
+            };
+            const int64_t step = std::max<int64_t>(1, snapUnits(1.0, s.z_snap_mm));
+            for (int64_t want = std::max(thick, snapUnits(s.params.base_mm, s.z_snap_mm));; want += step) {
+                s.marks.tab = buildTab(s, i_west, y_south, y_north, best, best_fillers, size, centred(want));
+                if (want >= held.top - held.bottom || tabJointStressMpa(s, *s.marks.tab) <= kPrintedPlaInterlayerMpa) break;
+            }
+        } else {
+            s.marks.tab = buildTab(s, i_west, y_south, y_north, best, best_fillers, size, best_band);
+        }
     }
     // On a flat model whose west side is not a straight line, the tab on
     // the westernmost line may touch one pillar and snap off: one that

@@ -27,7 +27,8 @@
 // On a mirrored model (every pillar the same thickness, the underside the
 // negated data) the tab lies in the z band that every pillar it stands
 // against holds, as thick as the base (at least kTabMinThicknessMm, at most
-// the band) in the band's middle, and carries the triangle on both
+// the band; thicker where its one-pillar joint would not hold a hand's
+// push) in the band's middle, and carries the triangle on both
 // faces at the same place: a reader who turns the model over finds the
 // underside's triangle with its long leg running the other way, mirrored
 // exactly as the data is, which tells the two sides apart. There the tab
