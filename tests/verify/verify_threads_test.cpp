@@ -96,6 +96,16 @@ TEST(VerifyThreads, TopologyListsDefectsFoundOnSeveralThreadsInVertexOrder) {
     EXPECT_EQ(topo.components.size(), size_t(kSide * kSide + 1));
 }
 
+// Every box twice, at the same place, with vertices of its own: each of the
+// second copy's vertices repeats a position, counted once however the
+// threads meet in the hash set.
+TEST(VerifyThreads, RepeatedPositionsAreCountedOnSeveralThreads) {
+    const Mesh grid = boxGrid();
+    const MeshTopology topo = analyzeTopology(test::append(grid, grid));
+    EXPECT_EQ(topo.duplicate_position_vertices, grid.positions.size());
+    EXPECT_EQ(analyzeTopology(grid).duplicate_position_vertices, 0u);
+}
+
 // One more box planted through the first: exactly the pairs of their
 // triangles that CGAL says meet, with either kernel, and no others.
 TEST(VerifyThreads, APlantedOverlapIsFoundPairByPair) {
