@@ -7,9 +7,12 @@
 #                test_library_asan, the library-level tests of the readers,
 #                writers, Scene, mesher and haptics; LeakSanitizer on,
 #                lib3mf/libzip leaks suppressed by name
-#                (tests/sanitizers/lsan.supp).
+#                (tests/sanitizers/lsan.supp); and test_verify_threads, the
+#                verifier's threaded stages (column grid, self-intersection
+#                predicates, printability rays, topology) on hand-drawn meshes.
 #   build-tsan/  clang, ThreadSanitizer: the haptic loop and Falcon driver
-#                threads (test_haptics_threads).
+#                threads (test_haptics_threads) and the verifier's threaded
+#                stages (test_verify_threads, the same tests as under ASan).
 #
 # Every fuzz target runs TSF_FUZZ_SECONDS (default 5) from its seed corpus in
 # tests/fuzz/corpus/<target>/ (new inputs go to a scratch folder, not the
@@ -49,7 +52,7 @@ if (( asan || fuzz )); then
         -DTSF_BUILD_FUZZERS=ON -DTSF_BUILD_BENCH=OFF >/dev/null
   targets=()
   (( fuzz )) && targets+=("${fuzzers[@]}")
-  (( asan )) && targets+=(test_library_asan)
+  (( asan )) && targets+=(test_library_asan test_verify_threads)
   cmake --build build-asan -j"$jobs" --target "${targets[@]}"
   echo "run-sanitizers: ASan + UBSan build $(( $(stamp) - t_start )) s"
 fi
@@ -82,6 +85,7 @@ if (( asan )); then
   # them unsanitized.
   build-asan/tests/test_library_asan --gtest_brief=1 \
       --gtest_filter=-DirectMesher.ThousandByThousandGridIsSolid:Safety.ClampHoldsOverAMillionRandomStates:Energy.FingerPressingAndSlidingGainsNoEnergyFromTheSurface
+  build-asan/tests/test_verify_threads --gtest_brief=1
   echo "run-sanitizers: ASan + UBSan tests $(( $(stamp) - t0 )) s"
 fi
 
@@ -89,8 +93,9 @@ if (( tsan )); then
   t0=$(stamp)
   cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=Test -DCMAKE_CXX_FLAGS_TEST=-O0 \
         -DCMAKE_C_COMPILER="$CC" -DCMAKE_CXX_COMPILER="$CXX" -DTSF_SANITIZE=thread -DTSF_BUILD_BENCH=OFF >/dev/null
-  cmake --build build-tsan -j"$jobs" --target test_haptics_threads
+  cmake --build build-tsan -j"$jobs" --target test_haptics_threads test_verify_threads
   build-tsan/tests/test_haptics_threads
+  build-tsan/tests/test_verify_threads --gtest_brief=1
   echo "run-sanitizers: ThreadSanitizer build and tests $(( $(stamp) - t0 )) s"
 fi
 echo "run-sanitizers: all done in $(( $(stamp) - t_start )) s"

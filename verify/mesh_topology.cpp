@@ -6,9 +6,11 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <numeric>
 
-#include "gen/util/union_find.h"
+#include "verify/detail/concurrent_union_find.h"
+#include "verify/detail/workers.h"
 
 namespace tsf {
 namespace {
@@ -21,6 +23,10 @@ double signedTetra6(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& c) 
 }
 
 bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// Below this many triangle corners the edges and fans are found on one
+// thread: starting the others costs more than they save.
+constexpr size_t kMinCornersForThreads = 60000;
 
 }  // namespace
 
@@ -100,74 +106,112 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
     // random (and took 64 bytes a triangle more).
     const VertexCorners at = cornersByVertex(mesh, &usable);
 
-    UnionFind faces(nt);
-    struct Spoke {
-        uint32_t w;       // the other end of the edge
-        uint32_t tri;     // a triangle using the edge v-w
-        uint32_t local;   // that triangle's place among v's triangles
-        bool outgoing;    // the triangle runs v -> w
+    // The vertices in one run of consecutive vertices per worker, of about
+    // as many corners each; each run's findings are kept apart and joined in
+    // vertex order, so the lists come out as from one thread. The triangles'
+    // components are joined in one union-find the workers share.
+    detail::ConcurrentUnionFind faces(nt);
+    struct Findings {
+        size_t edge_count = 0;
+        std::vector<EdgeUse> border, nonmanifold, misoriented;
+        std::vector<uint32_t> nonmanifold_vertices;
     };
-    std::vector<Spoke> spokes;
-    std::vector<uint32_t> fan;  // union-find over v's triangles
-    auto fanRoot = [&](uint32_t x) {
-        while (fan[x] != x) x = fan[x] = fan[fan[x]];
-        return x;
-    };
-    for (size_t v = 0; v < nv; ++v) {
-        const uint32_t first = at.start[v], count = at.start[v + 1] - first;
-        if (count == 0) continue;
-        spokes.clear();
-        for (uint32_t k = 0; k < count; ++k) {
-            const uint32_t c = at.list[first + k], t = c / 3, i = c % 3;
-            const auto& tri = mesh.triangles[t];
-            spokes.push_back({tri[(i + 1) % 3], t, k, true});
-            spokes.push_back({tri[(i + 2) % 3], t, k, false});
-        }
-        std::sort(spokes.begin(), spokes.end(),
-                  [](const Spoke& a, const Spoke& b) { return a.w != b.w ? a.w < b.w : a.tri < b.tri; });
-        fan.resize(count);
-        std::iota(fan.begin(), fan.end(), 0u);
-        size_t fans = count;
-        auto edgeUse = [&](size_t lo, size_t hi) {
-            EdgeUse e;
-            e.a = uint32_t(v);
-            e.b = spokes[lo].w;
-            for (size_t i = lo; i < hi; ++i) e.triangles.push_back(spokes[i].tri);
-            return e;
+    const unsigned workers = at.list.size() < kMinCornersForThreads ? 1u : detail::workerCount(0);
+    std::vector<Findings> found(workers);
+    std::vector<size_t> run_start(workers + 1, nv);
+    for (unsigned w = 0; w < workers; ++w)
+        run_start[w] = size_t(std::lower_bound(at.start.begin(), at.start.end() - 1,
+                                               uint32_t(at.list.size() * w / workers)) -
+                              at.start.begin());
+    run_start[0] = 0;
+    detail::runOnWorkers(workers, [&](unsigned worker, const std::atomic<bool>&) {
+        Findings& out = found[worker];
+        struct Spoke {
+            uint32_t w;       // the other end of the edge
+            uint32_t tri;     // a triangle using the edge v-w
+            uint32_t local;   // that triangle's place among v's triangles
+            bool outgoing;    // the triangle runs v -> w
         };
-        for (size_t lo = 0; lo < spokes.size();) {
-            size_t hi = lo + 1;
-            while (hi < spokes.size() && spokes[hi].w == spokes[lo].w) ++hi;
-            const size_t uses = hi - lo;
-            if (uses == 2) {  // a two-triangle edge joins the fan at v
-                const uint32_t x = fanRoot(spokes[lo].local), y = fanRoot(spokes[lo + 1].local);
-                if (x != y) {
-                    fan[x] = y;
-                    --fans;
+        std::vector<Spoke> spokes;
+        std::vector<uint32_t> fan;  // union-find over v's triangles
+        auto fanRoot = [&](uint32_t x) {
+            while (fan[x] != x) x = fan[x] = fan[fan[x]];
+            return x;
+        };
+        for (size_t v = run_start[worker]; v < run_start[worker + 1]; ++v) {
+            const uint32_t first = at.start[v], count = at.start[v + 1] - first;
+            if (count == 0) continue;
+            spokes.clear();
+            for (uint32_t k = 0; k < count; ++k) {
+                const uint32_t c = at.list[first + k], t = c / 3, i = c % 3;
+                const auto& tri = mesh.triangles[t];
+                spokes.push_back({tri[(i + 1) % 3], t, k, true});
+                spokes.push_back({tri[(i + 2) % 3], t, k, false});
+            }
+            std::sort(spokes.begin(), spokes.end(),
+                      [](const Spoke& a, const Spoke& b) { return a.w != b.w ? a.w < b.w : a.tri < b.tri; });
+            fan.resize(count);
+            std::iota(fan.begin(), fan.end(), 0u);
+            size_t fans = count;
+            auto edgeUse = [&](size_t lo, size_t hi) {
+                EdgeUse e;
+                e.a = uint32_t(v);
+                e.b = spokes[lo].w;
+                for (size_t i = lo; i < hi; ++i) e.triangles.push_back(spokes[i].tri);
+                return e;
+            };
+            for (size_t lo = 0; lo < spokes.size();) {
+                size_t hi = lo + 1;
+                while (hi < spokes.size() && spokes[hi].w == spokes[lo].w) ++hi;
+                const size_t uses = hi - lo;
+                if (uses == 2) {  // a two-triangle edge joins the fan at v
+                    const uint32_t x = fanRoot(spokes[lo].local), y = fanRoot(spokes[lo + 1].local);
+                    if (x != y) {
+                        fan[x] = y;
+                        --fans;
+                    }
                 }
+                if (spokes[lo].w > v) {  // each edge once, from its lower end
+                    ++out.edge_count;
+                    for (size_t i = lo + 1; i < hi; ++i) faces.unite(spokes[lo].tri, spokes[i].tri);
+                    if (uses == 1) out.border.push_back(edgeUse(lo, hi));
+                    else if (uses > 2) out.nonmanifold.push_back(edgeUse(lo, hi));
+                    else if (spokes[lo].outgoing == spokes[lo + 1].outgoing) out.misoriented.push_back(edgeUse(lo, hi));
+                }
+                lo = hi;
             }
-            if (spokes[lo].w > v) {  // each edge once, from its lower end
-                ++topo.edge_count;
-                for (size_t i = lo + 1; i < hi; ++i) faces.unite(spokes[lo].tri, spokes[i].tri);
-                if (uses == 1) topo.border_edges.push_back(edgeUse(lo, hi));
-                else if (uses > 2) topo.nonmanifold_edges.push_back(edgeUse(lo, hi));
-                else if (spokes[lo].outgoing == spokes[lo + 1].outgoing) topo.misoriented_edges.push_back(edgeUse(lo, hi));
-            }
-            lo = hi;
+            if (fans > 1) out.nonmanifold_vertices.push_back(uint32_t(v));
         }
-        if (fans > 1) topo.nonmanifold_vertices.push_back(uint32_t(v));
+    });
+    for (Findings& f : found) {
+        topo.edge_count += f.edge_count;
+        auto join = [](auto& to, auto& from) { to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end())); };
+        join(topo.border_edges, f.border);
+        join(topo.nonmanifold_edges, f.nonmanifold);
+        join(topo.misoriented_edges, f.misoriented);
+        join(topo.nonmanifold_vertices, f.nonmanifold_vertices);
     }
 
-    std::vector<int64_t> comp_of_root(nt, -1);
+    // Components: each triangle's root (its set's smallest member) found on
+    // the workers, then the sets numbered in triangle order on one thread. A
+    // root comes before the rest of its set, so its entry already holds the
+    // set's number when the others look it up.
+    std::vector<uint32_t> set_of(nt);
+    detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
+        for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) set_of[t] = faces.find(uint32_t(t));
+    });
     for (size_t t = 0; t < nt; ++t) {
         if (!usable[t]) continue;
-        const uint32_t r = faces.find(uint32_t(t));
-        if (comp_of_root[r] < 0) {
-            comp_of_root[r] = int64_t(topo.components.size());
+        const uint32_t root = set_of[t];
+        if (root == t) {
+            set_of[t] = uint32_t(topo.components.size());
             topo.components.emplace_back();
+        } else {
+            set_of[t] = set_of[root];
         }
-        topo.components[size_t(comp_of_root[r])].triangles.push_back(uint32_t(t));
+        topo.components[set_of[t]].triangles.push_back(uint32_t(t));
     }
+    set_of = {};
     for (MeshComponent& c : topo.components) {
         const double inf = std::numeric_limits<double>::infinity();
         c.bounds = {{inf, inf, inf}, {-inf, -inf, -inf}};
@@ -188,36 +232,46 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
                      [](const MeshComponent& a, const MeshComponent& b) { return a.triangles.size() > b.triangles.size(); });
 
     // Exact duplicate positions (unmerged vertices): an open-addressing hash
-    // set of the finite positions, sized once. NaN positions are left out of
-    // the comparison (they are reported as non-finite); -0 equals +0.
+    // set of the finite positions, sized once, filled on the workers (a slot
+    // is taken by compare-and-swap). Which of two equal positions is kept
+    // depends on the threads' order; how many are turned away (the count)
+    // does not. NaN positions are left out of the comparison (they are
+    // reported as non-finite); -0 equals +0.
     {
         size_t cap = 16;
         while (cap < 2 * nv) cap *= 2;
-        std::vector<uint32_t> table(cap, UINT32_MAX);
+        constexpr uint32_t kEmpty = UINT32_MAX;
+        std::unique_ptr<std::atomic<uint32_t>[]> table(new std::atomic<uint32_t>[cap]);
+        std::vector<size_t> duplicates(workers, 0);
+        detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
+            for (size_t i = cap * w / workers; i < cap * (w + 1) / workers; ++i)
+                table[i].store(kEmpty, std::memory_order_relaxed);
+        });
         auto bits = [](double d) {
             if (d == 0) d = 0;  // one key for -0 and +0
             uint64_t u;
             std::memcpy(&u, &d, sizeof u);
             return u;
         };
-        for (size_t v = 0; v < nv; ++v) {
-            const Vec3& p = mesh.positions[v];
-            if (!finite(p)) continue;
-            uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull;
-            h = (h ^ (h >> 29) ^ bits(p.y)) * 0xBF58476D1CE4E5B9ull;
-            h = (h ^ (h >> 32) ^ bits(p.z)) * 0x94D049BB133111EBull;
-            h ^= h >> 31;
-            for (size_t slot = h & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
-                if (table[slot] == UINT32_MAX) {
-                    table[slot] = uint32_t(v);
-                    break;
-                }
-                if (mesh.positions[table[slot]] == p) {
-                    ++topo.duplicate_position_vertices;
-                    break;
+        detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
+            for (size_t v = nv * w / workers; v < nv * (w + 1) / workers; ++v) {
+                const Vec3& p = mesh.positions[v];
+                if (!finite(p)) continue;
+                uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull;
+                h = (h ^ (h >> 29) ^ bits(p.y)) * 0xBF58476D1CE4E5B9ull;
+                h = (h ^ (h >> 32) ^ bits(p.z)) * 0x94D049BB133111EBull;
+                h ^= h >> 31;
+                for (size_t slot = h & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+                    uint32_t held = kEmpty;
+                    if (table[slot].compare_exchange_strong(held, uint32_t(v), std::memory_order_relaxed)) break;
+                    if (mesh.positions[held] == p) {
+                        ++duplicates[w];
+                        break;
+                    }
                 }
             }
-        }
+        });
+        for (size_t d : duplicates) topo.duplicate_position_vertices += d;
     }
     return topo;
 }

@@ -76,6 +76,8 @@ struct MeshTopology {
 
 /// Combinatorial analysis of mesh; see the file comment for the terms.
 /// Triangles with an out-of-range index are listed and otherwise ignored.
+/// From 20 000 triangles the edges and fans are found on every core; every
+/// list comes out the same, in the same order, as on one thread.
 MeshTopology analyzeTopology(const Mesh& mesh);
 
 /// Midpoint (mm) of an edge's two vertices; for locating offenders.
