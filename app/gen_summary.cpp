@@ -4,6 +4,7 @@
 #include "app/printer_fit.h"
 #include "gen/model/attachments.h"
 #include "gen/model/feature_records.h"
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/felt_heights.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene_classes.h"
@@ -124,7 +125,7 @@ std::string formatSceneFacts(const Scene& s, bool with_size_and_heights) {
              "classes at heights)\n";
     else if (with_size_and_heights)
         o << "  heights   " << mappingText(s) << "\n"
-          << "  levels    " << feltLevelsSentence(s.mapping.max_height_mm, s.scale.has_value()) << "\n";
+          << "  levels    " << feltLevelsSentence(s.mapping.max_height_mm, sceneMeasures(s)) << "\n";
     if (s.params.bottom == Bottom::Flat)
         o << "  bottom    flat, base " << formatFixed(s.params.base_mm, 2) << " mm\n";
     else
@@ -274,7 +275,7 @@ std::string formatSummary(const GenSummary& s) {
         o << "\n";
         if (!sc.textures)
             o << "  heights   " << mappingText(sc) << "\n"
-              << "  levels    " << feltLevelsSentence(sc.mapping.max_height_mm, sc.scale.has_value()) << "\n";
+              << "  levels    " << feltLevelsSentence(sc.mapping.max_height_mm, sceneMeasures(sc)) << "\n";
     }
     o << "Details:\n";
     if (s.field) o << "  input     " << s.field->how << "\n";

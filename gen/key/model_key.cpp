@@ -8,6 +8,7 @@
 #include "gen/field/hex_grid.h"
 #include "gen/key/places_in_words.h"
 #include "gen/key/unit_words.h"
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/braille.h"
 #include "gen/model/features/class_textures.h"
 #include "gen/model/features/marks.h"
@@ -115,7 +116,7 @@ std::string heightsParagraph(const Scene& s, const UnitWords& u) {
              "up of the same height multiplies the value.";
         break;
     }
-    return p + " " + feltLevelsSentence(m.max_height_mm, s.scale.has_value());
+    return p + " " + feltLevelsSentence(m.max_height_mm, sceneMeasures(s));
 }
 
 std::string orientationParagraph(const Scene& s) {
@@ -248,15 +249,10 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
         for (const std::string& line : s.legend->layout.text) p += " \"" + line + "\".";
         out.push_back(p);
     }
-    if (s.scale) {
-        std::string steps;
-        for (size_t k = 0; k < s.scale->steps.size(); ++k)
-            steps += (k == 0 ? "" : k + 1 == s.scale->steps.size() ? " and " : ", ") +
-                     (k + 1 == s.scale->steps.size() ? amount(s.scale->steps[k].value, u) : num(s.scale->steps[k].value));
-        out.push_back("A tactile scale stands east of the pillars: " + std::to_string(s.scale->steps.size()) +
-                      " steps, the lowest in the south, at " + steps +
-                      ". Put a finger on a pillar and one on the steps to read its value.");
-    }
+    const KeyNumbers numbers{num, [&u](double v) { return amount(v, u); }};
+    for (const Feature* f : features())
+        if (f->key_paragraph)
+            if (std::string p = f->key_paragraph(s, numbers); !p.empty()) out.push_back(std::move(p));
     const double top = s.zMm(highestPillarTop(s));
     std::string size = "The pillars cover " + mm(gridWidth(s.grid, s.pitch_mm)) + " from west to east and " +
                        mm(gridDepth(s.grid, s.pitch_mm, s.y_scale)) + " from south to north, and stand up to " + mm(top) + " high";

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <optional>
 
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/halves.h"
 #include "gen/model/features/tiles.h"
 #include "gen/model/features/legend_join.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/orientation_tab.h"
-#include "gen/model/features/scale.h"
 
 namespace tsf {
 
@@ -20,25 +20,34 @@ std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly) 
     };
     add(tabAttachment(scene, assembly));
     add(legendAttachment(scene, assembly));
-    add(scaleAttachment(scene, assembly));
+    for (const Feature* f : features())
+        if (f->attachment) add(f->attachment(scene, assembly));
     return out;
 }
 
 std::vector<ProbeSet> sceneProbes(const Scene& scene) {
     std::vector<ProbeSet> out;
-    for (ProbeSet set : {legendProbes(scene), scaleProbes(scene), markProbes(scene)})
+    std::vector<ProbeSet> sets = {legendProbes(scene)};
+    for (const Feature* f : features())
+        if (f->probes) sets.push_back(f->probes(scene));
+    sets.push_back(markProbes(scene));
+    for (ProbeSet& set : sets)
         if (!set.probes.empty()) out.push_back(std::move(set));
     return out;
 }
 
 void checkAttachments(const Scene& scene) {
-    checkScale(scene);
+    for (const Feature* f : features())
+        if (f->check) f->check(scene);
     checkTabInScene(scene);
 }
 
 std::vector<BoxMm> attachmentBoxes(const Scene& scene) {
     std::vector<BoxMm> boxes;
-    for (const auto& box : {tabBoxMm(scene), legendBoxMm(scene), scaleBoxMm(scene)})
+    std::vector<std::optional<BoxMm>> all = {tabBoxMm(scene), legendBoxMm(scene)};
+    for (const Feature* f : features())
+        if (f->box) all.push_back(f->box(scene));
+    for (const auto& box : all)
         if (box) boxes.push_back(*box);
     return boxes;
 }
@@ -58,9 +67,12 @@ BoxMm sceneFootprint(const Scene& s) {
 }
 
 std::vector<SideWidth> attachmentSideWidths(const SceneParams& params) {
-    // The tactile scale east of the pillars, the orientation tab west of them.
+    // The registry's features (the tactile scale east of the pillars), the
+    // orientation tab west of them.
     std::vector<SideWidth> out;
-    if (params.scale.wanted) out.push_back({"the tactile scale", kScaleGapMm + kScaleStepWidthMm});
+    for (const Feature* f : features())
+        if (f->side_width)
+            if (std::optional<SideWidth> w = f->side_width(params)) out.push_back(std::move(*w));
     if (wantsTab(params)) out.push_back({"the orientation tab", tabWidthMm(params.marks)});
     return out;
 }
@@ -73,7 +85,10 @@ std::vector<BottomHole> sceneBottomHoles(const Scene& scene) {
 
 std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm) {
     std::vector<int64_t> tops;
-    for (const auto& top : {tabTopAt(scene, x_mm, y_mm), legendTopAt(scene, x_mm, y_mm), scaleTopAt(scene, x_mm, y_mm)})
+    std::vector<std::optional<int64_t>> all = {tabTopAt(scene, x_mm, y_mm), legendTopAt(scene, x_mm, y_mm)};
+    for (const Feature* f : features())
+        if (f->top_at) all.push_back(f->top_at(scene, x_mm, y_mm));
+    for (const auto& top : all)
         if (top) tops.push_back(*top);
     return tops;
 }

@@ -14,7 +14,8 @@
 namespace tsf {
 
 /// Every attachment of `scene` as `assembly` draws it, in a fixed order (the
-/// orientation tab, the legend, the scale). Meshing a body is
+/// orientation tab, the legend, then the registry's features:
+/// gen/model/feature_registry.h). Meshing a body is
 /// deterministic: the same Scene gives the same attachments.
 std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly);
 
@@ -22,7 +23,8 @@ std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly);
 std::vector<BottomHole> sceneBottomHoles(const Scene& scene);
 
 /// Every probe of the Scene (gen/model/scene_attachments.h), one set per
-/// read-back check, in a fixed order (the legend, the scale, the marks);
+/// read-back check, in a fixed order (the legend, the registry's features,
+/// the marks);
 /// sets without probes are left out.
 std::vector<ProbeSet> sceneProbes(const Scene& scene);
 
@@ -39,12 +41,8 @@ std::vector<BoxMm> attachmentBoxes(const Scene& scene);
 BoxMm sceneFootprint(const Scene& scene);
 
 /// What stands beside the pillars east or west and takes bed width from
-/// them, before the Scene is built: the attachment's name for a person and
-/// its width (mm) for these parameters. Empty when nothing will.
-struct SideWidth {
-    std::string what;  ///< "the tactile scale"
-    double width_mm = 0;
-};
+/// them for these parameters (SideWidth, gen/model/scene_attachments.h).
+/// Empty when nothing will.
 std::vector<SideWidth> attachmentSideWidths(const SceneParams& params);
 
 /// The heights (z units) of the attachments' tops at (x, y) mm, the model

@@ -23,12 +23,13 @@
 #include "gen/field/resample.h"
 #include "gen/model/concave_hull.h"
 #include "gen/model/convex_hull.h"
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/class_textures.h"
 #include "gen/model/features/halves.h"
+#include "gen/model/features/legend_join.h"
 #include "gen/model/features/legend_scene.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/orientation_tab.h"
-#include "gen/model/features/scale.h"
 #include "gen/model/features/tiles.h"
 #include "gen/model/features/tilt.h"
 #include "gen/model/features/top_shapes.h"
@@ -532,10 +533,12 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
                               formatSignificant(kMinFeltTextureReliefMm) +
                               " mm a finger finds without searching: larger cells (fewer --bins, a larger --cell)");
     }
-    // The legend, the tab and the scale last: they stand against cells whose
-    // tops (tilted or not) rise to the floor, or on a mirrored model hold
-    // their band; the tab and the scale keep clear of the legend's plate.
+    // The legend, the tab and the features of the registry last: they stand
+    // against cells whose tops (tilted or not) rise to the floor, or on a
+    // mirrored model hold their band; the tab keeps clear of the legend's
+    // plate, the registry's features of every footprint claimed before them.
     placeLegend(s);
+    if (std::optional<FootprintClaim> plate = legendClaim(s)) s.claims.push_back(std::move(*plate));
     if (params.tile_marks && params.tile_marks->tab) {
         // A tile carries the model's own tab (touched cells given as grid cell indices).
         OrientationTab tab = *params.tile_marks->tab;
@@ -558,7 +561,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         again.notes.insert(again.notes.begin(), s.notes.back() + "; they are placed in the data instead, where they fit");
         return again;
     }
-    placeScale(s);
+    placeFeatures(s, FeaturePhase::Beside);
     if (params.stored_as_float32) {
         const double snap = float32SafeSnapMm(s);
         if (snap > s.z_snap_mm) {

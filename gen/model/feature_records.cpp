@@ -1,31 +1,35 @@
 #include "gen/model/feature_records.h"
 
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/class_textures_record.h"
 #include "gen/model/features/halves_facts.h"
 #include "gen/model/features/legend_record.h"
 #include "gen/model/features/orientation_tab_record.h"
-#include "gen/model/features/scale_record.h"
 
 namespace tsf {
 
 const std::vector<FeatureRecord>& featureRecords() {
-    static const std::vector<FeatureRecord> records = {
-        {"marks.tab", tabRecord, readTabRecord},
-        {"legend", legendRecord, readLegendRecord},
-        {"scale", scaleRecord, readScaleRecord},
-        {"class_textures", classTexturesRecord, readClassTexturesRecord},
-    };
+    // The registry's features where the scale, the first of them, stood.
+    static const std::vector<FeatureRecord> records = [] {
+        std::vector<FeatureRecord> r = {{"marks.tab", tabRecord, readTabRecord}, {"legend", legendRecord, readLegendRecord}};
+        for (const Feature* f : features())
+            if (f->record) r.push_back({f->name, f->record, f->read_record});
+        r.push_back({"class_textures", classTexturesRecord, readClassTexturesRecord});
+        return r;
+    }();
     return records;
 }
 
 const std::vector<FeatureFacts>& featureFacts() {
-    static const std::vector<FeatureFacts> facts = {
-        {"marks.tab", true, tabFactsJson, tabFactsLines},
-        {"legend", true, legendFactsJson, legendFactsLines},
-        {"scale", true, scaleFactsJson, scaleFactsLines},
-        {"halves", false, halvesFactsJson, halvesFactsLines},
-        {"class_textures", false, classTexturesFactsJson, classTexturesFactsLines},
-    };
+    static const std::vector<FeatureFacts> facts = [] {
+        std::vector<FeatureFacts> r = {{"marks.tab", true, tabFactsJson, tabFactsLines},
+                                       {"legend", true, legendFactsJson, legendFactsLines}};
+        for (const Feature* f : features())
+            if (f->facts_json) r.push_back({f->name, f->facts_listed_when_absent, f->facts_json, f->facts_lines});
+        r.push_back({"halves", false, halvesFactsJson, halvesFactsLines});
+        r.push_back({"class_textures", false, classTexturesFactsJson, classTexturesFactsLines});
+        return r;
+    }();
     return facts;
 }
 

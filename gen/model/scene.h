@@ -29,7 +29,9 @@
 #include "gen/field/hex_field.h"
 #include "gen/field/hex_grid.h"
 #include "gen/geometry/mesh.h"
+#include "gen/model/feature_state.h"
 #include "gen/model/features/legend.h"
+#include "gen/model/scene_attachments.h"
 #include "gen/model/scene_halves.h"
 #include "gen/model/scene_marks.h"
 #include "gen/model/scene_scale.h"
@@ -223,12 +225,16 @@ struct Scene {
     std::optional<SceneTextures> textures;
     /// The braille legend's plate north of the pillars (gen/model/features/legend_scene.h); none unless asked for.
     std::optional<SceneLegend> legend;
-    /// The tactile scale east of the pillars (gen/model/features/scale.h); none unless asked for.
-    std::optional<SceneScale> scale;
     /// The cut into two support-free halves and the pin holes (gen/model/features/halves.h); none unless asked for.
     std::optional<SceneHalves> halves;
     /// The tile of a tiled model this Scene draws, and its code (gen/model/features/tiles.h); none for a whole model.
     std::optional<SceneTile> tile;
+    /// What the features of the registry placed (gen/model/feature.h): each
+    /// holds its own state here, by its type (the tactile scale's SceneScale).
+    FeatureStates features;
+    /// The footprints placed so far claim (gen/model/feature.h): a feature
+    /// placed later keeps clear of them. Placement only: not in the sidecar.
+    std::vector<FootprintClaim> claims;
 
     // Facts for the summary and the verifier.
     std::vector<LatticePoint> hull;  ///< convex hull of non-empty cell centres, CCW (empty if Cull::None)

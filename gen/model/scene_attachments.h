@@ -69,6 +69,24 @@ struct BoxMm {
     double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
 };
 
+/// Part of the model frame (mm) a feature takes (gen/model/feature.h),
+/// which a feature placed later keeps clear of; `what` and `leave_out` let
+/// that feature say why it could not be placed ("the braille legend's
+/// plate", "--title/--units (the plate north of the pillars)").
+struct FootprintClaim {
+    BoxMm box;
+    std::string what;
+    std::string leave_out;
+};
+
+/// What stands beside the pillars east or west and takes bed width from
+/// them, before the Scene is built: the attachment's name for a person and
+/// its width (mm).
+struct SideWidth {
+    std::string what;  ///< "the tactile scale"
+    double width_mm = 0;
+};
+
 /// One attachment as an Assembly draws it.
 struct Attachment {
     /// The part its own piece prints as in a multi-part model ("marks",

@@ -15,7 +15,7 @@ namespace {
 
 // joined: the staircase as tsf_joined.scad joins it; null: boxes to union.
 void emitScaleData(std::string& o, const Scene& s, const Attachment* joined) {
-    const SceneScale& sc = *s.scale;
+    const SceneScale& sc = *sceneScale(s);
     o += "/* [Tactile scale] */\n"
          "// A staircase east of the pillars: each tread at the height of a value (docs/model.md).\n"
          "show_scale = true;\n\n"
@@ -56,7 +56,7 @@ void emitScaleData(std::string& o, const Scene& s, const Attachment* joined) {
 }  // namespace
 
 std::optional<ScadAttachment> scadScale(const Scene& s, bool join) {
-    if (!s.scale) return std::nullopt;
+    if (!sceneScale(s)) return std::nullopt;
     ScadAttachment a;
     a.placed_switch = "show_scale";
     const std::optional<Attachment> joined = join ? scaleAttachment(s, Assembly::OnePiece) : std::nullopt;

@@ -104,8 +104,8 @@ HexField terrain() {
 
 TEST(ScalePlacement, TreadsAtThePillarsHeightsEastOfEveryPillarTouchingTheEastWalls) {
     const Scene s = buildScene(terrain(), scaleParams());
-    ASSERT_TRUE(s.scale.has_value());
-    const SceneScale& sc = *s.scale;
+    ASSERT_TRUE(sceneScale(s));
+    const SceneScale& sc = *sceneScale(s);
     EXPECT_TRUE(sc.step_given);
     ASSERT_EQ(sc.steps.size(), 5u);
     // 1 data unit = 12 / 5 = 2.4 mm = 240 z steps, above the 2 mm (200 step) floor.
@@ -138,8 +138,8 @@ TEST(ScalePlacement, TreadsAtThePillarsHeightsEastOfEveryPillarTouchingTheEastWa
 
 TEST(ScaleMesh, JoinedModelIsOneClosedSolidOfThePillarsPlusTheScaleBoxes) {
     const Scene s = buildScene(terrain(), scaleParams());
-    ASSERT_TRUE(s.scale.has_value());
-    const SceneScale& sc = *s.scale;
+    ASSERT_TRUE(sceneScale(s));
+    const SceneScale& sc = *sceneScale(s);
     double boxes = (sc.x1_mm - sc.x0_mm) * (sc.y1_mm - sc.y0_mm) * s.zMm(sc.foot_top_units);
     for (const ScaleStep& st : sc.steps)
         boxes += (sc.x1_mm - sc.xs_mm) * (st.y_north_mm - st.y_south_mm) * s.zMm(st.top_units - sc.foot_top_units);
@@ -187,7 +187,7 @@ TEST(ScaleMesh, BesideTiltedTopsAndTheOrientationMarks) {
     p.tilt = TiltSource::Gradient;
     p.steepness = 3.0;
     const Scene s = buildScene(terrain(), p);
-    ASSERT_TRUE(s.scale.has_value());
+    ASSERT_TRUE(sceneScale(s));
     const test::Invariants inv = test::checkInvariants(meshScene(s));
     EXPECT_TRUE(inv.closedManifold()) << inv.describe();
     EXPECT_EQ(inv.components, 1u);
@@ -201,8 +201,8 @@ TEST(ScalePlacement, KeepsClearOfTheBrailleLegend) {
     p.legend.title = "Depth";
     const Scene s = buildScene(f, p);
     ASSERT_TRUE(s.legend.has_value());
-    ASSERT_TRUE(s.scale.has_value());
-    EXPECT_LE(s.scale->y1_mm + kScaleLegendClearanceMm, s.legend->plate_south_mm);
+    ASSERT_TRUE(sceneScale(s));
+    EXPECT_LE(sceneScale(s)->y1_mm + kScaleClearanceMm, s.legend->plate_south_mm);
     const test::Invariants inv = test::checkInvariants(meshScene(s));
     EXPECT_TRUE(inv.closedManifold()) << inv.describe();
     EXPECT_EQ(inv.components, 1u);
@@ -236,21 +236,21 @@ TEST(ScalePlacement, RefusedOnAMirroredModelAFlatFieldAndTooFineASteps) {
 
 TEST(ScaleSidecar, RecordedAsPlacedAndReadAsRecorded) {
     const Scene s = buildScene(terrain(), scaleParams());
-    ASSERT_TRUE(s.scale.has_value());
+    ASSERT_TRUE(sceneScale(s));
     nlohmann::json j = sceneToJson(s);
     const Scene back = sceneFromJson(j);
-    ASSERT_TRUE(back.scale.has_value());
-    EXPECT_EQ(back.scale->steps.size(), s.scale->steps.size());
-    EXPECT_EQ(back.scale->contacts, s.scale->contacts);
-    EXPECT_EQ(back.scale->fillers, s.scale->fillers);
-    EXPECT_EQ(back.scale->steps.back().top_units, s.scale->steps.back().top_units);
+    ASSERT_TRUE(sceneScale(back));
+    EXPECT_EQ(sceneScale(back)->steps.size(), sceneScale(s)->steps.size());
+    EXPECT_EQ(sceneScale(back)->contacts, sceneScale(s)->contacts);
+    EXPECT_EQ(sceneScale(back)->fillers, sceneScale(s)->fillers);
+    EXPECT_EQ(sceneScale(back)->steps.back().top_units, sceneScale(s)->steps.back().top_units);
     EXPECT_EQ(meshScene(back).triangles.size(), meshScene(s).triangles.size());
     // Reading places nothing: a tread recorded one step higher is read as
     // recorded (the verifier's read-back then tells it from the mesh).
     j["scale"]["steps"][0][1] = j["scale"]["steps"][0][1].get<int64_t>() + 1;
     const Scene moved = sceneFromJson(j);
-    ASSERT_TRUE(moved.scale.has_value());
-    EXPECT_EQ(moved.scale->steps[0].top_units, s.scale->steps[0].top_units + 1);
+    ASSERT_TRUE(sceneScale(moved));
+    EXPECT_EQ(sceneScale(moved)->steps[0].top_units, sceneScale(s)->steps[0].top_units + 1);
 }
 
 
@@ -267,8 +267,8 @@ HexField spurField() {
 
 TEST(ScalePlacement, StepsBackFromASpurToTheLongestRunOfTheEastSide) {
     const Scene s = buildScene(spurField(), scaleParams());
-    ASSERT_TRUE(s.scale.has_value());
-    const SceneScale& sc = *s.scale;
+    ASSERT_TRUE(sceneScale(s));
+    const SceneScale& sc = *sceneScale(s);
     int64_t i_east = INT64_MIN;
     for (size_t k = 0; k < s.keptCount(); ++k) i_east = std::max(i_east, hexCentre(s.grid, s.col[k], s.row[k]).i + 1);
     // The spur's line holds one contact; the line one cell west, a run of rows.
@@ -287,9 +287,9 @@ TEST(ScalePlacement, StepsBackFromASpurToTheLongestRunOfTheEastSide) {
     EXPECT_EQ(inv.duplicate_positions, 0u);
     // The sidecar keeps it.
     const Scene back = sceneFromJson(sceneToJson(s));
-    ASSERT_TRUE(back.scale.has_value());
-    EXPECT_EQ(back.scale->contacts, sc.contacts);
-    EXPECT_EQ(back.scale->fillers, sc.fillers);
+    ASSERT_TRUE(sceneScale(back));
+    EXPECT_EQ(sceneScale(back)->contacts, sc.contacts);
+    EXPECT_EQ(sceneScale(back)->fillers, sc.fillers);
 }
 
 // A bay six cells deep in the east side, left open by concave culling:
@@ -305,8 +305,8 @@ TEST(ScalePlacement, StandsFreeAcrossABayBetweenTwoContacts) {
     p.cull = Cull::Concave;
     p.scale.step.reset();
     const Scene s = buildScene(f, p);
-    ASSERT_TRUE(s.scale.has_value());
-    const SceneScale& sc = *s.scale;
+    ASSERT_TRUE(sceneScale(s));
+    const SceneScale& sc = *sceneScale(s);
     ASSERT_EQ(sc.fillers.size() + 1, sc.contacts.size());
     ASSERT_NE(std::find(sc.fillers.begin(), sc.fillers.end(), -1), sc.fillers.end());
     // Contacts on both sides of the bay (rows 4..9).
@@ -328,8 +328,8 @@ TEST(ScalePlacement, StandsFreeAcrossABayBetweenTwoContacts) {
     EXPECT_TRUE(own.closedManifold()) << own.describe();
     EXPECT_EQ(own.components, 1u);
     const Scene back = sceneFromJson(sceneToJson(s));
-    ASSERT_TRUE(back.scale.has_value());
-    EXPECT_EQ(back.scale->fillers, sc.fillers);
+    ASSERT_TRUE(sceneScale(back));
+    EXPECT_EQ(sceneScale(back)->fillers, sc.fillers);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gen/model/build_scene.h"
+#include "gen/model/features/scale.h"
 #include "gen/model/scene.h"
 #include "haptics/field_mapping.h"
 #include "haptics/force_model.h"
@@ -252,7 +253,7 @@ TEST(PrintedRelief, TheMarksTheLegendAndTheScaleAreFeltAsPrinted) {
     const Scene s = buildScene(fieldFromFunction(16, 26, [](int c, int r) { return c < 8 && r > 15 ? 10.0 : 2.0 + c % 3; }), p);
     ASSERT_TRUE(s.marks.triangle);
     ASSERT_TRUE(s.legend);
-    ASSERT_TRUE(s.scale);
+    ASSERT_TRUE(sceneScale(s));
     ReliefInfo info;
     const HeightGrid g = printedRelief(s, &info);
     const double side = info.sample_mm, max_mm = s.mapping.max_height_mm;
@@ -270,7 +271,7 @@ TEST(PrintedRelief, TheMarksTheLegendAndTheScaleAreFeltAsPrinted) {
     for (const LegendDot& d : s.legend->layout.dots)
         EXPECT_GT(feltAt(d.x_mm + s.legend->x0_mm, d.y_mm + s.legend->y0_mm), 0.5 * s.legend->layout.standard.dot_height_mm);
     // Each tread of the scale at its height above the floor.
-    const SceneScale& sc = *s.scale;
+    const SceneScale& sc = *sceneScale(s);
     for (const ScaleStep& st : sc.steps)
         EXPECT_NEAR(feltAt(0.5 * (sc.xs_mm + sc.x1_mm), 0.5 * (st.y_south_mm + st.y_north_mm)),
                     s.zMm(st.top_units - s.floor_units), 1e-4);

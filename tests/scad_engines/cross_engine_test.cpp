@@ -14,6 +14,7 @@
 #include "same_solid.h"
 #include "tests/support/fields.h"
 #include "gen/mesh/direct_mesher.h"
+#include "gen/model/features/scale.h"
 #include "gen/mesh/halves_mesh.h"
 #include "gen/mesh_io/stl_reader.h"
 #include "runners/openscad/engine_output_check.h"
@@ -272,12 +273,12 @@ TEST_P(CrossEngineScale, RendersTheSameSolidAsTheDirectMesher) {
         p.structural_texture = true;
     }
     const Scene scene = buildScene(field, p);
-    ASSERT_TRUE(scene.scale.has_value());
-    ASSERT_EQ(scene.scale->steps.size(), 5u);
-    EXPECT_GE(scene.scale->contacts.size(), 2u);  // and a filled notch between them
+    ASSERT_TRUE(sceneScale(scene));
+    ASSERT_EQ(sceneScale(scene)->steps.size(), 5u);
+    EXPECT_GE(sceneScale(scene)->contacts.size(), 2u);  // and a filled notch between them
     if (strategy_name == "polyhedron") {
         bool tilted_contact = false;
-        for (const int32_t k : scene.scale->contacts) tilted_contact = tilted_contact || isShaped(scene.shapes, size_t(k));
+        for (const int32_t k : sceneScale(scene)->contacts) tilted_contact = tilted_contact || isShaped(scene.shapes, size_t(k));
         EXPECT_TRUE(tilted_contact);
     }
     ScadOptions opts;

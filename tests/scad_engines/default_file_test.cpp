@@ -21,6 +21,7 @@
 #include "engine_fixtures.h"
 #include "same_solid.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/features/scale.h"
 #include "gen/readers/load_field.h"
 #include "gen/scad/scad_emitter.h"
 #include "tests/scad/scad_test_support.h"
@@ -108,7 +109,7 @@ TEST_P(DefaultScadFile, RendersCleanAndEqualToTheDirectMesh) {
     if (model_name == "true_aspect") EXPECT_EQ(scene.y_scale, kRowsAPitchApart);
     if (model_name == "volcano") {
         ASSERT_TRUE(scene.legend.has_value());
-        ASSERT_TRUE(scene.scale.has_value());
+        ASSERT_TRUE(sceneScale(scene));
     }
     const fs::path dir = test::scratchDir("default_" + model_name + "_" + engine_name + (tab_shown ? "_tab" : "_notab"));
     writeScad(scene, ScadOptions{}, (dir / "model.scad").string());

@@ -13,6 +13,7 @@
 #include "gen/mesh/direct_mesher.h"
 #include "gen/model/build_scene.h"
 #include "gen/model/features/legend_join.h"
+#include "gen/model/features/scale.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/files.h"
@@ -84,7 +85,7 @@ const AttachmentJoint* jointOf(const std::vector<AttachmentJoint>& joints, const
 TEST(AttachmentJoints, TheExtrasOfARegularGridHoldAHandsPush) {
     const Scene s = buildScene(test::fieldFromFunction(40, 30, [](int c, int r) { return 1.0 + (c * 7 + r * 3) % 11; }),
                                extrasParams());
-    ASSERT_TRUE(s.legend && s.scale && s.marks.tab);
+    ASSERT_TRUE(s.legend && sceneScale(s) && s.marks.tab);
     const std::vector<AttachmentJoint> joints = attachmentJoints(s, kHandPushN);
     ASSERT_EQ(joints.size(), 3u);
     for (const AttachmentJoint& j : joints) {
@@ -125,14 +126,14 @@ TEST(AttachmentJoints, TheScaleBesideASpurHolds) {
     SceneParams p = extrasParams();
     p.legend = LegendRequest{};
     const Scene s = buildScene(f, p);
-    ASSERT_TRUE(s.scale.has_value());
-    EXPECT_GE(s.scale->contacts.size(), 3u);
+    ASSERT_TRUE(sceneScale(s));
+    EXPECT_GE(sceneScale(s)->contacts.size(), 3u);
     const AttachmentJoint* scale = jointOf(attachmentJoints(s, kHandPushN), "scale");
     ASSERT_NE(scale, nullptr);
     EXPECT_LE(scale->stress_MPa, kPrintedPlaInterlayerMpa);
     // The same scale joined to one of its walls only would not hold.
-    const Vec3 a = s.point(hexCorner(s.grid, s.col[size_t(s.scale->contacts[0])], s.row[size_t(s.scale->contacts[0])], 0), 0);
-    const Vec3 b = s.point(hexCorner(s.grid, s.col[size_t(s.scale->contacts[0])], s.row[size_t(s.scale->contacts[0])], 1), 0);
+    const Vec3 a = s.point(hexCorner(s.grid, s.col[size_t(sceneScale(s)->contacts[0])], s.row[size_t(sceneScale(s)->contacts[0])], 0), 0);
+    const Vec3 b = s.point(hexCorner(s.grid, s.col[size_t(sceneScale(s)->contacts[0])], s.row[size_t(sceneScale(s)->contacts[0])], 1), 0);
     EXPECT_GT(jointStressMpa({{a, b, 0, s.zMm(s.floor_units)}}, scale->push_at_mm, kHandPushN), kPrintedPlaInterlayerMpa);
 }
 

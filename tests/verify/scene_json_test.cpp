@@ -10,6 +10,7 @@
 
 #include "gen/util/error.h"
 #include "gen/mesh/direct_mesher.h"
+#include "gen/model/features/scale.h"
 #include "gen/model/scene_json.h"
 #include "tests/support/fields.h"
 #include "tests/verify/verify_test_support.h"
@@ -106,7 +107,7 @@ Scene sceneWithAttachments() {
 TEST(SceneJson, TheLegendAndTheScaleAreRecordedAsPlacedAndReadWithoutPlacingThem) {
     const Scene s = sceneWithAttachments();
     ASSERT_TRUE(s.legend);
-    ASSERT_TRUE(s.scale);
+    ASSERT_TRUE(sceneScale(s));
     const nlohmann::json j = sceneToJson(s);
     EXPECT_EQ(j["version"], kSceneJsonVersion);
     EXPECT_EQ(j["legend"]["dots"].size(), s.legend->layout.dots.size());
@@ -141,8 +142,8 @@ TEST(SceneJson, AVersion4SidecarWithALegendIsRefusedSayingHowToRemakeIt) {
     // Without a legend a version 4 sidecar is read, its scale as recorded.
     j["legend"] = nullptr;
     const Scene s = sceneFromJson(j);
-    ASSERT_TRUE(s.scale);
-    EXPECT_EQ(s.scale->steps.size(), sceneWithAttachments().scale->steps.size());
+    ASSERT_TRUE(sceneScale(s));
+    EXPECT_EQ(sceneScale(s)->steps.size(), sceneScale(sceneWithAttachments())->steps.size());
 }
 
 TEST(SceneJson, ARecordedLegendOrScaleThatDoesNotFitIsAnInputError) {

@@ -102,6 +102,12 @@ std::optional<BoxMm> legendBoxMm(const Scene& s) {
     return BoxMm{l.x0_mm, l.plate_east_mm, l.plate_south_mm, l.plate_north_mm};
 }
 
+std::optional<FootprintClaim> legendClaim(const Scene& s) {
+    const std::optional<BoxMm> box = legendBoxMm(s);
+    if (!box) return std::nullopt;
+    return FootprintClaim{*box, "the braille legend's plate", "--title/--units (the plate north of the pillars)"};
+}
+
 std::optional<int64_t> legendTopAt(const Scene& s, double x, double y) {
     if (!s.legend) return std::nullopt;
     const SceneLegend& l = *s.legend;

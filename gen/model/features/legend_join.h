@@ -37,6 +37,10 @@ ProbeSet legendProbes(const Scene& scene);
 /// east, the plate's south to north; none without a legend.
 std::optional<BoxMm> legendBoxMm(const Scene& scene);
 
+/// The plate's box as the footprint it claims (gen/model/feature.h): what a
+/// feature placed after it keeps clear of; none without a legend.
+std::optional<FootprintClaim> legendClaim(const Scene& scene);
+
 /// z (units) of the legend plate's top at (x, y) mm, or none beside the plate.
 std::optional<int64_t> legendTopAt(const Scene& scene, double x_mm, double y_mm);
 

@@ -9,6 +9,7 @@
 
 #include "gen/util/error.h"
 #include "gen/field/hex_grid.h"
+#include "gen/model/feature.h"
 #include "gen/model/scene.h"
 #include "gen/model/features/foot_contacts.h"
 #include "gen/model/features/top_shapes.h"
@@ -133,6 +134,9 @@ void placeScale(Scene& s) {
                              formatSignificant(kScaleMinRiserMm) + " mm apart; give a larger --height, or leave out --scale");
         sc.step = *step;
     }
+    // What the features placed before it claim (the legend's plate): the
+    // staircase keeps kScaleClearanceMm clear of each.
+    const std::vector<FootprintClaim>& claims = s.claims;
     // Places the staircase for `step` along the east side; false (with
     // `blocked` saying what is in the way and `need_mm` the run it needs)
     // when no run there is long enough.
@@ -224,8 +228,10 @@ void placeScale(Scene& s) {
                     run.contacts.push_back(c.kept);
                 }
                 if (!clear || run.contacts.empty()) continue;
-                if (s.legend && yOf(j1) + kScaleLegendClearanceMm > s.legend->plate_south_mm) {
-                    if (i_col == i_east) blocked = "the braille legend's plate";
+                const double x0 = s.point(LatticePoint{i_col, j0}, 0).x;
+                if (const FootprintClaim* hit = firstClaimHit(
+                        claims, BoxMm{x0, x0 + kScaleGapMm + kScaleStepWidthMm, yOf(j0), yOf(j1)}, kScaleClearanceMm)) {
+                    if (i_col == i_east) blocked = hit->what;
                     continue;
                 }
                 if (!best || run.contacts.size() > best->contacts.size()) best = std::move(run);
@@ -256,7 +262,7 @@ void placeScale(Scene& s) {
             sc.step = step;
             sc.contacts = std::move(contacts);
             sc.fillers = std::move(fillers);
-            s.scale = std::move(sc);
+            s.features.set(std::move(sc));
             return true;
         }
         return false;
@@ -287,10 +293,13 @@ void placeScale(Scene& s) {
                           (first_blocked.empty() ? std::string("its shape") : first_blocked));
         return;
     }
-    s.scale.reset();
+    s.features.reset<SceneScale>();
     need_mm = first_need;
     n = first_n;
     blocked = first_blocked;
+    std::string leave_out;  // what to leave out when a claim cuts the run
+    for (const FootprintClaim& c : claims)
+        if (c.what == blocked) leave_out = c.leave_out + " or ";
     const std::string what = "--scale: the tactile scale needs " + formatSignificant(std::round(need_mm)) + " mm (" +
                              std::to_string(n) + " steps of " + formatSignificant(kScaleTreadMm) +
                              " mm) along the model's east side, and the run there is cut by " +
@@ -300,12 +309,12 @@ void placeScale(Scene& s) {
     // No step fits, down to two: a larger one cannot help.
     throw InputError(what + ", and so is the run for two steps (" + formatSignificant(2 * kScaleTreadMm) + " mm)" +
                      (sc.step_given ? ": no --scale-step fits" : "") + ". Leave out " +
-                     (blocked == "the braille legend's plate" ? "--title/--units (the plate north of the pillars) or " : "") + "--scale");
+                     leave_out + "--scale");
 }
 
 std::optional<int64_t> scaleTopAt(const Scene& s, double x, double y) {
-    if (!s.scale) return std::nullopt;
-    const SceneScale& sc = *s.scale;
+    if (!sceneScale(s)) return std::nullopt;
+    const SceneScale& sc = *sceneScale(s);
     if (x < sc.x0_mm || x > sc.x1_mm || y < sc.y0_mm || y > sc.y1_mm) return std::nullopt;
     if (x <= sc.xs_mm) return sc.foot_top_units;
     for (const ScaleStep& st : sc.steps)
@@ -320,7 +329,7 @@ namespace {
 // face (xs), 2 = the east face (x1); 1 and 2 at y0, each step boundary, y1.
 class ScaleBuilder {
 public:
-    ScaleBuilder(const Scene& s, bool joined) : s_(s), sc_(*s.scale), joined_(joined) {
+    ScaleBuilder(const Scene& s, bool joined) : s_(s), sc_(*sceneScale(s)), joined_(joined) {
         west_.push_back({sc_.y0_mm, -1});
         for (const int32_t k : sc_.contacts) {
             const size_t kk = size_t(k);
@@ -505,26 +514,26 @@ private:
 }  // namespace
 
 JoinedBody meshScaleBody(const Scene& s, bool joined) {
-    if (!s.scale || s.scale->steps.empty()) return {};
+    if (!sceneScale(s) || sceneScale(s)->steps.empty()) return {};
     return ScaleBuilder(s, joined).build();
 }
 
 std::optional<BoxMm> scaleBoxMm(const Scene& s) {
-    if (!s.scale) return std::nullopt;
-    return BoxMm{s.scale->x0_mm, s.scale->x1_mm, s.scale->y0_mm, s.scale->y1_mm};
+    if (!sceneScale(s)) return std::nullopt;
+    return BoxMm{sceneScale(s)->x0_mm, sceneScale(s)->x1_mm, sceneScale(s)->y0_mm, sceneScale(s)->y1_mm};
 }
 
 std::optional<Attachment> scaleAttachment(const Scene& s, Assembly assembly) {
-    if (!s.scale) return std::nullopt;
+    if (!sceneScale(s)) return std::nullopt;
     Attachment a;
     a.part = "scale";
     if (assembly == Assembly::Parts) {
         a.own_part = meshScaleBody(s, /*joined=*/false).mesh;  // touching the pillars' east walls
         return a;
     }
-    const std::vector<int32_t>& c = s.scale->contacts;
+    const std::vector<int32_t>& c = sceneScale(s)->contacts;
     const auto cover = [&](int32_t k, int e) { a.walls.push_back({k, e, 0, s.floor_units}); };
-    const std::vector<int32_t>& f = s.scale->fillers;  // -1: two contacts further apart than a notch
+    const std::vector<int32_t>& f = sceneScale(s)->fillers;  // -1: two contacts further apart than a notch
     for (size_t n = 0; n < c.size(); ++n) {
         cover(c[n], 0);
         if (n + 1 < c.size() && f[n] >= 0) cover(c[n], 1);
@@ -538,9 +547,9 @@ std::optional<Attachment> scaleAttachment(const Scene& s, Assembly assembly) {
 
 ProbeSet scaleProbes(const Scene& s) {
     ProbeSet set{"scale", "every step of the tactile scale at its value's height", {}};
-    if (!s.scale) return set;
+    if (!sceneScale(s)) return set;
     std::vector<SurfaceProbe>& out = set.probes;
-    const SceneScale& sc = *s.scale;
+    const SceneScale& sc = *sceneScale(s);
     out.push_back({"the scale's foot (the floor)", 0.5 * (sc.x0_mm + sc.xs_mm), 0.5 * (sc.y0_mm + sc.y1_mm),
                    false, s.zMm(sc.foot_top_units)});
     for (const ScaleStep& st : sc.steps)
@@ -552,12 +561,12 @@ ProbeSet scaleProbes(const Scene& s) {
 // The tactile scale as placeScale leaves it (gen/model/features/scale.h): what the mesher
 // relies on to join it without a boolean operation.
 void checkScale(const Scene& s) {
-    if (!s.scale) return;
+    if (!sceneScale(s)) return;
     const auto fail = [](const std::string& what) { throw InputError("scene: " + what); };
     const auto cellName = [&](size_t k) {
         return "cell (" + std::to_string(s.col[k]) + ", " + std::to_string(s.row[k]) + ")";
     };
-    const SceneScale& sc = *s.scale;
+    const SceneScale& sc = *sceneScale(s);
     if (s.params.bottom != Bottom::Flat) fail("scale: a tactile scale stands on a flat model only");
     if (sc.steps.empty()) fail("scale: no steps");
     if (sc.contacts.empty() || sc.fillers.size() + 1 != sc.contacts.size())
@@ -594,5 +603,6 @@ void checkScale(const Scene& s) {
             fail("scale: " + cellName(size_t(k)) + " does not touch the foot's west face");
 }
 
+const SceneScale* sceneScale(const Scene& s) { return s.features.get<SceneScale>(); }
 
 }  // namespace tsf

@@ -36,7 +36,7 @@
 // Limits (InputError, exit 2, saying what to change): a mirrored model (no
 // floor to stand on), a field without a range, a --scale-step whose levels
 // are too close or too many, or no run along the east side clear of the
-// braille legend and of cells without data.
+// braille legend (any footprint claimed before it) and of cells without data.
 #pragma once
 
 #include <cstdint>
@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "gen/geometry/mesh.h"
+#include "gen/model/feature.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_attachments.h"
 
@@ -67,8 +68,9 @@ inline constexpr double kScaleTreadMm = 6.4;
 inline constexpr double kScaleStepWidthMm = 12.7;
 /// Floor strip between the pillars and the steps, mm.
 inline constexpr double kScaleGapMm = 4.0;
-/// Clear space kept from the braille legend's plate, mm.
-inline constexpr double kScaleLegendClearanceMm = 2.0;
+/// Clear space kept from what other features claim (the braille legend's
+/// plate, gen/model/feature.h: FootprintClaim), mm.
+inline constexpr double kScaleClearanceMm = 2.0;
 /// How far west of the easternmost hexagon edge the foot may stand, in
 /// cells, on an outline whose east side offers no clear run there.
 inline constexpr int64_t kScaleMaxSetbackCells = 8;
@@ -91,9 +93,15 @@ std::vector<ScaleLevel> scaleLevels(const ValueMapping& mapping, double step, do
 std::optional<double> chooseScaleStep(const ValueMapping& mapping, double z_snap_mm);
 
 
-/// Places the scale params.scale asks for (none when it asks for nothing).
-/// Called by buildScene after the marks, the legend and the top shapes.
+/// Places the scale params.scale asks for (none when it asks for nothing),
+/// clear of every footprint claimed before it (gen/model/feature.h).
+/// Called by buildScene through the registry (FeaturePhase::Beside), after
+/// the marks, the legend, the tab and the top shapes.
 void placeScale(Scene& scene);
+
+/// The scale the Scene carries (its state in Scene::features); null without one.
+const SceneScale* sceneScale(const Scene& scene);
+
 
 /// z (units) of the scale's top at (x, y) mm, or none outside its footprint
 /// (or without a scale).

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "gen/model/features/scale.h"
 #include "gen/model/sidecar_fields.h"
 #include "gen/util/number_format.h"
 
@@ -71,8 +72,8 @@ SceneScale scaleFrom(const json& j, const std::string& sp, const Scene& s) {
 }  // namespace
 
 json scaleRecord(const Scene& s) {
-    if (!s.scale) return nullptr;
-    const SceneScale& sc = *s.scale;
+    if (!sceneScale(s)) return nullptr;
+    const SceneScale& sc = *sceneScale(s);
     json steps = json::array();
     for (const ScaleStep& st : sc.steps) steps.push_back({st.value, st.top_units, st.y_south_mm, st.y_north_mm});
     return {{"step", sc.step},         {"step_given", sc.step_given}, {"x0_i", sc.x0_i},
@@ -83,14 +84,14 @@ json scaleRecord(const Scene& s) {
 
 
 void readScaleRecord(const json& record, const std::string& path, int /*version*/, Scene& s) {
-    s.scale = scaleFrom(record, path, s);
+    const SceneScale& sc = s.features.set(scaleFrom(record, path, s));
     s.params.scale.wanted = true;
-    if (s.scale->step_given) s.params.scale.step = s.scale->step;
+    if (sc.step_given) s.params.scale.step = sc.step;
 }
 
 nlohmann::json scaleFactsJson(const Scene& s) {
-    if (!(s.scale)) return nullptr;
-    const SceneScale& sc = *s.scale;
+    if (!sceneScale(s)) return nullptr;
+    const SceneScale& sc = *sceneScale(s);
     nlohmann::json steps = nlohmann::json::array();
     for (const ScaleStep& st : sc.steps)
         steps.push_back({{"value", st.value}, {"top_mm", s.zMm(st.top_units)},
@@ -103,9 +104,9 @@ nlohmann::json scaleFactsJson(const Scene& s) {
 }
 
 std::string scaleFactsLines(const Scene& s) {
-    if (!(s.scale)) return "";
+    if (!sceneScale(s)) return "";
     std::ostringstream o;
-    const SceneScale& sc = *s.scale;
+    const SceneScale& sc = *sceneScale(s);
     std::ostringstream values;
     for (size_t k = 0; k < sc.steps.size(); ++k) values << (k ? ", " : "") << formatSignificant(sc.steps[k].value, 6);
     o << "  scale     " << sc.steps.size() << " steps every " << formatSignificant(sc.step, 6) << (sc.step_given ? "" : " (chosen)")
@@ -116,6 +117,17 @@ std::string scaleFactsLines(const Scene& s) {
       << formatFixed(s.zMm(sc.steps.empty() ? 0 : sc.steps.back().top_units - sc.foot_top_units), 2)
       << " mm above the floor\n";
     return o.str();
+}
+
+std::string scaleKeyParagraph(const Scene& s, const KeyNumbers& say) {
+    const SceneScale* sc = sceneScale(s);
+    if (!sc) return "";
+    std::string steps;
+    for (size_t k = 0; k < sc->steps.size(); ++k)
+        steps += (k == 0 ? "" : k + 1 == sc->steps.size() ? " and " : ", ") +
+                 (k + 1 == sc->steps.size() ? say.amount(sc->steps[k].value) : say.number(sc->steps[k].value));
+    return "A tactile scale stands east of the pillars: " + std::to_string(sc->steps.size()) +
+           " steps, the lowest in the south, at " + steps + ". Put a finger on a pillar and one on the steps to read its value.";
 }
 
 }  // namespace tsf

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gen/model/feature.h"
 #include "gen/model/scene.h"
 
 namespace tsf {
@@ -27,5 +28,9 @@ nlohmann::json scaleFactsJson(const Scene& scene);
 /// Its lines in the summary ("  label     text\n" each): its steps, treads and heights; ""
 /// without it.
 std::string scaleFactsLines(const Scene& scene);
+
+/// Its paragraph in the model's key (gen/key/model_key.h): its steps, lowest
+/// first, and how to read a value by them; "" without it.
+std::string scaleKeyParagraph(const Scene& scene, const KeyNumbers& numbers);
 
 }  // namespace tsf

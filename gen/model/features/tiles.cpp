@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/bottom_hole_ring.h"
 #include "gen/util/error.h"
 #include "gen/util/number_format.h"
@@ -382,7 +383,7 @@ bool fits(const TileLayout& L, double w, double d) {
 }  // namespace
 
 TileLayout planTiles(const Scene& s, const std::vector<BoxMm>& attached, double w, double d) {
-    if (s.params.bottom != Bottom::Flat || s.legend || s.scale || s.halves || s.textures || s.params.tilt != TiltSource::None)
+    if (s.params.bottom != Bottom::Flat || s.legend || !featuresSurviveTiles(s) || s.halves || s.textures || s.params.tilt != TiltSource::None)
         throw InputError("--tile cuts a flat model with level tops, without a legend or a scale (not yet with --mirror, "
                          "--tilt, class textures, --title, --units or --scale)");
     if (s.keptCount() == 0) throw InputError("--tile: the model has no cells");

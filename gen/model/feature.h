@@ -1,0 +1,106 @@
+// The feature contract: what a feature of a model (something it carries
+// besides the pillars: the tactile scale, ...) hands to the rest of tsf, so
+// that buildScene, the mesher, the parts, the read-backs, the sidecar, the
+// summary and the key draw and report it without naming it. Each feature
+// fills in one Feature, and features() (gen/model/feature_registry.h) is
+// the one registry of them.
+//
+// A feature
+//   - places itself in a phase of buildScene (FeaturePhase), reading the
+//     Scene as the features before it left it, and keeps its own state in
+//     Scene::features (gen/model/feature_state.h);
+//   - claims its footprint (FootprintClaim, kept in Scene::claims once it is
+//     placed): a feature placed later keeps clear of every claim without
+//     knowing whose it is;
+//   - hands in its solid in the vocabulary of gen/model/scene_attachments.h
+//     (an attachment, its x, y box, its top at a point, the probes of its
+//     read-back, the check of what the mesher relies on) and, before the
+//     Scene is built, the bed width it takes beside the pillars;
+//   - writes and reads its sidecar record and gives its facts for the
+//     summary (gen/model/feature_records.h);
+//   - says what the model's key tells a reader about it;
+//   - says whether it survives a cut into tiles.
+// Every entry may be null: the feature has nothing of that kind.
+//
+// Features not yet in the registry are still named by the lists in
+// gen/model/attachments.cpp, gen/model/feature_records.cpp,
+// gen/scad/scad_attachments.cpp and gen/key/model_key.cpp, which splice the
+// registry in where its features stood, so every output keeps its order.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "gen/model/scene.h"
+#include "gen/model/scene_attachments.h"
+
+namespace tsf {
+
+/// Where in buildScene a feature places itself.
+enum class FeaturePhase : uint8_t {
+    /// After the cells' tops are final (tilted, textured), the marks, the
+    /// legend and the orientation tab: a body beside the pillars that
+    /// stands against cells rising to the floor.
+    Beside,
+};
+
+/// The first claim that `box` grown by clearance_mm on every side
+/// overlaps; null when it is clear of them all.
+inline const FootprintClaim* firstClaimHit(const std::vector<FootprintClaim>& claims, const BoxMm& box,
+                                           double clearance_mm) {
+    for (const FootprintClaim& c : claims)
+        if (box.x0 - clearance_mm < c.box.x1 && box.x1 + clearance_mm > c.box.x0 && box.y0 - clearance_mm < c.box.y1 &&
+            box.y1 + clearance_mm > c.box.y0)
+            return &c;
+    return nullptr;
+}
+
+/// How the model's key (gen/key/model_key.h) writes numbers for a reader: a
+/// number alone, and a value with the model's units.
+struct KeyNumbers {
+    std::function<std::string(double)> number;
+    std::function<std::string(double)> amount;
+};
+
+struct Feature {
+    const char* name;  ///< its sidecar record's and facts' path, dotted ("scale")
+    FeaturePhase phase;
+    /// Places what SceneParams asks of it (nothing when nothing is asked).
+    /// Throws InputError saying what to change when it cannot stand.
+    void (*place)(Scene& scene);
+    /// The part of the model frame it takes; none without it.
+    std::optional<FootprintClaim> (*claim)(const Scene& scene);
+    /// Its body (gen/model/scene_attachments.h); none without it.
+    std::optional<Attachment> (*attachment)(const Scene& scene, Assembly assembly);
+    /// Its x, y box, mm; none without it.
+    std::optional<BoxMm> (*box)(const Scene& scene);
+    /// z (units) of its top at (x, y) mm; none outside its box or without it.
+    std::optional<int64_t> (*top_at)(const Scene& scene, double x_mm, double y_mm);
+    /// Its read-back; no probes without it.
+    ProbeSet (*probes)(const Scene& scene);
+    /// Checks what the mesher relies on to join it (InputError "scene: ...").
+    void (*check)(const Scene& scene);
+    /// The bed width it will take beside the pillars for these parameters.
+    std::optional<SideWidth> (*side_width)(const SceneParams& params);
+    /// Its sidecar record and its facts (FeatureRecord, FeatureFacts: the
+    /// path is `name`).
+    nlohmann::json (*record)(const Scene& scene);
+    void (*read_record)(const nlohmann::json& record, const std::string& path, int version, Scene& scene);
+    bool facts_listed_when_absent;
+    nlohmann::json (*facts_json)(const Scene& scene);
+    std::string (*facts_lines)(const Scene& scene);
+    /// Its paragraph in the model's key; "" without it.
+    std::string (*key_paragraph)(const Scene& scene, const KeyNumbers& numbers);
+    /// True when a reader can measure a pillar's value against it (the key
+    /// and the summary then say how many levels are felt apart by it).
+    bool (*measures)(const Scene& scene);
+    /// False when the model carries it and cannot be cut into tiles.
+    bool (*survives_tiles)(const Scene& scene);
+};
+
+}  // namespace tsf

@@ -1,0 +1,33 @@
+#include "gen/model/feature_registry.h"
+
+#include "gen/model/features/scale_feature.h"
+
+namespace tsf {
+
+const std::vector<const Feature*>& features() {
+    static const std::vector<const Feature*> registry = {&scaleFeature()};
+    return registry;
+}
+
+void placeFeatures(Scene& scene, FeaturePhase phase) {
+    for (const Feature* f : features()) {
+        if (f->phase != phase) continue;
+        if (f->place) f->place(scene);
+        if (f->claim)
+            if (std::optional<FootprintClaim> c = f->claim(scene)) scene.claims.push_back(std::move(*c));
+    }
+}
+
+bool sceneMeasures(const Scene& scene) {
+    for (const Feature* f : features())
+        if (f->measures && f->measures(scene)) return true;
+    return false;
+}
+
+bool featuresSurviveTiles(const Scene& scene) {
+    for (const Feature* f : features())
+        if (f->survives_tiles && !f->survives_tiles(scene)) return false;
+    return true;
+}
+
+}  // namespace tsf
