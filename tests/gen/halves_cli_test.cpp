@@ -11,22 +11,14 @@
 #include "tests/support/files.h"
 #include "tests/support/mesh_invariants.h"
 #include "tests/support/run.h"
+#include "tests/support/fields.h"
 
 namespace tsf {
 namespace {
 
-std::string hillCsv() {
-    std::string csv;
-    for (int r = 0; r < 10; ++r) {
-        for (int c = 0; c < 12; ++c) csv += (c ? "," : "") + std::to_string((c * 7 + r * 5) % 11);
-        csv += "\n";
-    }
-    return csv;
-}
-
 TEST(HalvesCli, WritesTwoSupportFreeHalvesAndThePins) {
     const auto dir = test::scratchDir();
-    test::writeText(dir / "f.csv", hillCsv());
+    test::writeText(dir / "f.csv", test::hillCsv());
     const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --mirror --halves --json -o " +
                                     (dir / "m.stl").string(), dir);
     ASSERT_EQ(r.exit_code, test::kExitOk) << r.out << r.err;
@@ -56,7 +48,7 @@ TEST(HalvesCli, WritesTwoSupportFreeHalvesAndThePins) {
 
 TEST(HalvesCli, OnePieceMirroredSaysItNeedsSupports) {
     const auto dir = test::scratchDir();
-    test::writeText(dir / "f.csv", hillCsv());
+    test::writeText(dir / "f.csv", test::hillCsv());
     const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --mirror -o " + (dir / "m.stl").string(), dir);
     ASSERT_EQ(r.exit_code, test::kExitOk) << r.err;
     EXPECT_NE(r.out.find("supports  needed"), std::string::npos) << r.out;
@@ -68,7 +60,7 @@ TEST(HalvesCli, OnePieceMirroredSaysItNeedsSupports) {
 
 TEST(HalvesCli, RefusedWithoutMirror) {
     const auto dir = test::scratchDir();
-    test::writeText(dir / "f.csv", hillCsv());
+    test::writeText(dir / "f.csv", test::hillCsv());
     const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --halves -o " + (dir / "m.stl").string(), dir);
     EXPECT_EQ(r.exit_code, test::kExitBadInput);
     EXPECT_NE(r.err.find("--mirror"), std::string::npos) << r.err;

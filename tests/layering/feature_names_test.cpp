@@ -6,6 +6,8 @@
 // are not names: a message may say "--scale", a comment may point to a file.
 #include <gtest/gtest.h>
 
+#include "tests/layering/source_files.h"
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -95,28 +97,23 @@ TEST(FeatureNames, CodeOnlyDropsCommentsAndLiterals) {
 TEST(FeatureNames, AFeatureOfTheRegistryIsNamedOnlyInItsOwnFilesTheRegistryAndTheCommandLine) {
     const fs::path root(TSF_SOURCE_DIR);
     size_t files = 0;
-    for (const char* top : {"gen", "verify", "runners", "pipeline", "haptics", "app"})
-        for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
-            const std::string ext = entry.path().extension().string();
-            if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
-            const std::string rel = fs::relative(entry.path(), root).string();
-            if (rel.find("node_modules") != std::string::npos) continue;
-            ++files;
-            std::ifstream in(entry.path());
-            std::stringstream text;
-            text << in.rdbuf();
-            // Includes are names too: keep the include lines' paths.
-            std::string code = codeOnly(text.str());
-            std::istringstream lines(text.str());
-            for (std::string line; std::getline(lines, line);)
-                if (line.rfind("#include", 0) == 0) code += "\n" + line;
-            for (const MigratedFeature& f : migrated()) {
-                if (f.allowed.count(rel)) continue;
-                std::smatch m;
-                EXPECT_FALSE(std::regex_search(code, m, f.names))
-                    << rel << " names the " << f.name << " (" << m.str() << ") outside its own files and the registry";
-            }
+    for (const std::string& rel : test::sourceFiles(root, test::kProjectTops)) {
+        ++files;
+        std::ifstream in(root / rel);
+        std::stringstream text;
+        text << in.rdbuf();
+        // Includes are names too: keep the include lines' paths.
+        std::string code = codeOnly(text.str());
+        std::istringstream lines(text.str());
+        for (std::string line; std::getline(lines, line);)
+            if (line.rfind("#include", 0) == 0) code += "\n" + line;
+        for (const MigratedFeature& f : migrated()) {
+            if (f.allowed.count(rel)) continue;
+            std::smatch m;
+            EXPECT_FALSE(std::regex_search(code, m, f.names))
+                << rel << " names the " << f.name << " (" << m.str() << ") outside its own files and the registry";
         }
+    }
     EXPECT_GT(files, 300u) << "the source tree was not found at " << TSF_SOURCE_DIR;
 }
 

@@ -18,6 +18,8 @@
 //   app       app/: main, exit codes, every subcommand
 #include <gtest/gtest.h>
 
+#include "tests/layering/source_files.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <functional>
@@ -109,20 +111,14 @@ std::vector<Include> includes() {
     const fs::path root(TSF_SOURCE_DIR);
     const std::regex directive(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
     std::vector<Include> out;
-    for (const char* top : {"gen", "verify", "runners", "pipeline", "haptics", "app", "tests", "bench"}) {
-        for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
-            const std::string rel = fs::relative(entry.path(), root).string();
-            if (rel.find("node_modules") != std::string::npos) continue;
-            const std::string ext = entry.path().extension().string();
-            if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
-            std::ifstream in(entry.path());
-            std::string text;
-            int line = 0;
-            while (std::getline(in, text)) {
-                ++line;
-                std::smatch m;
-                if (std::regex_search(text, m, directive)) out.push_back({rel, line, m[2].str(), m[1].str() == "<"});
-            }
+    for (const std::string& rel : test::sourceFiles(root, {"gen", "verify", "runners", "pipeline", "haptics", "app", "tests", "bench"})) {
+        std::ifstream in(root / rel);
+        std::string text;
+        int line = 0;
+        while (std::getline(in, text)) {
+            ++line;
+            std::smatch m;
+            if (std::regex_search(text, m, directive)) out.push_back({rel, line, m[2].str(), m[1].str() == "<"});
         }
     }
     return out;
@@ -230,14 +226,8 @@ TEST(Layering, NoFolderHoldsMoreThan24Modules) {
     // the flow; split it into subfolders that do.
     const fs::path root(TSF_SOURCE_DIR);
     std::map<std::string, std::set<std::string>> per_folder;
-    for (const char* top : {"gen", "verify", "runners", "pipeline", "haptics", "app"})
-        for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
-            const std::string ext = entry.path().extension().string();
-            if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
-            const std::string rel = fs::relative(entry.path(), root).string();
-            if (rel.find("node_modules") != std::string::npos) continue;
-            per_folder[fs::path(rel).parent_path().string()].insert(moduleOf(rel));
-        }
+    for (const std::string& rel : test::sourceFiles(root, test::kProjectTops))
+        per_folder[fs::path(rel).parent_path().string()].insert(moduleOf(rel));
     ASSERT_GT(per_folder.size(), 10u);
     for (const auto& [folder, mods] : per_folder) EXPECT_LE(mods.size(), 24u) << folder;
 }

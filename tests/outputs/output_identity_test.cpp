@@ -27,22 +27,12 @@
 #include "gen/util/file_stamp.h"
 #include "tests/support/files.h"
 #include "tests/support/run.h"
+#include "tests/support/fields.h"
 
 namespace tsf {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A gentle hill with a ridge, 12 columns x 10 rows (the value pattern of
-/// tests/gen/halves_cli_test.cpp, widened so a tab, a legend and a scale all fit).
-std::string hillCsv() {
-    std::string csv;
-    for (int r = 0; r < 10; ++r) {
-        for (int c = 0; c < 12; ++c) csv += (c ? "," : "") + std::to_string((c * 7 + r * 5) % 11);
-        csv += "\n";
-    }
-    return csv;
-}
 
 /// Three classes of land cover as an ESRI grid of codes (categorical input).
 std::string coverAsc() {
@@ -106,7 +96,7 @@ std::vector<std::string> runCase(const Case& c, const fs::path& inputs, const fs
 std::vector<std::string> runAll(const fs::path& root) {
     const fs::path inputs = root / "inputs", out = root / "out";
     fs::create_directories(inputs);
-    test::writeText(inputs / "hill.csv", hillCsv());
+    test::writeText(inputs / "hill.csv", test::hillCsv());
     test::writeText(inputs / "cover.asc", coverAsc());
     std::vector<std::string> all;
     for (const Case& c : kCases) {
@@ -164,7 +154,7 @@ TEST(OutputIdentity, SameBytesInAnotherFolder) {
     const fs::path inputs_a = root / "a" / "inputs", inputs_b = root / "another-folder" / "in";
     for (const auto& in : {inputs_a, inputs_b}) {
         fs::create_directories(in);
-        test::writeText(in / "hill.csv", hillCsv());
+        test::writeText(in / "hill.csv", test::hillCsv());
     }
     const Case c = kCases[2];  // the scale: model, .scad, sidecar and key
     const auto a = runCase(c, inputs_a, root / "a" / "out");

@@ -4,12 +4,24 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "gen/field/hex_field.h"
 #include "gen/model/scene.h"
 
 namespace tsf::test {
+
+/// A gentle hill with a ridge as a grid CSV, 12 columns by 10 rows of
+/// values 0 to 10: room for a tab, a legend and a scale at 6 mm cells.
+inline std::string hillCsv() {
+    std::string csv;
+    for (int r = 0; r < 10; ++r) {
+        for (int c = 0; c < 12; ++c) csv += (c ? "," : "") + std::to_string((c * 7 + r * 5) % 11);
+        csv += "\n";
+    }
+    return csv;
+}
 
 /// Rows are listed north to south, as in a file; NaN = no data.
 inline HexField fieldFromRows(const std::vector<std::vector<double>>& rows) {
