@@ -21,4 +21,14 @@ void appendImpl(std::string& out, T value) {
 void appendShortest(std::string& out, float value) { appendImpl(out, value); }
 void appendShortest(std::string& out, double value) { appendImpl(out, value); }
 
+void appendPoint(std::string& out, double x, double y, double z) {
+    out += "[";
+    appendShortest(out, x);
+    out += ", ";
+    appendShortest(out, y);
+    out += ", ";
+    appendShortest(out, z);
+    out += "]";
+}
+
 }  // namespace tsf::mesh_io

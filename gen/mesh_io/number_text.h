@@ -14,5 +14,8 @@ namespace tsf::mesh_io {
 void appendShortest(std::string& out, float value);
 /// Appends the shortest text that parses back to exactly value (double).
 void appendShortest(std::string& out, double value);
+/// Appends "[x, y, z]", each coordinate the shortest text of its double
+/// (the point lists of the OpenSCAD files).
+void appendPoint(std::string& out, double x, double y, double z);
 
 }  // namespace tsf::mesh_io

@@ -62,13 +62,7 @@ std::string scadJoinedData(const Scene& s, const Attachment& a, const std::strin
     o += ",\n" + indent + "// points [x, y, z] (mm)\n" + indent;
     appendRows(o, own.size(), 4, indent + "  ", [&](size_t k) {
         const Vec3& p = body.positions[own[k]];
-        o += "[";
-        mesh_io::appendShortest(o, p.x);
-        o += ", ";
-        mesh_io::appendShortest(o, p.y);
-        o += ", ";
-        mesh_io::appendShortest(o, p.z);
-        o += "]";
+        mesh_io::appendPoint(o, p.x, p.y, p.z);
     });
     o += ",\n" + indent + "// corners [i, j, z] (lattice units, z steps)\n" + indent;
     appendRows(o, corners.size(), 6, indent + "  ", [&](size_t k) {

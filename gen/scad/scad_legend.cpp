@@ -28,13 +28,9 @@ void emitLegendData(std::string& o, const Scene& s, const Attachment* joined) {
     o += "\nlegend_plate = [[\n";
     for (size_t k = 0; k < plate.positions.size(); ++k) {
         const Vec3& p = plate.positions[k];
-        o += "  [";
-        mesh_io::appendShortest(o, p.x);
-        o += ", ";
-        mesh_io::appendShortest(o, p.y);
-        o += ", ";
-        mesh_io::appendShortest(o, p.z);
-        o += k + 1 < plate.positions.size() ? "],\n" : "]\n";
+        o += "  ";
+        mesh_io::appendPoint(o, p.x, p.y, p.z);
+        o += k + 1 < plate.positions.size() ? ",\n" : "\n";
     }
     o += "], [\n";
     for (size_t k = 0; k < plate.triangles.size(); ++k) {
