@@ -8,6 +8,7 @@
 
 #include "gen/field/hex_grid.h"
 #include "gen/model/attachments.h"
+#include "gen/model/joint_walls.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
@@ -31,15 +32,7 @@ std::vector<AttachmentJoint> attachmentJoints(const Scene& s, double push_N) {
         AttachmentJoint j;
         j.part = a.part;
         std::vector<JointWall> walls;
-        for (const WallContact& w : a.walls) {
-            // Both sides hold the span: the pillar's wall between its two corners, the attachment's band.
-            const size_t k = size_t(w.kept);
-            const int e0 = w.edge, e1 = (w.edge + 1) % kHexCorners;
-            const int64_t lo = std::max({w.bottom_units, cornerBottom(s, k, e0), cornerBottom(s, k, e1)});
-            const int64_t hi = std::min({w.top_units, cornerTop(s, k, e0), cornerTop(s, k, e1)});
-            walls.push_back({s.point(hexCorner(s.grid, s.col[k], s.row[k], e0), 0),
-                             s.point(hexCorner(s.grid, s.col[k], s.row[k], e1), 0), s.zMm(lo), s.zMm(hi)});
-        }
+        for (const WallContact& w : a.walls) walls.push_back(jointWall(s, w));
         for (const RingContact& w : a.ring_walls)
             walls.push_back({s.planarPoint(w.from, 0), s.planarPoint(w.to, 0), s.zMm(w.bottom_units), s.zMm(w.top_units)});
         const JointLoad load = jointLoad(walls, meshBounds(a.joined.mesh), push_N);

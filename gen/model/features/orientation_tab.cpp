@@ -12,6 +12,7 @@
 #include "gen/geometry/polygon_triangulation.h"
 #include "gen/model/features/foot_contacts.h"
 #include "gen/model/features/top_shapes.h"
+#include "gen/model/joint_walls.h"
 #include "gen/util/error.h"
 #include "gen/util/number_format.h"
 
@@ -192,14 +193,7 @@ OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y
 // each wall it covers over the band both hold.
 double tabJointStressMpa(const Scene& s, const OrientationTab& t) {
     std::vector<JointWall> walls;
-    for (const auto& [k, e] : t.touched) {
-        const size_t kk = size_t(k);
-        const int e1 = (e + 1) % kHexCorners;
-        const int64_t lo = std::max({t.bottom_units, cornerBottom(s, kk, e), cornerBottom(s, kk, e1)});
-        const int64_t hi = std::min({t.top_units, cornerTop(s, kk, e), cornerTop(s, kk, e1)});
-        walls.push_back({s.point(hexCorner(s.grid, s.col[kk], s.row[kk], e), 0),
-                         s.point(hexCorner(s.grid, s.col[kk], s.row[kk], e1), 0), s.zMm(lo), s.zMm(hi)});
-    }
+    for (const auto& [k, e] : t.touched) walls.push_back(jointWall(s, {k, e, t.bottom_units, t.top_units}));
     const int64_t raise = t.has_triangle ? t.triangle_raise_units : 0;
     const Bounds box{{t.x_west_mm, t.y_south_mm, s.zMm(t.bottom_units - (t.under_triangle ? raise : 0))},
                      {t.x_east_mm, t.y_north_mm, s.zMm(t.top_units + raise)}};
