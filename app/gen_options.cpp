@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "gen/model/scene_scale.h"
 #include "gen/util/error.h"
 
 namespace tsf::cli {
@@ -262,12 +263,12 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                     "liblouis table for the legend and the key's braille (Unified English Braille, uncontracted, by default; en-ueb-g2.ctb contracted, en-us-g1.ctb the older US code EBAE, de-g0.utb, ...)")
         ->capture_default_str()->group(legend);
     auto* scale = "Tactile scale (docs/model.md)";
-    cmd->add_flag("--scale", p.scale.wanted,
+    cmd->add_flag_callback("--scale", [&p] { if (!p.requests.get<ScaleRequest>()) p.requests.set(ScaleRequest{}); },
                   "A staircase east of the pillars, on the floor: each tread at the height of a round value "
                   "(every --scale-step from the baseline), to measure a pillar in value units")
         ->group(scale);
     cmd->add_option_function<double>(
-           "--scale-step", [&p](double v) { p.scale.step = v; p.scale.wanted = true; },
+           "--scale-step", [&p](double v) { p.requests.set(ScaleRequest{v}); },
            "Values between the scale's treads (implies --scale; default: the smallest 1, 2 or 5 x 10^k whose "
            "treads are at least 1 mm apart, at most 10 steps)")
         ->check(CLI::PositiveNumber)->group(scale);

@@ -19,7 +19,12 @@
 //   - writes and reads its sidecar record and gives its facts for the
 //     summary (gen/model/feature_records.h);
 //   - says what the model's key tells a reader about it;
+//   - hands in its piece of the generated OpenSCAD file (ScadPiece) as text,
+//     which gen/scad/scad_attachments.h joins into the terrain polyhedron
+//     or draws with the feature's own scad_lib/ module;
 //   - says whether it survives a cut into tiles.
+// What the user asks of a feature is held in SceneParams::requests by the
+// feature's own request type, set by the command line.
 // Every entry may be null: the feature has nothing of that kind.
 //
 // Features not yet in the registry are still named by the lists in
@@ -60,6 +65,28 @@ inline const FootprintClaim* firstClaimHit(const std::vector<FootprintClaim>& cl
     return nullptr;
 }
 
+/// A feature's piece of a generated OpenSCAD file, as text, so the emitter
+/// (gen/scad/scad_attachments.h) writes it without knowing the feature.
+/// The file then holds `header`, then the sentence's end and either
+///   - the attachment joined into the terrain's one polyhedron (the
+///     polyhedron strategy, when scad_lib/tsf_joined.scad can join it):
+///     `variable = <walls, points, corners, triangles>;` and an assert that
+///     the cell, snap and mirror are the ones it was placed for; or
+///   - `variable = value;` for `module_call`, its own scad_lib/ module
+///     (library_file), which wraps the terrain: a union.
+struct ScadPiece {
+    /// Its customizer section with the switch that shows it and the
+    /// [Hidden] comment before its data, whose last sentence the emitter
+    /// ends.
+    std::string header;
+    std::string show_switch;   ///< "show_scale": on as generated, off in the other parameter sets
+    std::string variable;      ///< "tactile_scale"
+    std::string what;          ///< for a person, in the joined file's assert: "the tactile scale"
+    std::string value;         ///< the variable for its own module: "[[...], ...]"
+    std::string library_file;  ///< "tsf_scale.scad"
+    std::string module_call;   ///< "tsf_with_scale(tactile_scale, show_scale) "
+};
+
 /// How the model's key (gen/key/model_key.h) writes numbers for a reader: a
 /// number alone, and a value with the model's units.
 struct KeyNumbers {
@@ -91,11 +118,15 @@ struct Feature {
     /// path is `name`).
     nlohmann::json (*record)(const Scene& scene);
     void (*read_record)(const nlohmann::json& record, const std::string& path, int version, Scene& scene);
+    /// Listed as null in the sidecar and the facts when the Scene has none
+    /// (the features that always were); else left out then.
     bool facts_listed_when_absent;
     nlohmann::json (*facts_json)(const Scene& scene);
     std::string (*facts_lines)(const Scene& scene);
     /// Its paragraph in the model's key; "" without it.
     std::string (*key_paragraph)(const Scene& scene, const KeyNumbers& numbers);
+    /// Its piece of the generated OpenSCAD file; none without it.
+    std::optional<ScadPiece> (*scad_piece)(const Scene& scene);
     /// True when a reader can measure a pillar's value against it (the key
     /// and the summary then say how many levels are felt apart by it).
     bool (*measures)(const Scene& scene);

@@ -13,7 +13,7 @@ const std::vector<FeatureRecord>& featureRecords() {
     static const std::vector<FeatureRecord> records = [] {
         std::vector<FeatureRecord> r = {{"marks.tab", tabRecord, readTabRecord}, {"legend", legendRecord, readLegendRecord}};
         for (const Feature* f : features())
-            if (f->record) r.push_back({f->name, f->record, f->read_record});
+            if (f->record) r.push_back({f->name, f->record, f->read_record, f->facts_listed_when_absent});
         r.push_back({"class_textures", classTexturesRecord, readClassTexturesRecord});
         return r;
     }();

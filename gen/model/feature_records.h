@@ -27,6 +27,9 @@ struct FeatureRecord {
     /// are read, in the order of featureRecords(); `version` is the
     /// sidecar's. Throws InputError naming the member's path.
     void (*read)(const nlohmann::json& record, const std::string& path, int version, Scene& scene);
+    /// Written as null when the Scene has none (the features that were
+    /// always in the sidecar); else left out then.
+    bool listed_when_absent = true;
 };
 
 /// What a feature says of itself in tsf gen's summary and `tsf info`

@@ -1,4 +1,5 @@
-// FeatureStates: what each feature placed on a Scene, held by type, so the
+// FeatureStates: what each feature placed on a Scene (Scene::features), or
+// was asked for (SceneParams::requests), held by type, so the
 // Scene names no feature (gen/model/feature.h). A feature keeps its own
 // data-only record type (the scale's SceneScale, gen/model/scene_scale.h)
 // and reads and writes it here; nobody else needs to know it exists.

@@ -34,7 +34,6 @@
 #include "gen/model/scene_attachments.h"
 #include "gen/model/scene_halves.h"
 #include "gen/model/scene_marks.h"
-#include "gen/model/scene_scale.h"
 #include "gen/model/scene_textures.h"
 #include "gen/model/scene_tiles.h"
 #include "gen/model/scene_top_shapes.h"
@@ -131,8 +130,10 @@ struct SceneParams {
     ClassTextureRequest class_textures;
     // --- braille legend (gen/model/features/legend_scene.h) ---
     LegendRequest legend;
-    // --- tactile scale (gen/model/features/scale.h) ---
-    ScaleRequest scale;
+    // --- what the features of the registry are asked for (gen/model/feature.h) ---
+    /// Each feature's request, by its own type, set by the command line; a
+    /// feature asked for nothing has none here.
+    FeatureStates requests;
     // --- support-free halves (gen/model/features/halves.h); mirrored only ---
     bool halves = false;           ///< cut the mirrored model into two halves that print without supports
     /// Halves: the slab every pillar crosses is grown to at least this many

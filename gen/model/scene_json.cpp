@@ -280,9 +280,11 @@ json sceneHeadJson(const Scene& s) {
     // The features' own records (gen/model/feature_records.h), null when
     // the Scene has none.
     for (const FeatureRecord& r : featureRecords()) {
+        json record = r.write(s);
+        if (record.is_null() && !r.listed_when_absent) continue;
         json* at = &head;
         for (const std::string& key : recordPath(r)) at = &(*at)[key];
-        *at = r.write(s);
+        *at = std::move(record);
     }
     return head;
 }

@@ -8,9 +8,9 @@
 
 namespace tsf {
 
-/// What the user asks for (tsf gen --scale, --scale-step).
+/// What the user asks for (tsf gen --scale, --scale-step), in
+/// SceneParams::requests: none there, no scale.
 struct ScaleRequest {
-    bool wanted = false;
     std::optional<double> step;  ///< data units; none = chosen by chooseScaleStep
 };
 

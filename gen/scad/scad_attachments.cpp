@@ -1,16 +1,51 @@
 #include "gen/scad/scad_attachments.h"
 
+#include "gen/model/feature_registry.h"
 #include "gen/scad/scad_halves.h"
+#include "gen/scad/scad_joined.h"
 #include "gen/scad/scad_legend.h"
-#include "gen/scad/scad_scale.h"
 #include "gen/scad/scad_tab.h"
 
 namespace tsf {
+namespace {
+
+// A registry feature's piece (gen/model/feature.h: ScadPiece) as the file
+// carries it: joined into the terrain polyhedron when it can be, else for
+// the feature's own module.
+std::optional<ScadAttachment> scadPiece(const Scene& s, const Feature& f, bool join) {
+    if (!f.scad_piece) return std::nullopt;
+    std::optional<ScadPiece> piece = f.scad_piece(s);
+    if (!piece) return std::nullopt;
+    ScadAttachment a;
+    a.placed_switch = piece->show_switch;
+    const std::optional<Attachment> joined =
+        join && f.attachment ? f.attachment(s, Assembly::OnePiece) : std::nullopt;
+    a.data = std::move(piece->header) + ".\n";
+    if (joined && scadCanJoin(s, *joined)) {
+        a.library_file = "tsf_joined.scad";
+        a.data += "// The walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n" +
+                  piece->variable + " = " + scadJoinedData(s, *joined) + ";\n" +
+                  scadJoinedAssert(s, piece->show_switch, piece->what);
+        a.joined = piece->show_switch + " ? " + piece->variable + " : []";
+        return a;
+    }
+    a.library_file = std::move(piece->library_file);
+    a.data += piece->variable + " = " + piece->value + ";\n\n";
+    a.call_prefix = std::move(piece->module_call);
+    return a;
+}
+
+}  // namespace
 
 std::vector<ScadAttachment> scadAttachments(const Scene& scene, bool join) {
+    // The features of the registry stand where the scale, its first, stood
+    // before the registry: after the legend, before the tab.
+    std::vector<std::optional<ScadAttachment>> pieces{scadLegend(scene, join)};
+    for (const Feature* f : features()) pieces.push_back(scadPiece(scene, *f, join));
+    pieces.push_back(scadTab(scene, join));
+    pieces.push_back(scadHalves(scene));
     std::vector<ScadAttachment> out;
-    for (std::optional<ScadAttachment> a :
-         {scadLegend(scene, join), scadScale(scene, join), scadTab(scene, join), scadHalves(scene)})
+    for (std::optional<ScadAttachment>& a : pieces)
         if (a) out.push_back(std::move(*a));
     return out;
 }

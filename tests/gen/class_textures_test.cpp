@@ -11,6 +11,7 @@
 
 #include "gen/mesh/direct_mesher.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/scene_scale.h"
 #include "gen/model/features/class_textures.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene_json.h"
@@ -193,7 +194,7 @@ TEST(ClassTextures, WhatCannotBeCombinedWithTexturesIsRefused) {
     SceneParams halves = test::smallParams(Bottom::Mirrored);
     halves.halves = true;
     SceneParams scale = test::smallParams();
-    scale.scale.wanted = true;
+    scale.requests.set(ScaleRequest{});
     for (const SceneParams& p : {tilt, halves, scale}) {
         try {
             buildScene(threeClasses(), p);

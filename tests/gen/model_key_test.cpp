@@ -13,6 +13,7 @@
 #include "gen/key/braille_ready_file.h"
 #include "gen/key/model_key.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/scene_scale.h"
 #include "gen/model/features/braille.h"
 #include "tests/support/fields.h"
 #include "tests/support/files.h"
@@ -153,8 +154,7 @@ TEST(ModelKey, SaysWhatAReaderNeedsFromTheScene) {
     p.pitch_mm = 6.0;
     p.legend.title = "Rain";
     p.legend.units = "mm";
-    p.scale.wanted = true;
-    p.scale.step = 1.0;
+    p.requests.set(ScaleRequest{1.0});
     const Scene s = buildScene(f, p);
     ModelKeyFacts facts{"rain.csv", "one value per hexagon", "9.9"};
     const std::vector<std::string> key = modelKeyParagraphs(s, facts);

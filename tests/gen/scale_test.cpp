@@ -86,8 +86,7 @@ SceneParams scaleParams() {
     SceneParams p = test::smallParams();
     p.max_height_mm = 12.0;
     p.z_snap_mm = 0.01;
-    p.scale.wanted = true;
-    p.scale.step = 1.0;
+    p.requests.set(ScaleRequest{1.0});
     return p;
 }
 
@@ -229,7 +228,7 @@ TEST(ScalePlacement, RefusedOnAMirroredModelAFlatFieldAndTooFineASteps) {
     EXPECT_NE(std::string(test::catchInputError([&] { buildScene(flat, p); }).what()).find("nothing to measure"),
               std::string::npos);
     p = scaleParams();
-    p.scale.step = 0.1;  // 0.24 mm apart
+    p.requests.set(ScaleRequest{0.1});  // 0.24 mm apart
     const InputError e = test::catchInputError([&] { buildScene(terrain(), p); });
     EXPECT_NE(std::string(e.what()).find("--scale-step 0.5"), std::string::npos) << e.what();
 }
@@ -303,7 +302,7 @@ TEST(ScalePlacement, StandsFreeAcrossABayBetweenTwoContacts) {
     });
     SceneParams p = scaleParams();
     p.cull = Cull::Concave;
-    p.scale.step.reset();
+    p.requests.set(ScaleRequest{});
     const Scene s = buildScene(f, p);
     ASSERT_TRUE(sceneScale(s));
     const SceneScale& sc = *sceneScale(s);

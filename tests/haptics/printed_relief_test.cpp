@@ -247,7 +247,7 @@ TEST(PrintedRelief, TheMarksTheLegendAndTheScaleAreFeltAsPrinted) {
     SceneParams p = tsf::test::smallParams(Bottom::Flat, Cull::None);
     p.pitch_mm = 4.0;
     p.legend.title = "Hi";
-    p.scale.wanted = true;
+    p.requests.set(ScaleRequest{});
     p.marks = MarkParams{};
     p.marks.place = MarkPlace::Data;  // the marks on the pillars, where the relief is felt
     const Scene s = buildScene(fieldFromFunction(16, 26, [](int c, int r) { return c < 8 && r > 15 ? 10.0 : 2.0 + c % 3; }), p);

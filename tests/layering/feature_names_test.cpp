@@ -36,24 +36,17 @@ const std::vector<MigratedFeature>& migrated() {
         {"scale",
          std::regex(R"(\b(SceneScale|ScaleStep|ScaleRequest|scaleLevels|chooseScaleStep|placeScale|sceneScale|scaleTopAt|)"
                     R"(meshScaleBody|scaleBoxMm|scaleAttachment|checkScale|scaleProbes|scaleRecord|readScaleRecord|)"
-                    R"(scaleFactsJson|scaleFactsLines|scaleKeyParagraph|scaleFeature|scadScale|kScale\w+)\b|)"
-                    R"(features/scale(_record|_feature)?\.h|scene_scale\.h|scad_scale\.h|\b(params|p)\.scale\b)"),
+                    R"(scaleFactsJson|scaleFactsLines|scaleKeyParagraph|scaleFeature|scaleScadPiece|kScale\w+)\b|)"
+                    R"(features/scale(_record|_feature)?\.h|scene_scale\.h|\b(params|p)\.scale\b)"),
          {
              // Its own files.
              "gen/model/features/scale.h", "gen/model/features/scale.cpp", "gen/model/features/scale_record.h",
              "gen/model/features/scale_record.cpp", "gen/model/features/scale_feature.h",
-             "gen/model/features/scale_feature.cpp", "gen/model/scene_scale.h", "gen/scad/scad_scale.h",
-             "gen/scad/scad_scale.cpp",
+             "gen/model/features/scale_feature.cpp", "gen/model/features/scale_scad.cpp", "gen/model/scene_scale.h",
              // The registry.
              "gen/model/feature_registry.cpp",
              // The command line: --scale and --scale-step fill in its request.
              "app/gen_options.cpp",
-             // Not yet through the contract: SceneParams holds its request
-             // (ScaleRequest) as it holds every feature's; the OpenSCAD
-             // emitter's list of pieces (gen/scad is above the registry);
-             // a class map refuses --scale by its request before the Scene
-             // is built.
-             "gen/model/scene.h", "gen/scad/scad_attachments.cpp", "gen/model/features/class_textures.cpp",
          }},
     };
     return list;

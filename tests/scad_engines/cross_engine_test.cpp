@@ -263,8 +263,7 @@ TEST_P(CrossEngineScale, RendersTheSameSolidAsTheDirectMesher) {
     const auto& [engine_name, strategy_name] = GetParam();
     TSF_NEED_ENGINE(engineNamed(engine_name));
     SceneParams p = test::terrainParams(Bottom::Flat);
-    p.scale.wanted = true;
-    p.scale.step = 1.0;
+    p.requests.set(ScaleRequest{1.0});
     HexField field = test::smallTerrain();
     if (strategy_name == "polyhedron") {
         field = test::asBinnedPoints(field);

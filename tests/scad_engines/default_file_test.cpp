@@ -85,7 +85,7 @@ DefaultModel modelNamed(const std::string& name) {
     SceneParams p = defaults();
     p.legend.title = "Volcano";
     p.legend.units = "m";
-    p.scale.wanted = true;
+    p.requests.set(ScaleRequest{});
     return {name, loadField(in), p};
 }
 

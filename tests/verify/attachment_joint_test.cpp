@@ -72,7 +72,7 @@ SceneParams extrasParams() {
     p.marks = MarkParams{};  // the orientation tab, as tsf gen makes it
     p.legend.title = "Rain";
     p.legend.units = "mm";
-    p.scale.wanted = true;
+    p.requests.set(ScaleRequest{});
     return p;
 }
 
@@ -149,7 +149,7 @@ TEST(AttachmentJoints, ThePlateOfAnIrregularOutlineHoldsAlongMostOfItsWidth) {
         return 1.0 + (c * 5 + r * 3) % 9;
     });
     SceneParams p = extrasParams();
-    p.scale.wanted = false;
+    p.requests.reset<ScaleRequest>();
     const Scene s = buildScene(f, p);
     ASSERT_TRUE(s.legend.has_value());
     ASSERT_GT(s.cells_nodata_kept, 0);

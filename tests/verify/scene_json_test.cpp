@@ -100,7 +100,7 @@ Scene sceneWithAttachments() {
     p.pitch_mm = 8.0;
     p.legend.title = "Depth";
     p.legend.units = "m";
-    p.scale.wanted = true;
+    p.requests.set(ScaleRequest{});
     return buildScene(vtest::smallField(), p);
 }
 

@@ -59,8 +59,6 @@ SceneTextures decideClassTextures(const HexField& field, const SceneParams& p, d
     if (p.halves)
         throw InputError(std::string("--halves cuts a slab the textures' ridges would cross; leave out --halves on a "
                                      "class map") + instead);
-    if (p.scale.wanted)
-        throw InputError(std::string("--scale measures heights, and a class map has one height") + instead);
 
     std::map<double, int64_t> count;
     for (const double v : field.values)

@@ -49,6 +49,7 @@
 #include "gen/model/feature.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_attachments.h"
+#include "gen/model/scene_scale.h"
 
 namespace tsf {
 
@@ -92,6 +93,10 @@ std::vector<ScaleLevel> scaleLevels(const ValueMapping& mapping, double step, do
 /// rise kScaleMinRiserMm).
 std::optional<double> chooseScaleStep(const ValueMapping& mapping, double z_snap_mm);
 
+
+/// The scale's piece of a generated OpenSCAD file (scale_scad.cpp): the
+/// staircase as data for scad_lib/tsf_scale.scad; none without a scale.
+std::optional<ScadPiece> scaleScadPiece(const Scene& scene);
 
 /// Places the scale params.scale asks for (none when it asks for nothing),
 /// clear of every footprint claimed before it (gen/model/feature.h).

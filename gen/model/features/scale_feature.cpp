@@ -15,7 +15,7 @@ std::optional<FootprintClaim> scaleClaim(const Scene& s) {
 }
 
 std::optional<SideWidth> scaleSideWidth(const SceneParams& p) {
-    if (!p.scale.wanted) return std::nullopt;
+    if (!p.requests.get<ScaleRequest>()) return std::nullopt;
     return SideWidth{"the tactile scale", kScaleGapMm + kScaleStepWidthMm};
 }
 
@@ -44,6 +44,7 @@ const Feature& scaleFeature() {
         .facts_json = scaleFactsJson,
         .facts_lines = scaleFactsLines,
         .key_paragraph = scaleKeyParagraph,
+        .scad_piece = scaleScadPiece,
         .measures = scaleMeasures,
         .survives_tiles = scaleSurvivesTiles,
     };

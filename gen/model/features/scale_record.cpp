@@ -85,8 +85,7 @@ json scaleRecord(const Scene& s) {
 
 void readScaleRecord(const json& record, const std::string& path, int /*version*/, Scene& s) {
     const SceneScale& sc = s.features.set(scaleFrom(record, path, s));
-    s.params.scale.wanted = true;
-    if (sc.step_given) s.params.scale.step = sc.step;
+    s.params.requests.set(ScaleRequest{sc.step_given ? std::optional<double>(sc.step) : std::nullopt});
 }
 
 nlohmann::json scaleFactsJson(const Scene& s) {
