@@ -561,6 +561,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         again.notes.insert(again.notes.begin(), s.notes.back() + "; they are placed in the data instead, where they fit");
         return again;
     }
+    if (std::optional<FootprintClaim> tab = tabClaim(s)) s.claims.push_back(std::move(*tab));
     placeFeatures(s, FeaturePhase::Beside);
     if (params.stored_as_float32) {
         const double snap = float32SafeSnapMm(s);

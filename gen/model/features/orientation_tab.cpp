@@ -562,6 +562,12 @@ std::optional<BoxMm> tabBoxMm(const Scene& s) {
     return BoxMm{t.x_west_mm, t.x_east_mm, t.y_south_mm, t.y_north_mm};
 }
 
+std::optional<FootprintClaim> tabClaim(const Scene& s) {
+    const std::optional<BoxMm> box = tabBoxMm(s);
+    if (!box) return std::nullopt;
+    return FootprintClaim{*box, "the orientation tab", "--marks-on data (the marks in the pillars instead of on a tab)"};
+}
+
 std::optional<Attachment> tabAttachment(const Scene& s, Assembly assembly) {
     if (!s.marks.tab) return std::nullopt;
     Attachment a;

@@ -104,6 +104,9 @@ JoinedBody meshTabBody(const Scene& scene, bool joined);
 
 /// The tab's x, y box (mm); none without a tab.
 std::optional<BoxMm> tabBoxMm(const Scene& scene);
+/// The footprint the tab claims (gen/model/feature.h): features placed after
+/// it keep clear of its box.
+std::optional<FootprintClaim> tabClaim(const Scene& scene);
 
 /// The tab as an attachment (gen/model/scene_attachments.h), part "marks":
 /// it covers its touched walls over its z span. None without a tab.
