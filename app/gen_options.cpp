@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "gen/model/features/ruler/ruler.h"
 #include "gen/model/scene_scale.h"
 #include "gen/util/error.h"
 
@@ -272,6 +273,29 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
            "Values between the scale's treads (implies --scale; default: the smallest 1, 2 or 5 x 10^k whose "
            "treads are at least 1 mm apart, at most 10 steps)")
         ->check(CLI::PositiveNumber)->group(scale);
+    auto* ruler = "Edge ruler (docs/model.md)";
+    cmd->add_option_function<std::string>(
+           "--ruler",
+           [&p](const std::string& v) {
+               RulerRequest rq;
+               if (!v.empty()) {
+                   size_t used = 0;
+                   int n = 0;
+                   try {
+                       n = std::stoi(v, &used);
+                   } catch (const std::exception&) {
+                       used = 0;
+                   }
+                   if (used != v.size() || n < 2 || n > 1000)
+                       throw CLI::ValidationError("--ruler", "expected a whole number of cells from 2 to 1000, got '" + v + "'");
+                   rq.every = n;
+               }
+               p.requests.set(rq);
+           },
+           "Teeth on the bed along the south and west edges, every N columns and rows (default: N so they "
+           "stand at least 10 mm apart), so a reader counts them to say where a value is; the key says what "
+           "each marks. Flat models only")
+        ->expected(0, 1)->type_name("[N]")->group(ruler);
     cmd->add_option("--triangle-leg", p.marks.triangle_leg_mm, "Preferred east leg of the triangle in the data (--marks-on data), mm (north leg 0.6 of it); on the tab it is 14 mm")
         ->check(CLI::Range(5.0, 200.0))->capture_default_str()->group(marks);
 }

@@ -16,6 +16,7 @@
 //   tsf_tilt.scad        drawing of tilted tops and dimpled structural cells that tsf resolves
 //   tsf_legend.scad      tsf_with_legend(): the braille legend plate that tsf meshes
 //   tsf_scale.scad       tsf_with_scale(): the tactile scale that tsf places
+//   tsf_ruler.scad       tsf_with_ruler(): the edge ruler's teeth that tsf places
 //   tsf_tab.scad         tsf_with_tab(): the orientation tab (notch and triangle) that tsf places
 //   tsf_halves.scad      tsf_half(): a mirrored model's support-free halves with pin holes
 //
@@ -29,6 +30,7 @@ include <tsf_marks.scad>
 include <tsf_tilt.scad>
 include <tsf_legend.scad>
 include <tsf_scale.scad>
+include <tsf_ruler.scad>
 include <tsf_tab.scad>
 include <tsf_joined.scad>
 include <tsf_halves.scad>

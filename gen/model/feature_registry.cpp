@@ -1,11 +1,12 @@
 #include "gen/model/feature_registry.h"
 
+#include "gen/model/features/ruler/ruler_feature.h"
 #include "gen/model/features/scale_feature.h"
 
 namespace tsf {
 
 const std::vector<const Feature*>& features() {
-    static const std::vector<const Feature*> registry = {&scaleFeature()};
+    static const std::vector<const Feature*> registry = {&scaleFeature(), &rulerFeature()};
     return registry;
 }
 

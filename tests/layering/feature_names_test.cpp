@@ -48,6 +48,20 @@ const std::vector<MigratedFeature>& migrated() {
              // The command line: --scale and --scale-step fill in its request.
              "app/gen_options.cpp",
          }},
+        {"ruler",
+         std::regex(R"(\b(SceneRuler|RulerTooth|RulerRequest|sceneRuler|placeRuler|meshRulerBody|rulerAttachment|)"
+                    R"(rulerBoxMm|rulerTopAt|rulerProbes|checkRuler|rulerRecord|readRulerRecord|rulerFactsJson|)"
+                    R"(rulerFactsLines|rulerKeyParagraph|rulerScadPiece|rulerFeature|kRuler\w+)\b|features/ruler/)"),
+         {
+             // Its own files.
+             "gen/model/features/ruler/ruler.h", "gen/model/features/ruler/ruler.cpp",
+             "gen/model/features/ruler/ruler_record.cpp", "gen/model/features/ruler/ruler_feature.h",
+             "gen/model/features/ruler/ruler_feature.cpp",
+             // The registry.
+             "gen/model/feature_registry.cpp",
+             // The command line: --ruler fills in its request.
+             "app/gen_options.cpp",
+         }},
     };
     return list;
 }

@@ -1,0 +1,163 @@
+// The edge ruler's sidecar record, facts, key paragraph and OpenSCAD piece.
+// See ruler.h.
+#include <sstream>
+
+#include "gen/model/features/ruler/ruler.h"
+#include "gen/model/sidecar_fields.h"
+#include "gen/util/number_format.h"
+
+namespace tsf {
+
+using namespace sidecar;
+
+namespace {
+
+std::vector<const RulerTooth*> teethOn(const SceneRuler& r, bool south) {
+    std::vector<const RulerTooth*> out;
+    for (const RulerTooth& t : r.teeth)
+        if (t.south == south) out.push_back(&t);
+    return out;
+}
+
+// What a tooth marks for a reader: columns counted from the west, rows from
+// the south, both from 1 (the grid's row 0 is its north row).
+int32_t columnFromWest(const RulerTooth& t) { return t.col + 1; }
+int32_t rowFromSouth(const Scene& s, const RulerTooth& t) { return s.grid.rows - t.row; }
+
+std::string list(const std::vector<int32_t>& v) {
+    std::string out;
+    for (size_t k = 0; k < v.size(); ++k)
+        out += (k == 0 ? "" : k + 1 == v.size() ? " and " : ", ") + std::to_string(v[k]);
+    return out;
+}
+
+}  // namespace
+
+json rulerRecord(const Scene& s) {
+    const SceneRuler* r = sceneRuler(s);
+    if (!r) return nullptr;
+    json teeth = json::array();
+    for (const RulerTooth& t : r->teeth) teeth.push_back({t.south ? "south" : "west", t.kept, t.ordinal, t.xy});
+    return {{"every", {r->every_x, r->every_y}}, {"every_given", r->every_given},
+            {"spacing_mm", {r->spacing_x_mm, r->spacing_y_mm}}, {"lines", {r->lines_x, r->lines_y}},
+            {"top_units", r->top_units}, {"teeth", teeth}};
+}
+
+void readRulerRecord(const json& j, const std::string& sp, int /*version*/, Scene& s) {
+    if (!j.is_object()) fail(sp, std::string("expected an object, found ") + typeName(j));
+    SceneRuler r;
+    const json& every = getArray(j, sp, "every");
+    if (every.size() != 2) fail(join(sp, "every"), "expected [along the south edge, along the west edge]");
+    r.every_x = int(toInt(every[0], sp + ".every[0]"));
+    r.every_y = int(toInt(every[1], sp + ".every[1]"));
+    if (r.every_x < 2 || r.every_y < 2) fail(join(sp, "every"), "expected at least 2 cells between teeth");
+    const json& given = member(j, sp, "every_given");
+    if (!given.is_boolean()) fail(join(sp, "every_given"), "expected true or false");
+    r.every_given = given.get<bool>();
+    std::tie(r.spacing_x_mm, r.spacing_y_mm) = getFinitePair(j, sp, "spacing_mm");
+    const json& lines = getArray(j, sp, "lines");
+    if (lines.size() != 2) fail(join(sp, "lines"), "expected [south, west]");
+    r.lines_x = int32_t(toInt(lines[0], sp + ".lines[0]"));
+    r.lines_y = int32_t(toInt(lines[1], sp + ".lines[1]"));
+    r.top_units = getInt(j, sp, "top_units");
+    const json& teeth = getArray(j, sp, "teeth");
+    for (size_t i = 0; i < teeth.size(); ++i) {
+        const std::string p = sp + ".teeth[" + std::to_string(i) + "]";
+        const json& t = teeth[i];
+        if (!t.is_array() || t.size() != 4 || !t[0].is_string() || !t[3].is_array())
+            fail(p, "expected [\"south\" or \"west\", cell, line, [x, y, ...]]");
+        RulerTooth tooth;
+        const std::string edge = t[0].get<std::string>();
+        if (edge != "south" && edge != "west") fail(p + "[0]", "expected \"south\" or \"west\"");
+        tooth.south = edge == "south";
+        const int64_t k = toInt(t[1], p + "[1]");
+        if (k < 0 || size_t(k) >= s.keptCount()) fail(p + "[1]", "is not the index of a cell");
+        tooth.kept = int32_t(k);
+        tooth.col = s.col[size_t(k)];
+        tooth.row = s.row[size_t(k)];
+        tooth.ordinal = int32_t(toInt(t[2], p + "[2]"));
+        for (size_t v = 0; v < t[3].size(); ++v) tooth.xy.push_back(toNumber(t[3][v], p + "[3][" + std::to_string(v) + "]"));
+        r.teeth.push_back(std::move(tooth));
+    }
+    s.features.set(std::move(r));
+    s.params.requests.set(RulerRequest{sceneRuler(s)->every_given ? std::optional<int>(sceneRuler(s)->every_x) : std::nullopt});
+}
+
+nlohmann::json rulerFactsJson(const Scene& s) {
+    const SceneRuler* r = sceneRuler(s);
+    if (!r) return nullptr;
+    json south = json::array(), west = json::array();
+    for (const RulerTooth* t : teethOn(*r, true)) south.push_back({{"column_from_west", columnFromWest(*t)}, {"line", t->ordinal}});
+    for (const RulerTooth* t : teethOn(*r, false)) west.push_back({{"row_from_south", rowFromSouth(s, *t)}, {"line", t->ordinal}});
+    return {{"every", {r->every_x, r->every_y}}, {"every_given", r->every_given},
+            {"spacing_mm", {r->spacing_x_mm, r->spacing_y_mm}}, {"lines", {r->lines_x, r->lines_y}},
+            {"tooth_depth_mm", kRulerToothDepthMm}, {"south_teeth", south}, {"west_teeth", west}};
+}
+
+std::string rulerFactsLines(const Scene& s) {
+    const SceneRuler* r = sceneRuler(s);
+    if (!r) return "";
+    std::ostringstream o;
+    o << "  ruler     " << teethOn(*r, true).size() << " of " << r->lines_x << " teeth on the south edge every "
+      << r->every_x << " columns (" << formatFixed(r->spacing_x_mm, 1) << " mm), " << teethOn(*r, false).size() << " of "
+      << r->lines_y << " on the west edge every " << r->every_y << " rows (" << formatFixed(r->spacing_y_mm, 1)
+      << " mm)" << (r->every_given ? "" : ", chosen") << "; " << formatSignificant(kRulerToothDepthMm)
+      << " mm out, as high as the floor\n";
+    return o.str();
+}
+
+std::string rulerKeyParagraph(const Scene& s, const KeyNumbers& /*numbers*/) {
+    const SceneRuler* r = sceneRuler(s);
+    if (!r) return "";
+    std::vector<int32_t> columns, rows;
+    for (const RulerTooth* t : teethOn(*r, true)) columns.push_back(columnFromWest(*t));
+    for (const RulerTooth* t : teethOn(*r, false)) rows.push_back(rowFromSouth(s, *t));
+    std::string out = "An edge ruler: small teeth stand out on the bed along the south and west edges. ";
+    const auto edge = [&](const char* where, const char* order, const std::vector<int32_t>& marks, int every,
+                          double mm, const char* what, int32_t of, const char* counted) {
+        if (marks.empty()) return std::string("The ") + where + " edge has no tooth: its pillars leave no room. ";
+        return std::string("Along the ") + where + " edge, " + order + ", " +
+               (marks.size() == 1 ? "the tooth marks " + std::string(what) + " " : "the teeth mark " + std::string(what) + "s ") +
+               list(marks) + " of " + std::to_string(of) + ", " + counted + " (every " + std::to_string(every) + ", " +
+               formatSignificant(mm, 3) + " millimetres apart). ";
+    };
+    out += edge("south", "from west to east", columns, r->every_x, r->spacing_x_mm, "column", s.grid.cols,
+                "counted from the west");
+    out += edge("west", "from south to north", rows, r->every_y, r->spacing_y_mm, "row", s.grid.rows,
+                "counted from the south");
+    out += "Count the teeth along each edge to say where a value is.";
+    return out;
+}
+
+std::optional<ScadPiece> rulerScadPiece(const Scene& s) {
+    const SceneRuler* r = sceneRuler(s);
+    if (!r) return std::nullopt;
+    ScadPiece piece;
+    piece.show_switch = "show_ruler";
+    piece.variable = "edge_ruler";
+    piece.what = "the edge ruler";
+    piece.library_file = "tsf_ruler.scad";
+    piece.module_call = "tsf_with_ruler(edge_ruler, show_ruler) ";
+    piece.header = "/* [Edge ruler] */\n"
+                   "// Teeth along the south and west edges, every " + std::to_string(r->every_x) + " columns and " +
+                   std::to_string(r->every_y) + " rows (docs/model.md).\n"
+                   "show_ruler = true;\n\n"
+                   "/* [Hidden] */\n"
+                   "// The teeth as tsf placed them, in mm, for the parameters as generated (they do not\n"
+                   "// follow cell, base or snap; regenerate with tsf gen to change them): " +
+                   std::to_string(r->teeth.size()) + " teeth";
+    // [top, [footprint, ...]] (scad_lib/tsf_ruler.scad): each footprint [[x, y], ...] counter-clockwise.
+    std::string& v = piece.value;
+    v = "[" + formatShortest(s.zMm(r->top_units)) + ", [\n";
+    for (size_t k = 0; k < r->teeth.size(); ++k) {
+        const std::vector<double>& xy = r->teeth[k].xy;
+        v += "  [";
+        for (size_t i = 0; i + 1 < xy.size(); i += 2)
+            v += std::string(i ? ", " : "") + "[" + formatShortest(xy[i]) + ", " + formatShortest(xy[i + 1]) + "]";
+        v += k + 1 < r->teeth.size() ? "],\n" : "]\n";
+    }
+    v += "]]";
+    return piece;
+}
+
+}  // namespace tsf

@@ -1,0 +1,210 @@
+// The edge ruler (gen/model/features/ruler/ruler.h): teeth along the south
+// and west edges every N cells, each where the key says, joined into one
+// closed solid, read back by tsf verify through the scene sidecar, drawn the
+// same by both OpenSCAD engines, refused with exit 2 where it cannot stand.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <set>
+
+#include "gen/key/model_key.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/mesh_io/mesh_reader.h"
+#include "gen/model/build_scene.h"
+#include "gen/model/features/ruler/ruler.h"
+#include "gen/model/scene_json.h"
+#include "gen/scad/scad_emitter.h"
+#include "tests/scad_engines/engine_fixtures.h"
+#include "tests/scad_engines/same_solid.h"
+#include "tests/support/fields.h"
+#include "tests/support/input_error.h"
+#include "tests/support/mesh_invariants.h"
+#include "tests/support/run.h"
+
+namespace tsf {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 20 x 12 raster of a gentle hill, every value above the floor.
+HexField hill() {
+    return test::fieldFromFunction(20, 12, [](int c, int r) { return 5.0 + std::sin(0.3 * c) + std::cos(0.4 * r); });
+}
+
+SceneParams rulerParams(std::optional<int> every = std::nullopt) {
+    SceneParams p = test::smallParams();
+    p.pitch_mm = 3.0;
+    p.requests.set(RulerRequest{every});
+    return p;
+}
+
+TEST(Ruler, TeethStandEveryNCellsFromTheSouthWestPillar) {
+    const Scene s = buildScene(hill(), rulerParams());
+    const SceneRuler* r = sceneRuler(s);
+    ASSERT_TRUE(r);
+    // 3 mm cells: 4 columns make 12 mm, the fewest at least 10 mm apart.
+    EXPECT_EQ(r->every_x, 4);
+    EXPECT_DOUBLE_EQ(r->spacing_x_mm, 12.0);
+    EXPECT_GE(r->spacing_y_mm, 10.0);
+    EXPECT_EQ(r->every_y % 2, 0);  // an even count of rows: every west line on rows that stick out
+    EXPECT_LT(r->spacing_y_mm - 10.0, 2 * 3.0 * std::sqrt(3.0) / 2.0);  // two rows fewer would be closer than 10 mm
+    // South: the southernmost row (11) holds every line's tooth, columns
+    // 0, 4, 8, 12, 16 (a rectangle: every line has room).
+    std::vector<int32_t> south_cols;
+    std::set<int32_t> west_rows;
+    for (const RulerTooth& t : r->teeth) {
+        if (t.south) {
+            south_cols.push_back(t.col);
+            EXPECT_EQ(t.row, 11);
+        } else {
+            west_rows.insert(t.row);
+            // Row 11 (odd) is shifted east: row 10's westernmost pillar sticks out.
+            EXPECT_EQ((10 - t.row) % r->every_y, 0) << t.row;
+            EXPECT_EQ(s.col[size_t(t.kept)], 0);
+        }
+    }
+    EXPECT_EQ(south_cols, (std::vector<int32_t>{0, 4, 8, 12, 16}));
+    EXPECT_EQ(r->lines_x, 5);
+    EXPECT_GE(west_rows.size(), 2u);
+    // Each tooth reaches 2 mm out from its pillar, from the bed to the floor.
+    for (const RulerTooth& t : r->teeth) {
+        double lo_x = INFINITY, lo_y = INFINITY;
+        for (size_t i = 0; i < t.xy.size(); i += 2) {
+            lo_x = std::min(lo_x, t.xy[i]);
+            lo_y = std::min(lo_y, t.xy[i + 1]);
+        }
+        const Vec3 c = s.point(hexCentre(s.grid, t.col, t.row), 0);
+        if (t.south) EXPECT_NEAR(c.y - lo_y, 3.0 / std::sqrt(3.0) + kRulerToothDepthMm, 2e-3);
+        else EXPECT_NEAR(c.x - lo_x, 1.5 + kRulerToothDepthMm, 2e-3);
+    }
+    EXPECT_EQ(r->top_units, s.floor_units);
+
+    // --ruler 6: every six cells along both edges.
+    const Scene six = buildScene(hill(), rulerParams(6));
+    ASSERT_TRUE(sceneRuler(six));
+    EXPECT_EQ(sceneRuler(six)->every_x, 6);
+    EXPECT_EQ(sceneRuler(six)->every_y, 6);
+    EXPECT_TRUE(sceneRuler(six)->every_given);
+}
+
+TEST(Ruler, OneClosedSolidWhoseTeethStandWhereTheSceneSays) {
+    const Scene s = buildScene(hill(), rulerParams());
+    const Mesh m = meshScene(s);
+    const test::Invariants inv = test::checkInvariants(m);
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+    // The teeth add their prisms to the pillars' volume, no more.
+    double teeth = 0;
+    for (const RulerTooth& t : sceneRuler(s)->teeth) {
+        double a = 0;
+        for (size_t i = 0; i < t.xy.size(); i += 2) {
+            const size_t j = (i + 2) % t.xy.size();
+            a += t.xy[i] * t.xy[j + 1] - t.xy[j] * t.xy[i + 1];
+        }
+        teeth += 0.5 * a * s.zMm(s.floor_units);
+    }
+    Scene without = buildScene(hill(), test::smallParams());
+    EXPECT_FALSE(sceneRuler(without));
+    EXPECT_NEAR(signedVolume(m), test::sceneVolume(s) + teeth, 1e-6 * test::sceneVolume(s));
+}
+
+TEST(Ruler, TheKeySaysWhichColumnAndRowEachToothMarks) {
+    const Scene s = buildScene(hill(), rulerParams());
+    std::string text;
+    for (const std::string& line : modelKeyParagraphs(s, {})) text += line + "\n";
+    EXPECT_NE(text.find("the teeth mark columns 1, 5, 9, 13 and 17 of 20, counted from the west (every 4, 12 "
+                        "millimetres apart)"),
+              std::string::npos)
+        << text;
+    std::string rows;
+    std::vector<int32_t> listed;
+    for (const RulerTooth& t : sceneRuler(s)->teeth)
+        if (!t.south) listed.push_back(s.grid.rows - t.row);
+    ASSERT_GE(listed.size(), 2u);
+    EXPECT_NE(text.find("the teeth mark rows " + std::to_string(listed[0]) + ", "), std::string::npos) << text;
+}
+
+TEST(Ruler, TheSidecarHoldsTheTeethAsPlaced) {
+    const Scene s = buildScene(hill(), rulerParams(5));
+    const fs::path dir = test::scratchDir("ruler_sidecar");
+    writeSceneJson(s, (dir / "m.scene.json").string());
+    const Scene back = readSceneJson((dir / "m.scene.json").string());
+    ASSERT_TRUE(sceneRuler(back));
+    ASSERT_EQ(sceneRuler(back)->teeth.size(), sceneRuler(s)->teeth.size());
+    for (size_t k = 0; k < sceneRuler(s)->teeth.size(); ++k) {
+        EXPECT_EQ(sceneRuler(back)->teeth[k].xy, sceneRuler(s)->teeth[k].xy);
+        EXPECT_EQ(sceneRuler(back)->teeth[k].kept, sceneRuler(s)->teeth[k].kept);
+    }
+    EXPECT_EQ(meshScene(back).positions, meshScene(s).positions);
+}
+
+TEST(Ruler, WhereItCannotStandItIsRefused) {
+    SceneParams mirrored = rulerParams();
+    mirrored.bottom = Bottom::Mirrored;
+    EXPECT_NE(std::string(test::catchInputError([&] { buildScene(hill(), mirrored); }).what()).find("--mirror"),
+              std::string::npos);
+    const auto dir = test::scratchDir("ruler_refused");
+    test::writeText(dir / "f.csv", "1,2\n3,4\n");
+    const auto r = test::runTsf("gen " + (dir / "f.csv").string() + " --ruler 1 -o " + (dir / "m.stl").string(), dir);
+    EXPECT_EQ(r.exit_code, test::kExitBadInput) << r.out << r.err;
+    EXPECT_NE(r.err.find("--ruler"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "m.stl"));
+}
+
+TEST(RulerCli, GenWritesTheTeethAndVerifyReadsThemBack) {
+    const auto dir = test::scratchDir("ruler_cli");
+    std::string csv;
+    for (int r = 0; r < 16; ++r)
+        for (int c = 0; c < 16; ++c) csv += std::to_string(2 + (c * 7 + r * 3) % 11) + (c < 15 ? "," : "\n");
+    test::writeText(dir / "f.csv", csv);
+    const std::string model = (dir / "m.stl").string();
+    const auto g = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 4 --ruler --json -o " + model, dir);
+    ASSERT_EQ(g.exit_code, test::kExitOk) << g.out << g.err;
+    const auto j = nlohmann::json::parse(g.out);
+    const auto& ruler = j["scene"]["ruler"];
+    ASSERT_TRUE(ruler.is_object()) << j["scene"].dump(2);
+    EXPECT_EQ(ruler["every"][0].get<int>(), 3);  // 4 mm cells: 12 mm
+    EXPECT_GE(ruler["south_teeth"].size(), 2u);
+
+    const Mesh m = readMesh(model);
+    const test::Invariants inv = test::checkInvariants(m);
+    EXPECT_TRUE(inv.closedManifold()) << inv.describe();
+    EXPECT_EQ(inv.components, 1u);
+    const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json --json", dir);
+    ASSERT_EQ(v.exit_code, test::kExitOk) << v.out << v.err;
+    std::string read_back;
+    const auto report = nlohmann::json::parse(v.out);
+    for (const auto& c : report["checks"])
+        if (c["id"] == "ruler_read_back") read_back = c["status"].get<std::string>();
+    EXPECT_EQ(read_back, "pass") << v.out;
+}
+
+// The teeth written as data and joined to the pillars by each engine: the
+// same solid as the direct mesher's exact join, with the polyhedron
+// strategy (joined into the terrain's polyhedron) and the CSG one (a union
+// of prisms, scad_lib/tsf_ruler.scad).
+class RulerOpenScad : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(RulerOpenScad, RendersTheSameSolidAsTheDirectMesher) {
+    const auto& [engine_name, strategy_name] = GetParam();
+    TSF_NEED_ENGINE(test::engineNamed(engine_name));
+    const Scene scene = buildScene(test::fieldFromFunction(9, 7, [](int c, int r) { return 1.0 + (c + 2 * r) % 5; }),
+                                   rulerParams(2));
+    ASSERT_TRUE(sceneRuler(scene));
+    ASSERT_GE(sceneRuler(scene)->teeth.size(), 4u);
+    ScadOptions opts;
+    ASSERT_TRUE(parseScadStrategy(strategy_name, opts.strategy));
+    opts.inline_library = strategy_name == "csg";
+    const fs::path dir = test::scratchDir("ruler_" + engine_name + "_" + strategy_name);
+    writeScad(scene, opts, (dir / "model.scad").string());
+    test::expectSameSolid(*test::engineNamed(engine_name).engine, scene, dir / "model.scad", dir / "model.stl");
+}
+
+INSTANTIATE_TEST_SUITE_P(EnginesStrategies, RulerOpenScad,
+                         ::testing::Combine(::testing::Values("openscad", "wasm"), ::testing::Values("polyhedron", "csg")),
+                         [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+
+}  // namespace
+}  // namespace tsf
