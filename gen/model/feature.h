@@ -96,6 +96,7 @@ struct KeyNumbers {
 
 struct Feature {
     const char* name;  ///< its sidecar record's and facts' path, dotted ("scale")
+    const char* option;  ///< the option that asks for it, for messages ("--scale")
     FeaturePhase phase;
     /// Places what SceneParams asks of it (nothing when nothing is asked).
     /// Throws InputError saying what to change when it cannot stand.

@@ -25,10 +25,10 @@ bool sceneMeasures(const Scene& scene) {
     return false;
 }
 
-bool featuresSurviveTiles(const Scene& scene) {
+const Feature* featureRefusingTiles(const Scene& scene) {
     for (const Feature* f : features())
-        if (f->survives_tiles && !f->survives_tiles(scene)) return false;
-    return true;
+        if (f->survives_tiles && !f->survives_tiles(scene)) return f;
+    return nullptr;
 }
 
 }  // namespace tsf

@@ -23,7 +23,8 @@ void placeFeatures(Scene& scene, FeaturePhase phase);
 /// True when some feature of the Scene lets a reader measure values by it.
 bool sceneMeasures(const Scene& scene);
 
-/// True when no feature of the Scene refuses a cut into tiles.
-bool featuresSurviveTiles(const Scene& scene);
+/// The first feature of the Scene that refuses a cut into tiles; null
+/// when none does.
+const Feature* featureRefusingTiles(const Scene& scene);
 
 }  // namespace tsf

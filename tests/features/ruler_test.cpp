@@ -151,6 +151,15 @@ TEST(Ruler, WhereItCannotStandItIsRefused) {
     EXPECT_EQ(r.exit_code, test::kExitBadInput) << r.out << r.err;
     EXPECT_NE(r.err.find("--ruler"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "m.stl"));
+    // A model cut into tiles cannot carry it: the message names the option.
+    std::string csv;
+    for (int r = 0; r < 40; ++r)
+        for (int c = 0; c < 40; ++c) csv += std::to_string(1 + (c + r) % 7) + (c < 39 ? "," : "\n");
+    test::writeText(dir / "big.csv", csv);
+    const auto t = test::runTsf("gen " + (dir / "big.csv").string() + " --cell 4 --ruler --bed 100x100 --tile -o " +
+                                (dir / "t.stl").string(), dir);
+    EXPECT_EQ(t.exit_code, test::kExitBadInput) << t.out << t.err;
+    EXPECT_NE(t.err.find("leave out --ruler"), std::string::npos) << t.err;
 }
 
 TEST(RulerCli, GenWritesTheTeethAndVerifyReadsThemBack) {

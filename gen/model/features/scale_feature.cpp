@@ -29,6 +29,7 @@ bool scaleSurvivesTiles(const Scene& s) { return sceneScale(s) == nullptr; }
 const Feature& scaleFeature() {
     static const Feature feature{
         .name = "scale",
+        .option = "--scale",
         .phase = FeaturePhase::Beside,
         .place = placeScale,
         .claim = scaleClaim,

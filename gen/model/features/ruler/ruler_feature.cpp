@@ -21,6 +21,7 @@ bool rulerSurvivesTiles(const Scene& s) { return sceneRuler(s) == nullptr; }
 const Feature& rulerFeature() {
     static const Feature feature{
         .name = "ruler",
+        .option = "--ruler",
         .phase = FeaturePhase::Beside,
         .place = placeRuler,
         .claim = nullptr,  // placed last: nothing after it keeps clear of it
