@@ -16,6 +16,8 @@
 #include "gen/model/features/ruler/ruler.h"
 #include "gen/model/scene_json.h"
 #include "gen/scad/scad_emitter.h"
+#include "haptics/height_grid.h"
+#include "haptics/printed_relief.h"
 #include "tests/scad_engines/engine_fixtures.h"
 #include "tests/scad_engines/same_solid.h"
 #include "tests/support/fields.h"
@@ -27,6 +29,9 @@ namespace tsf {
 namespace {
 
 namespace fs = std::filesystem;
+using haptics::HeightGrid;
+using haptics::printedRelief;
+using haptics::ReliefInfo;
 
 // A 20 x 12 raster of a gentle hill, every value above the floor.
 HexField hill() {
@@ -79,7 +84,8 @@ TEST(Ruler, TeethStandEveryNCellsFromTheSouthWestPillar) {
         if (t.south) EXPECT_NEAR(c.y - lo_y, 3.0 / std::sqrt(3.0) + kRulerToothDepthMm, 2e-3);
         else EXPECT_NEAR(c.x - lo_x, 1.5 + kRulerToothDepthMm, 2e-3);
     }
-    EXPECT_EQ(r->top_units, s.floor_units);
+    // The ridge stands 1 mm above the floor.
+    EXPECT_EQ(r->top_units - s.floor_units, 1000);
 
     // --ruler 6: every six cells along both edges.
     const Scene six = buildScene(hill(), rulerParams(6));
@@ -103,7 +109,12 @@ TEST(Ruler, OneClosedSolidWhoseTeethStandWhereTheSceneSays) {
             const size_t j = (i + 2) % t.xy.size();
             a += t.xy[i] * t.xy[j + 1] - t.xy[j] * t.xy[i + 1];
         }
-        teeth += 0.5 * a * s.zMm(s.floor_units);
+        double ridge = 0;
+        for (size_t i = 0; i < t.ridge.size(); i += 2) {
+            const size_t j = (i + 2) % t.ridge.size();
+            ridge += t.ridge[i] * t.ridge[j + 1] - t.ridge[j] * t.ridge[i + 1];
+        }
+        teeth += 0.5 * a * s.zMm(s.floor_units) + 0.5 * ridge * kRulerToothRiseMm;
     }
     Scene without = buildScene(hill(), test::smallParams());
     EXPECT_FALSE(sceneRuler(without));
@@ -124,6 +135,31 @@ TEST(Ruler, TheKeySaysWhichColumnAndRowEachToothMarks) {
         if (!t.south) listed.push_back(s.grid.rows - t.row);
     ASSERT_GE(listed.size(), 2u);
     EXPECT_NE(text.find("the teeth mark rows " + std::to_string(listed[0]) + ", "), std::string::npos) << text;
+}
+
+TEST(Ruler, TsfFeelFeelsEachToothBesideTheEdge) {
+    const Scene s = buildScene(hill(), rulerParams());
+    ReliefInfo info;
+    const HeightGrid g = printedRelief(s, &info);
+    const double side = info.sample_mm, max_mm = s.mapping.max_height_mm;
+    auto feltAt = [&](double x_mm, double y_mm) {  // mm above the floor
+        const auto i = int32_t(std::floor(x_mm / side)) + info.origin_i, j = int32_t(std::floor(y_mm / side)) + info.origin_j;
+        EXPECT_TRUE(i >= 0 && i < g.cols && j >= 0 && j < g.rows) << x_mm << ", " << y_mm;
+        return double(g.at(std::clamp(i, 0, g.cols - 1), std::clamp(j, 0, g.rows - 1))) * max_mm;
+    };
+    const SceneRuler& r = *sceneRuler(s);
+    int felt = 0;
+    for (const RulerTooth& t : r.teeth) {
+        // The ridge's middle: 1 mm above the floor.
+        const double x = 0.25 * (t.ridge[0] + t.ridge[2] + t.ridge[4] + t.ridge[6]);
+        const double y = 0.25 * (t.ridge[1] + t.ridge[3] + t.ridge[5] + t.ridge[7]);
+        EXPECT_NEAR(feltAt(x, y), kRulerToothRiseMm, 1e-4) << x << ", " << y;
+        if (!t.south) continue;
+        // Half way to the next line, at the same y: nothing, felt as the floor.
+        EXPECT_NEAR(feltAt(x + 0.5 * r.spacing_x_mm, y), 0.0, 1e-6);
+        ++felt;
+    }
+    EXPECT_GE(felt, 2);
 }
 
 TEST(Ruler, TheSidecarHoldsTheTeethAsPlaced) {

@@ -131,7 +131,23 @@ std::optional<RulerTooth> toothAt(const Scene& s, int32_t k, bool south, const s
             if (other < 0 || std::find(allowed.begin(), allowed.end(), other) != allowed.end()) continue;
             if (closerThan(poly, hexagonMm(s, size_t(other)), kRulerGapMm)) return std::nullopt;
         }
+    // The ridge: the outer part of the footprint, kRulerCollarMm clear of
+    // the pillar (south: of its bottom tip; west: of its west wall).
+    const size_t n = poly.size();
+    const Pt qa = poly[n - 2], qb = poly[n - 1];
+    std::vector<Pt> ridge;
+    if (south) {
+        const double y = snapXy(poly[1].y - kRulerCollarMm);
+        ridge = {{qa.x, y}, qa, qb, {qb.x, y}};
+    } else {
+        const double x = snapXy(poly[0].x - kRulerCollarMm);
+        ridge = {{x, qa.y}, qa, qb, {x, qb.y}};
+    }
     RulerTooth t;
+    for (const Pt& p : ridge) {
+        t.ridge.push_back(p.x);
+        t.ridge.push_back(p.y);
+    }
     t.south = south;
     t.kept = k;
     t.col = s.col[kk];
@@ -168,7 +184,7 @@ void placeRuler(Scene& s) {
     if (!rq->every) r.every_y += r.every_y % 2;
     r.spacing_x_mm = r.every_x * s.pitch_mm;
     r.spacing_y_mm = r.every_y * row_mm;
-    r.top_units = s.floor_units;
+    r.top_units = s.floor_units + std::max<int64_t>(1, snapUnits(kRulerToothRiseMm, s.z_snap_mm));
 
     // The south-west pillar: the westernmost of the southernmost row (row 0 is north).
     int32_t south_row = -1, south_col = 0, north_row = std::numeric_limits<int32_t>::max();
@@ -244,31 +260,66 @@ JoinedBody meshRulerBody(const Scene& s, bool joined) {
     JoinedBody body;
     const SceneRuler* r = sceneRuler(s);
     if (!r) return body;
+    const int64_t floor = s.floor_units, top = r->top_units;
+    std::vector<Vec3>& pos = body.mesh.positions;
+    const auto tri = [&](uint32_t a, uint32_t b, uint32_t c) { body.mesh.triangles.push_back({a, b, c}); };
     for (const RulerTooth& t : r->teeth) {
-        const std::vector<Pt> poly = points(t.xy);
+        // Footprint p0 .. p(n-1), counter-clockwise: the pillar's corners
+        // p0 .. p(c-1), then the outer corners qa = p(n-2), qb = p(n-1);
+        // the ridge ra (on the side p(c-1) -> qa), qa, qb, rb (on qb -> p0).
+        const std::vector<Pt> poly = points(t.xy), ridge = points(t.ridge);
         const std::vector<int> corners = contactCorners(t.south);
-        const uint32_t n = uint32_t(poly.size()), base = uint32_t(body.mesh.positions.size());
-        for (const int64_t z : {int64_t(0), r->top_units})
-            for (uint32_t v = 0; v < n; ++v) {
-                body.mesh.positions.push_back({poly[v].x, poly[v].y, s.zMm(z)});
-                body.lattice_id.push_back(
-                    v < corners.size() ? hexCornerId(s.grid, t.col, t.row, corners[v]) : int64_t(-1));
-            }
-        const auto lo = [&](uint32_t v) { return base + v % n; };
-        const auto hi = [&](uint32_t v) { return base + n + v % n; };
-        // Top and bottom: a fan from the second corner, which sees the whole
-        // footprint (the bottom tip, or a corner of the rectangle).
-        for (uint32_t v = 2; v < n; ++v) {
-            body.mesh.triangles.push_back({hi(1), hi(v), hi(v + 1)});
-            body.mesh.triangles.push_back({lo(1), lo(v + 1), lo(v)});
-        }
-        // Walls, outward; where the tooth stands against the pillar, none
-        // when it is joined (the pillar's wall gives way there).
+        const uint32_t n = uint32_t(poly.size()), c = uint32_t(corners.size());
+        const auto add = [&](Pt p, int64_t z, int64_t lattice) {
+            pos.push_back({p.x, p.y, s.zMm(z)});
+            body.lattice_id.push_back(lattice);
+            return uint32_t(pos.size() - 1);
+        };
+        std::vector<uint32_t> lo(n), mid(n);
         for (uint32_t v = 0; v < n; ++v) {
-            if (joined && v + 1 < corners.size()) continue;
-            body.mesh.triangles.push_back({lo(v), lo(v + 1), hi(v + 1)});
-            body.mesh.triangles.push_back({lo(v), hi(v + 1), hi(v)});
+            const int64_t lattice = v < c ? hexCornerId(s.grid, t.col, t.row, corners[v]) : -1;
+            lo[v] = add(poly[v], 0, lattice);
+            if (v < c) mid[v] = add(poly[v], floor, lattice);
         }
+        const uint32_t ra_f = add(ridge[0], floor, -1), rb_f = add(ridge[3], floor, -1);
+        const uint32_t ra_t = add(ridge[0], top, -1), qa_t = add(ridge[1], top, -1), qb_t = add(ridge[2], top, -1),
+                       rb_t = add(ridge[3], top, -1);
+        const uint32_t qa = lo[n - 2], qb = lo[n - 1];
+        // Bottom: a fan from the second corner, which sees the whole
+        // footprint (the bottom tip, or a corner of the rectangle).
+        for (uint32_t v = 2; v < n; ++v) tri(lo[1], lo[(v + 1) % n], lo[v]);
+        // The collar's top at the floor: the pillar's corners, then the ridge's inner edge.
+        std::vector<uint32_t> collar(mid.begin(), mid.begin() + c);
+        collar.push_back(ra_f);
+        collar.push_back(rb_f);
+        for (size_t v = 2; v < collar.size(); ++v) tri(collar[1], collar[v], collar[(v + 1) % collar.size()]);
+        // The ridge's top.
+        tri(ra_t, qa_t, qb_t);
+        tri(ra_t, qb_t, rb_t);
+        // Where it stands against the pillar: none when joined (the
+        // pillar's wall gives way there), else the collar's face.
+        if (!joined)
+            for (uint32_t v = 0; v + 1 < c; ++v) {
+                tri(lo[v], lo[v + 1], mid[v + 1]);
+                tri(lo[v], mid[v + 1], mid[v]);
+            }
+        // The side from the pillar to qa: an L (the collar to the floor, the
+        // ridge to its top), fanned from qa at the bed, which sees all of it.
+        tri(qa, qa_t, ra_t);
+        tri(qa, ra_t, ra_f);
+        tri(qa, ra_f, mid[c - 1]);
+        tri(qa, mid[c - 1], lo[c - 1]);
+        // The outer face, from the bed to the ridge's top.
+        tri(qa, qb, qb_t);
+        tri(qa, qb_t, qa_t);
+        // The side from qb back to the pillar, fanned from qb at the bed.
+        tri(qb, lo[0], mid[0]);
+        tri(qb, mid[0], rb_f);
+        tri(qb, rb_f, rb_t);
+        tri(qb, rb_t, qb_t);
+        // The ridge's inner face, towards the pillar.
+        tri(rb_f, ra_f, ra_t);
+        tri(rb_f, ra_t, rb_t);
     }
     return body;
 }
@@ -283,7 +334,7 @@ std::optional<Attachment> rulerAttachment(const Scene& s, Assembly assembly) {
         return a;
     }
     for (const RulerTooth& t : r->teeth)
-        for (const int e : contactEdges(t.south)) a.walls.push_back({t.kept, e, 0, r->top_units});
+        for (const int e : contactEdges(t.south)) a.walls.push_back({t.kept, e, 0, s.floor_units});
     a.joined = meshRulerBody(s, /*joined=*/true);
     return a;
 }
@@ -305,25 +356,33 @@ std::optional<int64_t> rulerTopAt(const Scene& s, double x, double y) {
         const BoxMm b = boxOf(poly);
         if (x < b.x0 || x > b.x1 || y < b.y0 || y > b.y1) continue;
         // On the rim counts: a read-back sample on an edge sees the top.
-        if (inside(poly, {x, y})) return r->top_units;
-        for (size_t i = 0; i < poly.size(); ++i)
-            if (segmentDistance({x, y}, {x, y}, poly[i], poly[(i + 1) % poly.size()]) < 1e-9) return r->top_units;
+        const auto within = [&](const std::vector<Pt>& q) {
+            if (inside(q, {x, y})) return true;
+            for (size_t i = 0; i < q.size(); ++i)
+                if (segmentDistance({x, y}, {x, y}, q[i], q[(i + 1) % q.size()]) < 1e-9) return true;
+            return false;
+        };
+        if (within(points(t.ridge))) return r->top_units;
+        if (within(poly)) return s.floor_units;
     }
     return std::nullopt;
 }
 
 ProbeSet rulerProbes(const Scene& s) {
-    ProbeSet set{"ruler", "every tooth of the edge ruler at the floor", {}};
+    ProbeSet set{"ruler", "every tooth of the edge ruler: its ridge and its collar", {}};
     const SceneRuler* r = sceneRuler(s);
     if (!r) return set;
-    const double d = kRulerToothDepthMm;
     for (const RulerTooth& t : r->teeth) {
-        const std::vector<Pt> p = points(t.xy);
-        // Half the depth out from the pillar, midway along it.
-        const Pt at = t.south ? Pt{p[1].x, p[1].y - 0.5 * d} : Pt{p[0].x - 0.5 * d, 0.5 * (p[0].y + p[1].y)};
-        set.probes.push_back({std::string(t.south ? "the south" : "the west") + " tooth of " +
-                                  (t.south ? "column " + std::to_string(t.col) : "row " + std::to_string(t.row)),
-                              at.x, at.y, false, s.zMm(r->top_units)});
+        const std::vector<Pt> p = points(t.xy), ridge = points(t.ridge);
+        const std::string what = std::string(t.south ? "the south" : "the west") + " tooth of " +
+                                 (t.south ? "column " + std::to_string(t.col) : "row " + std::to_string(t.row));
+        // The ridge's middle, and the collar half way from the pillar to it
+        // (south: below the tip; west: beside the wall's middle).
+        set.probes.push_back({what + ", its ridge", 0.25 * (ridge[0].x + ridge[1].x + ridge[2].x + ridge[3].x),
+                              0.25 * (ridge[0].y + ridge[1].y + ridge[2].y + ridge[3].y), false, s.zMm(r->top_units)});
+        const Pt collar = t.south ? Pt{p[1].x, 0.5 * (p[1].y + ridge[0].y)}
+                                  : Pt{0.5 * (p[0].x + ridge[0].x), 0.5 * (p[0].y + p[1].y)};
+        set.probes.push_back({what + ", its collar", collar.x, collar.y, false, s.zMm(s.floor_units)});
     }
     return set;
 }
@@ -333,7 +392,7 @@ void checkRuler(const Scene& s) {
     if (!r) return;
     const auto fail = [](const std::string& what) { throw InputError("scene: ruler: " + what); };
     if (s.params.bottom != Bottom::Flat) fail("the teeth stand on a flat model only");
-    if (r->top_units != s.floor_units) fail("the teeth's top must be the floor");
+    if (!(r->top_units > s.floor_units)) fail("the ridges must stand above the floor");
     if (r->teeth.empty()) fail("no teeth");
     for (const RulerTooth& t : r->teeth) {
         if (t.kept < 0 || size_t(t.kept) >= s.keptCount()) fail("a tooth stands against a cell that is not kept");
@@ -341,11 +400,12 @@ void checkRuler(const Scene& s) {
         if (s.col[k] != t.col || s.row[k] != t.row) fail("a tooth names another cell than the one it stands against");
         const std::vector<int> corners = contactCorners(t.south);
         if (t.xy.size() != 2 * (corners.size() + 2)) fail("a tooth's footprint has the wrong number of corners");
+        if (t.ridge.size() != 8) fail("a tooth's ridge must have four corners");
         const std::vector<Pt> p = points(t.xy);
         for (size_t v = 0; v < corners.size(); ++v) {
             const Pt c = cornerMm(s, k, corners[v]);
             if (p[v].x != c.x || p[v].y != c.y) fail("a tooth does not meet its pillar at the pillar's corners");
-            if (cornerTop(s, k, corners[v]) < r->top_units) fail("a tooth rises above the wall it stands against");
+            if (cornerTop(s, k, corners[v]) < s.floor_units) fail("a tooth's collar rises above the wall it stands against");
         }
         for (const int e : freeNeighbours(t.south))
             if (s.keptNeighbour(k, e) >= 0) fail("a tooth stands against a wall inside the model or in a notch");

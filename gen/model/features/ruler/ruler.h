@@ -3,9 +3,14 @@
 // north") and finds it again, and the key says which column and row each
 // tooth marks.
 //
-// A tooth is a small block on the bed beside an edge pillar, from z = 0 to
-// the floor (the base's top), standing against that pillar's outer walls
-// exactly as the tab and the tactile scale do (gen/model/scene_attachments.h):
+// A tooth is a small block beside an edge pillar: a collar from z = 0 to
+// the floor (the base's top) standing against the pillar's outer walls
+// exactly as the tab and the tactile scale do
+// (gen/model/scene_attachments.h), and on its outer part, kRulerCollarMm
+// clear of the pillar, a ridge kRulerToothRiseMm above the floor: a finger
+// sweeping along the edge meets it, and `tsf feel` (whose relief is the
+// height above the floor) renders it. The collar keeps the raised part off
+// the pillar, so a tooth stands beside a pillar of any height.
 //   - SOUTH, under the bottom tip of the southernmost pillar whose centre
 //     lies on the tick's line (lattice i, every N cells of a row from the
 //     south-west pillar): against the pillar's south-west and south-east
@@ -44,10 +49,16 @@
 
 namespace tsf {
 
-/// How far a tooth reaches out from the pillars, mm: a step a fingertip
-/// finds sweeping along an edge (raised lines of tactile graphics are felt
-/// from about 1 mm; 2 mm is found without searching).
-inline constexpr double kRulerToothDepthMm = 2.0;
+/// How far a tooth reaches out from the pillars, mm: its collar and a
+/// ridge 2 mm deep, a bump a fingertip finds sweeping along an edge.
+inline constexpr double kRulerToothDepthMm = 3.0;
+/// The collar between the pillar and the ridge, at the floor, mm: two
+/// nozzle widths and a little, so the slot beside a tall pillar prints open.
+inline constexpr double kRulerCollarMm = 1.0;
+/// How far the ridge rises above the floor, mm: raised lines of tactile
+/// graphics are felt from about 0.5 mm and read without searching at 1 mm
+/// (docs/tactile.md); five 0.2 mm layers.
+inline constexpr double kRulerToothRiseMm = 1.0;
 /// The least distance between two teeth chosen by tsf, mm: a fingertip
 /// counts bumps 10 mm apart without slipping over one (docs/tactile.md).
 inline constexpr double kRulerSpacingMm = 10.0;
@@ -71,6 +82,10 @@ struct RulerTooth {
     /// then the two outer corners; west, the pillar's lower-left and
     /// upper-left corners, then the two outer corners.
     std::vector<double> xy;  ///< x0, y0, x1, y1, ...
+    /// The ridge's footprint (mm, counter-clockwise): its corner on the side
+    /// before the outer edge, the two outer corners, its corner on the side
+    /// after it.
+    std::vector<double> ridge;
 };
 
 /// The ruler as placed on a model.
@@ -79,7 +94,7 @@ struct SceneRuler {
     bool every_given = false;      ///< --ruler N (else chosen)
     double spacing_x_mm = 0, spacing_y_mm = 0;  ///< between neighbouring lines
     int32_t lines_x = 0, lines_y = 0;  ///< lines along each edge (teeth where there is room)
-    int64_t top_units = 0;         ///< the teeth's top: the floor
+    int64_t top_units = 0;         ///< the ridges' top: kRulerToothRiseMm above the floor
     std::vector<RulerTooth> teeth; ///< south teeth west to east, then west teeth south to north
 };
 

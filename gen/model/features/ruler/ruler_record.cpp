@@ -37,7 +37,7 @@ json rulerRecord(const Scene& s) {
     const SceneRuler* r = sceneRuler(s);
     if (!r) return nullptr;
     json teeth = json::array();
-    for (const RulerTooth& t : r->teeth) teeth.push_back({t.south ? "south" : "west", t.kept, t.ordinal, t.xy});
+    for (const RulerTooth& t : r->teeth) teeth.push_back({t.south ? "south" : "west", t.kept, t.ordinal, t.xy, t.ridge});
     return {{"every", {r->every_x, r->every_y}}, {"every_given", r->every_given},
             {"spacing_mm", {r->spacing_x_mm, r->spacing_y_mm}}, {"lines", {r->lines_x, r->lines_y}},
             {"top_units", r->top_units}, {"teeth", teeth}};
@@ -64,8 +64,8 @@ void readRulerRecord(const json& j, const std::string& sp, int /*version*/, Scen
     for (size_t i = 0; i < teeth.size(); ++i) {
         const std::string p = sp + ".teeth[" + std::to_string(i) + "]";
         const json& t = teeth[i];
-        if (!t.is_array() || t.size() != 4 || !t[0].is_string() || !t[3].is_array())
-            fail(p, "expected [\"south\" or \"west\", cell, line, [x, y, ...]]");
+        if (!t.is_array() || t.size() != 5 || !t[0].is_string() || !t[3].is_array() || !t[4].is_array())
+            fail(p, "expected [\"south\" or \"west\", cell, line, [x, y, ...], [ridge x, y, ...]]");
         RulerTooth tooth;
         const std::string edge = t[0].get<std::string>();
         if (edge != "south" && edge != "west") fail(p + "[0]", "expected \"south\" or \"west\"");
@@ -77,6 +77,7 @@ void readRulerRecord(const json& j, const std::string& sp, int /*version*/, Scen
         tooth.row = s.row[size_t(k)];
         tooth.ordinal = int32_t(toInt(t[2], p + "[2]"));
         for (size_t v = 0; v < t[3].size(); ++v) tooth.xy.push_back(toNumber(t[3][v], p + "[3][" + std::to_string(v) + "]"));
+        for (size_t v = 0; v < t[4].size(); ++v) tooth.ridge.push_back(toNumber(t[4][v], p + "[4][" + std::to_string(v) + "]"));
         r.teeth.push_back(std::move(tooth));
     }
     s.features.set(std::move(r));
@@ -91,7 +92,8 @@ nlohmann::json rulerFactsJson(const Scene& s) {
     for (const RulerTooth* t : teethOn(*r, false)) west.push_back({{"row_from_south", rowFromSouth(s, *t)}, {"line", t->ordinal}});
     return {{"every", {r->every_x, r->every_y}}, {"every_given", r->every_given},
             {"spacing_mm", {r->spacing_x_mm, r->spacing_y_mm}}, {"lines", {r->lines_x, r->lines_y}},
-            {"tooth_depth_mm", kRulerToothDepthMm}, {"south_teeth", south}, {"west_teeth", west}};
+            {"tooth_depth_mm", kRulerToothDepthMm}, {"ridge_above_floor_mm", s.zMm(r->top_units - s.floor_units)},
+            {"south_teeth", south}, {"west_teeth", west}};
 }
 
 std::string rulerFactsLines(const Scene& s) {
@@ -102,7 +104,7 @@ std::string rulerFactsLines(const Scene& s) {
       << r->every_x << " columns (" << formatFixed(r->spacing_x_mm, 1) << " mm), " << teethOn(*r, false).size() << " of "
       << r->lines_y << " on the west edge every " << r->every_y << " rows (" << formatFixed(r->spacing_y_mm, 1)
       << " mm)" << (r->every_given ? "" : ", chosen") << "; " << formatSignificant(kRulerToothDepthMm)
-      << " mm out, as high as the floor\n";
+      << " mm out, a ridge " << formatFixed(s.zMm(r->top_units - s.floor_units), 2) << " mm above the floor\n";
     return o.str();
 }
 
@@ -112,7 +114,8 @@ std::string rulerKeyParagraph(const Scene& s, const KeyNumbers& /*numbers*/) {
     std::vector<int32_t> columns, rows;
     for (const RulerTooth* t : teethOn(*r, true)) columns.push_back(columnFromWest(*t));
     for (const RulerTooth* t : teethOn(*r, false)) rows.push_back(rowFromSouth(s, *t));
-    std::string out = "An edge ruler: small teeth stand out on the bed along the south and west edges. ";
+    std::string out = "An edge ruler: small teeth stand out at the foot of the south and west edges, each a ridge " +
+                      formatSignificant(s.zMm(r->top_units - s.floor_units), 2) + " millimetres high. ";
     const auto edge = [&](const char* where, const char* order, const std::vector<int32_t>& marks, int every,
                           double mm, const char* what, int32_t of, const char* counted) {
         if (marks.empty()) return std::string("The ") + where + " edge has no tooth: its pillars leave no room. ";
@@ -146,16 +149,18 @@ std::optional<ScadPiece> rulerScadPiece(const Scene& s) {
                    "// The teeth as tsf placed them, in mm, for the parameters as generated (they do not\n"
                    "// follow cell, base or snap; regenerate with tsf gen to change them): " +
                    std::to_string(r->teeth.size()) + " teeth";
-    // [top, [footprint, ...]] (scad_lib/tsf_ruler.scad): each footprint [[x, y], ...] counter-clockwise.
-    std::string& v = piece.value;
-    v = "[" + formatShortest(s.zMm(r->top_units)) + ", [\n";
-    for (size_t k = 0; k < r->teeth.size(); ++k) {
-        const std::vector<double>& xy = r->teeth[k].xy;
-        v += "  [";
+    // [floor, top, [[footprint, ridge], ...]] (scad_lib/tsf_ruler.scad):
+    // each [[x, y], ...] counter-clockwise.
+    const auto ring = [](const std::vector<double>& xy) {
+        std::string o = "[";
         for (size_t i = 0; i + 1 < xy.size(); i += 2)
-            v += std::string(i ? ", " : "") + "[" + formatShortest(xy[i]) + ", " + formatShortest(xy[i + 1]) + "]";
-        v += k + 1 < r->teeth.size() ? "],\n" : "]\n";
-    }
+            o += std::string(i ? ", " : "") + "[" + formatShortest(xy[i]) + ", " + formatShortest(xy[i + 1]) + "]";
+        return o + "]";
+    };
+    std::string& v = piece.value;
+    v = "[" + formatShortest(s.zMm(s.floor_units)) + ", " + formatShortest(s.zMm(r->top_units)) + ", [\n";
+    for (size_t k = 0; k < r->teeth.size(); ++k)
+        v += "  [" + ring(r->teeth[k].xy) + ", " + ring(r->teeth[k].ridge) + (k + 1 < r->teeth.size() ? "],\n" : "]\n");
     v += "]]";
     return piece;
 }
