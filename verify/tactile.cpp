@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gen/field/hex_grid.h"
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/class_textures.h"
 #include "gen/model/features/felt_heights.h"
 #include "gen/model/features/marks.h"
@@ -495,6 +496,47 @@ const std::vector<TactileThreshold>& tactileThresholds() {
     return table;
 }
 
+namespace {
+
+// What the features of the registry ask a hand to find (gen/model/feature.h:
+// TactileClaim), as printed in whole layers. No check without a claim.
+void checkFeatureClaims(const Scene& s, const TactileOptions& o, TactileResult& r) {
+    Check c{"tactile_features", "what each feature asks a hand to find stands out as printed"};
+    c.unit = "mm";
+    size_t claims = 0;
+    double least = INFINITY;
+    const std::string layers = formatSignificant(o.layer_mm, 3) + " mm layers";
+    for (const Feature* f : features()) {
+        if (!f->tactile_claims) continue;
+        for (const TactileClaim& t : f->tactile_claims(s)) {
+            ++claims;
+            const double rise = printedDotHeightMm(t.top_z_mm, o.layer_mm) - printedDotHeightMm(t.base_z_mm, o.layer_mm);
+            least = std::min(least, rise);
+            const Vec3 at{t.x_mm, t.y_mm, t.top_z_mm};
+            if (rise < t.min_rise_mm - 1e-9) {
+                ++c.count;
+                c.worst.push_back({at, rise, t.what + " rises " + formatFixed(t.top_z_mm - t.base_z_mm, 2) + " mm and prints " +
+                                                 formatFixed(rise, 2) + " mm at " + layers + ", under the " +
+                                                 formatFixed(t.min_rise_mm, 2) + " mm a reader finds (" + t.source + ")"});
+            }
+            const double min_width = std::max(t.min_width_mm, kMinDotBaseNozzles * o.nozzle_mm);
+            if (t.width_mm < min_width - 1e-9) {
+                ++c.count;
+                c.worst.push_back({at, t.width_mm, t.what + " is " + formatFixed(t.width_mm, 2) + " mm across, under " +
+                                                       formatFixed(min_width, 2) + " mm (" + t.source + ")"});
+            }
+        }
+    }
+    if (claims == 0) return;
+    keepWorst(c.worst, o.max_offenders, /*smallest_first=*/true);
+    c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
+    c.note = std::to_string(claims) + " places; the least rise printed " + formatFixed(least, 2) + " mm at " + layers;
+    c.stage = "tactile_marks";
+    r.checks.push_back(std::move(c));
+}
+
+}  // namespace
+
 TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOptions& options) {
     TactileResult r;
     checkPointsAndEdges(mesh, options, r);
@@ -506,6 +548,7 @@ TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOp
         r.checks.push_back(checkAttachmentJoints(*scene, kHandPushN, kPrintedPlaInterlayerMpa, options.max_offenders));
     }
     if (scene && scene->legend) checkBraille(*scene, options, r);
+    if (scene) checkFeatureClaims(*scene, options, r);
     return r;
 }
 

@@ -22,7 +22,9 @@
 //   - hands in its piece of the generated OpenSCAD file (ScadPiece) as text,
 //     which gen/scad/scad_attachments.h joins into the terrain polyhedron
 //     or draws with the feature's own scad_lib/ module;
-//   - says whether it survives a cut into tiles.
+//   - says whether it survives a cut into tiles;
+//   - claims what a hand must find on it (TactileClaim), which the tactile
+//     check proves as printed.
 // What the user asks of a feature is held in SceneParams::requests by the
 // feature's own request type, set by the command line.
 // Every entry may be null: the feature has nothing of that kind.
@@ -87,6 +89,22 @@ struct ScadPiece {
     std::string module_call;   ///< "tsf_with_scale(tactile_scale, show_scale) "
 };
 
+/// Something a feature asks a hand to find, which the tactile check
+/// (verify/tactile.h, `tactile_features`) proves as printed: an element
+/// whose top stands top_z_mm high over a surface at base_z_mm beside it
+/// must rise at least min_rise_mm once both are printed in whole layers,
+/// and be at least min_width_mm across (and two nozzle widths, so it
+/// prints as a shape, not a blob).
+struct TactileClaim {
+    std::string what;  ///< for a person: "the step for 20", "the tooth of column 5"
+    double x_mm = 0, y_mm = 0;  ///< where, model frame
+    double top_z_mm = 0, base_z_mm = 0;
+    double min_rise_mm = 0;
+    double width_mm = 0;  ///< its narrowest width
+    double min_width_mm = 0;
+    std::string source;  ///< where the minimums come from
+};
+
 /// How the model's key (gen/key/model_key.h) writes numbers for a reader: a
 /// number alone, and a value with the model's units.
 struct KeyNumbers {
@@ -133,6 +151,9 @@ struct Feature {
     bool (*measures)(const Scene& scene);
     /// False when the model carries it and cannot be cut into tiles.
     bool (*survives_tiles)(const Scene& scene);
+    /// What it asks a hand to find (the tactile check proves it as
+    /// printed); none without it.
+    std::vector<TactileClaim> (*tactile_claims)(const Scene& scene);
 };
 
 }  // namespace tsf

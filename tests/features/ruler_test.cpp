@@ -17,6 +17,7 @@
 #include "gen/model/scene_json.h"
 #include "gen/scad/scad_emitter.h"
 #include "haptics/height_grid.h"
+#include "verify/tactile.h"
 #include "haptics/printed_relief.h"
 #include "tests/scad_engines/engine_fixtures.h"
 #include "tests/scad_engines/same_solid.h"
@@ -160,6 +161,28 @@ TEST(Ruler, TsfFeelFeelsEachToothBesideTheEdge) {
         ++felt;
     }
     EXPECT_GE(felt, 2);
+}
+
+TEST(Ruler, TheTactileCheckProvesEachRidgeAsPrinted) {
+    Scene s = buildScene(hill(), rulerParams());
+    const Mesh m = meshScene(s);
+    const auto featureCheck = [&](const Scene& scene, double layer_mm) {
+        TactileOptions o;
+        o.layer_mm = layer_mm;
+        for (const Check& c : checkTactile(m, &scene, o).checks)
+            if (c.id == "tactile_features") return c;
+        ADD_FAILURE() << "no tactile_features check";
+        return Check{};
+    };
+    EXPECT_EQ(featureCheck(s, 0.2).status, CheckStatus::Pass);
+    EXPECT_EQ(featureCheck(s, 0.3).status, CheckStatus::Pass);  // 1 mm prints 0.9 mm: found
+    // A ridge 0.3 mm high: one 0.2 mm layer... less than 0.5 mm, and none at 0.4 mm layers.
+    s.features.get<SceneRuler>()->top_units = s.floor_units + 300;
+    const Check low = featureCheck(s, 0.4);
+    EXPECT_EQ(low.status, CheckStatus::Fail);
+    EXPECT_EQ(low.count, sceneRuler(s)->teeth.size());
+    ASSERT_FALSE(low.worst.empty());
+    EXPECT_NE(low.worst[0].detail.find("tooth of"), std::string::npos) << low.worst[0].detail;
 }
 
 TEST(Ruler, TheSidecarHoldsTheTeethAsPlaced) {

@@ -48,6 +48,7 @@ const Feature& scaleFeature() {
         .scad_piece = scaleScadPiece,
         .measures = scaleMeasures,
         .survives_tiles = scaleSurvivesTiles,
+        .tactile_claims = scaleTactileClaims,
     };
     return feature;
 }

@@ -118,6 +118,22 @@ std::string scaleFactsLines(const Scene& s) {
     return o.str();
 }
 
+std::vector<TactileClaim> scaleTactileClaims(const Scene& s) {
+    const SceneScale* sc = sceneScale(s);
+    if (!sc) return {};
+    std::vector<TactileClaim> out;
+    int64_t below = sc->foot_top_units;
+    for (const ScaleStep& st : sc->steps) {
+        out.push_back({"the step for " + formatSignificant(st.value), 0.5 * (sc->xs_mm + sc->x1_mm),
+                       0.5 * (st.y_south_mm + st.y_north_mm), s.zMm(st.top_units), s.zMm(below), kScaleMinRiserMm,
+                       std::min(sc->x1_mm - sc->xs_mm, st.y_north_mm - st.y_south_mm), kScaleTreadMm,
+                       "risers of 1 mm for what matters (3D-printed tactile graphics, printdisability.org); treads "
+                       "of 1/4 in (APH, Guidelines for Design of Tactile Graphics, 1997)"});
+        below = st.top_units;
+    }
+    return out;
+}
+
 std::string scaleKeyParagraph(const Scene& s, const KeyNumbers& say) {
     const SceneScale* sc = sceneScale(s);
     if (!sc) return "";

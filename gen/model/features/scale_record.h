@@ -31,6 +31,11 @@ std::string scaleFactsLines(const Scene& scene);
 
 /// Its paragraph in the model's key (gen/key/model_key.h): its steps, lowest
 /// first, and how to read a value by them; "" without it.
+/// What the scale asks a hand to find: each step rising at least
+/// kScaleMinRiserMm above the one before it (the first above the floor),
+/// on a tread at least kScaleTreadMm long, once printed.
+std::vector<TactileClaim> scaleTactileClaims(const Scene& scene);
+
 std::string scaleKeyParagraph(const Scene& scene, const KeyNumbers& numbers);
 
 }  // namespace tsf

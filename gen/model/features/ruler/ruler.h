@@ -122,5 +122,8 @@ nlohmann::json rulerFactsJson(const Scene& scene);
 std::string rulerFactsLines(const Scene& scene);
 std::string rulerKeyParagraph(const Scene& scene, const KeyNumbers& numbers);
 std::optional<ScadPiece> rulerScadPiece(const Scene& scene);
+/// What the ruler asks a hand to find: each ridge at least 0.5 mm above
+/// the floor, once printed.
+std::vector<TactileClaim> rulerTactileClaims(const Scene& scene);
 
 }  // namespace tsf

@@ -40,6 +40,7 @@ const Feature& rulerFeature() {
         .scad_piece = rulerScadPiece,
         .measures = nullptr,
         .survives_tiles = rulerSurvivesTiles,
+        .tactile_claims = rulerTactileClaims,
     };
     return feature;
 }

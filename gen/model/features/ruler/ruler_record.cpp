@@ -132,6 +132,22 @@ std::string rulerKeyParagraph(const Scene& s, const KeyNumbers& /*numbers*/) {
     return out;
 }
 
+std::vector<TactileClaim> rulerTactileClaims(const Scene& s) {
+    const SceneRuler* r = sceneRuler(s);
+    if (!r) return {};
+    std::vector<TactileClaim> out;
+    for (const RulerTooth& t : r->teeth) {
+        const double x0 = std::min(t.ridge[0], t.ridge[4]), x1 = std::max(t.ridge[0], t.ridge[4]);
+        const double y0 = std::min(t.ridge[1], t.ridge[5]), y1 = std::max(t.ridge[1], t.ridge[5]);
+        out.push_back({std::string("the ") + (t.south ? "south" : "west") + " tooth of " +
+                           (t.south ? "column " + std::to_string(t.col + 1) : "row " + std::to_string(s.grid.rows - t.row)),
+                       0.5 * (x0 + x1), 0.5 * (y0 + y1), s.zMm(r->top_units), s.zMm(s.floor_units), 0.5,
+                       std::min(x1 - x0, y1 - y0), 0.0,
+                       "heights of at least 0.5 mm to detect (3D-printed tactile graphics, printdisability.org)"});
+    }
+    return out;
+}
+
 std::optional<ScadPiece> rulerScadPiece(const Scene& s) {
     const SceneRuler* r = sceneRuler(s);
     if (!r) return std::nullopt;
