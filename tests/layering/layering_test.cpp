@@ -221,15 +221,32 @@ TEST(Layering, NoIncludeCycleBetweenModules) {
     }
 }
 
-TEST(Layering, NoFolderHoldsMoreThan24Modules) {
-    // A folder of more than two dozen modules side by side no longer shows
-    // the flow; split it into subfolders that do.
+// The modules of each folder under the given top-level folders, by folder
+// (a subfolder is a folder of its own).
+std::map<std::string, std::set<std::string>> modulesPerFolder(std::initializer_list<const char*> tops) {
     const fs::path root(TSF_SOURCE_DIR);
     std::map<std::string, std::set<std::string>> per_folder;
-    for (const std::string& rel : test::sourceFiles(root, test::kProjectTops))
+    for (const std::string& rel : test::sourceFiles(root, tops))
         per_folder[fs::path(rel).parent_path().string()].insert(moduleOf(rel));
+    return per_folder;
+}
+
+// A folder of more than two dozen modules side by side no longer shows the
+// flow; split it into subfolders that do.
+constexpr size_t kMaxModulesPerFolder = 24;
+
+TEST(Layering, NoFolderHoldsMoreThan24Modules) {
+    const auto per_folder = modulesPerFolder(test::kProjectTops);
     ASSERT_GT(per_folder.size(), 10u);
-    for (const auto& [folder, mods] : per_folder) EXPECT_LE(mods.size(), 24u) << folder;
+    for (const auto& [folder, mods] : per_folder) EXPECT_LE(mods.size(), kMaxModulesPerFolder) << folder;
+}
+
+TEST(Layering, NoTestFolderHoldsMoreThan24Modules) {
+    // The tests are read as the code is: a test folder is split by what its
+    // tests test (tests/gen/model, tests/gen/cli, ...), one binary still.
+    const auto per_folder = modulesPerFolder({"tests", "bench"});
+    ASSERT_GT(per_folder.size(), 10u) << "the tests were not found at " << TSF_SOURCE_DIR;
+    for (const auto& [folder, mods] : per_folder) EXPECT_LE(mods.size(), kMaxModulesPerFolder) << folder;
 }
 
 }  // namespace

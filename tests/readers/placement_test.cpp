@@ -65,7 +65,7 @@ PointTable lonLat() {
 }
 
 // (The equal-area default goes through PROJ in the GDAL module: tested
-// end to end in tests/gen/equal_area_cli_test.cpp.)
+// end to end in tests/gen/cli/equal_area_cli_test.cpp.)
 TEST(Projection, EquirectProjectsAboutTheMeanLatitudeAndStatesItsDistortion) {
     PointTable p = lonLat();
     EXPECT_TRUE(looksLikeLonLat(p));

@@ -22,7 +22,7 @@ using test::fieldFromRows;
 using test::kNaN;
 
 // The marks placed in the data (--marks-on data), which these tests are
-// about; the orientation tab has its own (orientation_tab_cli_test.cpp).
+// about; the orientation tab has its own (tests/gen/cli/orientation_tab_cli_test.cpp).
 SceneParams params(double pitch, Bottom bottom = Bottom::Flat) {
     SceneParams p;
     p.marks.place = MarkPlace::Data;

@@ -1,0 +1,58 @@
+#include "gen/model/build/model_marks.h"
+
+#include <utility>
+
+#include "gen/model/features/marks.h"
+#include "gen/model/features/orientation_tab.h"
+#include "gen/util/error.h"
+
+namespace tsf {
+
+void placeModelMarks(const SceneParams& params, Scene& s) {
+    if (!params.tile_marks) {
+        placeMarks(s);
+        return;
+    }
+    // A tile draws the model's marks where the model has them.
+    s.marks = {};
+    s.marks.notch = params.tile_marks->notch;
+    s.marks.triangle = params.tile_marks->triangle;
+    if (s.marks.triangle) {
+        const int32_t anchor = s.marks.triangle->anchor;
+        if (anchor < 0 || size_t(anchor) >= s.kept_index.size() || s.kept_index[size_t(anchor)] < 0)
+            throw InputError("a tile does not hold the cell its orientation triangle stands on");
+        s.marks.triangle->anchor = s.kept_index[size_t(anchor)];
+    }
+    buildMarkFaces(s);
+}
+
+void placeModelTab(const SceneParams& params, Scene& s) {
+    if (!params.tile_marks || !params.tile_marks->tab) {
+        placeTab(s);
+        return;
+    }
+    // A tile carries the model's own tab (touched cells given as grid cell indices).
+    OrientationTab tab = *params.tile_marks->tab;
+    for (auto& [k, e] : tab.touched) {
+        if (k < 0 || size_t(k) >= s.kept_index.size() || s.kept_index[size_t(k)] < 0)
+            throw InputError("a tile does not hold the pillars its orientation tab stands against");
+        k = s.kept_index[size_t(k)];
+    }
+    s.marks.tab = std::move(tab);
+}
+
+bool tabFallsBackToData(const SceneParams& params, const Scene& s) {
+    return wantsTab(params) && !s.marks.tab && s.keptCount() > 0;
+}
+
+SceneParams marksInData(const SceneParams& params) {
+    SceneParams in_data = params;
+    in_data.marks.place = MarkPlace::Data;
+    return in_data;
+}
+
+void noteMarksInData(const std::string& tab_note, Scene& again) {
+    again.notes.insert(again.notes.begin(), tab_note + "; they are placed in the data instead, where they fit");
+}
+
+}  // namespace tsf

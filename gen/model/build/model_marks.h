@@ -1,0 +1,36 @@
+// The orientation marks of a model or of one of its tiles: a tile draws
+// the model's own notch, triangle and tab where the model has them; a
+// model places its own (gen/model/features/marks.h, orientation_tab.h).
+// When a tab was asked for and no pillar on the west side can carry it,
+// the marks go in the data instead, where they fit, as the thesis places
+// them, rather than nowhere: the Scene is built again for that.
+#pragma once
+
+#include <string>
+
+#include "gen/model/scene.h"
+
+namespace tsf {
+
+/// The notch and the triangle: the tile's (params.tile_marks, the
+/// triangle's anchor given as a grid index) or placed for the model, with
+/// the faces they need. Throws InputError when a tile does not hold the
+/// triangle's cell.
+void placeModelMarks(const SceneParams& params, Scene& s);
+
+/// The orientation tab: the tile's (its touched cells given as grid
+/// indices) or placed for the model. Throws InputError when a tile does
+/// not hold the pillars the tab stands against.
+void placeModelTab(const SceneParams& params, Scene& s);
+
+/// A tab was asked for and none could be placed (placeTab's last note says why).
+bool tabFallsBackToData(const SceneParams& params, const Scene& s);
+
+/// The parameters of the build again: the marks in the data.
+SceneParams marksInData(const SceneParams& params);
+
+/// The rebuilt Scene's first note: why the tab's marks are in the data
+/// (tab_note: the note of the build without a tab).
+void noteMarksInData(const std::string& tab_note, Scene& again);
+
+}  // namespace tsf
