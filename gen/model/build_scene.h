@@ -1,7 +1,8 @@
 // buildScene: a HexField and the user's parameters -> the Scene (the one
 // description every mesher, the OpenSCAD emitter and the verifier draw).
 // Cells, heights and the value mapping first, then each feature places what
-// it adds (marks, top shapes, legend, scale, halves).
+// it adds (marks, top shapes, legend, scale, halves); each phase is a free
+// function of its own in gen/model/build/.
 #pragma once
 
 #include "gen/field/hex_field.h"
