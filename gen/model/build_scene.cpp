@@ -88,7 +88,6 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         noteMarksInData(s.notes.back(), again);
         return again;
     }
-    if (std::optional<FootprintClaim> tab = tabClaim(s)) s.claims.push_back(std::move(*tab));
     placeFeatures(s, FeaturePhase::Beside);
 
     if (const std::optional<double> snap_mm = float32SnapMm(params, s)) {

@@ -26,7 +26,9 @@ void placeModelMarks(const SceneParams& params, Scene& s) {
     buildMarkFaces(s);
 }
 
-void placeModelTab(const SceneParams& params, Scene& s) {
+namespace {
+
+void placeTabAsAsked(const SceneParams& params, Scene& s) {
     if (!params.tile_marks || !params.tile_marks->tab) {
         placeTab(s);
         return;
@@ -39,6 +41,14 @@ void placeModelTab(const SceneParams& params, Scene& s) {
         k = s.kept_index[size_t(k)];
     }
     s.marks.tab = std::move(tab);
+}
+
+}  // namespace
+
+void placeModelTab(const SceneParams& params, Scene& s) {
+    placeTabAsAsked(params, s);
+    // The features of the registry keep clear of it without naming it.
+    if (std::optional<FootprintClaim> tab = tabClaim(s)) s.claims.push_back(std::move(*tab));
 }
 
 bool tabFallsBackToData(const SceneParams& params, const Scene& s) {

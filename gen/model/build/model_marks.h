@@ -21,6 +21,8 @@ void placeModelMarks(const SceneParams& params, Scene& s);
 /// The orientation tab: the tile's (its touched cells given as grid
 /// indices) or placed for the model. Throws InputError when a tile does
 /// not hold the pillars the tab stands against.
+/// Its footprint is claimed (Scene::claims), so the features of the
+/// registry keep clear of it.
 void placeModelTab(const SceneParams& params, Scene& s);
 
 /// A tab was asked for and none could be placed (placeTab's last note says why).
