@@ -25,6 +25,7 @@
 #include "tests/support/input_error.h"
 #include "tests/support/mesh_invariants.h"
 #include "tests/support/run.h"
+#include "tests/support/verify_report.h"
 
 namespace tsf {
 namespace {
@@ -242,11 +243,7 @@ TEST(RulerCli, GenWritesTheTeethAndVerifyReadsThemBack) {
     EXPECT_EQ(inv.components, 1u);
     const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json --json", dir);
     ASSERT_EQ(v.exit_code, test::kExitOk) << v.out << v.err;
-    std::string read_back;
-    const auto report = nlohmann::json::parse(v.out);
-    for (const auto& c : report["checks"])
-        if (c["id"] == "ruler_read_back") read_back = c["status"].get<std::string>();
-    EXPECT_EQ(read_back, "pass") << v.out;
+    EXPECT_EQ(test::checkStatus(v.out, "ruler_read_back"), "pass") << v.out;
 }
 
 // The teeth written as data and joined to the pillars by each engine: the

@@ -8,33 +8,23 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run.h"
+#include "tests/support/verify_report.h"
 
 namespace tsf {
 namespace {
 namespace fs = std::filesystem;
 
 // The status of check `id` in `tsf verify --json` output ("" when absent).
-std::string statusOf(const std::string& json_text, const std::string& id) {
-    const nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
-    if (j.is_discarded()) return "";
-    for (const auto& c : j["checks"])
-        if (c["id"] == id) return c["status"].get<std::string>();
-    return "";
-}
+std::string statusOf(const std::string& json_text, const std::string& id) { return test::checkStatus(json_text, id); }
 
 std::string noteOf(const std::string& json_text, const std::string& id) {
-    const nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
-    if (j.is_discarded()) return "";
-    for (const auto& c : j["checks"])
-        if (c["id"] == id) return c["note"].get<std::string>();
-    return "";
+    const nlohmann::json c = test::checkOf(nlohmann::json::parse(json_text, nullptr, false), id);
+    return c.is_object() ? c.value("note", "") : "";
 }
 
 int64_t countOf(const std::string& json_text, const std::string& id) {
-    const nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
-    for (const auto& c : j["checks"])
-        if (c["id"] == id) return c["count"].get<int64_t>();
-    return -1;
+    const nlohmann::json c = test::checkOf(nlohmann::json::parse(json_text, nullptr, false), id);
+    return c.is_object() ? c.value("count", int64_t(-1)) : -1;
 }
 
 // A closed box [0, w] x [0, d] x [0, h] as OFF text.

@@ -8,6 +8,7 @@
 #include "gen/mesh_io/mesh_reader.h"
 #include "tests/support/mesh_invariants.h"
 #include "tests/support/run.h"
+#include "tests/support/verify_report.h"
 
 namespace tsf {
 namespace {
@@ -44,11 +45,7 @@ TEST(ScaleCli, StaircaseOfRoundValuesBesideThePillarsReadBackByVerify) {
 
     const auto v = test::runTsf("verify " + model + " --scene " + model + ".scene.json --json", dir);
     ASSERT_EQ(v.exit_code, test::kExitOk) << v.out << v.err;
-    bool read_back = false;
-    const auto report = nlohmann::json::parse(v.out);
-    for (const auto& c : report["checks"])
-        if (c["id"] == "scale_read_back") read_back = c["status"] == "pass";
-    EXPECT_TRUE(read_back) << v.out;
+    EXPECT_EQ(test::checkStatus(v.out, "scale_read_back"), "pass") << v.out;
 
     // A step of 2 is kept as given.
     const auto g = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --height 12 --scale-step 2 -o " +
