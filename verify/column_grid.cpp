@@ -328,7 +328,7 @@ bool ColumnGrid::firstCommon(uint32_t a, uint32_t b, uint32_t bin) const {
 }
 
 void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint32_t, uint32_t)>& visit,
-                                        unsigned workers) const {
+                                        unsigned workers, bool share_no_vertex) const {
     const size_t columns = start_.size() - 1;
     if (columns == 0 || entries_.empty()) return;
     workers = std::max(1u, std::min(detail::workerCount(workers), unsigned((columns + kColumnsPerTask - 1) / kColumnsPerTask)));
@@ -353,11 +353,18 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
                 }
                 for (uint32_t i = 0; i + 1 < n; ++i) {
                     const Box3& u = boxes[i];
+                    const auto& qi = triangles_[entries_[first + i]];
                     for (uint32_t j = i + 1; j < n; ++j) {
                         const Box3& v = boxes[j];
                         if (u.lo[2] > v.hi[2] || v.lo[2] > u.hi[2] || u.lo[0] > v.hi[0] || v.lo[0] > u.hi[0] ||
                             u.lo[1] > v.hi[1] || v.lo[1] > u.hi[1])
                             continue;
+                        if (share_no_vertex) {
+                            const auto& qj = triangles_[entries_[first + j]];
+                            if (qi[0] == qj[0] || qi[0] == qj[1] || qi[0] == qj[2] || qi[1] == qj[0] || qi[1] == qj[1] ||
+                                qi[1] == qj[2] || qi[2] == qj[0] || qi[2] == qj[1] || qi[2] == qj[2])
+                                continue;
+                        }
                         const uint32_t a = entries_[first + i], b = entries_[first + j];
                         const BoxColumns &ca = box_columns[i], &cb = box_columns[j];
                         // Two boxes of columns meet in a box: its first column
