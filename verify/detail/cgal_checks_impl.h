@@ -176,17 +176,24 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
             // fan: a fan the certificate of vertex_fans.h clears needs no
             // pair tested; another has each of its pairs decided here, a
             // pair sharing an edge at its lower vertex only.
-            {
-                const VertexCorners corners = cornersByVertex(mesh, &tested);
-                const size_t nv = mesh.positions.size();
+            // The corners are listed a block of vertices at a time, of at
+            // most kCornersPerBlock corners on average (64 MB: a 13 M
+            // triangle model takes three blocks, and its check's peak of
+            // memory does not grow).
+            constexpr size_t kCornersPerBlock = size_t(1) << 24;
+            const size_t nv = mesh.positions.size();
+            const size_t blocks = std::max<size_t>(1, (3 * mesh.triangles.size() + kCornersPerBlock - 1) / kCornersPerBlock);
+            for (size_t block = 0; block < blocks; ++block) {
+                const size_t first = nv * block / blocks, last = nv * (block + 1) / blocks;
+                const VertexCorners corners = cornersByVertex(mesh, &tested, uint32_t(first), uint32_t(last));
                 constexpr size_t kVerticesPerTask = 4096;
-                std::atomic<size_t> next_vertex{0};
+                std::atomic<size_t> next_vertex{first};
                 runOnWorkers(unsigned(found.size()), [&](unsigned w, const std::atomic<bool>& stop) {
                     std::vector<FanCorner> fan;
-                    for (size_t task; !stop.load() && (task = next_vertex.fetch_add(kVerticesPerTask)) < nv;) {
-                        for (size_t v = task; v < std::min(nv, task + kVerticesPerTask); ++v) {
+                    for (size_t task; !stop.load() && (task = next_vertex.fetch_add(kVerticesPerTask)) < last;) {
+                        for (size_t v = task; v < std::min(last, task + kVerticesPerTask); ++v) {
                             fan.clear();
-                            for (uint32_t e = corners.start[v]; e < corners.start[v + 1]; ++e) {
+                            for (uint32_t e = corners.start[v - first]; e < corners.start[v - first + 1]; ++e) {
                                 const uint32_t t = corners.list[e] / 3, i = corners.list[e] % 3;
                                 const auto& q = mesh.triangles[t];
                                 fan.push_back({t, q[(i + 1) % 3], q[(i + 2) % 3]});
