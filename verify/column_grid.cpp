@@ -336,6 +336,7 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
     detail::runOnWorkers(workers, [&](unsigned worker, const std::atomic<bool>& stop) {
         std::vector<Box3> boxes;
         std::vector<BoxColumns> box_columns;
+        std::vector<uint8_t> columns_known;  // box_columns[i] computed (only for triangles of a visited pair)
         for (size_t task; !stop.load() && (task = next.fetch_add(kColumnsPerTask)) < columns;) {
             const size_t end = std::min(columns, task + kColumnsPerTask);
             for (size_t bin = task; bin < end; ++bin) {
@@ -343,13 +344,13 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
                 if (n < 2) continue;
                 boxes.resize(n);
                 box_columns.resize(n);
+                columns_known.assign(n, 0);
                 for (uint32_t i = 0; i < n; ++i) {
                     const auto& q = triangles_[entries_[first + i]];
                     const Vec3 &p0 = positions_[q[0]], &p1 = positions_[q[1]], &p2 = positions_[q[2]];
                     Box3& box = boxes[i];
                     box = {{std::min({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}), std::min({p0.z, p1.z, p2.z})},
                            {std::max({p0.x, p1.x, p2.x}), std::max({p0.y, p1.y, p2.y}), std::max({p0.z, p1.z, p2.z})}};
-                    box_columns[i] = boxColumns(box.lo[0], box.hi[0], box.lo[1], box.hi[1]);
                 }
                 for (uint32_t i = 0; i + 1 < n; ++i) {
                     const Box3& u = boxes[i];
@@ -366,6 +367,11 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
                                 continue;
                         }
                         const uint32_t a = entries_[first + i], b = entries_[first + j];
+                        for (const uint32_t k : {i, j})
+                            if (!columns_known[k]) {
+                                box_columns[k] = boxColumns(boxes[k].lo[0], boxes[k].hi[0], boxes[k].lo[1], boxes[k].hi[1]);
+                                columns_known[k] = 1;
+                            }
                         const BoxColumns &ca = box_columns[i], &cb = box_columns[j];
                         // Two boxes of columns meet in a box: its first column
                         // is the later first row and the later first column.

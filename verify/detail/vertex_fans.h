@@ -57,6 +57,17 @@ inline uint32_t lowestSharedIndex(const std::array<uint32_t, 3>& a, const std::a
 inline bool orderFan(std::vector<FanCorner>& fan) {
     const size_t k = fan.size();
     if (k < 3) return false;
+    if (k <= 16) {
+        // A few triangles (nearly every vertex): in place, each followed by
+        // the one whose `next` is its `prev`.
+        for (size_t i = 0; i + 1 < k; ++i) {
+            size_t j = i + 1;
+            while (j < k && fan[j].next != fan[i].prev) ++j;
+            if (j == k) return false;  // open here, or closed too early: more than one cycle
+            std::swap(fan[i + 1], fan[j]);
+        }
+        return fan[k - 1].prev == fan[0].next;
+    }
     std::sort(fan.begin(), fan.end(), [](const FanCorner& x, const FanCorner& y) { return x.next < y.next; });
     for (size_t i = 1; i < k; ++i)
         if (fan[i].next == fan[i - 1].next) return false;
@@ -104,7 +115,14 @@ inline bool fanMeetsOnlyAlongItsEdges(const std::vector<Vec3>& pos, uint32_t v, 
     auto point = [&](uint32_t i) { return P(pos[i].x, pos[i].y, pos[i].z); };
     // Seen along q - v, the orientation of the directions v -> x, v -> y.
     auto turn = [&](const P& x, const P& y) { return int(CGAL::orientation(pv, x, y, pq)); };
-    const P r = point(fan[0].next);  // the reference direction for the winding
+    // The reference direction for the winding: any one counts the turns;
+    // a point inside the first wedge, at uneven weights, is unlikely to be
+    // exactly in line with v and a corner (the lattice puts many corners in
+    // line with v, and an exact zero costs the predicate its exact fallback).
+    const Vec3 &a0 = pos[fan[0].next], &b0 = pos[fan[0].prev];
+    const P r(o.x + 0.6180339887 * (a0.x - o.x) + 0.3090169944 * (b0.x - o.x),
+              o.y + 0.6180339887 * (a0.y - o.y) + 0.3090169944 * (b0.y - o.y),
+              o.z + 0.6180339887 * (a0.z - o.z) + 0.3090169944 * (b0.z - o.z));
     int sense = 0, winding = 0;
     for (const FanCorner& c : fan) {
         const P a = point(c.next), b = point(c.prev);
