@@ -11,8 +11,10 @@
 #   git clone https://github.com/anoved/hmstl && git clone https://github.com/anoved/libtrix
 # tsf runs as the issue measures it: --cell 0.15 --cull none --no-verify
 # --no-key (one pillar per pixel, no self-check, the sidecar and the fsyncs
-# kept); a second tsf row keeps the default self-check. Prints a Markdown
-# table (docs/benchmarks.md, "tsf and hmstl").
+# kept); a second tsf row keeps the default self-check; a second hmstl row
+# syncs its file and folder (coreutils sync) inside the timed command, as
+# tsf syncs its outputs. Prints a Markdown table (docs/benchmarks.md, "tsf
+# and hmstl").
 set -euo pipefail
 runs=5
 size=1000
@@ -62,6 +64,10 @@ measure() {  # measure NAME COMMAND...: appends "name wall kb" to $work/runs
 : > "$work/runs"
 for ((i = 0; i < runs; i++)); do
   measure hmstl "$work/hmstl" -i "$work/f.png" -o "$work/h.stl" -z 0.1
+  # hmstl writes and never syncs; tsf syncs its files and their folder
+  # before renaming them. Synced the same way, in the timed command:
+  measure hmstl_synced sh -c '"$1" -i "$2" -o "$3" -z 0.1 && sync "$3" "$(dirname "$3")"' sh \
+      "$work/hmstl" "$work/f.png" "$work/hs.stl"
   measure tsf "$tsf" gen "$work/f.png" --cell 0.15 --cull none --no-verify --keep-unprintable --no-key -o "$work/t.stl"
   measure tsf_checked "$tsf" gen "$work/f.png" --cell 0.15 --cull none --keep-unprintable --no-key -o "$work/c.stl"
 done
@@ -77,14 +83,16 @@ def triangles(path):
     with open(path, "rb") as f:
         f.seek(80)
         return struct.unpack("<I", f.read(4))[0]
-files = {"hmstl": "h.stl", "tsf": "t.stl", "tsf_checked": "c.stl"}
-what = {"hmstl": "hmstl -z 0.1", "tsf": "tsf gen --cell 0.15 --cull none --no-verify",
+files = {"hmstl": "h.stl", "hmstl_synced": "hs.stl", "tsf": "t.stl", "tsf_checked": "c.stl"}
+what = {"hmstl": "hmstl -z 0.1", "hmstl_synced": "hmstl -z 0.1, then its file and folder synced (as tsf does)",
+        "tsf": "tsf gen --cell 0.15 --cull none --no-verify",
         "tsf_checked": "tsf gen --cell 0.15 --cull none (default self-check)"}
 cells = n * n
 base = None
-print(f"| {n} x {n} PNG | triangles | wall s (median of {runs}, range) | peak MB | ns per cell | ns per triangle | per triangle vs hmstl |")
-print("|---|---|---|---|---|---|---|")
-for name in ("hmstl", "tsf", "tsf_checked"):
+print(f"| {n} x {n} PNG | triangles | wall s (median of {runs}, range) | peak MB | ns per cell | ns per triangle | per triangle vs hmstl | vs hmstl synced |")
+print("|---|---|---|---|---|---|---|---|")
+base_synced = None
+for name in ("hmstl", "hmstl_synced", "tsf", "tsf_checked"):
     walls = sorted(w for w, _ in rows[name])
     med = statistics.median(walls)
     peak = max(k for _, k in rows[name]) / 1024
@@ -92,6 +100,9 @@ for name in ("hmstl", "tsf", "tsf_checked"):
     per_tri = med / tri * 1e9
     if base is None:
         base = per_tri
+    if name == "hmstl_synced":
+        base_synced = per_tri
+    synced = f"{per_tri / base_synced:.2f}x" if base_synced else ""
     print(f"| {what[name]} | {tri} | {med:.2f} ({walls[0]:.2f}-{walls[-1]:.2f}) | {peak:.0f} | "
-          f"{med / cells * 1e9:.0f} | {per_tri:.0f} | {per_tri / base:.2f}x |")
+          f"{med / cells * 1e9:.0f} | {per_tri:.0f} | {per_tri / base:.2f}x | {synced} |")
 PY

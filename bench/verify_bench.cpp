@@ -122,7 +122,7 @@ void BM_VerifyModel(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_VerifySolid)->Args({100, 0})->Args({100, 1})->Args({300, 0})->Args({300, 1})->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
+BENCHMARK(BM_VerifySolid)->Args({100, 0})->Args({100, 1})->Args({300, 0})->Args({300, 1})->Args({1000, 0})->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyRayTree)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyColumnGrid)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyReadback)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();

@@ -328,7 +328,7 @@ bool ColumnGrid::firstCommon(uint32_t a, uint32_t b, uint32_t bin) const {
 }
 
 void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint32_t, uint32_t)>& visit,
-                                        unsigned workers) const {
+                                        unsigned workers, bool share_no_vertex) const {
     const size_t columns = start_.size() - 1;
     if (columns == 0 || entries_.empty()) return;
     workers = std::max(1u, std::min(detail::workerCount(workers), unsigned((columns + kColumnsPerTask - 1) / kColumnsPerTask)));
@@ -336,6 +336,7 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
     detail::runOnWorkers(workers, [&](unsigned worker, const std::atomic<bool>& stop) {
         std::vector<Box3> boxes;
         std::vector<BoxColumns> box_columns;
+        std::vector<uint8_t> columns_known;  // box_columns[i] computed (only for triangles of a visited pair)
         for (size_t task; !stop.load() && (task = next.fetch_add(kColumnsPerTask)) < columns;) {
             const size_t end = std::min(columns, task + kColumnsPerTask);
             for (size_t bin = task; bin < end; ++bin) {
@@ -343,22 +344,34 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
                 if (n < 2) continue;
                 boxes.resize(n);
                 box_columns.resize(n);
+                columns_known.assign(n, 0);
                 for (uint32_t i = 0; i < n; ++i) {
                     const auto& q = triangles_[entries_[first + i]];
                     const Vec3 &p0 = positions_[q[0]], &p1 = positions_[q[1]], &p2 = positions_[q[2]];
                     Box3& box = boxes[i];
                     box = {{std::min({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}), std::min({p0.z, p1.z, p2.z})},
                            {std::max({p0.x, p1.x, p2.x}), std::max({p0.y, p1.y, p2.y}), std::max({p0.z, p1.z, p2.z})}};
-                    box_columns[i] = boxColumns(box.lo[0], box.hi[0], box.lo[1], box.hi[1]);
                 }
                 for (uint32_t i = 0; i + 1 < n; ++i) {
                     const Box3& u = boxes[i];
+                    const auto& qi = triangles_[entries_[first + i]];
                     for (uint32_t j = i + 1; j < n; ++j) {
                         const Box3& v = boxes[j];
                         if (u.lo[2] > v.hi[2] || v.lo[2] > u.hi[2] || u.lo[0] > v.hi[0] || v.lo[0] > u.hi[0] ||
                             u.lo[1] > v.hi[1] || v.lo[1] > u.hi[1])
                             continue;
+                        if (share_no_vertex) {
+                            const auto& qj = triangles_[entries_[first + j]];
+                            if (qi[0] == qj[0] || qi[0] == qj[1] || qi[0] == qj[2] || qi[1] == qj[0] || qi[1] == qj[1] ||
+                                qi[1] == qj[2] || qi[2] == qj[0] || qi[2] == qj[1] || qi[2] == qj[2])
+                                continue;
+                        }
                         const uint32_t a = entries_[first + i], b = entries_[first + j];
+                        for (const uint32_t k : {i, j})
+                            if (!columns_known[k]) {
+                                box_columns[k] = boxColumns(boxes[k].lo[0], boxes[k].hi[0], boxes[k].lo[1], boxes[k].hi[1]);
+                                columns_known[k] = 1;
+                            }
                         const BoxColumns &ca = box_columns[i], &cb = box_columns[j];
                         // Two boxes of columns meet in a box: its first column
                         // is the later first row and the later first column.

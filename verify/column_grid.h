@@ -80,9 +80,11 @@ public:
     /// among them. Runs on up to `workers` threads (0: one per core);
     /// `worker` is the calling thread's number in [0, workers). An exception
     /// thrown by `visit` stops the walk and is rethrown here once every
-    /// thread is done.
+    /// thread is done. `share_no_vertex`: only the pairs that share no
+    /// vertex index (the self-intersection test decides the others from the
+    /// fans around each vertex, verify/detail/vertex_fans.h).
     void forEachOverlappingPair(const std::function<void(unsigned worker, uint32_t a, uint32_t b)>& visit,
-                                unsigned workers = 0) const;
+                                unsigned workers = 0, bool share_no_vertex = false) const;
 
     size_t triangleCount() const { return listed_; }   ///< triangles in the grid
     int32_t columns() const { return nx_; }             ///< along x

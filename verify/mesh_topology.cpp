@@ -53,19 +53,27 @@ Vec3 triangleCentroid(const Mesh& mesh, uint32_t t) {
 }
 
 VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usable) {
+    return cornersByVertex(mesh, usable, 0, uint32_t(mesh.positions.size()));
+}
+
+VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usable, uint32_t first, uint32_t last) {
     const size_t nt = mesh.triangles.size();
     auto used = [&](size_t t) { return !usable || (*usable)[t]; };
     VertexCorners c;
-    c.start.assign(mesh.positions.size() + 1, 0);
+    c.start.assign(size_t(last - first) + 1, 0);
     for (size_t t = 0; t < nt; ++t)
         if (used(t))
-            for (uint32_t v : mesh.triangles[t]) ++c.start[v + 1];
+            for (uint32_t v : mesh.triangles[t])
+                if (v >= first && v < last) ++c.start[v - first + 1];
     std::partial_sum(c.start.begin(), c.start.end(), c.start.begin());
     c.list.resize(c.start.back());
     std::vector<uint32_t> fill(c.start.begin(), c.start.end() - 1);
     for (size_t t = 0; t < nt; ++t)
         if (used(t))
-            for (uint32_t i = 0; i < 3; ++i) c.list[fill[mesh.triangles[t][i]]++] = 3 * uint32_t(t) + i;
+            for (uint32_t i = 0; i < 3; ++i) {
+                const uint32_t v = mesh.triangles[t][i];
+                if (v >= first && v < last) c.list[fill[v - first]++] = 3 * uint32_t(t) + i;
+            }
     return c;
 }
 

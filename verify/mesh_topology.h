@@ -95,5 +95,9 @@ struct VertexCorners {
     std::vector<uint32_t> list;
 };
 VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usable = nullptr);
+/// The same for the vertices first .. last - 1 only (start has last - first
+/// + 1 entries, start[0] for vertex first): a large mesh's corners a block
+/// of vertices at a time, in a fraction of the memory.
+VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usable, uint32_t first, uint32_t last);
 
 }  // namespace tsf

@@ -9,6 +9,7 @@
 #include <future>
 #include <limits>
 #include <ostream>
+#include <thread>
 #include <vector>
 
 #include "gen/util/error.h"
@@ -111,20 +112,28 @@ void writeStlBinary(const Mesh& mesh, std::ostream& out, const std::string& titl
     const size_t total = mesh.triangles.size();
     std::array<std::vector<unsigned char>, 2> chunks;
     for (auto& c : chunks) c.resize(std::min(total, kBinaryFacetsPerBlock) * kFacetBytes);
-    // The next chunk is converted on a second thread while this one is
-    // written (and hashed, and copied by the kernel): a large model's
-    // conversion is then off the writing path.
-    std::future<void> next;
+    // The next chunk is converted on other threads, one part each, while
+    // this one is written (and copied by the kernel): a large model's
+    // conversion (a square root and three divisions a facet, the slower
+    // half of the pipeline) is then off the writing path and spread over
+    // the cores. Each facet's bytes depend on that facet alone, so the
+    // file is the same whatever the split.
+    const size_t parts = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 8);
+    std::vector<std::future<void>> next;
     auto start = [&](size_t first, size_t slot) {
         const size_t count = std::min(kBinaryFacetsPerBlock, total - first);
-        if (total > 2 * kBinaryFacetsPerBlock)
-            next = std::async(std::launch::async, convert, first, count, chunks[slot].data());
-        else
-            convert(first, count, chunks[slot].data());
+        if (total <= 2 * kBinaryFacetsPerBlock) return convert(first, count, chunks[slot].data());
+        for (size_t p = 0; p < parts; ++p) {
+            const size_t from = count * p / parts, to = count * (p + 1) / parts;
+            if (from < to)
+                next.push_back(std::async(std::launch::async, convert, first + from, to - from,
+                                          chunks[slot].data() + from * kFacetBytes));
+        }
     };
     if (total > 0) start(0, 0);
     for (size_t first = 0, slot = 0; first < total; first += kBinaryFacetsPerBlock, slot ^= 1) {
-        if (next.valid()) next.get();
+        for (std::future<void>& f : next) f.get();
+        next.clear();
         const size_t count = std::min(kBinaryFacetsPerBlock, total - first);
         if (first + count < total) start(first + count, slot ^ 1);
         out.write(reinterpret_cast<const char*>(chunks[slot].data()), static_cast<std::streamsize>(count * kFacetBytes));

@@ -72,9 +72,9 @@ TEST(StlBinary, LayoutMatchesHandComputedBytes) {
     EXPECT_EQ(facet3.substr(12 + 24, 12), zero4 + zero4 + bytesOf({0x00, 0x00, 0xA0, 0x40}));  // (0,0,5)
 }
 
-// A mesh of many blocks (converted on a second thread while the one before
-// is written): every facet in its place, its corners the float32 of each
-// position, the last block short.
+// A mesh of many blocks (each converted on other threads, in one part per
+// core, while the one before is written): every facet in its place, its
+// corners the float32 of each position, the last block short.
 TEST(StlBinary, ALargeMeshKeepsEveryFacetInItsPlace) {
     Mesh m;
     const size_t n = 3 * 16384 + 1234;
@@ -87,15 +87,18 @@ TEST(StlBinary, ALargeMeshKeepsEveryFacetInItsPlace) {
     }
     const std::string stl = binaryStl(m);
     ASSERT_EQ(stl.size(), 84 + 50 * n);
-    for (const size_t t : {size_t(0), size_t(16383), size_t(16384), size_t(2 * 16384 + 7), n - 1}) {
+    size_t wrong = 0;  // every facet: the parts of a block meet anywhere in it
+    for (size_t t = 0; t < n; ++t) {
         const std::string facet = stl.substr(84 + 50 * t, 50);
         for (int c = 0; c < 3; ++c) {
             const Vec3& p = m.positions[m.triangles[t][size_t(c)]];
-            EXPECT_EQ(facet.substr(12 + 12 * size_t(c), 12), leFloat(float(p.x)) + leFloat(float(p.y)) + leFloat(float(p.z)))
-                << "facet " << t << " corner " << c;
+            if (facet.substr(12 + 12 * size_t(c), 12) != leFloat(float(p.x)) + leFloat(float(p.y)) + leFloat(float(p.z)) &&
+                wrong++ == 0)
+                ADD_FAILURE() << "facet " << t << " corner " << c;
         }
-        EXPECT_EQ(facet.substr(48, 2), bytesOf({0, 0}));
+        if (facet.substr(48, 2) != bytesOf({0, 0}) && wrong++ == 0) ADD_FAILURE() << "facet " << t << " attribute";
     }
+    EXPECT_EQ(wrong, 0u);
 }
 
 TEST(StlBinary, TitleStartingWithSolidIsNotMistakenForAscii) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cassert>
 #include <chrono>
 #include <iterator>
@@ -19,7 +20,9 @@
 #include "verify/detail/cgal_checks.h"
 #include "verify/detail/flat_planes.h"
 #include "verify/column_grid.h"
+#include "verify/detail/vertex_fans.h"
 #include "verify/detail/workers.h"
+#include "verify/mesh_topology.h"
 
 // On near-degenerate contacts CGAL's preconditions fail in the filtered
 // kernel and throw; solid_checks.cpp catches that and redoes the check with
@@ -150,8 +153,9 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
             topo.nonmanifold_edges.empty() && topo.misoriented_edges.empty() && topo.nonmanifold_vertices.empty();
         std::vector<std::pair<uint32_t, uint32_t>> ids;  // intersecting pairs, original ids, first < second
         if (valid_soup && grid) {
-            // Broad phase: the pairs whose boxes overlap, from the verifier's
-            // tree; exact predicates on those only, on `workers` threads.
+            // Broad phase: the pairs of a vertex's fan, and the pairs whose
+            // boxes overlap in a column of the grid; exact predicates on
+            // those only, on `workers` threads.
             // Triangles with collinear corners are left out, as CGAL leaves
             // them out (they are counted as zero-area triangles).
             std::vector<uint8_t>& tested = usable;
@@ -163,14 +167,53 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
                     plane[t] = flat::planeCode(mesh.positions[q[0]], mesh.positions[q[1]], mesh.positions[q[2]]);
                 }
             std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found(detail::workerCount(workers));
+            auto decide = [&](unsigned w, uint32_t a, uint32_t b) {
+                if (trianglesMeet<K>(points, mesh.positions, mesh.triangles[a], mesh.triangles[b], plane[a], plane[b]))
+                    found[w].emplace_back(std::min(a, b), std::max(a, b));
+            };
+            // The pairs that share a vertex index (about two thirds of the
+            // candidates on a terrain: neighbours in a fan touch), fan by
+            // fan: a fan the certificate of vertex_fans.h clears needs no
+            // pair tested; another has each of its pairs decided here, a
+            // pair sharing an edge at its lower vertex only.
+            // The corners are listed a block of vertices at a time, of at
+            // most kCornersPerBlock corners on average (64 MB: a 13 M
+            // triangle model takes three blocks, and its check's peak of
+            // memory does not grow).
+            constexpr size_t kCornersPerBlock = size_t(1) << 24;
+            const size_t nv = mesh.positions.size();
+            const size_t blocks = std::max<size_t>(1, (3 * mesh.triangles.size() + kCornersPerBlock - 1) / kCornersPerBlock);
+            for (size_t block = 0; block < blocks; ++block) {
+                const size_t first = nv * block / blocks, last = nv * (block + 1) / blocks;
+                const VertexCorners corners = cornersByVertex(mesh, &tested, uint32_t(first), uint32_t(last));
+                constexpr size_t kVerticesPerTask = 4096;
+                std::atomic<size_t> next_vertex{first};
+                runOnWorkers(unsigned(found.size()), [&](unsigned w, const std::atomic<bool>& stop) {
+                    std::vector<FanCorner> fan;
+                    for (size_t task; !stop.load() && (task = next_vertex.fetch_add(kVerticesPerTask)) < last;) {
+                        for (size_t v = task; v < std::min(last, task + kVerticesPerTask); ++v) {
+                            fan.clear();
+                            for (uint32_t e = corners.start[v - first]; e < corners.start[v - first + 1]; ++e) {
+                                const uint32_t t = corners.list[e] / 3, i = corners.list[e] % 3;
+                                const auto& q = mesh.triangles[t];
+                                fan.push_back({t, q[(i + 1) % 3], q[(i + 2) % 3]});
+                            }
+                            if (fan.size() < 2) continue;
+                            if (orderFan(fan) && fanMeetsOnlyAlongItsEdges(mesh.positions, uint32_t(v), fan)) continue;
+                            for (size_t i = 0; i + 1 < fan.size(); ++i)
+                                for (size_t j = i + 1; j < fan.size(); ++j)
+                                    if (lowestSharedIndex(mesh.triangles[fan[i].t], mesh.triangles[fan[j].t]) == v)
+                                        decide(w, fan[i].t, fan[j].t);
+                        }
+                    }
+                });
+            }
+            // The pairs that share no vertex index, from the grid.
             grid->forEachOverlappingPair(
                 [&](unsigned w, uint32_t a, uint32_t b) {
-                    if (!tested[a] || !tested[b]) return;
-                    if (trianglesMeet<K>(points, mesh.positions, mesh.triangles[a], mesh.triangles[b], plane[a],
-                                         plane[b]))
-                        found[w].emplace_back(std::min(a, b), std::max(a, b));
+                    if (tested[a] && tested[b]) decide(w, a, b);
                 },
-                workers);
+                workers, true);
             for (const auto& f : found) ids.insert(ids.end(), f.begin(), f.end());
             out.mesh_built = true;
         } else {
