@@ -54,7 +54,12 @@ int SessionSignals::caught() { return g_caught.load(); }
 
 void SessionSignals::pauseProcess() noexcept {
     g_pause.store(false);
-    ::kill(::getpid(), SIGSTOP);
+    // To this thread, not the process: a process-directed SIGSTOP may be
+    // taken by another thread (the main one, waiting for the loop), and
+    // until that thread runs, kill() returns here and the loop goes on
+    // sending forces that the stopped process then leaves the device
+    // holding. A signal to the calling thread stops it before raise returns.
+    ::raise(SIGSTOP);
 }
 
 void finishBySignal(int sig) {

@@ -34,8 +34,9 @@ public:
     /// The first stopping signal caught (0: none).
     static int caught();
     /// Clears the pause flag and stops this process (SIGSTOP: a stop that
-    /// is never discarded, as SIGTSTP is in an orphaned process group);
-    /// returns when it is continued. For LoopOptions::pause.
+    /// is never discarded, as SIGTSTP is in an orphaned process group),
+    /// sent to the calling thread so that it is stopped before this
+    /// returns; returns when it is continued. For LoopOptions::pause.
     static void pauseProcess() noexcept;
 
 private:
