@@ -1,5 +1,5 @@
 // buildScene: from a HexField and parameters to the model description, in
-// phases, each a free function over plain data in gen/model/build/ (the
+// phases, each a free function over plain data in gen/model/phases/ (the
 // height rules: pillar_spans.h). Three phases find that the Scene must be
 // built again with other parameters, and say so here, where the build
 // starts again: the halves' slab search, the tab's marks placed in the
@@ -10,15 +10,15 @@
 #include <optional>
 #include <utility>
 
-#include "gen/model/build/cell_heights.h"
-#include "gen/model/build/float32_snap.h"
-#include "gen/model/build/halves_slab.h"
-#include "gen/model/build/kept_cells.h"
-#include "gen/model/build/model_marks.h"
-#include "gen/model/build/pillar_spans.h"
-#include "gen/model/build/scene_frame.h"
-#include "gen/model/build/scene_limits.h"
-#include "gen/model/build/shaped_tops.h"
+#include "gen/model/phases/cell_heights.h"
+#include "gen/model/phases/float32_snap.h"
+#include "gen/model/phases/halves_slab.h"
+#include "gen/model/phases/kept_cells.h"
+#include "gen/model/phases/model_marks.h"
+#include "gen/model/phases/pillar_spans.h"
+#include "gen/model/phases/scene_frame.h"
+#include "gen/model/phases/scene_limits.h"
+#include "gen/model/phases/shaped_tops.h"
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/halves.h"
 #include "gen/model/features/legend_join.h"

@@ -2,7 +2,7 @@
 // description every mesher, the OpenSCAD emitter and the verifier draw).
 // Cells, heights and the value mapping first, then each feature places what
 // it adds (marks, top shapes, legend, scale, halves); each phase is a free
-// function of its own in gen/model/build/.
+// function of its own in gen/model/phases/.
 #pragma once
 
 #include "gen/field/hex_field.h"

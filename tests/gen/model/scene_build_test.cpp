@@ -1,13 +1,13 @@
-// buildScene's phases alone (gen/model/build/), on hand-made data: the
+// buildScene's phases alone (gen/model/phases/), on hand-made data: the
 // halves' slab search, the mirrored floor and the cull's edge cases.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "gen/model/build/cell_heights.h"
-#include "gen/model/build/halves_slab.h"
-#include "gen/model/build/kept_cells.h"
+#include "gen/model/phases/cell_heights.h"
+#include "gen/model/phases/halves_slab.h"
+#include "gen/model/phases/kept_cells.h"
 #include "gen/model/features/halves.h"
 #include "gen/util/error.h"
 #include "tests/support/fields.h"

@@ -1,4 +1,4 @@
-#include "gen/model/build/shaped_tops.h"
+#include "gen/model/phases/shaped_tops.h"
 
 #include <algorithm>
 #include <limits>

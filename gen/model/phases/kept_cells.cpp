@@ -1,4 +1,4 @@
-#include "gen/model/build/kept_cells.h"
+#include "gen/model/phases/kept_cells.h"
 
 #include <algorithm>
 #include <cmath>

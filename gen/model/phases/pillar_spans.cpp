@@ -1,9 +1,9 @@
-#include "gen/model/build/pillar_spans.h"
+#include "gen/model/phases/pillar_spans.h"
 
 #include <algorithm>
 #include <cstdlib>
 
-#include "gen/model/build/halves_slab.h"
+#include "gen/model/phases/halves_slab.h"
 
 namespace tsf {
 

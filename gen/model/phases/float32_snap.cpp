@@ -1,9 +1,9 @@
-#include "gen/model/build/float32_snap.h"
+#include "gen/model/phases/float32_snap.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "gen/model/build/scene_limits.h"
+#include "gen/model/phases/scene_limits.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/util/error.h"
 #include "gen/util/number_format.h"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gen/field/hex_field.h"
-#include "gen/model/build/cell_heights.h"
+#include "gen/model/phases/cell_heights.h"
 #include "gen/model/scene.h"
 
 namespace tsf {

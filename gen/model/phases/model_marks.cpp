@@ -1,4 +1,4 @@
-#include "gen/model/build/model_marks.h"
+#include "gen/model/phases/model_marks.h"
 
 #include <utility>
 

@@ -1,4 +1,4 @@
-#include "gen/model/build/value_mapping.h"
+#include "gen/model/phases/value_mapping.h"
 
 #include <algorithm>
 #include <cmath>

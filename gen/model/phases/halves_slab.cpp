@@ -1,4 +1,4 @@
-#include "gen/model/build/halves_slab.h"
+#include "gen/model/phases/halves_slab.h"
 
 #include <algorithm>
 #include <climits>

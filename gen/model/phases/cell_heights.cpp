@@ -1,4 +1,4 @@
-#include "gen/model/build/cell_heights.h"
+#include "gen/model/phases/cell_heights.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "gen/model/build/scene_frame.h"
+#include "gen/model/phases/scene_frame.h"
 
 #include <algorithm>
 #include <sstream>
 
 #include "gen/field/resample.h"
-#include "gen/model/build/scene_limits.h"
-#include "gen/model/build/value_mapping.h"
+#include "gen/model/phases/scene_limits.h"
+#include "gen/model/phases/value_mapping.h"
 #include "gen/model/features/class_textures.h"
 #include "gen/util/error.h"
 

@@ -1,4 +1,4 @@
-#include "gen/model/build/scene_limits.h"
+#include "gen/model/phases/scene_limits.h"
 
 #include <cmath>
 #include <sstream>
