@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/intersections.h>
 
+#include "tests/verify/cgal_self_intersections.h"
 #include "tests/verify/verify_test_support.h"
 #include "verify/detail/vertex_fans.h"
 #include "verify/mesh_topology.h"
@@ -28,23 +29,7 @@ namespace {
 
 using Pairs = std::vector<std::pair<uint32_t, uint32_t>>;
 
-// CGAL's verdict on a Surface_mesh of the triangles (a < b in each pair).
-Pairs cgalPairs(const Mesh& m) {
-    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-    using SM = CGAL::Surface_mesh<K::Point_3>;
-    SM sm;
-    std::vector<SM::Vertex_index> vid;
-    for (const Vec3& p : m.positions) vid.push_back(sm.add_vertex(K::Point_3(p.x, p.y, p.z)));
-    for (const auto& t : m.triangles) EXPECT_NE(sm.add_face(vid[t[0]], vid[t[1]], vid[t[2]]), SM::null_face());
-    std::vector<std::pair<SM::Face_index, SM::Face_index>> pairs;
-    CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(pairs));
-    Pairs out;
-    for (const auto& [f, g] : pairs)
-        if (f != g) out.emplace_back(std::min(uint32_t(f), uint32_t(g)), std::max(uint32_t(f), uint32_t(g)));
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
-}
+using test::cgalPairs;
 
 size_t sharedCount(const Mesh& m, uint32_t a, uint32_t b) {
     size_t n = 0;
