@@ -114,8 +114,9 @@ std::string rulerKeyParagraph(const Scene& s, const KeyNumbers& /*numbers*/) {
     std::vector<int32_t> columns, rows;
     for (const RulerTooth* t : teethOn(*r, true)) columns.push_back(columnFromWest(*t));
     for (const RulerTooth* t : teethOn(*r, false)) rows.push_back(rowFromSouth(s, *t));
-    std::string out = "An edge ruler: small teeth stand out at the foot of the south and west edges, each a ridge " +
-                      formatSignificant(s.zMm(r->top_units - s.floor_units), 2) + " millimetres high. ";
+    const std::string rise = formatSignificant(s.zMm(r->top_units - s.floor_units), 2);
+    std::string out = "An edge ruler: small teeth stand out at the foot of the south and west edges, each a ridge " + rise +
+                      (rise == "1" ? " millimetre" : " millimetres") + " high. ";
     const auto edge = [&](const char* where, const char* order, const std::vector<int32_t>& marks, int every,
                           double mm, const char* what, int32_t of, const char* counted) {
         if (marks.empty()) return std::string("The ") + where + " edge has no tooth: its pillars leave no room. ";
