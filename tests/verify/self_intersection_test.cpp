@@ -11,7 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
-#include "tests/verify/cgal_self_intersections.h"
+#include "tests/support/cgal_self_intersections.h"
 #include "tests/verify/verify_test_support.h"
 #include "verify/solid_checks.h"
 

@@ -18,7 +18,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/intersections.h>
 
-#include "tests/verify/cgal_self_intersections.h"
+#include "tests/support/cgal_self_intersections.h"
 #include "tests/verify/verify_test_support.h"
 #include "verify/detail/vertex_fans.h"
 #include "verify/mesh_topology.h"
