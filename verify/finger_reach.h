@@ -57,6 +57,14 @@ struct FingerReachResult {
     std::vector<FingerReach> fingers;  ///< in the order of the radii asked for
 };
 
+/// The surface `top` closed by a ball of radius `r_mm` lowered onto it from
+/// above: over each sample, the lowest point of the balls whose centres
+/// stand as low as the surface lets them (a sample's height when the ball
+/// fits into it, higher where it does not). Samples with nothing over them
+/// are the table at `table_mm`, and the table goes on beyond the samples.
+/// One entry per sample, row by row, as top.z.
+std::vector<double> closedByBall(const TopHeightField& top, double r_mm, double table_mm);
+
 /// The top of `mesh` sampled every `sample_mm` (coarser above a million
 /// samples), anchored at whole steps, with a margin of `margin_mm` around
 /// the mesh's bounds for the fingertip to come down beside it.

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <tuple>
 #include <random>
 #include <vector>
 
@@ -56,6 +58,72 @@ Blocks randomBlocks(unsigned seed) {
 
 FingerReachResult reach(const Blocks& b, std::vector<double> radii = {kAdultFingertipRadiusMm, kChildFingertipRadiusMm}) {
     return fingerReach(b.top(), -2.0, radii);
+}
+
+// The ball's closing written the plain way, offset by offset over the whole
+// disc and sample by sample, against which the closing verify uses is
+// checked bit for bit.
+std::vector<double> closedByBallPlainly(const TopHeightField& h, double r, double table) {
+    const int n = int(std::ceil(r / h.step));
+    const auto height = [&](int i, int j) {
+        if (i < 0 || j < 0 || i >= h.nx || j >= h.ny) return table;
+        const double z = h.at(i, j);
+        return std::isfinite(z) ? z : table;
+    };
+    const auto inDisc = [&](int di, int dj) {
+        return (di * h.step) * (di * h.step) + (dj * h.step) * (dj * h.step) <= r * r;
+    };
+    const auto rise = [&](int di, int dj) {
+        return std::sqrt(r * r - ((di * h.step) * (di * h.step) + (dj * h.step) * (dj * h.step)));
+    };
+    const auto centre = [&](int i, int j) {  // the lowest the ball's centre over (i, j) goes
+        if (i < 0 || j < 0 || i >= h.nx || j >= h.ny) return table + r;
+        double c = -std::numeric_limits<double>::infinity();
+        for (int dj = -n; dj <= n; ++dj)
+            for (int di = -n; di <= n; ++di)
+                if (inDisc(di, dj)) c = std::max(c, height(i + di, j + dj) + rise(di, dj));
+        return c;
+    };
+    std::vector<double> centres(h.z.size());
+    for (int j = 0; j < h.ny; ++j)
+        for (int i = 0; i < h.nx; ++i) centres[size_t(j) * size_t(h.nx) + size_t(i)] = centre(i, j);
+    const auto centreAt = [&](int i, int j) {
+        return i < 0 || j < 0 || i >= h.nx || j >= h.ny ? table + r : centres[size_t(j) * size_t(h.nx) + size_t(i)];
+    };
+    std::vector<double> out(h.z.size());
+    for (int j = 0; j < h.ny; ++j)
+        for (int i = 0; i < h.nx; ++i) {
+            double low = std::numeric_limits<double>::infinity();
+            for (int dj = -n; dj <= n; ++dj)
+                for (int di = -n; di <= n; ++di)
+                    if (inDisc(di, dj)) low = std::min(low, centreAt(i + di, j + dj) - rise(di, dj));
+            out[size_t(j) * size_t(h.nx) + size_t(i)] = low;
+        }
+    return out;
+}
+
+TEST(FingerReach, TheBallsClosingIsThePlainOneBitForBit) {
+    // Random tops (some samples with nothing over them), odd sizes smaller
+    // and larger than the ball, steps that do and do not divide the radius.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> height(0.0, 20.0);
+    int compared = 0;
+    for (const auto& [nx, ny, step, r] : {std::tuple{37, 23, 0.5, 8.0}, {9, 41, 0.5, 5.5}, {30, 30, 0.37, 3.1},
+                                          {5, 3, 0.5, 8.0}, {64, 1, 0.25, 2.0}}) {
+        TopHeightField h;
+        h.step = step;
+        h.nx = nx;
+        h.ny = ny;
+        h.z.resize(size_t(nx) * size_t(ny));
+        for (double& z : h.z) z = rng() % 9 == 0 ? -std::numeric_limits<double>::infinity() : height(rng);
+        const std::vector<double> fast = closedByBall(h, r, -2.0), plain = closedByBallPlainly(h, r, -2.0);
+        ASSERT_EQ(fast.size(), plain.size());
+        for (size_t s = 0; s < plain.size(); ++s) {
+            ASSERT_EQ(fast[s], plain[s]) << "sample " << s << " of " << nx << " x " << ny << ", r " << r;
+            ++compared;
+        }
+    }
+    EXPECT_EQ(compared, 37 * 23 + 9 * 41 + 30 * 30 + 5 * 3 + 64);
 }
 
 TEST(FingerReach, APlateauHasNoPlace) {
