@@ -219,16 +219,17 @@ std::vector<uint8_t> noValueSamples(const TopHeightField& top, const Scene* s) {
             // half millimetres, where walls can stand) reads the wall or
             // the floor below it, not the top: a data sample lies inside
             // the cell, a hundredth of a millimetre from every side.
-            int32_t cell = -2;
-            for (const auto& [dx, dy] : {std::pair{0.0, 0.0}, {kRimMm, 0.0}, {-kRimMm, 0.0}, {0.0, kRimMm}, {0.0, -kRimMm}}) {
+            const auto cellAt = [&](double dx, double dy) {
                 int32_t col = 0, row = 0;
-                const int32_t k = hexCellAt(s->grid, (x + dx) / s->pitch_mm, (y + dy) / (s->pitch_mm * s->y_scale), col, row)
-                                      ? s->keptAt(col, row)
-                                      : -1;
-                if (cell == -2) cell = k;
-                if (k != cell) cell = -1;
-            }
-            if (cell >= 0 && s->kind[size_t(cell)] == CellKind::Data) out[size_t(j) * size_t(top.nx) + size_t(i)] = 0;
+                return hexCellAt(s->grid, (x + dx) / s->pitch_mm, (y + dy) / (s->pitch_mm * s->y_scale), col, row)
+                           ? s->keptAt(col, row)
+                           : -1;
+            };
+            const int32_t cell = cellAt(0, 0);
+            if (cell < 0 || s->kind[size_t(cell)] != CellKind::Data) continue;
+            if (cellAt(kRimMm, 0) == cell && cellAt(-kRimMm, 0) == cell && cellAt(0, kRimMm) == cell &&
+                cellAt(0, -kRimMm) == cell)
+                out[size_t(j) * size_t(top.nx) + size_t(i)] = 0;
         }
     return out;
 }
