@@ -322,12 +322,19 @@ private:
         }
     }
 
+    // The vertex at planar vertex id and height z (units). assignVertices
+    // placed the vertex of each height used there, at zMm(height); zMm is
+    // one-to-one on the z units (a product by the snap, exact to far below
+    // a unit), so the vertex whose z is zMm(z) is the one at that height:
+    // found among the few of id without listing its heights again (that
+    // listing, for each corner of each triangle, was an eighth of the
+    // mesher's time).
     uint32_t vertexIndex(int64_t id, int64_t z) const {
-        int64_t zs[kMaxHeightsPerVertex];
-        const int n = usedHeights(id, zs);
-        const int64_t* at = std::lower_bound(zs, zs + n, z);
-        assert(at != zs + n && *at == z && "height not used at this vertex");
-        return first_index_[size_t(id)] + uint32_t(at - zs);
+        const double z_mm = s_.zMm(z);
+        for (uint32_t v = first_index_[size_t(id)], end = first_index_[size_t(id) + 1]; v < end; ++v)
+            if (mesh_.positions[v].z == z_mm) return v;
+        assert(false && "height not used at this vertex");
+        return first_index_[size_t(id)];
     }
 
     void tri(uint32_t a, uint32_t b, uint32_t c) { (t_sink ? *t_sink : mesh_.triangles).push_back({a, b, c}); }
@@ -486,19 +493,25 @@ private:
     // so the outward normal is (w - v) x up) from zv0 to zv1 at v and from
     // zw0 to zw1 at w (one side may be a single point: a crossing).
     void addWall(int64_t v, int64_t zv0, int64_t zv1, int64_t w, int64_t zw0, int64_t zw1) {
-        int64_t zl[kMaxHeightsPerVertex], zr[kMaxHeightsPerVertex];
-        const int nl = usedHeights(v, zl), nr = usedHeights(w, zr);
-        int li = int(std::lower_bound(zl, zl + nl, zv0) - zl);
-        int ri = int(std::lower_bound(zr, zr + nr, zw0) - zr);
-        const int lend = int(std::lower_bound(zl, zl + nl, zv1) - zl);
-        const int rend = int(std::lower_bound(zr, zr + nr, zw1) - zr);
-        assert(li < nl && zl[li] == zv0 && ri < nr && zr[ri] == zw0);
-        assert(lend < nl && zl[lend] == zv1 && rend < nr && zr[rend] == zw1);
+        // The vertices of v and of w, lowest first, as assignVertices placed
+        // them: their z (mm) orders and finds them as their z units would
+        // (zMm is one-to-one and increasing; see vertexIndex).
         const uint32_t lbase = first_index_[size_t(v)], rbase = first_index_[size_t(w)];
+        const Vec3* zl = &mesh_.positions[lbase];
+        const Vec3* zr = &mesh_.positions[rbase];
+        const int nl = int(first_index_[size_t(v) + 1] - lbase), nr = int(first_index_[size_t(w) + 1] - rbase);
+        const auto at = [&](const Vec3* p, int n, int64_t z) {
+            const double z_mm = s_.zMm(z);
+            return int(std::lower_bound(p, p + n, z_mm, [](const Vec3& q, double zz) { return q.z < zz; }) - p);
+        };
+        int li = at(zl, nl, zv0), ri = at(zr, nr, zw0);
+        const int lend = at(zl, nl, zv1), rend = at(zr, nr, zw1);
+        assert(li < nl && zl[li].z == s_.zMm(zv0) && ri < nr && zr[ri].z == s_.zMm(zw0));
+        assert(lend < nl && zl[lend].z == s_.zMm(zv1) && rend < nr && zr[rend].z == s_.zMm(zw1));
         while (li < lend || ri < rend) {
             // Advance the side whose next point is lower (left on ties): the
             // zipper keeps triangles short and never uses three points of one side.
-            const bool advance_left = ri == rend || (li < lend && zl[li + 1] <= zr[ri + 1]);
+            const bool advance_left = ri == rend || (li < lend && zl[li + 1].z <= zr[ri + 1].z);
             if (advance_left) {
                 tri(lbase + uint32_t(li), rbase + uint32_t(ri), lbase + uint32_t(li + 1));
                 ++li;
