@@ -9,9 +9,9 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include "gen/util/union_find.h"
 #include "verify/mesh_topology.h"
 #include "verify/overhang.h"
+#include "verify/detail/concurrent_union_find.h"
 #include "verify/detail/flat_planes.h"
 #include "verify/detail/format.h"
 #include "verify/detail/workers.h"
@@ -58,8 +58,10 @@ bool clearlyHasArea(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 // Joins the triangles of each planar region in `regions`: neighbours across
 // an edge when the far corner of one lies exactly in the plane of the other
-// (exact predicate) and they face the same way.
-void joinCoplanarNeighbours(const Mesh& mesh, UnionFind& regions) {
+// (exact predicate) and they face the same way. On the worker threads, a
+// contiguous range of triangles each: the sets, and their roots (each set's
+// smallest member), are the same as on one thread.
+void joinCoplanarNeighbours(const Mesh& mesh, detail::ConcurrentUnionFind& regions) {
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
     const size_t nt = mesh.triangles.size();
     auto P = [&](uint32_t v) {
@@ -70,36 +72,39 @@ void joinCoplanarNeighbours(const Mesh& mesh, UnionFind& regions) {
     // at b whose next vertex is a, among b's few corners.
     const VertexCorners at = cornersByVertex(mesh);
     auto nextVertex = [&](uint32_t corner) { return mesh.triangles[corner / 3][(corner % 3 + 1) % 3]; };
-    for (uint32_t t = 0; t < nt; ++t) {
-        const auto& tri = mesh.triangles[t];
-        for (int s = 0; s < 3; ++s) {
-            const uint32_t a = tri[s], b = tri[(s + 1) % 3], c = tri[(s + 2) % 3];
-            uint32_t other_t = UINT32_MAX;  // the triangle with b -> a (on a manifold mesh, at most one)
-            for (uint32_t i = at.start[b]; i < at.start[b + 1]; ++i)
-                if (nextVertex(at.list[i]) == a) other_t = std::min(other_t, at.list[i] / 3);
-            if (other_t == UINT32_MAX || other_t <= t) continue;  // each pair once
-            const auto& other = mesh.triangles[other_t];
-            uint32_t d = other[0];
-            for (uint32_t v : other)
-                if (v != a && v != b) d = v;
-            // Coplanar, and on opposite sides of the shared edge (same facing).
-            const Vec3 &qa = mesh.positions[a], &qb = mesh.positions[b], &qc = mesh.positions[c],
-                       &qd = mesh.positions[d];
-            // Nearly every edge of a terrain model joins two coplanar
-            // triangles in an axis or vertical plane: decided from
-            // coordinates (CGAL's filtered orientation decides a coplanar
-            // quadruple only after falling back to exact arithmetic).
-            const std::optional<bool> in_plane = detail::flat::inPlaneOf(qa, qb, qc, qd);
-            if (in_plane ? !*in_plane : CGAL::orientation(P(a), P(b), P(c), P(d)) != CGAL::COPLANAR) continue;
-            const K::Point_3 pa = P(a), pb = P(b), pc = P(c), pd = P(d);
-            if (!clearlyHasArea(qa, qb, qc) && CGAL::collinear(pa, pb, pc)) continue;
-            if (!clearlyHasArea(qa, qb, qd) && CGAL::collinear(pa, pb, pd)) continue;
-            const K::Vector_3 n = CGAL::cross_product(pb - pa, pc - pa);
-            const K::Vector_3 e = CGAL::cross_product(n, pb - pa);  // in-plane, towards c's side
-            if ((e * (pc - pa) > 0) == (e * (pd - pa) > 0)) continue;  // folded onto itself
-            regions.unite(t, other_t);
+    const unsigned workers = nt < 20000 ? 1u : detail::workerCount(0);
+    detail::runOnWorkers(workers, [&](unsigned w, const auto&) {
+        for (uint32_t t = uint32_t(nt * w / workers); t < uint32_t(nt * (w + 1) / workers); ++t) {
+            const auto& tri = mesh.triangles[t];
+            for (int s = 0; s < 3; ++s) {
+                const uint32_t a = tri[s], b = tri[(s + 1) % 3], c = tri[(s + 2) % 3];
+                uint32_t other_t = UINT32_MAX;  // the triangle with b -> a (on a manifold mesh, at most one)
+                for (uint32_t i = at.start[b]; i < at.start[b + 1]; ++i)
+                    if (nextVertex(at.list[i]) == a) other_t = std::min(other_t, at.list[i] / 3);
+                if (other_t == UINT32_MAX || other_t <= t) continue;  // each pair once
+                const auto& other = mesh.triangles[other_t];
+                uint32_t d = other[0];
+                for (uint32_t v : other)
+                    if (v != a && v != b) d = v;
+                // Coplanar, and on opposite sides of the shared edge (same facing).
+                const Vec3 &qa = mesh.positions[a], &qb = mesh.positions[b], &qc = mesh.positions[c],
+                           &qd = mesh.positions[d];
+                // Nearly every edge of a terrain model joins two coplanar
+                // triangles in an axis or vertical plane: decided from
+                // coordinates (CGAL's filtered orientation decides a coplanar
+                // quadruple only after falling back to exact arithmetic).
+                const std::optional<bool> in_plane = detail::flat::inPlaneOf(qa, qb, qc, qd);
+                if (in_plane ? !*in_plane : CGAL::orientation(P(a), P(b), P(c), P(d)) != CGAL::COPLANAR) continue;
+                const K::Point_3 pa = P(a), pb = P(b), pc = P(c), pd = P(d);
+                if (!clearlyHasArea(qa, qb, qc) && CGAL::collinear(pa, pb, pc)) continue;
+                if (!clearlyHasArea(qa, qb, qd) && CGAL::collinear(pa, pb, pd)) continue;
+                const K::Vector_3 n = CGAL::cross_product(pb - pa, pc - pa);
+                const K::Vector_3 e = CGAL::cross_product(n, pb - pa);  // in-plane, towards c's side
+                if ((e * (pc - pa) > 0) == (e * (pd - pa) > 0)) continue;  // folded onto itself
+                regions.unite(t, other_t);
+            }
         }
-    }
+    });
 }
 
 // One triangle per planar region (joinCoplanarNeighbours). The
@@ -109,7 +114,7 @@ void joinCoplanarNeighbours(const Mesh& mesh, UnionFind& regions) {
 // a feature.
 std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
     const size_t nt = mesh.triangles.size();
-    UnionFind regions(nt);
+    detail::ConcurrentUnionFind regions(nt);
     joinCoplanarNeighbours(mesh, regions);
     std::vector<double> best_area(nt, -1.0);
     std::vector<uint32_t> best(nt, 0);
@@ -127,7 +132,7 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
     }
     std::vector<uint32_t> out;
     for (uint32_t t = 0; t < nt; ++t)
-        if (regions.isRoot(t) && best_area[t] > 0) out.push_back(best[t]);
+        if (regions.find(t) == t && best_area[t] > 0) out.push_back(best[t]);
     return out;
 }
 
@@ -145,6 +150,13 @@ double faceNormalZ(const Mesh& mesh, uint32_t t, double sign) {
 /// feature a printer makes, far above float32's rounding at model sizes.
 constexpr double kProbeOffsetMm = 1e-3;
 
+/// Where a wall face ends above and below a sample (mm): wallWidth's
+/// vertical probes, the same for the material and for the gap, found once.
+struct WallEnds {
+    bool found = false;
+    double top = 0, bottom = 0;
+};
+
 /// The width of the material behind a steep triangle (`material`: along
 /// -normal) or of the gap in front of it (along the normal), measured where a
 /// printer draws the wall, from `at` (the centroid):
@@ -153,7 +165,8 @@ constexpr double kProbeOffsetMm = 1e-3;
 ///     top's rim it is a wedge, thinner than any nozzle at its very edge. The
 ///     layer at that end is that layer's rounding, so a vertical wall is
 ///     measured a layer in from that end (found by vertical probes beside the
-///     wall, on both sides);
+///     wall, on both sides, into `ends` on the first call for a sample and
+///     read from it on the second);
 ///   - a wall face less than a layer tall at this place is one layer's step,
 ///     not a wall a printer draws, and is not measured;
 ///   - otherwise (the far side is a wall too: a slab, as thin everywhere) the
@@ -162,7 +175,7 @@ constexpr double kProbeOffsetMm = 1e-3;
 /// +inf when nothing was hit within max_mm and `beyond_is_wider` (see
 /// kMaterialSearchNozzles: the wall is wider than max_mm).
 std::optional<double> wallWidth(const ColumnGrid& caster, const Mesh& mesh, double sign, uint32_t t, const Vec3& at,
-                                const Vec3& n, bool material, const PrintabilityOptions& o,
+                                const Vec3& n, bool material, const PrintabilityOptions& o, WallEnds& ends,
                                 double max_mm = std::numeric_limits<double>::infinity(), bool beyond_is_wider = false) {
     const Vec3 dir = material ? Vec3{-n.x, -n.y, -n.z} : n;
     const auto hit = caster.firstHit(at, dir, int64_t(t), max_mm);
@@ -172,13 +185,17 @@ std::optional<double> wallWidth(const ColumnGrid& caster, const Mesh& mesh, doub
     if (!narrows && hit->distance_mm >= o.nozzle_mm) return hit->distance_mm;
     // Where the wall face ends above and below this place: the nearer end on
     // either side of it.
-    const double inf = std::numeric_limits<double>::infinity();
-    double top = inf, bottom = -inf;
-    for (const double side : {-1.0, 1.0}) {
-        const Vec3 p{at.x + side * kProbeOffsetMm * n.x, at.y + side * kProbeOffsetMm * n.y, at.z};
-        if (const auto up = caster.firstHit(p, {0, 0, 1}, int64_t(t))) top = std::min(top, p.z + up->distance_mm);
-        if (const auto down = caster.firstHit(p, {0, 0, -1}, int64_t(t))) bottom = std::max(bottom, p.z - down->distance_mm);
+    if (!ends.found) {
+        const double inf = std::numeric_limits<double>::infinity();
+        ends = {true, inf, -inf};
+        for (const double side : {-1.0, 1.0}) {
+            const Vec3 p{at.x + side * kProbeOffsetMm * n.x, at.y + side * kProbeOffsetMm * n.y, at.z};
+            if (const auto up = caster.firstHit(p, {0, 0, 1}, int64_t(t))) ends.top = std::min(ends.top, p.z + up->distance_mm);
+            if (const auto down = caster.firstHit(p, {0, 0, -1}, int64_t(t)))
+                ends.bottom = std::max(ends.bottom, p.z - down->distance_mm);
+        }
     }
+    const double top = ends.top, bottom = ends.bottom;
     if (top - bottom < o.layer_mm) return std::nullopt;
     if (!narrows) return hit->distance_mm;
     // Material under a face that looks up narrows upward; a gap over it narrows downward.
@@ -290,10 +307,11 @@ PrintabilityResult checkPrintability(const Mesh& mesh, bool closed_oriented, con
                         out.slabs.push_back({hit->distance_mm, t});
                     continue;
                 }
-                if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, true, o, material_search_mm, !sloped))
+                WallEnds ends;  // shared by the material and the gap
+                if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, true, o, ends, material_search_mm, !sloped))
                     out.walls.push_back({*d, t});
                 if (walls_only) continue;
-                if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, false, o, gap_search_mm))
+                if (const auto d = wallWidth(caster, mesh, sign, t, centroid, n, false, o, ends, gap_search_mm))
                     out.gaps.push_back({*d, t});
             }
         };
