@@ -14,7 +14,8 @@
 namespace tsf {
 
 /// Every attachment of `scene` as `assembly` draws it, in a fixed order (the
-/// orientation tab, the legend, then the registry's features:
+/// registry's features placed with the marks: the orientation tab; the
+/// legend; then the registry's features beside the pillars:
 /// gen/model/feature_registry.h). Meshing a body is
 /// deterministic: the same Scene gives the same attachments.
 std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly);
@@ -23,8 +24,8 @@ std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly);
 std::vector<BottomHole> sceneBottomHoles(const Scene& scene);
 
 /// Every probe of the Scene (gen/model/scene_attachments.h), one set per
-/// read-back check, in a fixed order (the legend, the registry's features,
-/// the marks);
+/// read-back check, in a fixed order (the legend, the registry's features
+/// beside the pillars, the marks in the data or on the tab);
 /// sets without probes are left out.
 std::vector<ProbeSet> sceneProbes(const Scene& scene);
 

@@ -74,13 +74,13 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     if (params.tile_place) placeTileCode(s);
     shapeTops(field, heights.units, params, s);
 
-    // The legend, the tab and the features of the registry last: they stand
-    // against cells whose tops (tilted or not) rise to the floor, or on a
-    // mirrored model hold their band; the tab keeps clear of the legend's
-    // plate, the registry's features of every footprint claimed before them.
+    // The legend and the features of the registry last: they stand against
+    // cells whose tops (tilted or not) rise to the floor, or on a mirrored
+    // model hold their band; the registry's features keep clear of every
+    // footprint claimed before them (the tab of the legend's plate).
     placeLegend(s);
     if (std::optional<FootprintClaim> plate = legendClaim(s)) s.claims.push_back(std::move(*plate));
-    placeModelTab(params, s);
+    placeFeatures(s, FeaturePhase::Marks);
     if (tabFallsBackToData(params, s)) {
         // No pillar on the west side to stand a tab against: built again
         // with the marks in the data, where they fit.

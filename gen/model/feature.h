@@ -32,7 +32,8 @@
 // Features not yet in the registry are still named by the lists in
 // gen/model/attachments.cpp, gen/model/feature_records.cpp,
 // gen/scad/scad_attachments.cpp and gen/key/model_key.cpp, which splice the
-// registry in where its features stood, so every output keeps its order.
+// registry in where its features stood, phase by phase (FeaturePhase), so
+// every output keeps its order.
 #pragma once
 
 #include <cstdint>
@@ -50,9 +51,17 @@ namespace tsf {
 
 /// Where in buildScene a feature places itself.
 enum class FeaturePhase : uint8_t {
-    /// After the cells' tops are final (tilted, textured), the marks, the
-    /// legend and the orientation tab: a body beside the pillars that
-    /// stands against cells rising to the floor.
+    /// After the cells' tops are final (tilted, textured) and the legend is
+    /// placed: a body beside the pillars that carries the orientation marks
+    /// (the orientation tab). When the marks were asked on it and it finds
+    /// no place, buildScene builds the Scene again with the marks in the
+    /// data. The lists that came before the registry read these features
+    /// where the tab stood: first among the bodies, records and facts; with
+    /// the marks' read-back, after the features beside the pillars among
+    /// the checks, bed widths and OpenSCAD pieces.
+    Marks,
+    /// After the features of Marks: a body beside the pillars that stands
+    /// against cells rising to the floor.
     Beside,
 };
 
@@ -87,6 +96,15 @@ struct ScadPiece {
     std::string value;         ///< the variable for its own module: "[[...], ...]"
     std::string library_file;  ///< "tsf_scale.scad"
     std::string module_call;   ///< "tsf_with_scale(tactile_scale, show_scale) "
+    /// A feature that words its data in its own way sets these; "" is the
+    /// emitter's: ".\n" and a comment naming tsf_joined.scad before the
+    /// joined data, ".\n" before `value`, and scad_lib/tsf_joined.scad's
+    /// assert after the joined data, none after `value`.
+    std::string joined_lead;  ///< between the header and `variable = <joined>;`
+    std::string value_lead;   ///< between the header and `variable = value;`
+    /// Its own assert of the parameters it was placed for, written after
+    /// its data in both files (ending in a blank line).
+    std::string own_assert;
 };
 
 /// Something a feature asks a hand to find, which the tactile check

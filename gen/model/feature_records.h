@@ -3,9 +3,10 @@
 // in the Scene (the orientation tab, the braille legend, the tactile scale,
 // the halves) writes, reads and reports it in its own modules, and these
 // are the lists of them, so the sidecar and the summary name none. A
-// feature of the registry (gen/model/feature_registry.h: the scale) hands
-// its record and facts in through its Feature; the lists take them from
-// there, where the scale stood.
+// feature of the registry (gen/model/feature_registry.h: the tab, the
+// scale) hands its record and facts in through its Feature; the lists take
+// them from there, where it stood (the tab first, the scale after the
+// legend).
 #pragma once
 
 #include <string>

@@ -2,17 +2,24 @@
 
 #include "gen/model/features/ruler/ruler_feature.h"
 #include "gen/model/features/scale_feature.h"
+#include "gen/model/features/tab/tab_feature.h"
 
 namespace tsf {
 
 const std::vector<const Feature*>& features() {
-    static const std::vector<const Feature*> registry = {&scaleFeature(), &rulerFeature()};
+    static const std::vector<const Feature*> registry = {&tabFeature(), &scaleFeature(), &rulerFeature()};
     return registry;
 }
 
+std::vector<const Feature*> featuresOf(FeaturePhase phase) {
+    std::vector<const Feature*> out;
+    for (const Feature* f : features())
+        if (f->phase == phase) out.push_back(f);
+    return out;
+}
+
 void placeFeatures(Scene& scene, FeaturePhase phase) {
-    for (const Feature* f : features()) {
-        if (f->phase != phase) continue;
+    for (const Feature* f : featuresOf(phase)) {
         if (f->place) f->place(scene);
         if (f->claim)
             if (std::optional<FootprintClaim> c = f->claim(scene)) scene.claims.push_back(std::move(*c));

@@ -13,8 +13,13 @@
 namespace tsf {
 
 /// Every feature in the registry, in the order they are placed (the
-/// tactile scale, the edge ruler).
+/// orientation tab, the tactile scale, the edge ruler).
 const std::vector<const Feature*>& features();
+
+/// The features of the registry placed in `phase`, in the registry's order:
+/// the lists that came before the registry read each phase where its
+/// features stood (gen/model/feature.h: FeaturePhase).
+std::vector<const Feature*> featuresOf(FeaturePhase phase);
 
 /// Places each feature of `phase`, in the registry's order, and adds the
 /// footprint each claims to Scene::claims.

@@ -1,5 +1,5 @@
 // The wall an attachment stands against, as a piece of its joint: what the
-// tab's placement (gen/model/features/orientation_tab.cpp) and the
+// tab's placement (gen/model/features/tab/orientation_tab.cpp) and the
 // verifier's joint check (verify/attachment_joint.h) both measure.
 #pragma once
 

@@ -21,7 +21,7 @@
 //                       [west, east, south, north], notch null | {depth_mm, width_mm,
 //                       opening_deg}, triangle null | {corners_mm [[x, y] x 3],
 //                       raise_units, underside (mirrored: also below the tab)}}
-//                  (version 6: the orientation tab, gen/model/features/orientation_tab.h)},
+//                  (version 6: the orientation tab, gen/model/features/tab/orientation_tab.h)},
 //   faces: null | {extra [[i, j], ...] (planar points after the lattice's ids),
 //                  faces [{anchor, raise_units, cells [kept index], rings [[id, ...]],
 //                          across [[[kind, index], ...] per ring] (kind 0 outside

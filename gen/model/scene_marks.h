@@ -21,7 +21,7 @@ namespace tsf {
 
 /// Where the orientation marks stand.
 enum class MarkPlace : uint8_t {
-    Tab,   ///< on the orientation tab west of the pillars (default; gen/model/features/orientation_tab.h)
+    Tab,   ///< on the orientation tab west of the pillars (default; gen/model/features/tab/orientation_tab.h)
     Data,  ///< in the data: the notch cut into the corner pillars, the triangle on the largest flat region
 };
 
@@ -81,7 +81,7 @@ struct TabPoint {
     int64_t lattice = -1;
 };
 
-/// The orientation tab (gen/model/features/orientation_tab.h): a flat plate
+/// The orientation tab (gen/model/features/tab/orientation_tab.h): a flat plate
 /// from z = 0 to the floor against the pillars' westernmost walls, its
 /// south-west corner cut by the notch, the triangle standing on its top.
 struct OrientationTab {

@@ -12,13 +12,13 @@
 namespace tsf {
 
 struct ScadAttachment {
-    std::string library_file;    ///< its scad_lib/ file: "tsf_tab.scad"
+    std::string library_file;    ///< its scad_lib/ file: "tsf_scale.scad"
     std::string data;            ///< its customizer section and data, ending in a blank line
     std::string model_argument;  ///< appended to the tsf_model() call ("" none)
     std::string call_prefix;     ///< "tsf_with_half(...) ": wraps the terrain call ("" none)
     /// Joined into the terrain polyhedron instead (scad_lib/tsf_joined.scad):
     /// the expression handed to tsf_terrain_polyhedron(joined = [...]),
-    /// "show_orientation_tab ? orientation_tab : []"; "" when it is not.
+    /// "show_scale ? tactile_scale : []"; "" when it is not.
     std::string joined;
     /// The customizer switch that shows it, on in the "as generated"
     /// parameter set and off in the others (it stands where tsf placed it

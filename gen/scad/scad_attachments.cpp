@@ -4,7 +4,6 @@
 #include "gen/scad/scad_halves.h"
 #include "gen/scad/scad_joined.h"
 #include "gen/scad/scad_legend.h"
-#include "gen/scad/scad_tab.h"
 
 namespace tsf {
 namespace {
@@ -20,17 +19,21 @@ std::optional<ScadAttachment> scadPiece(const Scene& s, const Feature& f, bool j
     a.placed_switch = piece->show_switch;
     const std::optional<Attachment> joined =
         join && f.attachment ? f.attachment(s, Assembly::OnePiece) : std::nullopt;
-    a.data = std::move(piece->header) + ".\n";
+    a.data = std::move(piece->header);
+    const bool own_assert = !piece->own_assert.empty();
     if (joined && scadCanJoin(s, *joined)) {
         a.library_file = "tsf_joined.scad";
-        a.data += "// The walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n" +
+        a.data += (piece->joined_lead.empty()
+                       ? ".\n// The walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n"
+                       : piece->joined_lead) +
                   piece->variable + " = " + scadJoinedData(s, *joined) + ";\n" +
-                  scadJoinedAssert(s, piece->show_switch, piece->what);
+                  (own_assert ? piece->own_assert : scadJoinedAssert(s, piece->show_switch, piece->what));
         a.joined = piece->show_switch + " ? " + piece->variable + " : []";
         return a;
     }
     a.library_file = std::move(piece->library_file);
-    a.data += piece->variable + " = " + piece->value + ";\n\n";
+    a.data += (piece->value_lead.empty() ? ".\n" : piece->value_lead) + piece->variable + " = " + piece->value +
+              (own_assert ? ";\n" + piece->own_assert : ";\n\n");
     a.call_prefix = std::move(piece->module_call);
     return a;
 }
@@ -38,11 +41,11 @@ std::optional<ScadAttachment> scadPiece(const Scene& s, const Feature& f, bool j
 }  // namespace
 
 std::vector<ScadAttachment> scadAttachments(const Scene& scene, bool join) {
-    // The features of the registry stand where the scale, its first, stood
-    // before the registry: after the legend, before the tab.
+    // The features of the registry stand where they stood before it: after
+    // the legend, those beside the pillars, then the one carrying the marks.
     std::vector<std::optional<ScadAttachment>> pieces{scadLegend(scene, join)};
-    for (const Feature* f : features()) pieces.push_back(scadPiece(scene, *f, join));
-    pieces.push_back(scadTab(scene, join));
+    for (const FeaturePhase phase : {FeaturePhase::Beside, FeaturePhase::Marks})
+        for (const Feature* f : featuresOf(phase)) pieces.push_back(scadPiece(scene, *f, join));
     pieces.push_back(scadHalves(scene));
     std::vector<ScadAttachment> out;
     for (std::optional<ScadAttachment>& a : pieces)

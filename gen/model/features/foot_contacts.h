@@ -1,6 +1,6 @@
 // Which pillars a foot may stand against: the tactile scale's foot (east of
 // the pillars, gen/model/features/scale.h) and the orientation tab (west of
-// them, gen/model/features/orientation_tab.h) cover some hexagon walls from
+// them, gen/model/features/tab/orientation_tab.h) cover some hexagon walls from
 // z = 0 to the floor, as a neighbour from 0 to the floor would.
 #pragma once
 

@@ -207,7 +207,7 @@ Scene halfScene(const Scene& s, HalfKind kind) {
         for (PlanarFace& f : h.faces.faces) f.raise_units = 0;
         if (h.marks.triangle) h.marks.triangle->raise_units = 0;
     }
-    // The orientation tab lies across the cut (gen/model/features/orientation_tab.h):
+    // The orientation tab lies across the cut (gen/model/features/tab/orientation_tab.h):
     // each half keeps its side of it, standing on the cut, with the triangle
     // on its face away from the cut (the lower half's is the underside's).
     if (h.marks.tab) {

@@ -21,7 +21,6 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include "gen/geometry/cdt_parity.h"
-#include "gen/model/features/orientation_tab.h"
 #include "gen/util/error.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"
@@ -710,12 +709,16 @@ int64_t markRaiseAtCentre(const Scene& s, size_t kept) {
                : 0;
 }
 
+bool marksOnTab(const SceneParams& p) {
+    return p.marks.place == MarkPlace::Tab && (p.marks.notch || p.marks.triangle);
+}
+
 void placeMarks(Scene& s) {
     s.marks = {};
     buildMarkFaces(s);
-    // On a tab the marks are placed after the top shapes (placeTab,
-    // gen/model/features/orientation_tab.h), not in the data.
-    if (s.keptCount() == 0 || wantsTab(s.params)) return;
+    // On a tab the marks are placed after the top shapes (the tab's
+    // feature, gen/model/features/tab/), not in the data.
+    if (s.keptCount() == 0 || marksOnTab(s.params)) return;
     if (s.params.marks.notch) {
         placeNotch(s);
         buildMarkFaces(s);
@@ -735,7 +738,7 @@ PlanarPoint lerp(const PlanarPoint& a, const PlanarPoint& b, double t) {
 }  // namespace
 
 ProbeSet markProbes(const Scene& s) {
-    ProbeSet set{"marks", "the orientation triangle at its height and the notch cut through", tabProbes(s)};
+    ProbeSet set{"marks", kMarkProbesTitle, {}};
     std::vector<SurfaceProbe>& out = set.probes;
     if (const auto& t = s.marks.triangle; t && t->anchor >= 0 && size_t(t->anchor) < s.keptCount()) {
         const double z = s.zMm(s.top[size_t(t->anchor)] + t->raise_units);

@@ -57,6 +57,12 @@ inline constexpr double kReadPointClearanceMm = 0.2;
 /// Shortest distance (mm) from the triangle to the edge of its flat region.
 inline constexpr double kTriangleMarginMm = 1.0;
 
+/// Whether the marks go on a body beside the pillars (MarkPlace::Tab, a
+/// mark asked for) rather than in the data: that body (the orientation
+/// tab, a feature of the registry placed in FeaturePhase::Marks) carries
+/// them, and placeMarks places none.
+bool marksOnTab(const SceneParams& params);
+
 /// Places the marks params.marks asks for on a Scene whose cells, spans and
 /// kinds are set, and builds the faces they need (scene.marks, scene.faces,
 /// scene.drawn_by_face). Adds a note for a mark that does not fit.
@@ -96,11 +102,14 @@ struct PlacedMarks {
 };
 PlacedMarks placedMarks(const Scene& scene);
 
-/// The marks' read-back: the orientation tab's places (tabProbes), the
-/// triangle in the data at its centroid and a fifth of the way in from each
+/// The read-back of the marks in the data (on a tab, the tab's feature
+/// reads them back in a set of the same name): the triangle at its centroid and a fifth of the way in from each
 /// corner (its region's top + its raise), and inside the notch's V a
 /// quarter of the way from its apex to its mouth (empty: the notch cuts the
 /// whole height). Empty without marks.
 ProbeSet markProbes(const Scene& scene);
+
+/// The title of the marks' read-back set ("marks"), in the data or on a tab.
+inline constexpr const char* kMarkProbesTitle = "the orientation triangle at its height and the notch cut through";
 
 }  // namespace tsf

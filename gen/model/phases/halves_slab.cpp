@@ -4,7 +4,7 @@
 #include <climits>
 
 #include "gen/model/features/halves.h"
-#include "gen/model/features/orientation_tab.h"
+#include "gen/model/features/tab/orientation_tab.h"
 
 namespace tsf {
 

@@ -3,7 +3,6 @@
 #include <utility>
 
 #include "gen/model/features/marks.h"
-#include "gen/model/features/orientation_tab.h"
 #include "gen/util/error.h"
 
 namespace tsf {
@@ -26,33 +25,8 @@ void placeModelMarks(const SceneParams& params, Scene& s) {
     buildMarkFaces(s);
 }
 
-namespace {
-
-void placeTabAsAsked(const SceneParams& params, Scene& s) {
-    if (!params.tile_marks || !params.tile_marks->tab) {
-        placeTab(s);
-        return;
-    }
-    // A tile carries the model's own tab (touched cells given as grid cell indices).
-    OrientationTab tab = *params.tile_marks->tab;
-    for (auto& [k, e] : tab.touched) {
-        if (k < 0 || size_t(k) >= s.kept_index.size() || s.kept_index[size_t(k)] < 0)
-            throw InputError("a tile does not hold the pillars its orientation tab stands against");
-        k = s.kept_index[size_t(k)];
-    }
-    s.marks.tab = std::move(tab);
-}
-
-}  // namespace
-
-void placeModelTab(const SceneParams& params, Scene& s) {
-    placeTabAsAsked(params, s);
-    // The features of the registry keep clear of it without naming it.
-    if (std::optional<FootprintClaim> tab = tabClaim(s)) s.claims.push_back(std::move(*tab));
-}
-
 bool tabFallsBackToData(const SceneParams& params, const Scene& s) {
-    return wantsTab(params) && !s.marks.tab && s.keptCount() > 0;
+    return marksOnTab(params) && !s.marks.tab && s.keptCount() > 0;
 }
 
 SceneParams marksInData(const SceneParams& params) {

@@ -1,6 +1,7 @@
 // The orientation marks of a model or of one of its tiles: a tile draws
-// the model's own notch, triangle and tab where the model has them; a
-// model places its own (gen/model/features/marks.h, orientation_tab.h).
+// the model's own notch and triangle where the model has them; a model
+// places its own (gen/model/features/marks.h; the tab that carries them is
+// a feature of the registry, gen/model/features/tab/).
 // When a tab was asked for and no pillar on the west side can carry it,
 // the marks go in the data instead, where they fit, as the thesis places
 // them, rather than nowhere: the Scene is built again for that.
@@ -18,14 +19,8 @@ namespace tsf {
 /// triangle's cell.
 void placeModelMarks(const SceneParams& params, Scene& s);
 
-/// The orientation tab: the tile's (its touched cells given as grid
-/// indices) or placed for the model. Throws InputError when a tile does
-/// not hold the pillars the tab stands against.
-/// Its footprint is claimed (Scene::claims), so the features of the
-/// registry keep clear of it.
-void placeModelTab(const SceneParams& params, Scene& s);
-
-/// A tab was asked for and none could be placed (placeTab's last note says why).
+/// The marks were asked on a tab (the registry's feature placed in
+/// FeaturePhase::Marks) and none could be placed (its last note says why).
 bool tabFallsBackToData(const SceneParams& params, const Scene& s);
 
 /// The parameters of the build again: the marks in the data.

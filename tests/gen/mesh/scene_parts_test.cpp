@@ -9,7 +9,7 @@
 #include "tests/support/mesh_invariants.h"
 #include "verify/verify_parts.h"
 #include "gen/model/build_scene.h"
-#include "gen/model/features/orientation_tab.h"
+#include "gen/model/features/tab/orientation_tab.h"
 
 namespace tsf {
 namespace {

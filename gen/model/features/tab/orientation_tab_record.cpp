@@ -1,11 +1,11 @@
 // The orientation tab's record in the scene sidecar. See
 // orientation_tab_record.h.
-#include "gen/model/features/orientation_tab_record.h"
+#include "gen/model/features/tab/orientation_tab_record.h"
 
 #include <cmath>
 #include <sstream>
 
-#include "gen/model/features/orientation_tab.h"
+#include "gen/model/features/tab/orientation_tab.h"
 #include "gen/model/sidecar_fields.h"
 #include "gen/util/number_format.h"
 

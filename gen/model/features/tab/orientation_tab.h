@@ -40,10 +40,14 @@
 // standing on the cut face, with the marks on its face away from the cut
 // (halfScene), and the two together make one tab.
 //
-// Placed by placeTab (buildScene, after the top shapes and the legend) with
-// MarkParams::place == Tab. When the west side has no run of contacts clear
-// of pits, tilted corners below the floor and the legend's plate, placeTab
-// notes why and buildScene places the marks in the data where they fit.
+// A feature of the registry (tab_feature.h), placed in FeaturePhase::Marks
+// (after the top shapes and the legend) by placeTab when the marks go on a
+// tab (marksOnTab, gen/model/features/marks.h). When the west side has no
+// run of contacts clear of pits, tilted corners below the floor and the
+// legend's plate, placeTab notes why and buildScene places the marks in the
+// data where they fit. Its state is still the marks' (Marks::tab,
+// gen/model/scene_marks.h), which the marks' facts, the halves and the tiles
+// read.
 #pragma once
 
 #include <cstdint>
@@ -52,6 +56,7 @@
 #include <vector>
 
 #include "gen/geometry/mesh.h"
+#include "gen/model/feature.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_attachments.h"
 
@@ -86,10 +91,6 @@ double tabWidthMm(const MarkParams& marks);
 /// finds no place, leaves Scene::marks.tab empty with a note saying why.
 void placeTab(Scene& scene);
 
-/// Whether the Scene's marks belong on a tab: MarkPlace::Tab, a model not
-/// cut into halves, and at least one mark asked for.
-bool wantsTab(const SceneParams& params);
-
 /// z (units) of the tab's top at (x, y) mm (the floor, or the triangle's
 /// top), none outside its outline.
 std::optional<int64_t> tabTopAt(const Scene& scene, double x_mm, double y_mm);
@@ -123,6 +124,11 @@ std::vector<SurfaceProbe> tabProbes(const Scene& scene);
 /// covers holds its whole z band. Throws InputError ("scene: orientation
 /// tab: ...").
 void checkTabInScene(const Scene& scene);
+
+/// The tab's piece of a generated OpenSCAD file (tab_scad.cpp): the
+/// "Orientation marks" switch show_orientation_tab and its body as data for
+/// scad_lib/tsf_tab.scad, with its own assert; none without a tab.
+std::optional<ScadPiece> tabScadPiece(const Scene& scene);
 
 /// Checks a tab read from a file against the Scene: outline, joined edges,
 /// touched cells and their lattice corners agree. Throws InputError saying what does not.

@@ -1,4 +1,4 @@
-#include "gen/model/features/orientation_tab.h"
+#include "gen/model/features/tab/orientation_tab.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +11,7 @@
 #include "gen/geometry/joint_stress.h"
 #include "gen/geometry/polygon_triangulation.h"
 #include "gen/model/features/foot_contacts.h"
+#include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/joint_walls.h"
 #include "gen/util/error.h"
@@ -340,13 +341,9 @@ bool inTriangle(const std::array<TabPoint, 3>& t, double x, double y) {
 
 double tabWidthMm(const MarkParams& m) { return tabSize(m).width; }
 
-bool wantsTab(const SceneParams& p) {
-    return p.marks.place == MarkPlace::Tab && (p.marks.notch || p.marks.triangle);
-}
-
 void placeTab(Scene& s) {
     s.marks.tab.reset();
-    if (!wantsTab(s.params) || s.keptCount() == 0) return;
+    if (!marksOnTab(s.params) || s.keptCount() == 0) return;
     const TabSize size = tabSize(s.params.marks);
 
     // The tab's east face: the westernmost hexagon edge of the kept cells.

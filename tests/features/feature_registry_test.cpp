@@ -1,0 +1,93 @@
+// The feature registry (gen/model/feature_registry.h): its features in the
+// order they are placed, phase by phase, and the lists that read each phase
+// where its features stood: the orientation tab, placed with the marks,
+// comes first among the bodies, last among the bed widths, and is read
+// back in the marks' own set.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "gen/model/attachments.h"
+#include "gen/model/build_scene.h"
+#include "gen/model/feature_registry.h"
+#include "gen/model/features/marks.h"
+#include "gen/model/scene_scale.h"
+#include "tests/support/fields.h"
+
+namespace tsf {
+namespace {
+
+// A 20 x 12 raster of a gentle hill, every value above the floor: room
+// for the tab west of the pillars and the scale east of them.
+HexField hill() {
+    return test::fieldFromFunction(20, 12, [](int c, int r) { return 5.0 + std::sin(0.3 * c) + std::cos(0.4 * r); });
+}
+
+// The marks on the tab (the default) and the tactile scale.
+SceneParams tabAndScale() {
+    SceneParams p = test::smallParams();
+    p.marks = MarkParams{};
+    p.pitch_mm = 3.0;
+    p.requests.set(ScaleRequest{});
+    return p;
+}
+
+TEST(FeatureRegistry, TheTabIsPlacedFirstWithTheMarksThenTheFeaturesBesideThePillars) {
+    const std::vector<const Feature*>& all = features();
+    ASSERT_FALSE(all.empty());
+    EXPECT_STREQ(all.front()->name, "marks.tab");
+    EXPECT_EQ(all.front()->phase, FeaturePhase::Marks);
+    // The phases split the registry in its own order: every feature of
+    // Marks before every feature of Beside, as buildScene places them.
+    std::vector<const Feature*> by_phase = featuresOf(FeaturePhase::Marks);
+    const std::vector<const Feature*> beside = featuresOf(FeaturePhase::Beside);
+    by_phase.insert(by_phase.end(), beside.begin(), beside.end());
+    EXPECT_EQ(by_phase, all);
+    EXPECT_EQ(featuresOf(FeaturePhase::Marks).size(), 1u);
+}
+
+TEST(FeatureRegistry, TheTabComesFirstAmongTheBodiesAndIsReadBackWithTheMarks) {
+    const Scene s = buildScene(hill(), tabAndScale());
+    ASSERT_TRUE(s.marks.tab.has_value()) << (s.notes.empty() ? "" : s.notes.back());
+    ASSERT_TRUE(s.features.get<SceneScale>());
+
+    std::vector<std::string> parts;
+    for (const Attachment& a : sceneAttachments(s, Assembly::OnePiece)) parts.push_back(a.part);
+    EXPECT_EQ(parts, (std::vector<std::string>{"marks", "scale"}));
+
+    // One set named "marks", last, holding the tab's places and no mark in
+    // the data (there is none on a tab).
+    const std::vector<ProbeSet> sets = sceneProbes(s);
+    std::vector<std::string> names;
+    for (const ProbeSet& set : sets) names.push_back(set.name);
+    ASSERT_EQ(names, (std::vector<std::string>{"scale", "marks"}));
+    EXPECT_EQ(sets.back().title, kMarkProbesTitle);
+    ASSERT_FALSE(sets.back().probes.empty());
+    EXPECT_EQ(sets.back().probes.front().what, "the orientation tab's top");
+    for (const SurfaceProbe& p : sets.back().probes) EXPECT_NE(p.what, "inside the orientation notch") << "a notch in the data";
+
+    // Its box is the first, west of every pillar.
+    const std::vector<BoxMm> boxes = attachmentBoxes(s);
+    ASSERT_EQ(boxes.size(), 2u);
+    EXPECT_LT(boxes[0].x1, boxes[1].x0);
+    EXPECT_DOUBLE_EQ(boxes[0].x0, s.marks.tab->x_west_mm);
+}
+
+TEST(FeatureRegistry, TheTabsBedWidthComesAfterTheFeaturesBesideThePillars) {
+    std::vector<std::string> what;
+    for (const SideWidth& w : attachmentSideWidths(tabAndScale())) what.push_back(w.what);
+    EXPECT_EQ(what, (std::vector<std::string>{"the tactile scale", "the orientation tab"}));
+
+    // The marks in the data: no tab, no width for it, and the marks read
+    // back in the data.
+    SceneParams in_data = tabAndScale();
+    in_data.marks.place = MarkPlace::Data;
+    what.clear();
+    for (const SideWidth& w : attachmentSideWidths(in_data)) what.push_back(w.what);
+    EXPECT_EQ(what, (std::vector<std::string>{"the tactile scale"}));
+}
+
+}  // namespace
+}  // namespace tsf
