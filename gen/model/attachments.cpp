@@ -6,7 +6,6 @@
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/halves.h"
 #include "gen/model/features/tiles.h"
-#include "gen/model/features/legend_join.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/orientation_tab.h"
 
@@ -19,7 +18,6 @@ std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly) 
         if (a) out.push_back(std::move(*a));
     };
     add(tabAttachment(scene, assembly));
-    add(legendAttachment(scene, assembly));
     for (const Feature* f : features())
         if (f->attachment) add(f->attachment(scene, assembly));
     return out;
@@ -27,7 +25,7 @@ std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly) 
 
 std::vector<ProbeSet> sceneProbes(const Scene& scene) {
     std::vector<ProbeSet> out;
-    std::vector<ProbeSet> sets = {legendProbes(scene)};
+    std::vector<ProbeSet> sets;
     for (const Feature* f : features())
         if (f->probes) sets.push_back(f->probes(scene));
     sets.push_back(markProbes(scene));
@@ -44,7 +42,7 @@ void checkAttachments(const Scene& scene) {
 
 std::vector<BoxMm> attachmentBoxes(const Scene& scene) {
     std::vector<BoxMm> boxes;
-    std::vector<std::optional<BoxMm>> all = {tabBoxMm(scene), legendBoxMm(scene)};
+    std::vector<std::optional<BoxMm>> all = {tabBoxMm(scene)};
     for (const Feature* f : features())
         if (f->box) all.push_back(f->box(scene));
     for (const auto& box : all)
@@ -85,7 +83,7 @@ std::vector<BottomHole> sceneBottomHoles(const Scene& scene) {
 
 std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm) {
     std::vector<int64_t> tops;
-    std::vector<std::optional<int64_t>> all = {tabTopAt(scene, x_mm, y_mm), legendTopAt(scene, x_mm, y_mm)};
+    std::vector<std::optional<int64_t>> all = {tabTopAt(scene, x_mm, y_mm)};
     for (const Feature* f : features())
         if (f->top_at) all.push_back(f->top_at(scene, x_mm, y_mm));
     for (const auto& top : all)

@@ -50,6 +50,9 @@ namespace tsf {
 
 /// Where in buildScene a feature places itself.
 enum class FeaturePhase : uint8_t {
+    /// As Beside, before the orientation tab (not yet in the registry),
+    /// which keeps clear of what it claims: the braille legend's plate.
+    BeforeTab,
     /// After the cells' tops are final (tilted, textured), the marks, the
     /// legend and the orientation tab: a body beside the pillars that
     /// stands against cells rising to the floor.
@@ -81,6 +84,9 @@ struct ScadPiece {
     /// [Hidden] comment before its data, whose last sentence the emitter
     /// ends.
     std::string header;
+    /// What ends the header's last sentence: "." (the legend's, a list of
+    /// its lines in quotes, ends with none: "").
+    std::string header_end = ".";
     std::string show_switch;   ///< "show_scale": on as generated, off in the other parameter sets
     std::string variable;      ///< "tactile_scale"
     std::string what;          ///< for a person, in the joined file's assert: "the tactile scale"
@@ -127,6 +133,9 @@ struct Feature {
     std::optional<BoxMm> (*box)(const Scene& scene);
     /// z (units) of its top at (x, y) mm; none outside its box or without it.
     std::optional<int64_t> (*top_at)(const Scene& scene, double x_mm, double y_mm);
+    /// z (mm) of its highest point where it may stand above the highest
+    /// pillar (the float32 z grid must resolve it); none without it.
+    std::optional<double> (*highest_z_mm)(const Scene& scene);
     /// Its read-back; no probes without it.
     ProbeSet (*probes)(const Scene& scene);
     /// Checks what the mesher relies on to join it (InputError "scene: ...").

@@ -3,15 +3,14 @@
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/class_textures_record.h"
 #include "gen/model/features/halves_facts.h"
-#include "gen/model/features/legend_record.h"
 #include "gen/model/features/orientation_tab_record.h"
 
 namespace tsf {
 
 const std::vector<FeatureRecord>& featureRecords() {
-    // The registry's features where the scale, the first of them, stood.
+    // The registry's features where the legend, the first of them, stood.
     static const std::vector<FeatureRecord> records = [] {
-        std::vector<FeatureRecord> r = {{"marks.tab", tabRecord, readTabRecord}, {"legend", legendRecord, readLegendRecord}};
+        std::vector<FeatureRecord> r = {{"marks.tab", tabRecord, readTabRecord}};
         for (const Feature* f : features())
             if (f->record) r.push_back({f->name, f->record, f->read_record, f->facts_listed_when_absent});
         r.push_back({"class_textures", classTexturesRecord, readClassTexturesRecord});
@@ -22,8 +21,7 @@ const std::vector<FeatureRecord>& featureRecords() {
 
 const std::vector<FeatureFacts>& featureFacts() {
     static const std::vector<FeatureFacts> facts = [] {
-        std::vector<FeatureFacts> r = {{"marks.tab", true, tabFactsJson, tabFactsLines},
-                                       {"legend", true, legendFactsJson, legendFactsLines}};
+        std::vector<FeatureFacts> r = {{"marks.tab", true, tabFactsJson, tabFactsLines}};
         for (const Feature* f : features())
             if (f->facts_json) r.push_back({f->name, f->facts_listed_when_absent, f->facts_json, f->facts_lines});
         r.push_back({"halves", false, halvesFactsJson, halvesFactsLines});

@@ -1,12 +1,13 @@
 #include "gen/model/feature_registry.h"
 
+#include "gen/model/features/legend/legend_feature.h"
 #include "gen/model/features/ruler/ruler_feature.h"
 #include "gen/model/features/scale_feature.h"
 
 namespace tsf {
 
 const std::vector<const Feature*>& features() {
-    static const std::vector<const Feature*> registry = {&scaleFeature(), &rulerFeature()};
+    static const std::vector<const Feature*> registry = {&legendFeature(), &scaleFeature(), &rulerFeature()};
     return registry;
 }
 

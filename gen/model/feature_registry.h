@@ -13,7 +13,7 @@
 namespace tsf {
 
 /// Every feature in the registry, in the order they are placed (the
-/// tactile scale, the edge ruler).
+/// braille legend, the tactile scale, the edge ruler).
 const std::vector<const Feature*>& features();
 
 /// Places each feature of `phase`, in the registry's order, and adds the

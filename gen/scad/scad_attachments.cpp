@@ -3,7 +3,6 @@
 #include "gen/model/feature_registry.h"
 #include "gen/scad/scad_halves.h"
 #include "gen/scad/scad_joined.h"
-#include "gen/scad/scad_legend.h"
 #include "gen/scad/scad_tab.h"
 
 namespace tsf {
@@ -20,7 +19,7 @@ std::optional<ScadAttachment> scadPiece(const Scene& s, const Feature& f, bool j
     a.placed_switch = piece->show_switch;
     const std::optional<Attachment> joined =
         join && f.attachment ? f.attachment(s, Assembly::OnePiece) : std::nullopt;
-    a.data = std::move(piece->header) + ".\n";
+    a.data = std::move(piece->header) + piece->header_end + "\n";
     if (joined && scadCanJoin(s, *joined)) {
         a.library_file = "tsf_joined.scad";
         a.data += "// The walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n" +
@@ -38,9 +37,9 @@ std::optional<ScadAttachment> scadPiece(const Scene& s, const Feature& f, bool j
 }  // namespace
 
 std::vector<ScadAttachment> scadAttachments(const Scene& scene, bool join) {
-    // The features of the registry stand where the scale, its first, stood
-    // before the registry: after the legend, before the tab.
-    std::vector<std::optional<ScadAttachment>> pieces{scadLegend(scene, join)};
+    // The features of the registry stand where the legend, its first, stood
+    // before the registry: before the tab.
+    std::vector<std::optional<ScadAttachment>> pieces;
     for (const Feature* f : features()) pieces.push_back(scadPiece(scene, *f, join));
     pieces.push_back(scadTab(scene, join));
     pieces.push_back(scadHalves(scene));
