@@ -17,7 +17,7 @@ double highestZMm(const Scene& s) {
     double z = s.zMm(top);
     for (const Feature* f : features())
         if (f->highest_z_mm)
-            if (const std::optional<double> top = f->highest_z_mm(s)) z = std::max(z, *top);
+            if (const std::optional<double> highest = f->highest_z_mm(s)) z = std::max(z, *highest);
     return z;
 }
 
