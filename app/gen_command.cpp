@@ -160,7 +160,7 @@ void runGenSeries(GenCommandOptions o) {
     }
     if (!p.value_max) p.value_max = hi;
     const int width = int(std::to_string(bands.back()).size());
-    const std::string title = p.legend.title;
+    const std::string title = p.words.title;
     nlohmann::json series = nlohmann::json::array();
     for (size_t k = 0; k < bands.size(); ++k) {
         GenCommandOptions one = o;
@@ -173,9 +173,9 @@ void runGenSeries(GenCommandOptions o) {
         one.series_count = int(bands.size());
         // The legend names the step: where the title says {band}, else after it.
         if (const size_t at = title.find("{band}"); at != std::string::npos)
-            one.gen.scene.legend.title = title.substr(0, at) + labels[k] + title.substr(at + 6);
+            one.gen.scene.words.title = title.substr(0, at) + labels[k] + title.substr(at + 6);
         else if (!title.empty())
-            one.gen.scene.legend.title = title + " " + labels[k];
+            one.gen.scene.words.title = title + " " + labels[k];
         if (!o.json) std::cout << (k ? "\n" : "") << "band " << bands[k] << " (" << labels[k] << "), " << k + 1 << " of "
                                << bands.size() << "\n";
         nlohmann::json j;

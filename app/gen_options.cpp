@@ -255,12 +255,12 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
     cmd->add_option("--notch-depth", p.marks.notch_depth_mm, "How far the notch reaches into the corner, mm (on the tab: along its diagonal, always in full)")
         ->check(CLI::Range(0.5, 100.0))->capture_default_str()->group(marks);
     auto* legend = "Braille legend (docs/printing.md)";
-    cmd->add_option("--title", p.legend.title,
+    cmd->add_option("--title", p.words.title,
                     "Title embossed in braille on a plate grown north of the pillars, with the value range")
         ->group(legend);
-    cmd->add_option("--units", p.legend.units, "Units of the values, after the range in the legend (e.g. airports)")
+    cmd->add_option("--units", p.words.units, "Units of the values, after the range in the legend (e.g. airports)")
         ->group(legend);
-    cmd->add_option("--braille-table", p.legend.table,
+    cmd->add_option("--braille-table", p.words.braille_table,
                     "liblouis table for the legend and the key's braille (Unified English Braille, uncontracted, by default; en-ueb-g2.ctb contracted, en-us-g1.ctb the older US code EBAE, de-g0.utb, ...)")
         ->capture_default_str()->group(legend);
     auto* scale = "Tactile scale (docs/model.md)";

@@ -74,7 +74,7 @@ std::vector<std::string> applyPrinterFit(const PrinterSpec& printer, const Given
                             formatSignificant(printer.nozzle_mm, 4) + " mm nozzle)");
     }
     if (printer.layer_mm > 0) {
-        p.legend.layer_mm = printer.layer_mm;
+        p.printer_layer_mm = printer.layer_mm;
         if (given.snap) {
             if (std::fabs(std::remainder(p.z_snap_mm, printer.layer_mm)) > 1e-9 &&
                 std::fabs(std::remainder(printer.layer_mm, p.z_snap_mm)) > 1e-9)

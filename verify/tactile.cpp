@@ -11,6 +11,7 @@
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/class_textures.h"
 #include "gen/model/features/felt_heights.h"
+#include "gen/model/features/legend/legend.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
@@ -399,7 +400,7 @@ void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r)
 void checkBraille(const Scene& s, const TactileOptions& o, TactileResult& r) {
     Check c{"tactile_braille", "the braille dots print inside the standards' range"};
     c.unit = "mm";
-    const SceneLegend& l = *s.legend;
+    const SceneLegend& l = *sceneLegend(s);
     const BrailleStandard& st = l.layout.standard;
     const double printed = printedDotHeightMm(st.dot_height_mm, o.layer_mm);
     const Vec3 at = l.layout.dots.empty()
@@ -548,7 +549,7 @@ TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOp
         checkHeightSteps(*scene, options, r);
         r.checks.push_back(checkAttachmentJoints(*scene, kHandPushN, kPrintedPlaInterlayerMpa, options.max_offenders));
     }
-    if (scene && scene->legend) checkBraille(*scene, options, r);
+    if (scene && sceneLegend(*scene)) checkBraille(*scene, options, r);
     if (scene) checkFeatureClaims(*scene, options, r);
     return r;
 }

@@ -65,7 +65,7 @@ inline constexpr double kMinTriangleLongLegMm = 12.7;
 inline constexpr double kMergeSpacingMm = 3.2;
 /// Lowest printed braille dot, mm: NLS Specification 800's dot height (paper
 /// braille; lower dots are read poorly). The highest is kMaxBrailleDotHeightMm
-/// (gen/model/features/legend.h).
+/// (gen/model/features/legend/legend.h).
 inline constexpr double kMinPrintedDotHeightMm = 0.48;
 /// Narrowest dot base, in nozzle widths: two perimeters make a dome.
 inline constexpr double kMinDotBaseNozzles = 2.0;

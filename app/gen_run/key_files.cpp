@@ -75,7 +75,7 @@ void writeKeyFiles(const GenCommandOptions& o, const HexField& field, const Scen
         out << modelKeyText(key);
         if (!stamp.empty()) out << "\n" << stamp << "\n";
     });
-    std::string brf = brailleReadyFile(key, scene.params.legend.table);
+    std::string brf = brailleReadyFile(key, scene.params.words.braille_table);
     if (!stamp.empty()) {
         std::string line = stamp;
         // Braille ASCII is 0x20 to 0x5F: capitals; anything else of a file name a '?'.
@@ -87,7 +87,7 @@ void writeKeyFiles(const GenCommandOptions& o, const HexField& field, const Scen
     }
     writeFileAtomically(brf_path, [&](std::ostream& out) { out << brf; });
     summary.outputs.push_back({text_path, "key in plain text for a screen reader"});
-    summary.outputs.push_back({brf_path, "key in braille for an embosser: BRF 40 by 25 in " + scene.params.legend.table});
+    summary.outputs.push_back({brf_path, "key in braille for an embosser: BRF 40 by 25 in " + scene.params.words.braille_table});
 }
 
 }  // namespace tsf::cli

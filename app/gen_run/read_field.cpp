@@ -30,10 +30,10 @@ HexField readGenField(GenCommandOptions& o, GenSummary& summary) {
     if (field.grid.cellCount() > kProgressCells && !o.progress && !o.json)
         std::fprintf(stderr, "tsf: %d x %d cells, this may take a few seconds\n", field.grid.cols, field.grid.rows);
     // A legend's units line takes the file's own units unless --units says otherwise.
-    LegendRequest& legend = o.gen.scene.legend;
-    if (!legend.title.empty() && legend.units.empty() && !field.input.units.empty()) {
-        legend.units = field.input.units;
-        summary.printer_notes.push_back("the legend's units are the file's: " + legend.units + " (--units to say otherwise)");
+    ModelWords& words = o.gen.scene.words;
+    if (!words.title.empty() && words.units.empty() && !field.input.units.empty()) {
+        words.units = field.input.units;
+        summary.printer_notes.push_back("the legend's units are the file's: " + words.units + " (--units to say otherwise)");
     }
     return field;
 }

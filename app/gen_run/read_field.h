@@ -8,7 +8,7 @@
 
 namespace tsf::cli {
 
-/// Reads o.gen.input. Sets o.gen.scene.legend.units to the file's units
+/// Reads o.gen.input. Sets o.gen.scene.words.units to the file's units
 /// when a legend has a title and no --units, with a line in the summary.
 HexField readGenField(GenCommandOptions& o, GenSummary& summary);
 

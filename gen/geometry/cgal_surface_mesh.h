@@ -1,6 +1,6 @@
 #pragma once
 // A tsf Mesh as a CGAL Surface_mesh, for CGAL's exact Boolean operations
-// (the legend plate's join in gen/model/features/legend_scene.cpp, the parts' overlap test
+// (the legend plate's join in gen/model/features/legend/legend_scene.cpp, the parts' overlap test
 // in verify/assembly_checks.cpp). Vertices keep their indices; a triangle
 // CGAL cannot add (it would make the mesh non-manifold) is left out, so
 // callers check the result with CGAL's own tests before they rely on it.

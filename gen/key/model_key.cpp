@@ -40,7 +40,7 @@ std::string range(double lo, double hi, const UnitWords& u) { return "from " + n
 /// The units a reader is told: --units as the maker wrote them (spelled
 /// out when they are a known unit), else the file's.
 UnitWords readerUnits(const Scene& s, const ModelKeyFacts& facts) {
-    return unitWords(s.params.legend.units.empty() ? facts.units : s.params.legend.units);
+    return unitWords(s.params.words.units.empty() ? facts.units : s.params.words.units);
 }
 
 std::string capitalised(std::string text) {
@@ -70,7 +70,7 @@ std::string stepWords(const std::string& step) {
 }
 
 std::string titleParagraph(const Scene& s, const ModelKeyFacts& facts) {
-    if (!s.params.legend.title.empty()) return s.params.legend.title;
+    if (!s.params.words.title.empty()) return s.params.words.title;
     if (!facts.description.empty())
         return capitalised(facts.description) + (facts.step.empty() ? "" : ", " + stepWords(facts.step));
     return "Model of " + facts.input_name;
@@ -244,11 +244,6 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
                       ", at most " + num(s.params.max_slope_deg) + kNoBreak +
                       "degrees. The height at a top's centre is its value.");
     out.push_back(orientationParagraph(s));
-    if (s.legend) {
-        std::string p = "Braille on the plate north of the pillars, in " + brailleCodeName(s.params.legend.table) + ", reads:";
-        for (const std::string& line : s.legend->layout.text) p += " \"" + line + "\".";
-        out.push_back(p);
-    }
     const KeyNumbers numbers{num, [&u](double v) { return amount(v, u); }};
     for (const Feature* f : features())
         if (f->key_paragraph)
@@ -276,8 +271,8 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     for (const std::string& f : facts.read_facts) made += " " + f + ".";
     for (const std::string& n : facts.made_notes) made += " " + n + (n.empty() || n.back() == '.' ? "" : ".");
     out.push_back(made);
-    out.push_back("The braille of the plate and of this key's BRF file is " + brailleCodeName(s.params.legend.table) +
-                  " (liblouis table " + s.params.legend.table + "). Made by tsf " + facts.version + " from the file " +
+    out.push_back("The braille of the plate and of this key's BRF file is " + brailleCodeName(s.params.words.braille_table) +
+                  " (liblouis table " + s.params.words.braille_table + "). Made by tsf " + facts.version + " from the file " +
                   facts.input_name + ".");
     return out;
 }

@@ -6,7 +6,6 @@
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/halves.h"
 #include "gen/model/features/tiles.h"
-#include "gen/model/features/legend_join.h"
 #include "gen/model/features/marks.h"
 
 namespace tsf {
@@ -19,10 +18,7 @@ std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly) 
     };
     // The registry's features where they stood: the one carrying the
     // marks first, the legend, the features beside the pillars.
-    for (const Feature* f : featuresOf(FeaturePhase::Marks))
-        if (f->attachment) add(f->attachment(scene, assembly));
-    add(legendAttachment(scene, assembly));
-    for (const Feature* f : featuresOf(FeaturePhase::Beside))
+    for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
         if (f->attachment) add(f->attachment(scene, assembly));
     return out;
 }
@@ -30,11 +26,11 @@ std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly) 
 std::vector<ProbeSet> sceneProbes(const Scene& scene) {
     std::vector<ProbeSet> out;
     // The one carrying the marks is read back with them, last.
-    std::vector<ProbeSet> sets = {legendProbes(scene)};
-    for (const Feature* f : featuresOf(FeaturePhase::Beside))
+    std::vector<ProbeSet> sets;
+    for (const Feature* f : featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
         if (f->probes) sets.push_back(f->probes(scene));
     sets.push_back(markProbes(scene));
-    for (const Feature* f : featuresOf(FeaturePhase::Marks))
+    for (const Feature* f : featuresOf({FeaturePhase::Marks}))
         if (f->probes) sets.push_back(f->probes(scene));
     for (ProbeSet& set : sets)
         if (!set.probes.empty()) out.push_back(std::move(set));
@@ -42,18 +38,14 @@ std::vector<ProbeSet> sceneProbes(const Scene& scene) {
 }
 
 void checkAttachments(const Scene& scene) {
-    for (const FeaturePhase phase : {FeaturePhase::Beside, FeaturePhase::Marks})
-        for (const Feature* f : featuresOf(phase))
-            if (f->check) f->check(scene);
+    for (const Feature* f : featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Beside, FeaturePhase::Marks}))
+        if (f->check) f->check(scene);
 }
 
 std::vector<BoxMm> attachmentBoxes(const Scene& scene) {
     std::vector<BoxMm> boxes;
     std::vector<std::optional<BoxMm>> all;
-    for (const Feature* f : featuresOf(FeaturePhase::Marks))
-        if (f->box) all.push_back(f->box(scene));
-    all.push_back(legendBoxMm(scene));
-    for (const Feature* f : featuresOf(FeaturePhase::Beside))
+    for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
         if (f->box) all.push_back(f->box(scene));
     for (const auto& box : all)
         if (box) boxes.push_back(*box);
@@ -78,10 +70,9 @@ std::vector<SideWidth> attachmentSideWidths(const SceneParams& params) {
     // The features beside the pillars (the tactile scale east of them),
     // then the one carrying the marks (the orientation tab west of them).
     std::vector<SideWidth> out;
-    for (const FeaturePhase phase : {FeaturePhase::Beside, FeaturePhase::Marks})
-        for (const Feature* f : featuresOf(phase))
-            if (f->side_width)
-                if (std::optional<SideWidth> w = f->side_width(params)) out.push_back(std::move(*w));
+    for (const Feature* f : featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Beside, FeaturePhase::Marks}))
+        if (f->side_width)
+            if (std::optional<SideWidth> w = f->side_width(params)) out.push_back(std::move(*w));
     return out;
 }
 
@@ -94,10 +85,7 @@ std::vector<BottomHole> sceneBottomHoles(const Scene& scene) {
 std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm) {
     std::vector<int64_t> tops;
     std::vector<std::optional<int64_t>> all;
-    for (const Feature* f : featuresOf(FeaturePhase::Marks))
-        if (f->top_at) all.push_back(f->top_at(scene, x_mm, y_mm));
-    all.push_back(legendTopAt(scene, x_mm, y_mm));
-    for (const Feature* f : featuresOf(FeaturePhase::Beside))
+    for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
         if (f->top_at) all.push_back(f->top_at(scene, x_mm, y_mm));
     for (const auto& top : all)
         if (top) tops.push_back(*top);

@@ -21,8 +21,6 @@
 #include "gen/model/phases/shaped_tops.h"
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/halves.h"
-#include "gen/model/features/legend_join.h"
-#include "gen/model/features/legend_scene.h"
 #include "gen/model/features/tiles.h"
 
 namespace tsf {
@@ -74,12 +72,11 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     if (params.tile_place) placeTileCode(s);
     shapeTops(field, heights.units, params, s);
 
-    // The legend and the features of the registry last: they stand against
-    // cells whose tops (tilted or not) rise to the floor, or on a mirrored
-    // model hold their band; the registry's features keep clear of every
-    // footprint claimed before them (the tab of the legend's plate).
-    placeLegend(s);
-    if (std::optional<FootprintClaim> plate = legendClaim(s)) s.claims.push_back(std::move(*plate));
+    // The features last: they stand against cells whose tops (tilted or
+    // not) rise to the floor, or on a mirrored model hold their band; the
+    // tab keeps clear of what the features placed before it claim (the
+    // legend's plate), the features after it of every footprint claimed.
+    placeFeatures(s, FeaturePhase::BeforeMarks);
     placeFeatures(s, FeaturePhase::Marks);
     if (tabFallsBackToData(params, s)) {
         // No pillar on the west side to stand a tab against: built again

@@ -51,14 +51,14 @@ namespace tsf {
 
 /// Where in buildScene a feature places itself.
 enum class FeaturePhase : uint8_t {
-    /// After the cells' tops are final (tilted, textured) and the legend is
-    /// placed: a body beside the pillars that carries the orientation marks
-    /// (the orientation tab). When the marks were asked on it and it finds
-    /// no place, buildScene builds the Scene again with the marks in the
-    /// data. The lists that came before the registry read these features
-    /// where the tab stood: first among the bodies, records and facts; with
-    /// the marks' read-back, after the features beside the pillars among
-    /// the checks, bed widths and OpenSCAD pieces.
+    /// After the cells' tops are final (tilted, textured): a body beside
+    /// the pillars placed before the one carrying the marks, which keeps
+    /// clear of what it claims (the braille legend's plate).
+    BeforeMarks,
+    /// After BeforeMarks: a body beside the pillars that carries the
+    /// orientation marks (the orientation tab). When the marks were asked
+    /// on it and it finds no place, buildScene builds the Scene again with
+    /// the marks in the data.
     Marks,
     /// After the features of Marks: a body beside the pillars that stands
     /// against cells rising to the floor.
@@ -90,6 +90,9 @@ struct ScadPiece {
     /// [Hidden] comment before its data, whose last sentence the emitter
     /// ends.
     std::string header;
+    /// What ends the header's last sentence: "." (the legend's, a list of
+    /// its lines in quotes, ends with none: "").
+    std::string header_end = ".";
     std::string show_switch;   ///< "show_scale": on as generated, off in the other parameter sets
     std::string variable;      ///< "tactile_scale"
     std::string what;          ///< for a person, in the joined file's assert: "the tactile scale"
@@ -97,9 +100,10 @@ struct ScadPiece {
     std::string library_file;  ///< "tsf_scale.scad"
     std::string module_call;   ///< "tsf_with_scale(tactile_scale, show_scale) "
     /// A feature that words its data in its own way sets these; "" is the
-    /// emitter's: ".\n" and a comment naming tsf_joined.scad before the
-    /// joined data, ".\n" before `value`, and scad_lib/tsf_joined.scad's
-    /// assert after the joined data, none after `value`.
+    /// emitter's: header_end, a new line and a comment naming
+    /// tsf_joined.scad before the joined data, header_end and a new line
+    /// before `value`, and scad_lib/tsf_joined.scad's assert after the
+    /// joined data, none after `value`.
     std::string joined_lead;  ///< between the header and `variable = <joined>;`
     std::string value_lead;   ///< between the header and `variable = value;`
     /// Its own assert of the parameters it was placed for, written after
@@ -145,6 +149,9 @@ struct Feature {
     std::optional<BoxMm> (*box)(const Scene& scene);
     /// z (units) of its top at (x, y) mm; none outside its box or without it.
     std::optional<int64_t> (*top_at)(const Scene& scene, double x_mm, double y_mm);
+    /// z (mm) of its highest point where it may stand above the highest
+    /// pillar (the float32 z grid must resolve it); none without it.
+    std::optional<double> (*highest_z_mm)(const Scene& scene);
     /// Its read-back; no probes without it.
     ProbeSet (*probes)(const Scene& scene);
     /// Checks what the mesher relies on to join it (InputError "scene: ...").

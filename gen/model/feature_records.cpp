@@ -3,22 +3,16 @@
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/class_textures_record.h"
 #include "gen/model/features/halves_facts.h"
-#include "gen/model/features/legend_record.h"
 
 namespace tsf {
 
 const std::vector<FeatureRecord>& featureRecords() {
     // The registry's features where they stood: the one carrying the marks
-    // first, the features beside the pillars where the scale stood.
+    // first, the legend, the features beside the pillars.
     static const std::vector<FeatureRecord> records = [] {
         std::vector<FeatureRecord> r;
-        const auto add = [&r](FeaturePhase phase) {
-            for (const Feature* f : featuresOf(phase))
-                if (f->record) r.push_back({f->name, f->record, f->read_record, f->facts_listed_when_absent});
-        };
-        add(FeaturePhase::Marks);
-        r.push_back({"legend", legendRecord, readLegendRecord});
-        add(FeaturePhase::Beside);
+        for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
+            if (f->record) r.push_back({f->name, f->record, f->read_record, f->facts_listed_when_absent});
         r.push_back({"class_textures", classTexturesRecord, readClassTexturesRecord});
         return r;
     }();
@@ -28,13 +22,8 @@ const std::vector<FeatureRecord>& featureRecords() {
 const std::vector<FeatureFacts>& featureFacts() {
     static const std::vector<FeatureFacts> facts = [] {
         std::vector<FeatureFacts> r;
-        const auto add = [&r](FeaturePhase phase) {
-            for (const Feature* f : featuresOf(phase))
-                if (f->facts_json) r.push_back({f->name, f->facts_listed_when_absent, f->facts_json, f->facts_lines});
-        };
-        add(FeaturePhase::Marks);
-        r.push_back({"legend", true, legendFactsJson, legendFactsLines});
-        add(FeaturePhase::Beside);
+        for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
+            if (f->facts_json) r.push_back({f->name, f->facts_listed_when_absent, f->facts_json, f->facts_lines});
         r.push_back({"halves", false, halvesFactsJson, halvesFactsLines});
         r.push_back({"class_textures", false, classTexturesFactsJson, classTexturesFactsLines});
         return r;

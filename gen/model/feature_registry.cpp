@@ -1,5 +1,6 @@
 #include "gen/model/feature_registry.h"
 
+#include "gen/model/features/legend/legend_feature.h"
 #include "gen/model/features/ruler/ruler_feature.h"
 #include "gen/model/features/scale_feature.h"
 #include "gen/model/features/tab/tab_feature.h"
@@ -7,19 +8,21 @@
 namespace tsf {
 
 const std::vector<const Feature*>& features() {
-    static const std::vector<const Feature*> registry = {&tabFeature(), &scaleFeature(), &rulerFeature()};
+    static const std::vector<const Feature*> registry = {&legendFeature(), &tabFeature(), &scaleFeature(),
+                                                         &rulerFeature()};
     return registry;
 }
 
-std::vector<const Feature*> featuresOf(FeaturePhase phase) {
+std::vector<const Feature*> featuresOf(std::initializer_list<FeaturePhase> phases) {
     std::vector<const Feature*> out;
-    for (const Feature* f : features())
-        if (f->phase == phase) out.push_back(f);
+    for (const FeaturePhase phase : phases)
+        for (const Feature* f : features())
+            if (f->phase == phase) out.push_back(f);
     return out;
 }
 
 void placeFeatures(Scene& scene, FeaturePhase phase) {
-    for (const Feature* f : featuresOf(phase)) {
+    for (const Feature* f : featuresOf({phase})) {
         if (f->place) f->place(scene);
         if (f->claim)
             if (std::optional<FootprintClaim> c = f->claim(scene)) scene.claims.push_back(std::move(*c));

@@ -5,6 +5,7 @@
 // those names a feature of the registry.
 #pragma once
 
+#include <initializer_list>
 #include <vector>
 
 #include "gen/model/feature.h"
@@ -13,13 +14,14 @@
 namespace tsf {
 
 /// Every feature in the registry, in the order they are placed (the
-/// orientation tab, the tactile scale, the edge ruler).
+/// braille legend, the orientation tab, the tactile scale, the edge ruler).
 const std::vector<const Feature*>& features();
 
-/// The features of the registry placed in `phase`, in the registry's order:
-/// the lists that came before the registry read each phase where its
-/// features stood (gen/model/feature.h: FeaturePhase).
-std::vector<const Feature*> featuresOf(FeaturePhase phase);
+/// The features of the registry placed in `phases`, phase by phase in the
+/// order given, each phase's in the registry's order: the lists that came
+/// before the registry read each phase where its features stood (the
+/// feature carrying the marks first among the bodies, its read-back last).
+std::vector<const Feature*> featuresOf(std::initializer_list<FeaturePhase> phases);
 
 /// Places each feature of `phase`, in the registry's order, and adds the
 /// footprint each claims to Scene::claims.

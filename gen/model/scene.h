@@ -30,7 +30,6 @@
 #include "gen/field/hex_grid.h"
 #include "gen/geometry/mesh.h"
 #include "gen/model/feature_state.h"
-#include "gen/model/features/legend.h"
 #include "gen/model/scene_attachments.h"
 #include "gen/model/scene_halves.h"
 #include "gen/model/scene_marks.h"
@@ -96,6 +95,24 @@ enum class BaselineMode {
     Value,  ///< SceneParams::baseline_value
 };
 
+/// What a model says in words (tsf gen --title, --units, --braille-table):
+/// its key says them, and a model with a title or units carries them in
+/// braille on a plate north of the pillars (gen/model/features/legend/legend_scene.h).
+struct ModelWords {
+    std::string title;                      ///< first line, UTF-8
+    std::string units;                      ///< after the value range ("0 to 27 airports")
+    std::string braille_table = "en-ueb-g1.ctb";  ///< liblouis table of the plate and the key's BRF file
+    /// The line after the title instead of the value range (a class map's
+    /// "5 classes": a range of class codes means nothing); "" for the range.
+    std::string range_line;
+    /// Lines after the range that the plate shows only when every one fits
+    /// on one braille line (a class map's classes and their textures); when
+    /// one does not, none is shown and the key files name them.
+    std::vector<std::string> key_lines;
+    /// A title or units: the model carries them in braille.
+    bool inBraille() const { return !title.empty() || !units.empty(); }
+};
+
 struct SceneParams {
     // --- size (mm) ---
     double pitch_mm = 0.0;         ///< centre spacing (hex width across flats); 0 = fit to fit_*_mm
@@ -128,8 +145,12 @@ struct SceneParams {
     bool structural_texture = false;  ///< dimple the cells kept only to hold the model together
     // --- a class map's textures (gen/model/features/class_textures.h) ---
     ClassTextureRequest class_textures;
-    // --- braille legend (gen/model/features/legend_scene.h) ---
-    LegendRequest legend;
+    // --- what the model says in words: its key, its braille legend ---
+    ModelWords words;
+    /// The printer's layer (mm, 0: not known): the braille dots are made a
+    /// whole number of layers high, the fewest that reach the standard's
+    /// height (a 0.48 mm dot prints 0.4 mm at 0.2 mm layers; 0.6 mm is three).
+    double printer_layer_mm = 0;
     // --- what the features of the registry are asked for (gen/model/feature.h) ---
     /// Each feature's request, by its own type, set by the command line; a
     /// feature asked for nothing has none here.
@@ -224,8 +245,6 @@ struct Scene {
     /// their tops (gen/model/features/class_textures.h); none for measurements
     /// and for classes given an order.
     std::optional<SceneTextures> textures;
-    /// The braille legend's plate north of the pillars (gen/model/features/legend_scene.h); none unless asked for.
-    std::optional<SceneLegend> legend;
     /// The cut into two support-free halves and the pin holes (gen/model/features/halves.h); none unless asked for.
     std::optional<SceneHalves> halves;
     /// The tile of a tiled model this Scene draws, and its code (gen/model/features/tiles.h); none for a whole model.

@@ -3,7 +3,6 @@
 #include "gen/model/feature_registry.h"
 #include "gen/scad/scad_halves.h"
 #include "gen/scad/scad_joined.h"
-#include "gen/scad/scad_legend.h"
 
 namespace tsf {
 namespace {
@@ -24,7 +23,8 @@ std::optional<ScadAttachment> scadPiece(const Scene& s, const Feature& f, bool j
     if (joined && scadCanJoin(s, *joined)) {
         a.library_file = "tsf_joined.scad";
         a.data += (piece->joined_lead.empty()
-                       ? ".\n// The walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n"
+                       ? piece->header_end +
+                             "\n// The walls it stands against and its body, joined into the pillars' polyhedron (tsf_joined.scad).\n"
                        : piece->joined_lead) +
                   piece->variable + " = " + scadJoinedData(s, *joined) + ";\n" +
                   (own_assert ? piece->own_assert : scadJoinedAssert(s, piece->show_switch, piece->what));
@@ -32,7 +32,7 @@ std::optional<ScadAttachment> scadPiece(const Scene& s, const Feature& f, bool j
         return a;
     }
     a.library_file = std::move(piece->library_file);
-    a.data += (piece->value_lead.empty() ? ".\n" : piece->value_lead) + piece->variable + " = " + piece->value +
+    a.data += (piece->value_lead.empty() ? piece->header_end + "\n" : piece->value_lead) + piece->variable + " = " + piece->value +
               (own_assert ? ";\n" + piece->own_assert : ";\n\n");
     a.call_prefix = std::move(piece->module_call);
     return a;
@@ -41,11 +41,11 @@ std::optional<ScadAttachment> scadPiece(const Scene& s, const Feature& f, bool j
 }  // namespace
 
 std::vector<ScadAttachment> scadAttachments(const Scene& scene, bool join) {
-    // The features of the registry stand where they stood before it: after
-    // the legend, those beside the pillars, then the one carrying the marks.
-    std::vector<std::optional<ScadAttachment>> pieces{scadLegend(scene, join)};
-    for (const FeaturePhase phase : {FeaturePhase::Beside, FeaturePhase::Marks})
-        for (const Feature* f : featuresOf(phase)) pieces.push_back(scadPiece(scene, *f, join));
+    // The features of the registry stand where they stood before it: the
+    // legend, those beside the pillars, then the one carrying the marks.
+    std::vector<std::optional<ScadAttachment>> pieces;
+    for (const Feature* f : featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Beside, FeaturePhase::Marks}))
+        pieces.push_back(scadPiece(scene, *f, join));
     pieces.push_back(scadHalves(scene));
     std::vector<ScadAttachment> out;
     for (std::optional<ScadAttachment>& a : pieces)

@@ -34,18 +34,23 @@ SceneParams tabAndScale() {
     return p;
 }
 
-TEST(FeatureRegistry, TheTabIsPlacedFirstWithTheMarksThenTheFeaturesBesideThePillars) {
+TEST(FeatureRegistry, TheLegendIsPlacedFirstThenTheTabWithTheMarksThenTheFeaturesBesideThePillars) {
     const std::vector<const Feature*>& all = features();
-    ASSERT_FALSE(all.empty());
-    EXPECT_STREQ(all.front()->name, "marks.tab");
-    EXPECT_EQ(all.front()->phase, FeaturePhase::Marks);
-    // The phases split the registry in its own order: every feature of
-    // Marks before every feature of Beside, as buildScene places them.
-    std::vector<const Feature*> by_phase = featuresOf(FeaturePhase::Marks);
-    const std::vector<const Feature*> beside = featuresOf(FeaturePhase::Beside);
-    by_phase.insert(by_phase.end(), beside.begin(), beside.end());
-    EXPECT_EQ(by_phase, all);
-    EXPECT_EQ(featuresOf(FeaturePhase::Marks).size(), 1u);
+    ASSERT_GE(all.size(), 2u);
+    EXPECT_STREQ(all[0]->name, "legend");
+    EXPECT_EQ(all[0]->phase, FeaturePhase::BeforeMarks);
+    EXPECT_STREQ(all[1]->name, "marks.tab");
+    EXPECT_EQ(all[1]->phase, FeaturePhase::Marks);
+    // The phases split the registry in its own order, as buildScene places
+    // them: BeforeMarks, then Marks, then Beside.
+    EXPECT_EQ(featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Marks, FeaturePhase::Beside}), all);
+    EXPECT_EQ(featuresOf({FeaturePhase::Marks}).size(), 1u);
+    // Asked in another order, phase by phase in that order.
+    const std::vector<const Feature*> marks_first =
+        featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside});
+    ASSERT_EQ(marks_first.size(), all.size());
+    EXPECT_STREQ(marks_first[0]->name, "marks.tab");
+    EXPECT_STREQ(marks_first[1]->name, "legend");
 }
 
 TEST(FeatureRegistry, TheTabComesFirstAmongTheBodiesAndIsReadBackWithTheMarks) {

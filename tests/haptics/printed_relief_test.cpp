@@ -9,6 +9,7 @@
 #include "gen/model/build_scene.h"
 #include "gen/model/features/scale.h"
 #include "gen/model/scene.h"
+#include "gen/model/features/legend/legend.h"
 #include "haptics/field_mapping.h"
 #include "haptics/force_model.h"
 #include "haptics/height_grid.h"
@@ -246,13 +247,13 @@ TEST(PrintedRelief, TheMarksTheLegendAndTheScaleAreFeltAsPrinted) {
     // A plateau wide enough for the triangle, with a braille legend and a scale.
     SceneParams p = tsf::test::smallParams(Bottom::Flat, Cull::None);
     p.pitch_mm = 4.0;
-    p.legend.title = "Hi";
+    p.words.title = "Hi";
     p.requests.set(ScaleRequest{});
     p.marks = MarkParams{};
     p.marks.place = MarkPlace::Data;  // the marks on the pillars, where the relief is felt
     const Scene s = buildScene(fieldFromFunction(16, 26, [](int c, int r) { return c < 8 && r > 15 ? 10.0 : 2.0 + c % 3; }), p);
     ASSERT_TRUE(s.marks.triangle);
-    ASSERT_TRUE(s.legend);
+    ASSERT_TRUE(sceneLegend(s));
     ASSERT_TRUE(sceneScale(s));
     ReliefInfo info;
     const HeightGrid g = printedRelief(s, &info);
@@ -268,8 +269,8 @@ TEST(PrintedRelief, TheMarksTheLegendAndTheScaleAreFeltAsPrinted) {
     const double region = s.zMm(s.top[size_t(t.anchor)] - s.floor_units);
     EXPECT_NEAR(feltAt(centroid.x, centroid.y), region + s.zMm(t.raise_units), 1e-4);
     // Every braille dot stands above the plate (the floor): felt near its apex.
-    for (const LegendDot& d : s.legend->layout.dots)
-        EXPECT_GT(feltAt(d.x_mm + s.legend->x0_mm, d.y_mm + s.legend->y0_mm), 0.5 * s.legend->layout.standard.dot_height_mm);
+    for (const LegendDot& d : sceneLegend(s)->layout.dots)
+        EXPECT_GT(feltAt(d.x_mm + sceneLegend(s)->x0_mm, d.y_mm + sceneLegend(s)->y0_mm), 0.5 * sceneLegend(s)->layout.standard.dot_height_mm);
     // Each tread of the scale at its height above the floor.
     const SceneScale& sc = *sceneScale(s);
     for (const ScaleStep& st : sc.steps)

@@ -81,6 +81,29 @@ const std::vector<MigratedFeature>& migrated() {
              // The command line: --ruler fills in its request.
              "app/gen_options.cpp",
          }},
+        {"legend",
+         std::regex(R"(\b(SceneLegend|sceneLegend|placeLegend|LegendParams|LegendLayout|LegendDot|layoutLegend|)"
+                    R"(legendRangeText|PlateOutline|PlateSpec|legendPlateOutline|legendEastOnLattice|meshPlateBody|)"
+                    R"(meshLegendPlate|meshLegendDots|legendPlateMesh|legendDotsMesh|legendAttachment|legendProbes|)"
+                    R"(legendBoxMm|legendClaim|legendTopAt|legendScadPiece|legendRecord|readLegendRecord|legendFactsJson|)"
+                    R"(legendFactsLines|legendFeature|kMinMirroredPlateMm)\b|features/legend/|\b(params|p)\.legend\b)"),
+         {
+             // Its own files.
+             "gen/model/features/legend/legend.h", "gen/model/features/legend/legend.cpp",
+             "gen/model/features/legend/legend_scene.h", "gen/model/features/legend/legend_scene.cpp",
+             "gen/model/features/legend/legend_plate.h", "gen/model/features/legend/legend_plate.cpp",
+             "gen/model/features/legend/legend_mesh.h", "gen/model/features/legend/legend_mesh.cpp",
+             "gen/model/features/legend/legend_join.h", "gen/model/features/legend/legend_join.cpp",
+             "gen/model/features/legend/legend_record.h", "gen/model/features/legend/legend_record.cpp",
+             "gen/model/features/legend/legend_scad.cpp", "gen/model/features/legend/legend_feature.h",
+             "gen/model/features/legend/legend_feature.cpp",
+             // The registry.
+             "gen/model/feature_registry.cpp",
+             // The tactile check's braille dots against the standards' range
+             // of a printed dot (tactile_braille), which a TactileClaim (a
+             // least rise and width) does not yet say.
+             "verify/tactile.cpp",
+         }},
     };
     return list;
 }

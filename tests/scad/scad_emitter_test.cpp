@@ -14,6 +14,7 @@
 #include "gen/scad/scad_library.h"
 #include "scad_test_support.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/features/legend/legend.h"
 
 namespace tsf {
 namespace {
@@ -218,9 +219,9 @@ TEST(ScadEmitter, ParameterSetsLeaveTheLegendOutWhereItWouldNotStand) {
     for (const Bottom bottom : {Bottom::Flat, Bottom::Mirrored}) {
         SceneParams p = smallParams(bottom);
         p.base_mm = 3;  // a mirrored plate needs a band of 1.6 mm its pillars share
-        p.legend.title = "Depth";
+        p.words.title = "Depth";
         const Scene scene = buildScene(bumpyField(12, 10), p);
-        ASSERT_TRUE(scene.legend.has_value());
+        ASSERT_TRUE(sceneLegend(scene) != nullptr);
         const nlohmann::json sets = nlohmann::json::parse(emitScadParameterSets(scene))["parameterSets"];
         EXPECT_EQ(sets["as generated"]["braille_legend"], "true");
         for (const auto& [name, set] : sets.items())

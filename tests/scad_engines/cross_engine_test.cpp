@@ -21,6 +21,7 @@
 #include "gen/scad/scad_emitter.h"
 #include "verify/verify_model.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/features/legend/legend.h"
 
 namespace tsf {
 namespace {
@@ -238,10 +239,10 @@ TEST_P(CrossEngineLegend, RendersTheSameSolidAsTheDirectMesher) {
     field.one_to_one = true;
     SceneParams p = test::terrainParams(Bottom::Flat);
     p.pitch_mm = 7.0;
-    p.legend.title = "Depth";
-    p.legend.units = "m";
+    p.words.title = "Depth";
+    p.words.units = "m";
     const Scene scene = buildScene(field, p);
-    ASSERT_TRUE(scene.legend.has_value());
+    ASSERT_TRUE(sceneLegend(scene) != nullptr);
     ScadOptions opts;
     const fs::path dir = test::scratchDir("legend_" + engine_name);
     writeScad(scene, opts, (dir / "model.scad").string());

@@ -24,6 +24,7 @@
 #include "gen/model/features/scale.h"
 #include "gen/readers/load_field.h"
 #include "gen/scad/scad_emitter.h"
+#include "gen/model/features/legend/legend.h"
 #include "tests/scad/scad_test_support.h"
 
 namespace tsf {
@@ -83,8 +84,8 @@ DefaultModel modelNamed(const std::string& name) {
     FieldLoadOptions in;
     in.input = test::sourcePath("examples/volcano.csv");
     SceneParams p = defaults();
-    p.legend.title = "Volcano";
-    p.legend.units = "m";
+    p.words.title = "Volcano";
+    p.words.units = "m";
     p.requests.set(ScaleRequest{});
     return {name, loadField(in), p};
 }
@@ -108,7 +109,7 @@ TEST_P(DefaultScadFile, RendersCleanAndEqualToTheDirectMesh) {
     ASSERT_TRUE(scene.marks.tab.has_value()) << "the default model carries the tab";
     if (model_name == "true_aspect") EXPECT_EQ(scene.y_scale, kRowsAPitchApart);
     if (model_name == "volcano") {
-        ASSERT_TRUE(scene.legend.has_value());
+        ASSERT_TRUE(sceneLegend(scene) != nullptr);
         ASSERT_TRUE(sceneScale(scene));
     }
     const fs::path dir = test::scratchDir("default_" + model_name + "_" + engine_name + (tab_shown ? "_tab" : "_notab"));

@@ -12,7 +12,7 @@
 
 #include "gen/mesh/direct_mesher.h"
 #include "gen/model/build_scene.h"
-#include "gen/model/features/legend_join.h"
+#include "gen/model/features/legend/legend_join.h"
 #include "gen/model/features/scale.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
@@ -70,8 +70,8 @@ SceneParams extrasParams() {
     p.pitch_mm = 3.0;
     p.max_height_mm = 20.0;
     p.marks = MarkParams{};  // the orientation tab, as tsf gen makes it
-    p.legend.title = "Rain";
-    p.legend.units = "mm";
+    p.words.title = "Rain";
+    p.words.units = "mm";
     p.requests.set(ScaleRequest{});
     return p;
 }
@@ -85,7 +85,7 @@ const AttachmentJoint* jointOf(const std::vector<AttachmentJoint>& joints, const
 TEST(AttachmentJoints, TheExtrasOfARegularGridHoldAHandsPush) {
     const Scene s = buildScene(test::fieldFromFunction(40, 30, [](int c, int r) { return 1.0 + (c * 7 + r * 3) % 11; }),
                                extrasParams());
-    ASSERT_TRUE(s.legend && sceneScale(s) && s.marks.tab);
+    ASSERT_TRUE(sceneLegend(s) && sceneScale(s) && s.marks.tab);
     const std::vector<AttachmentJoint> joints = attachmentJoints(s, kHandPushN);
     ASSERT_EQ(joints.size(), 3u);
     for (const AttachmentJoint& j : joints) {
@@ -96,7 +96,7 @@ TEST(AttachmentJoints, TheExtrasOfARegularGridHoldAHandsPush) {
     // (the zigzag of hexagon walls) is longer than the plate is wide.
     const AttachmentJoint* plate = jointOf(joints, "legend");
     ASSERT_NE(plate, nullptr);
-    EXPECT_GE(plate->joint_length_mm, s.legend->plate_east_mm);
+    EXPECT_GE(plate->joint_length_mm, sceneLegend(s)->plate_east_mm);
     const Check c = checkAttachmentJoints(s, kHandPushN, kPrintedPlaInterlayerMpa, 10);
     EXPECT_EQ(c.status, CheckStatus::Pass) << c.note;
     EXPECT_EQ(c.count, 0);
@@ -124,7 +124,7 @@ TEST(AttachmentJoints, TheScaleBesideASpurHolds) {
         return 1.0 + (c + r) % 9;
     });
     SceneParams p = extrasParams();
-    p.legend = LegendRequest{};
+    p.words = ModelWords{};
     const Scene s = buildScene(f, p);
     ASSERT_TRUE(sceneScale(s));
     EXPECT_GE(sceneScale(s)->contacts.size(), 3u);
@@ -151,12 +151,12 @@ TEST(AttachmentJoints, ThePlateOfAnIrregularOutlineHoldsAlongMostOfItsWidth) {
     SceneParams p = extrasParams();
     p.requests.reset<ScaleRequest>();
     const Scene s = buildScene(f, p);
-    ASSERT_TRUE(s.legend.has_value());
+    ASSERT_TRUE(sceneLegend(s) != nullptr);
     ASSERT_GT(s.cells_nodata_kept, 0);
     const AttachmentJoint* plate = jointOf(attachmentJoints(s, kHandPushN), "legend");
     ASSERT_NE(plate, nullptr);
     EXPECT_LE(plate->stress_MPa, kPrintedPlaInterlayerMpa);
-    EXPECT_GE(plate->joint_length_mm, 0.6 * s.legend->plate_east_mm);
+    EXPECT_GE(plate->joint_length_mm, 0.6 * sceneLegend(s)->plate_east_mm);
     // Every cell, each pit included, reads back at its height: the plate
     // stands around the pits, never over them.
     const Mesh m = meshScene(s);

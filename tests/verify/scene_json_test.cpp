@@ -15,6 +15,7 @@
 #include "tests/support/fields.h"
 #include "tests/verify/verify_test_support.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/features/legend/legend.h"
 
 namespace tsf {
 namespace {
@@ -98,19 +99,19 @@ void expectError(const nlohmann::json& j, const std::string& start) {
 Scene sceneWithAttachments() {
     SceneParams p = vtest::smallFieldParams(Bottom::Flat, 0.01);
     p.pitch_mm = 8.0;
-    p.legend.title = "Depth";
-    p.legend.units = "m";
+    p.words.title = "Depth";
+    p.words.units = "m";
     p.requests.set(ScaleRequest{});
     return buildScene(vtest::smallField(), p);
 }
 
 TEST(SceneJson, TheLegendAndTheScaleAreRecordedAsPlacedAndReadWithoutPlacingThem) {
     const Scene s = sceneWithAttachments();
-    ASSERT_TRUE(s.legend);
+    ASSERT_TRUE(sceneLegend(s));
     ASSERT_TRUE(sceneScale(s));
     const nlohmann::json j = sceneToJson(s);
     EXPECT_EQ(j["version"], kSceneJsonVersion);
-    EXPECT_EQ(j["legend"]["dots"].size(), s.legend->layout.dots.size());
+    EXPECT_EQ(j["legend"]["dots"].size(), sceneLegend(s)->layout.dots.size());
     // Every member survives the trip, the placed legend and scale included.
     const Scene back = sceneFromJson(j);
     expectSameScene(s, back);
@@ -121,9 +122,9 @@ TEST(SceneJson, TheLegendAndTheScaleAreRecordedAsPlacedAndReadWithoutPlacingThem
     other["legend"]["table"] = "no-such-table.ctb";
     other["legend"]["dots"][0] = {j["legend"]["dots"][0][0].get<double>() + 0.25, j["legend"]["dots"][0][1]};
     const Scene moved = sceneFromJson(other);
-    ASSERT_TRUE(moved.legend);
-    EXPECT_EQ(moved.params.legend.table, "no-such-table.ctb");
-    EXPECT_DOUBLE_EQ(moved.legend->layout.dots[0].x_mm, s.legend->layout.dots[0].x_mm + 0.25);
+    ASSERT_TRUE(sceneLegend(moved));
+    EXPECT_EQ(moved.params.words.braille_table, "no-such-table.ctb");
+    EXPECT_DOUBLE_EQ(sceneLegend(moved)->layout.dots[0].x_mm, sceneLegend(s)->layout.dots[0].x_mm + 0.25);
 }
 
 TEST(SceneJson, AVersion4SidecarWithALegendIsRefusedSayingHowToRemakeIt) {

@@ -36,6 +36,7 @@ const Feature& scaleFeature() {
         .attachment = scaleAttachment,
         .box = scaleBoxMm,
         .top_at = scaleTopAt,
+        .highest_z_mm = nullptr,  // its treads stand at values: no higher than the highest pillar
         .probes = scaleProbes,
         .check = checkScale,
         .side_width = scaleSideWidth,

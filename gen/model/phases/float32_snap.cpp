@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gen/model/feature_registry.h"
 #include "gen/model/phases/scene_limits.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/util/error.h"
@@ -14,7 +15,9 @@ double highestZMm(const Scene& s) {
     int64_t top = highestPillarTop(s);
     if (s.marks.triangle) top = std::max(top, s.top[size_t(s.marks.triangle->anchor)] + s.marks.triangle->raise_units);
     double z = s.zMm(top);
-    if (s.legend) z = std::max(z, s.zMm(s.legend->plate_top_units) + s.legend->layout.standard.dot_height_mm);
+    for (const Feature* f : features())
+        if (f->highest_z_mm)
+            if (const std::optional<double> highest = f->highest_z_mm(s)) z = std::max(z, *highest);
     return z;
 }
 

@@ -47,7 +47,7 @@ Scene sceneFrame(const HexField& field, const SceneParams& params) {
     Scene s;
     s.grid = field.grid;
     s.params = params;
-    if (field.input.categorical && s.params.legend.wanted() && s.params.legend.range_line.empty()) {
+    if (field.input.categorical && s.params.words.inBraille() && s.params.words.range_line.empty()) {
         // A class map's legend says how many classes it shows, not the
         // range of their codes (the key names them).
         std::vector<double> classes;
@@ -55,7 +55,7 @@ Scene sceneFrame(const HexField& field, const SceneParams& params) {
             if (!std::isnan(v)) classes.push_back(v);
         std::sort(classes.begin(), classes.end());
         classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
-        s.params.legend.range_line = std::to_string(classes.size()) + (classes.size() == 1 ? " class" : " classes");
+        s.params.words.range_line = std::to_string(classes.size()) + (classes.size() == 1 ? " class" : " classes");
     }
     s.z_snap_mm = params.z_snap_mm;
     s.mapping = resolveValueMapping(field, params, s.notes);
@@ -76,8 +76,8 @@ Scene sceneFrame(const HexField& field, const SceneParams& params) {
         s.textures = decideClassTextures(field, params, s.pitch_mm, s.y_scale);
         s.mapping = classTextureMapping(field, s.zMm(s.textures->height_units));
         // The braille legend names the classes by texture where they fit.
-        if (s.params.legend.wanted() && s.params.legend.key_lines.empty())
-            s.params.legend.key_lines = classTextureLegendLines(*s.textures, field.input.classes);
+        if (s.params.words.inBraille() && s.params.words.key_lines.empty())
+            s.params.words.key_lines = classTextureLegendLines(*s.textures, field.input.classes);
     }
     return s;
 }

@@ -152,8 +152,8 @@ TEST(ModelKey, SaysWhatAReaderNeedsFromTheScene) {
     SceneParams p = test::smallParams();
     p.marks = MarkParams{};  // notch and triangle
     p.pitch_mm = 6.0;
-    p.legend.title = "Rain";
-    p.legend.units = "mm";
+    p.words.title = "Rain";
+    p.words.units = "mm";
     p.requests.set(ScaleRequest{1.0});
     const Scene s = buildScene(f, p);
     ModelKeyFacts facts{"rain.csv", "one value per hexagon", "9.9"};

@@ -10,6 +10,7 @@
 #include "verify/verify_parts.h"
 #include "gen/model/build_scene.h"
 #include "gen/model/features/tab/orientation_tab.h"
+#include "gen/model/features/legend/legend.h"
 
 namespace tsf {
 namespace {
@@ -27,8 +28,8 @@ Scene partsScene(bool legend, MarkPlace place = MarkPlace::Data) {
     p.marks = MarkParams{};
     p.marks.place = place;
     if (legend) {
-        p.legend.title = "Test";
-        p.legend.units = "m";
+        p.words.title = "Test";
+        p.words.units = "m";
     }
     return buildScene(f, p);
 }
@@ -43,7 +44,7 @@ TEST(SceneParts, PillarsMarksAndLegendAreClosedBodiesThatAddUpToTheModel) {
     const Scene s = partsScene(/*legend=*/true);
     ASSERT_TRUE(s.marks.triangle.has_value());
     ASSERT_TRUE(s.marks.notch.has_value());
-    ASSERT_TRUE(s.legend.has_value());
+    ASSERT_TRUE(sceneLegend(s) != nullptr);
     const std::vector<MeshPart> parts = meshSceneParts(s);
     ASSERT_EQ(parts.size(), 3u);
     EXPECT_EQ(parts[0].name, "pillars");
@@ -58,7 +59,7 @@ TEST(SceneParts, PillarsMarksAndLegendAreClosedBodiesThatAddUpToTheModel) {
     }
     EXPECT_EQ(test::checkInvariants(parts[0].mesh).components, 1u);
     EXPECT_EQ(test::checkInvariants(parts[1].mesh).components, 1u);
-    EXPECT_EQ(test::checkInvariants(parts[2].mesh).components, s.legend->layout.dots.size());  // a dome per dot
+    EXPECT_EQ(test::checkInvariants(parts[2].mesh).components, sceneLegend(s)->layout.dots.size());  // a dome per dot
 
     // The triangle: a right triangle of the Scene's legs, raised by its raise (mm^3).
     const OrientationTriangle& t = *s.marks.triangle;

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "gen/model/features/braille.h"
-#include "gen/model/features/legend.h"
+#include "gen/model/features/legend/legend.h"
 #include "tests/support/input_error.h"
 
 namespace tsf {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "gen/model/features/legend_mesh.h"
+#include "gen/model/features/legend/legend_mesh.h"
 #include "tests/support/mesh_invariants.h"
 #include "verify/verify_model.h"
 

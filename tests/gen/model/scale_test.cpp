@@ -16,6 +16,7 @@
 #include "gen/model/build_scene.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_json.h"
+#include "gen/model/features/legend/legend.h"
 #include "tests/support/fields.h"
 #include "tests/support/input_error.h"
 #include "tests/support/mesh_invariants.h"
@@ -197,11 +198,11 @@ TEST(ScalePlacement, KeepsClearOfTheBrailleLegend) {
     HexField f = test::fieldFromFunction(12, 16, [](int c, int r) { return r < 3 ? 0.0 : 1.0 + (c + r) % 5; });
     SceneParams p = scaleParams();
     p.pitch_mm = 6.0;
-    p.legend.title = "Depth";
+    p.words.title = "Depth";
     const Scene s = buildScene(f, p);
-    ASSERT_TRUE(s.legend.has_value());
+    ASSERT_TRUE(sceneLegend(s) != nullptr);
     ASSERT_TRUE(sceneScale(s));
-    EXPECT_LE(sceneScale(s)->y1_mm + kScaleClearanceMm, s.legend->plate_south_mm);
+    EXPECT_LE(sceneScale(s)->y1_mm + kScaleClearanceMm, sceneLegend(s)->plate_south_mm);
     const test::Invariants inv = test::checkInvariants(meshScene(s));
     EXPECT_TRUE(inv.closedManifold()) << inv.describe();
     EXPECT_EQ(inv.components, 1u);

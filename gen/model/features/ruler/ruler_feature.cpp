@@ -28,6 +28,7 @@ const Feature& rulerFeature() {
         .attachment = rulerAttachment,
         .box = rulerBoxMm,
         .top_at = rulerTopAt,
+        .highest_z_mm = nullptr,  // a ridge 1 mm over the floor, a few mm up: the float32 grid is resolved from 1 mm
         .probes = rulerProbes,
         .check = checkRuler,
         .side_width = rulerSideWidth,

@@ -66,6 +66,16 @@ TabSize tabSize(const MarkParams& m) {
     return t;
 }
 
+// The southmost footprint claimed before the tab (the braille legend's
+// plate north of the pillars): the tab ends kTabLegendClearanceMm south of
+// it. Null when none is.
+const FootprintClaim* claimNorthOfTab(const Scene& s) {
+    const FootprintClaim* south = nullptr;
+    for (const FootprintClaim& c : s.claims)
+        if (!south || c.box.y0 < south->box.y0) south = &c;
+    return south;
+}
+
 TabPoint corner(const Scene& s, int32_t k, int c) {
     const size_t kk = size_t(k);
     const Vec3 p = s.point(hexCorner(s.grid, s.col[kk], s.row[kk], c), 0);
@@ -290,7 +300,7 @@ std::optional<OrientationTab> outlineTab(const Scene& s, int64_t i_west, double 
             const bool exit = (e == kNorthWestEdge || (e == kSouthWestEdge && s.keptNeighbour(size_t(k), kWestEdge) < 0)) &&
                               aloneAt(s, v, k);
             if (exit && v.y_mm - start.y_mm >= size.depth - 1e-9 &&
-                !(s.legend && v.y_mm + kTabLegendClearanceMm > s.legend->plate_south_mm)) {
+                !(claimNorthOfTab(s) && v.y_mm + kTabLegendClearanceMm > claimNorthOfTab(s)->box.y0)) {
                 OrientationTab t;
                 t.bottom_units = 0;
                 t.top_units = s.floor_units;
@@ -413,8 +423,8 @@ void placeTab(Scene& s) {
             continue;
         }
         const double y_north = std::max(y_reach, yOf(cand[start + contacts.size() - 1].j + 1));
-        if (s.legend && y_north + kTabLegendClearanceMm > s.legend->plate_south_mm) {
-            blocked = "the braille legend's plate";
+        if (const FootprintClaim* north = claimNorthOfTab(s); north && y_north + kTabLegendClearanceMm > north->box.y0) {
+            blocked = north->what;
             continue;
         }
         if (contacts.size() > best.size()) {

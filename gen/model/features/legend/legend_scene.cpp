@@ -1,4 +1,4 @@
-#include "gen/model/features/legend_scene.h"
+#include "gen/model/features/legend/legend_scene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "gen/model/features/legend_plate.h"
+#include "gen/model/features/legend/legend.h"
+#include "gen/model/features/legend/legend_plate.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/util/number_format.h"
 #include "gen/model/scene.h"
@@ -29,7 +30,7 @@ double heldShare(const Scene& s) {
         if (e.cell < 0) continue;
         const size_t k = size_t(e.cell);
         if (!s.drawn_by_face.empty() && s.drawn_by_face[k]) continue;
-        if (cornerTop(s, k, e.side) < s.legend->plate_top_units || cornerTop(s, k, (e.side + 1) % kHexCorners) < s.legend->plate_top_units)
+        if (cornerTop(s, k, e.side) < sceneLegend(s)->plate_top_units || cornerTop(s, k, (e.side + 1) % kHexCorners) < sceneLegend(s)->plate_top_units)
             continue;  // a pit holds it only up to its top
         const double a = outline.points[e.a].x_mm, b = outline.points[e.b].x_mm;
         spans.push_back({std::min(a, b), std::max(a, b)});
@@ -41,7 +42,7 @@ double heldShare(const Scene& s) {
         held += b - std::max(a, reached);
         reached = b;
     }
-    const double width = s.legend->plate_east_mm - s.legend->x0_mm;
+    const double width = sceneLegend(s)->plate_east_mm - sceneLegend(s)->x0_mm;
     return width > 0 ? held / width : 0.0;
 }
 
@@ -55,7 +56,7 @@ int32_t firmestReach(Scene& s, SceneLegend l, int32_t limit) {
     for (int32_t r = 0; r <= limit; ++r) {
         l.reach_row = r;
         l.plate_south_mm = s.point(LatticePoint{hexCentre(s.grid, 0, r).i, hexCentre(s.grid, 0, r).j + 1}, 0).y;
-        s.legend = l;
+        s.features.set(l);
         const double share = heldShare(s);
         if (share > best_share + 1e-9) {
             best = r;
@@ -63,15 +64,19 @@ int32_t firmestReach(Scene& s, SceneLegend l, int32_t limit) {
         }
         if (share >= kPlateHoldFraction) break;
     }
-    s.legend.reset();
+    s.features.reset<SceneLegend>();
     return best;
 }
 
 }  // namespace
 
+const SceneLegend* sceneLegend(const Scene& s) { return s.features.get<SceneLegend>(); }
+SceneLegend* sceneLegend(Scene& s) { return s.features.get<SceneLegend>(); }
+
 void placeLegend(Scene& s) {
-    const LegendRequest& rq = s.params.legend;
-    if (!rq.wanted() || s.keptCount() == 0) return;
+    const ModelWords& rq = s.params.words;
+    const double layer_mm = s.params.printer_layer_mm;
+    if (!rq.inBraille() || s.keptCount() == 0) return;
     const bool mirrored = s.params.bottom == Bottom::Mirrored;
     if (s.params.halves)
         throw InputError("--title/--units with --halves: a legend on a model cut into halves is not made yet. Leave out "
@@ -86,12 +91,12 @@ void placeLegend(Scene& s) {
     if (!rq.title.empty()) p.lines.push_back(rq.title);
     if (!rq.range_line.empty()) p.lines.push_back(rq.range_line);
     else if (std::isfinite(lo)) p.lines.push_back(legendRangeText(lo, hi, rq.units));
-    p.table = rq.table;
-    if (rq.layer_mm > 0) {
+    p.table = rq.braille_table;
+    if (layer_mm > 0) {
         // Whole layers: the fewest that reach the standard's height, unless
         // that is higher than a reader expects (a layer thicker than the range).
-        const double layers = std::ceil(p.standard.dot_height_mm / rq.layer_mm - 1e-9);
-        if (layers * rq.layer_mm <= kMaxBrailleDotHeightMm) p.standard.dot_height_mm = std::max(1.0, layers) * rq.layer_mm;
+        const double layers = std::ceil(p.standard.dot_height_mm / layer_mm - 1e-9);
+        if (layers * layer_mm <= kMaxBrailleDotHeightMm) p.standard.dot_height_mm = std::max(1.0, layers) * layer_mm;
     } else {
         // The layer is not known: a height that is whole layers at the
         // common ones, so the printed dot stays in the standards' range.
@@ -174,7 +179,7 @@ void placeLegend(Scene& s) {
     for (;; --reach) {
         l.reach_row = reach;
         l.plate_south_mm = s.point(LatticePoint{hexCentre(s.grid, 0, reach).i, hexCentre(s.grid, 0, reach).j + 1}, 0).y;
-        s.legend = l;
+        s.features.set(l);
         const PlateOutline outline = legendPlateOutline(s);
         bool fits = !outline.meets_cut;
         if (fits && mirrored) {
@@ -190,14 +195,14 @@ void placeLegend(Scene& s) {
             band_too_thin = band_too_thin || !fits;
             if (fits) {
                 const int64_t thick = std::min(top - bottom, want_thick);
-                s.legend->plate_bottom_units = bottom + (top - bottom - thick) / 2;
-                s.legend->plate_top_units = s.legend->plate_bottom_units + thick;
+                sceneLegend(s)->plate_bottom_units = bottom + (top - bottom - thick) / 2;
+                sceneLegend(s)->plate_top_units = sceneLegend(s)->plate_bottom_units + thick;
             }
         }
         if (fits) return;
         if (reach == 0) break;
     }
-    s.legend.reset();
+    s.features.reset<SceneLegend>();
     if (band_too_thin)
         throw InputError("--title/--units: the braille legend's plate on a mirrored model lies in the band every "
                          "northern pillar it stands against holds, and these share less than " +

@@ -1,11 +1,12 @@
 // The braille legend's record in the scene sidecar. See legend_record.h.
-#include "gen/model/features/legend_record.h"
+#include "gen/model/features/legend/legend_record.h"
 
 #include <algorithm>
 #include <sstream>
 #include <tuple>
 
-#include "gen/model/features/legend_scene.h"
+#include "gen/model/features/legend/legend.h"
+#include "gen/model/features/legend/legend_scene.h"
 #include "gen/model/sidecar_fields.h"
 #include "gen/model/features/braille.h"
 #include "gen/util/number_format.h"
@@ -23,11 +24,11 @@ const BrailleStandard* knownStandard(const std::string& name) {
     return nullptr;
 }
 
-void readLegend(const json& l, const std::string& lp, const Scene& s, SceneLegend& out, LegendRequest& request) {
+void readLegend(const json& l, const std::string& lp, const Scene& s, SceneLegend& out, ModelWords& request) {
     if (!l.is_object()) fail(lp, std::string("expected an object or null, found ") + typeName(l));
     request.title = getString(l, lp, "title");
     request.units = getString(l, lp, "units");
-    request.table = getString(l, lp, "table");
+    request.braille_table = getString(l, lp, "table");
     const json& st = member(l, lp, "standard");
     const std::string sp = join(lp, "standard");
     const BrailleStandard* known = knownStandard(getString(st, sp, "name"));
@@ -92,14 +93,14 @@ void readLegend(const json& l, const std::string& lp, const Scene& s, SceneLegen
 // dots were laid out at, the text and braille cells, every dot and the plate.
 // Read back as is: verifying a model needs no braille table and no placement.
 json legendRecord(const Scene& s) {
-    if (!s.legend) return nullptr;
-    const SceneLegend& l = *s.legend;
+    if (!sceneLegend(s)) return nullptr;
+    const SceneLegend& l = *sceneLegend(s);
     const BrailleStandard& st = l.layout.standard;
     json dots = json::array();
     for (const LegendDot& d : l.layout.dots) dots.push_back({d.x_mm, d.y_mm});
-    return {{"title", s.params.legend.title},
-            {"units", s.params.legend.units},
-            {"table", s.params.legend.table},
+    return {{"title", s.params.words.title},
+            {"units", s.params.words.units},
+            {"table", s.params.words.braille_table},
             {"standard",
              {{"name", st.name},
               {"dot_base_mm", st.dot_base_mm},
@@ -128,20 +129,20 @@ void readLegendRecord(const json& record, const std::string& path, int version, 
                        ") records the braille legend as asked for, not as placed; make the model and its "
                        "sidecar again with this tsf (tsf gen ... --title ...)");
     SceneLegend legend;
-    readLegend(record, path, s, legend, s.params.legend);
-    s.legend = std::move(legend);
+    readLegend(record, path, s, legend, s.params.words);
+    s.features.set(std::move(legend));
 }
 
 nlohmann::json legendFactsJson(const Scene& s) {
-    if (!(s.legend)) return nullptr;
-    const SceneLegend& l = *s.legend;
+    if (!(sceneLegend(s))) return nullptr;
+    const SceneLegend& l = *sceneLegend(s);
     const BrailleStandard& st = l.layout.standard;
     size_t cells = 0;
     for (const auto& line : l.layout.cells) cells += line.size();
     nlohmann::json lines = nlohmann::json::array();
     for (size_t k = 0; k < l.layout.text.size(); ++k)
         lines.push_back({{"text", l.layout.text[k]}, {"braille", brailleUnicode(l.layout.cells[k])}});
-    return {{"lines", lines}, {"table", s.params.legend.table}, {"cells", cells}, {"dots", l.layout.dots.size()},
+    return {{"lines", lines}, {"table", s.params.words.braille_table}, {"cells", cells}, {"dots", l.layout.dots.size()},
                    {"plate_mm", {{0, l.plate_south_mm}, {l.plate_east_mm, l.plate_north_mm}}},
                    {"standard", st.name}, {"dot_base_mm", st.dot_base_mm}, {"dot_height_mm", st.dot_height_mm},
                    {"dot_pitch_mm", st.dot_pitch_mm}, {"cell_pitch_mm", st.cell_pitch_mm},
@@ -149,22 +150,22 @@ nlohmann::json legendFactsJson(const Scene& s) {
 }
 
 std::string legendFactsLines(const Scene& s) {
-    if (!(s.legend)) return "";
+    if (!(sceneLegend(s))) return "";
     std::ostringstream o;
-    const SceneLegend& l = *s.legend;
+    const SceneLegend& l = *sceneLegend(s);
     const BrailleStandard& st = l.layout.standard;
-    o << "  legend    braille (" << s.params.legend.table << ") on a plate " << formatFixed(l.plate_east_mm, 1) << " x "
+    o << "  legend    braille (" << s.params.words.braille_table << ") on a plate " << formatFixed(l.plate_east_mm, 1) << " x "
       << formatFixed(l.plate_north_mm - l.plate_south_mm, 1) << " mm north of the pillars, ";
     if (s.params.bottom == Bottom::Mirrored)
         o << "from z = " << formatFixed(s.zMm(l.plate_bottom_units), 2) << " to " << formatFixed(s.zMm(l.plate_top_units), 2)
           << " mm (the band the pillars it stands against share), ";
     o << l.layout.dots.size()
       << " dots " << formatFixed(st.dot_base_mm, 2) << " mm across, " << formatFixed(st.dot_height_mm, 2) << " mm high (";
-    if (s.params.legend.layer_mm > 0)
-        o << formatSignificant(st.dot_height_mm / s.params.legend.layer_mm, 3) << " whole layers of "
-          << formatSignificant(s.params.legend.layer_mm, 3) << " mm; ";
+    if (s.params.printer_layer_mm > 0)
+        o << formatSignificant(st.dot_height_mm / s.params.printer_layer_mm, 3) << " whole layers of "
+          << formatSignificant(s.params.printer_layer_mm, 3) << " mm; ";
     o << st.name << ")\n";
-    if (s.params.legend.layer_mm <= 0)
+    if (s.params.printer_layer_mm <= 0)
         o << "  note      braille dots " << formatFixed(st.dot_height_mm, 2)
           << " mm high: whole layers at 0.1, 0.15, 0.2 and 0.3 mm layers; give --layer (your printer's layer height) "
              "and they are the fewest whole layers of it that reach the standard's "

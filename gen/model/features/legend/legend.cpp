@@ -1,4 +1,4 @@
-#include "gen/model/features/legend.h"
+#include "gen/model/features/legend/legend.h"
 
 #include <algorithm>
 #include <cmath>

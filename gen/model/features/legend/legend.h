@@ -67,27 +67,7 @@ struct LegendLayout {
     double width_mm = 0, depth_mm = 0;           ///< the area the legend needs, margins included
 };
 
-/// What the user asks the legend to say (tsf gen --title, --units,
-/// --braille-table). No title and no units: no legend.
-struct LegendRequest {
-    std::string title;                      ///< first line, UTF-8
-    std::string units;                      ///< after the value range ("0 to 27 airports")
-    std::string table = "en-ueb-g1.ctb";    ///< liblouis table
-    /// The printer's layer (mm, 0: not known): the dots are made a whole
-    /// number of layers high, the fewest that reach the standard's height
-    /// (a 0.48 mm dot prints 0.4 mm at 0.2 mm layers; 0.6 mm is three).
-    double layer_mm = 0;
-    /// The line after the title instead of the value range (a class map's
-    /// "5 classes": a range of class codes means nothing); "" for the range.
-    std::string range_line;
-    /// Lines after the range that the plate shows only when every one fits
-    /// on one braille line (a class map's classes and their textures); when
-    /// one does not, none is shown and the key files name them.
-    std::vector<std::string> key_lines;
-    bool wanted() const { return !title.empty() || !units.empty(); }
-};
-
-/// The legend as placed on a model (gen/model/features/legend_scene.h): a plate north of
+/// The legend as placed on a model (gen/model/features/legend/legend_scene.h): a plate north of
 /// the pillars, its top at the floor, the braille on it.
 struct SceneLegend {
     LegendLayout layout;          ///< the braille, in the legend's frame
@@ -101,6 +81,12 @@ struct SceneLegend {
     /// every pillar it stands against holds.
     int64_t plate_bottom_units = 0;
 };
+
+struct Scene;
+
+/// The legend the Scene carries (in Scene::features); null without one.
+const SceneLegend* sceneLegend(const Scene& scene);
+SceneLegend* sceneLegend(Scene& scene);
 
 /// Lays the legend out as described above. Throws InputError for a table
 /// liblouis cannot load or a word wider than max_cells.

@@ -1,9 +1,10 @@
-#include "gen/model/features/legend_join.h"
+#include "gen/model/features/legend/legend_join.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "gen/model/features/legend_plate.h"
+#include "gen/model/features/legend/legend.h"
+#include "gen/model/features/legend/legend_plate.h"
 #include "gen/util/number_format.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
@@ -21,7 +22,7 @@ double snapUm(double mm) { return std::round(mm * 1000.0) / 1000.0; }
 // The plate's outline, height and dots in the model frame; with the sides
 // where pillars stand (joined).
 PlateSpec plateSpec(const Scene& s, bool dots, const PlateOutline& outline) {
-    const SceneLegend& l = *s.legend;
+    const SceneLegend& l = *sceneLegend(s);
     PlateSpec spec;
     spec.x0_mm = 0;
     spec.y0_mm = l.plate_south_mm;
@@ -63,18 +64,18 @@ PlateSpec plateSpec(const Scene& s, bool dots, const PlateOutline& outline) {
 }  // namespace
 
 Mesh legendDotsMesh(const Scene& s) {
-    if (!s.legend) return {};
+    if (!sceneLegend(s)) return {};
     return meshLegendDots(plateSpec(s, true, legendPlateOutline(s)));
 }
 
 Mesh legendPlateMesh(const Scene& s, bool dots) {
-    if (!s.legend || s.keptCount() == 0) return {};
+    if (!sceneLegend(s) || s.keptCount() == 0) return {};
     return meshLegendPlate(plateSpec(s, dots, legendPlateOutline(s)));
 }
 
 std::optional<Attachment> legendAttachment(const Scene& s, Assembly assembly) {
-    if (!s.legend || s.keptCount() == 0) return std::nullopt;
-    const SceneLegend& l = *s.legend;
+    if (!sceneLegend(s) || s.keptCount() == 0) return std::nullopt;
+    const SceneLegend& l = *sceneLegend(s);
     Attachment a;
     a.part = "legend";
     // The plate stands against a hexagon drawn by a face (a mark in the
@@ -97,8 +98,8 @@ std::optional<Attachment> legendAttachment(const Scene& s, Assembly assembly) {
 }
 
 std::optional<BoxMm> legendBoxMm(const Scene& s) {
-    if (!s.legend) return std::nullopt;
-    const SceneLegend& l = *s.legend;
+    if (!sceneLegend(s)) return std::nullopt;
+    const SceneLegend& l = *sceneLegend(s);
     return BoxMm{l.x0_mm, l.plate_east_mm, l.plate_south_mm, l.plate_north_mm};
 }
 
@@ -109,23 +110,23 @@ std::optional<FootprintClaim> legendClaim(const Scene& s) {
 }
 
 std::optional<int64_t> legendTopAt(const Scene& s, double x, double y) {
-    if (!s.legend) return std::nullopt;
-    const SceneLegend& l = *s.legend;
+    if (!sceneLegend(s)) return std::nullopt;
+    const SceneLegend& l = *sceneLegend(s);
     if (x > l.plate_east_mm || y < l.plate_south_mm || y > l.plate_north_mm) return std::nullopt;
     return l.plate_top_units;
 }
 
 ProbeSet legendProbes(const Scene& s) {
     ProbeSet set{"legend", "the legend plate and every braille dot at its height", {}};
-    if (!s.legend) return set;
+    if (!sceneLegend(s)) return set;
     std::vector<SurfaceProbe>& out = set.probes;
-    const SceneLegend& l = *s.legend;
+    const SceneLegend& l = *sceneLegend(s);
     const double plate_z = s.zMm(l.plate_top_units);
     const double y = snapXy(l.plate_north_mm - kPlateProbeInsetMm);
     out.push_back({"the legend plate's top (west end)", snapXy(kPlateProbeInsetMm), y, false, plate_z});
     out.push_back({"the legend plate's top (east end)", snapXy(l.plate_east_mm - kPlateProbeInsetMm), y, false,
                    plate_z});
-    // The dome's apex is a vertex of the drawn dot (gen/model/features/legend_mesh.h),
+    // The dome's apex is a vertex of the drawn dot (gen/model/features/legend/legend_mesh.h),
     // on the 1 um grid like every coordinate of the model.
     const BrailleStandard& st = l.layout.standard;
     const double apex_z = snapXy(plate_z + st.dot_height_mm);

@@ -1,9 +1,10 @@
-#include "gen/model/features/legend_plate.h"
+#include "gen/model/features/legend/legend_plate.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
+#include "gen/model/features/legend/legend.h"
 #include "gen/model/scene.h"
 
 namespace tsf {
@@ -97,12 +98,12 @@ struct OutlineBuilder {
 
 bool legendEastOnLattice(const Scene& s) {
     // placeLegend snaps the east edge to 1 um: the grid's width, or a legend wider than it.
-    return s.legend && s.legend->plate_east_mm <= gridWidth(s.grid, s.pitch_mm) + 1e-3;
+    return sceneLegend(s) && sceneLegend(s)->plate_east_mm <= gridWidth(s.grid, s.pitch_mm) + 1e-3;
 }
 
 PlateOutline legendPlateOutline(const Scene& s) {
-    if (!s.legend || s.keptCount() == 0) return {};
-    const SceneLegend& l = *s.legend;
+    if (!sceneLegend(s) || s.keptCount() == 0) return {};
+    const SceneLegend& l = *sceneLegend(s);
     const HexGrid& g = s.grid;
     const int32_t reach = std::min(l.reach_row, g.rows - 1);
     const int64_t js = hexCentre(g, 0, reach).j + 1;  // the south edge

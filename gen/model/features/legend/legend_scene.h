@@ -1,8 +1,9 @@
 // The braille legend on the model: where it goes (placeLegend, called by
-// buildScene). The plate's outline beside the pillars is
-// gen/model/features/legend_plate.h; its solid, gen/model/features/legend_join.h.
+// the registry in FeaturePhase::BeforeMarks: legend_feature.h). The plate's
+// outline beside the pillars is gen/model/features/legend/legend_plate.h;
+// its solid, gen/model/features/legend/legend_join.h.
 //
-// Placement (decided once, stored as Scene::legend): the legend stands on a
+// Placement (decided once, stored in Scene::features): the legend stands on a
 // plate grown NORTH of the pillars, away from the orientation notch at the
 // south-west corner and clear of every pillar top. The plate's box spans the
 // grid box's width (x from 0 to gridWidth, further under a wider legend),
@@ -40,7 +41,7 @@ inline constexpr double kMinMirroredPlateMm = 1.6;
 
 struct Scene;
 
-/// Places the legend params.legend asks for (none when it asks for nothing).
+/// Places the legend when params.words has a title or units (none else).
 void placeLegend(Scene& scene);
 
 }  // namespace tsf

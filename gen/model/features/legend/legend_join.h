@@ -1,14 +1,15 @@
 // The braille legend's solid in the model frame, drawn from the plate and
-// dots placeLegend recorded in the Scene (gen/model/features/legend_scene.h)
+// dots placeLegend recorded in the Scene (gen/model/features/legend/legend_scene.h)
 // on the outline the plate stands on beside the pillars
-// (gen/model/features/legend_plate.h).
+// (gen/model/features/legend/legend_plate.h).
 #pragma once
 
 #include "gen/geometry/mesh.h"
 #include <cstdint>
 #include <optional>
 
-#include "gen/model/features/legend_mesh.h"
+#include "gen/model/feature.h"
+#include "gen/model/features/legend/legend_mesh.h"
 #include "gen/model/scene_attachments.h"
 
 namespace tsf {
@@ -45,7 +46,14 @@ std::optional<FootprintClaim> legendClaim(const Scene& scene);
 std::optional<int64_t> legendTopAt(const Scene& scene, double x_mm, double y_mm);
 
 /// The legend's dots alone in the model frame: one closed dome per dot on the
-/// plate's top (gen/model/features/legend_mesh.h meshLegendDots). Empty without a legend.
+/// plate's top (gen/model/features/legend/legend_mesh.h meshLegendDots). Empty without a legend.
 Mesh legendDotsMesh(const Scene& scene);
+
+/// Its piece of the generated OpenSCAD file (gen/model/feature.h), made in
+/// legend_scad.cpp: the "Braille legend" switch and `legend_plate =
+/// [points, faces];` (mm) for scad_lib/tsf_legend.scad, which wraps the
+/// terrain in tsf_with_legend(legend_plate, braille_legend); none without
+/// a legend.
+std::optional<ScadPiece> legendScadPiece(const Scene& scene);
 
 }  // namespace tsf

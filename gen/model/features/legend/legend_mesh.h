@@ -3,7 +3,7 @@
 // plate's top (one piece, no T-junctions).
 //
 // The plate stands from z = 0 to height_mm on its outline
-// (gen/model/features/legend_plate.h: the plate's box less the pillars in
+// (gen/model/features/legend/legend_plate.h: the plate's box less the pillars in
 // it; without one, the box [x0, x1] x [y0, y1]). Its top is a constrained
 // Delaunay triangulation of the outline and each dot's base octagon
 // (vertices at 0, 45, ..., 315 degrees); the bottom is the outline's at
@@ -17,8 +17,8 @@
 #include <array>
 #include <vector>
 
-#include "gen/model/features/legend.h"
-#include "gen/model/features/legend_plate.h"
+#include "gen/model/features/legend/legend.h"
+#include "gen/model/features/legend/legend_plate.h"
 #include "gen/geometry/mesh.h"
 #include "gen/model/scene_attachments.h"
 

@@ -1,4 +1,4 @@
-#include "gen/model/features/legend_mesh.h"
+#include "gen/model/features/legend/legend_mesh.h"
 
 #include <algorithm>
 #include <cassert>
