@@ -5,7 +5,7 @@
 //
 // Part of the tsf OpenSCAD library (use <tsf.scad> to get all of it).
 //
-// tsf places the tab (gen/model/features/orientation_tab.h) against the
+// tsf places the tab (gen/model/features/tab/orientation_tab.h) against the
 // westernmost hexagon walls of the pillars. A file of the polyhedron strategy
 // joins it into the terrain's one polyhedron (tsf_joined.scad: no boolean);
 // a file of the CSG strategy writes it as data,
