@@ -38,10 +38,12 @@ VerifiedTiles makeVerifiedTiles(const HexField& field, const Scene& whole, doubl
         // The model the tiles make up: the whole, with the cells the codes
         // are under left level as in the tiles.
         SceneParams level = whole.params;
-        level.level_cells.assign(size_t(whole.grid.cellCount()), 0);
+        TiledWholeRequest tiled;
+        tiled.level_cells.assign(size_t(whole.grid.cellCount()), 0);
         for (const VerifiedTile& t : out.tiles)
             for (int32_t k : t.scene.tile->code_cells)
-                level.level_cells[size_t(whole.grid.index(t.scene.col[size_t(k)], t.scene.row[size_t(k)]))] = 1;
+                tiled.level_cells[size_t(whole.grid.index(t.scene.col[size_t(k)], t.scene.row[size_t(k)]))] = 1;
+        level.requests.set(std::move(tiled));
         const Scene assembled = buildScene(field, level);
         const Mesh assembled_mesh = meshScene(assembled);
         std::vector<const Scene*> scenes;

@@ -69,7 +69,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         return buildScene(field, grown);
     }
     // A tile's code pits go under level tops, so before the dimples.
-    if (params.tile_place) placeTileCode(s);
+    if (params.requests.get<TileRequest>()) placeTileCode(s);
     shapeTops(field, heights.units, params, s);
 
     // The features last: they stand against cells whose tops (tilted or

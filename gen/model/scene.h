@@ -162,20 +162,9 @@ struct SceneParams {
     /// in pillars with room for them), then the thinnest slab that gives
     /// three pillars room, found by bisection (to kHalvesSlabSearchMm).
     std::optional<int64_t> halves_slab_units;
-    // --- one tile of a model cut into tiles (gen/model/features/tiles.h) ---
-    /// Non-empty (one entry per grid cell): of the cells the culling keeps,
-    /// only these; the tile must be one piece.
-    std::vector<uint8_t> tile_cells;
-    /// With tile_cells: the tile's place, pitted into its bottom as its code.
-    std::optional<TilePlace> tile_place;
-    /// The tile that carries marks placed in the data: the whole model's
-    /// notch and triangle (the triangle's anchor as a grid cell index), drawn
-    /// where the model has them rather than placed again on the tile's cells.
-    std::optional<Marks> tile_marks;
-    /// Non-empty (one entry per grid cell): cells whose tops stay level
-    /// (no structural dimple): the whole model of a tiling keeps level the
-    /// cells its tiles' code pits are under, as the tiles do.
-    std::vector<uint8_t> level_cells;
+    // A tile of a model cut into tiles, and the whole model its tiles are
+    // checked against, are asked for through `requests` (TileRequest,
+    // TiledWholeRequest: gen/model/scene_tiles.h).
     // --- what the model is written as ---
     /// The model file stores float32 coordinates (STL, 3MF): a z grid finer
     /// than float32 resolves at the model's height is made coarser (the

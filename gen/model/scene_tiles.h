@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "gen/model/scene_attachments.h"
+#include "gen/model/scene_marks.h"
 
 namespace tsf {
 
@@ -28,6 +30,30 @@ inline constexpr double kTileCodeMinPitRadiusMm = 0.5;
 struct TilePlace {
     int32_t row = 0, col = 0;
     int32_t rows = 1, cols = 1;
+};
+
+/// What buildScene is asked for one tile of a tiled model, held in
+/// SceneParams::requests (tileParams, gen/model/features/tiles.h, makes it).
+struct TileRequest {
+    /// One entry per grid cell: of the cells the culling keeps, only these;
+    /// the tile must be one piece.
+    std::vector<uint8_t> cells;
+    /// The tile's place, pitted into its bottom as its code.
+    TilePlace place;
+    /// On the tile that carries them, the whole model's marks, drawn where
+    /// the model has them rather than placed again on the tile's cells: its
+    /// notch and triangle (the triangle's anchor as a grid cell index), or
+    /// its tab (the cells it touches as grid cell indices). None on the
+    /// other tiles.
+    std::optional<Marks> marks;
+};
+
+/// What buildScene is asked for the whole model a tiling's tiles are
+/// checked against, held in SceneParams::requests: one entry per grid
+/// cell, the cells whose tops stay level (no structural dimple), as the
+/// tiles keep level the cells their code pits are under.
+struct TiledWholeRequest {
+    std::vector<uint8_t> level_cells;
 };
 
 /// The tile a Scene draws and its code: pits in its bottom, an L of cell

@@ -434,20 +434,19 @@ SceneParams tileParams(const Scene& whole, const TileLayout& L, int32_t tile) {
     p.z_snap_mm = whole.z_snap_mm;
     p.pitch_mm = whole.pitch_mm;
     p.fit_box_given = false;
-    p.tile_cells.assign(L.tile_of_cell.size(), 0);
-    for (size_t idx = 0; idx < L.tile_of_cell.size(); ++idx) p.tile_cells[idx] = L.tile_of_cell[idx] == tile;
-    p.tile_place = TilePlace{tile / L.cols, tile % L.cols, L.rows, L.cols};
+    TileRequest request;
+    request.cells.assign(L.tile_of_cell.size(), 0);
+    for (size_t idx = 0; idx < L.tile_of_cell.size(); ++idx) request.cells[idx] = L.tile_of_cell[idx] == tile;
+    request.place = TilePlace{tile / L.cols, tile % L.cols, L.rows, L.cols};
+    const bool notch_here = tile == L.marks_tile && whole.marks.notch;
+    const bool triangle_here = tile == L.triangle_tile && whole.marks.triangle;
     if (tile == L.marks_tile && whole.marks.tab) {
         // The model's own tab, not one placed again against fewer pillars.
         Marks m;
         m.tab = whole.marks.tab;
         for (auto& [k, e] : m.tab->touched) k = int32_t(whole.grid.index(whole.col[size_t(k)], whole.row[size_t(k)]));
-        p.tile_marks = m;
-        return p;
-    }
-    const bool notch_here = tile == L.marks_tile && whole.marks.notch;
-    const bool triangle_here = tile == L.triangle_tile && whole.marks.triangle;
-    if (!whole.marks.tab && (notch_here || triangle_here)) {
+        request.marks = std::move(m);
+    } else if (!whole.marks.tab && (notch_here || triangle_here)) {
         // Marks in the data: the model's own, not placed again on fewer cells.
         Marks m;
         if (notch_here) m.notch = whole.marks.notch;
@@ -456,22 +455,21 @@ SceneParams tileParams(const Scene& whole, const TileLayout& L, int32_t tile) {
             const size_t k = size_t(m.triangle->anchor);
             m.triangle->anchor = int32_t(whole.grid.index(whole.col[k], whole.row[k]));
         }
-        p.tile_marks = m;
-        return p;
-    }
-    // Marks in the data are the model's own (above) or none: a tile never
-    // places marks the model does not have.
-    if (tile != L.marks_tile || whole.params.marks.place == MarkPlace::Data) {
+        request.marks = std::move(m);
+    } else if (tile != L.marks_tile || whole.params.marks.place == MarkPlace::Data) {
+        // Marks in the data are the model's own (above) or none: a tile
+        // never places marks the model does not have.
         const MarkPlace place = p.marks.place;
         p.marks = withoutMarks();
         p.marks.place = place;
     }
+    p.requests.set(std::move(request));
     return p;
 }
 
 void placeTileCode(Scene& s) {
     SceneTile t;
-    t.place = *s.params.tile_place;
+    t.place = s.params.requests.get<TileRequest>()->place;
     const double narrowest = s.pitch_mm * std::min(1.0, s.y_scale);
     double radius = std::min(kTileCodePitRadiusMm, 0.3 * narrowest);
     if (radius < kTileCodeMinPitRadiusMm) radius = std::min(kTileCodeMinPitRadiusMm, 0.5 * narrowest - 0.2);

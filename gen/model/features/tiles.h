@@ -5,7 +5,7 @@
 // cell goes to exactly one tile, at its own height, so the tiles put
 // together are the untiled model's cells (verify/tiles_check.h proves it).
 // A tile is a Scene of its own, built from the same field with the whole
-// model's parameters and mapping, of its cells only (SceneParams::tile_cells).
+// model's parameters and mapping, of its cells only (TileRequest, gen/model/scene_tiles.h).
 //
 // The tiling (planTiles): the fewest rows x columns of tiles whose
 // footprints each fit the bed, split at equal distances in x and y by cell
@@ -74,7 +74,7 @@ TileLayout planTiles(const Scene& whole, const std::vector<BoxMm>& attached, dou
 SceneParams tileParams(const Scene& whole, const TileLayout& layout, int32_t tile);
 
 /// Pits a tile Scene's code into its bottom (Scene::tile); buildScene calls
-/// it when SceneParams::tile_place is set. Adds a note when the tile has no
+/// it for a Scene asked for as a tile (TileRequest). Adds a note when the tile has no
 /// room for it.
 void placeTileCode(Scene& scene);
 

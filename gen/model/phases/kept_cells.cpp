@@ -67,10 +67,11 @@ KeptCells cullCells(const HexField& field, const CellHeights& heights, const Sce
 }
 
 void keepTileShare(const HexGrid& grid, const SceneParams& params, std::vector<uint8_t>& keep) {
-    if (params.tile_cells.empty()) return;
+    const TileRequest* tile = params.requests.get<TileRequest>();
+    if (!tile) return;
     // gen/model/features/tiles.h made each tile one piece.
-    if (params.tile_cells.size() != keep.size()) throw InputError("a tile's cell list does not match the grid");
-    for (size_t idx = 0; idx < keep.size(); ++idx) keep[idx] = keep[idx] && params.tile_cells[idx];
+    if (tile->cells.size() != keep.size()) throw InputError("a tile's cell list does not match the grid");
+    for (size_t idx = 0; idx < keep.size(); ++idx) keep[idx] = keep[idx] && tile->cells[idx];
     if (componentCount(grid, keep) != 1) throw InputError("a tile of the model is not one piece");
 }
 

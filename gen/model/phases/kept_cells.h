@@ -26,7 +26,7 @@ struct KeptCells {
 /// to the cells touching it).
 KeptCells cullCells(const HexField& field, const CellHeights& heights, const SceneParams& params);
 
-/// One tile of a tiled model: its share (params.tile_cells) of the cells
+/// One tile of a tiled model: its share (TileRequest::cells) of the cells
 /// the whole keeps. Throws InputError when the share does not match the
 /// grid or is not one piece.
 void keepTileShare(const HexGrid& grid, const SceneParams& params, std::vector<uint8_t>& keep);

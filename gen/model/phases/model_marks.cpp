@@ -8,14 +8,15 @@
 namespace tsf {
 
 void placeModelMarks(const SceneParams& params, Scene& s) {
-    if (!params.tile_marks) {
+    const TileRequest* tile = params.requests.get<TileRequest>();
+    if (!tile || !tile->marks) {
         placeMarks(s);
         return;
     }
     // A tile draws the model's marks where the model has them.
     s.marks = {};
-    s.marks.notch = params.tile_marks->notch;
-    s.marks.triangle = params.tile_marks->triangle;
+    s.marks.notch = tile->marks->notch;
+    s.marks.triangle = tile->marks->triangle;
     if (s.marks.triangle) {
         const int32_t anchor = s.marks.triangle->anchor;
         if (anchor < 0 || size_t(anchor) >= s.kept_index.size() || s.kept_index[size_t(anchor)] < 0)

@@ -13,7 +13,7 @@
 
 namespace tsf {
 
-/// The notch and the triangle: the tile's (params.tile_marks, the
+/// The notch and the triangle: the tile's (its TileRequest's marks, the
 /// triangle's anchor given as a grid index) or placed for the model, with
 /// the faces they need. Throws InputError when a tile does not hold the
 /// triangle's cell.

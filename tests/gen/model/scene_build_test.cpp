@@ -89,10 +89,10 @@ TEST(KeptCells, NothingAboveTheFloorKeepsTheWholeGridAndSaysSo) {
 TEST(KeptCells, ATileShareInTwoPiecesIsAnInputError) {
     const HexField field = test::fieldFromRows({{1.0, 1.0, 1.0, 1.0, 1.0}});
     SceneParams p = test::smallParams();
-    p.tile_cells = {1, 0, 0, 0, 1};  // the two ends of a row: not one piece
+    p.requests.set(TileRequest{{1, 0, 0, 0, 1}, {}, std::nullopt});  // the two ends of a row: not one piece
     std::vector<uint8_t> keep(5, 1);
     EXPECT_THROW(keepTileShare(field.grid, p, keep), InputError);
-    p.tile_cells = {1, 1, 0, 0, 0};
+    p.requests.set(TileRequest{{1, 1, 0, 0, 0}, {}, std::nullopt});
     keep.assign(5, 1);
     keepTileShare(field.grid, p, keep);
     EXPECT_EQ(keep, (std::vector<uint8_t>{1, 1, 0, 0, 0}));

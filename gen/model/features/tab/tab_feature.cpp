@@ -12,15 +12,16 @@ namespace tsf {
 
 namespace {
 
-// A tile carries the model's own tab (SceneParams::tile_marks, its touched
+// A tile carries the model's own tab (its TileRequest's marks, its touched
 // cells given as grid cell indices), not one placed again against fewer
 // pillars.
 void placeTabAsAsked(Scene& s) {
-    if (!s.params.tile_marks || !s.params.tile_marks->tab) {
+    const TileRequest* tile = s.params.requests.get<TileRequest>();
+    if (!tile || !tile->marks || !tile->marks->tab) {
         placeTab(s);
         return;
     }
-    OrientationTab tab = *s.params.tile_marks->tab;
+    OrientationTab tab = *tile->marks->tab;
     for (auto& [k, e] : tab.touched) {
         if (k < 0 || size_t(k) >= s.kept_index.size() || s.kept_index[size_t(k)] < 0)
             throw InputError("a tile does not hold the pillars its orientation tab stands against");
