@@ -24,13 +24,14 @@ constexpr double kPlateHoldFraction = 0.6;
 // The share of the plate's width (x, from 0 to its east edge) along which
 // it stands against pillars that rise to its top: where it holds on.
 double heldShare(const Scene& s) {
+    const SceneLegend& l = *sceneLegend(s);
     const PlateOutline outline = legendPlateOutline(s);
     std::vector<std::pair<double, double>> spans;
     for (const PlateOutline::Edge& e : outline.edges) {
         if (e.cell < 0) continue;
         const size_t k = size_t(e.cell);
         if (!s.drawn_by_face.empty() && s.drawn_by_face[k]) continue;
-        if (cornerTop(s, k, e.side) < sceneLegend(s)->plate_top_units || cornerTop(s, k, (e.side + 1) % kHexCorners) < sceneLegend(s)->plate_top_units)
+        if (cornerTop(s, k, e.side) < l.plate_top_units || cornerTop(s, k, (e.side + 1) % kHexCorners) < l.plate_top_units)
             continue;  // a pit holds it only up to its top
         const double a = outline.points[e.a].x_mm, b = outline.points[e.b].x_mm;
         spans.push_back({std::min(a, b), std::max(a, b)});
@@ -42,7 +43,7 @@ double heldShare(const Scene& s) {
         held += b - std::max(a, reached);
         reached = b;
     }
-    const double width = sceneLegend(s)->plate_east_mm - sceneLegend(s)->x0_mm;
+    const double width = l.plate_east_mm - l.x0_mm;
     return width > 0 ? held / width : 0.0;
 }
 
