@@ -88,6 +88,38 @@ TEST(Georef, ARotatedRasterIsResampledNorthUpWithItsValuesAndItsGround) {
     EXPECT_NE(key.find("130"), std::string::npos) << "the ground's side, about 130 m\n" << key;
 }
 
+// A rotated raster by default, as a reader gets it: the north-up box is
+// empty outside the turned square, and the model ends where the data does.
+// The hull's slanted edges once kept a row of no-data pits along the rim,
+// which the key announced as missing values, and the orientation tab, with
+// no pillars to stand against on the slant, hung from one corner pillar
+// (tactile_attachment_joints warned of hundreds of MPa). Every turn: no cell
+// without data, and every check passes but the height steps' warning.
+TEST(Georef, ARotatedRasterEndsWhereItsDataDoesAndItsTabHolds) {
+    const auto dir = test::scratchDir();
+    for (const double degrees : {30.0, 73.0, 140.0}) {
+        test::GeoTiffSpec s;
+        s.cols = 40;
+        s.rows = 48;
+        s.epsg = 32633;
+        for (int r = 0; r < s.rows; ++r)
+            for (int c = 0; c < s.cols; ++c) s.values.push_back(float(100 + 40 * std::sin(r * 0.2) * std::cos(c * 0.15)));
+        const double px = 10, t = degrees * kPi / 180.0;
+        s.geotransform = {500000, px * std::cos(t), -px * std::sin(t), 6000000, -px * std::sin(t), -px * std::cos(t)};
+        const std::string path = (dir / "turned.tif").string();
+        ASSERT_TRUE(test::writeGeoTiff(path, s));
+        const auto run = test::runTsf("gen " + path + " -o " + (dir / "turned.stl").string() + " --json");
+        ASSERT_EQ(run.exit_code, 0) << degrees << " degrees\n" << run.output;
+        const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+        EXPECT_EQ(j["scene"]["cells"]["kept_without_data"].get<int>(), 0) << degrees << " degrees";
+        for (const auto& c : j["verify"]["checks"]) {
+            const std::string id = c["id"], status = c["status"];
+            if (id == "tactile_height_steps" || id == "fits_bed") continue;
+            EXPECT_EQ(status, "pass") << degrees << " degrees: " << id << ": " << c["note"];
+        }
+    }
+}
+
 TEST(Georef, IgnoreGeorefReadsThePlainGrid) {
     const auto dir = test::scratchDir();
     const std::string path = (dir / "rotated.tif").string();

@@ -10,6 +10,45 @@
 
 namespace tsf {
 
+namespace {
+
+// The hull's straight edges cross the hexagons' staircase: where the data
+// ends on a slant (a rotated raster resampled north-up, a round coast), the
+// hull keeps a row of cells without data along its rim, each a pit 1 mm
+// deep in the model's edge. A reader takes a pit for "no data here", where
+// there is only the edge of the data; and those pits break the run of
+// pillars the orientation tab stands against, so it cannot follow the
+// outline and hangs from one pillar. So the cells without data that touch
+// the outside (a cell not kept, or beyond the grid) are left out, one
+// layer: the model then ends where its data does. No value is lost; no-data
+// inside the model, or deeper in a bay, stays a pit. When leaving them out
+// would cut the model in two, they all stay.
+void dropRimCellsWithoutData(const HexField& field, std::vector<uint8_t>& keep) {
+    const HexGrid& g = field.grid;
+    std::vector<size_t> rim;
+    for (int32_t r = 0; r < g.rows; ++r)
+        for (int32_t c = 0; c < g.cols; ++c) {
+            const size_t idx = size_t(g.index(c, r));
+            if (!keep[idx] || !std::isnan(field.values[idx])) continue;
+            for (int e = 0; e < kHexCorners; ++e) {
+                int32_t nc = 0, nr = 0;
+                hexNeighbour(c, r, e, nc, nr);
+                if (!g.contains(nc, nr) || !keep[size_t(g.index(nc, nr))]) {
+                    rim.push_back(idx);
+                    break;
+                }
+            }
+        }
+    if (rim.empty()) return;
+    std::vector<uint8_t> without = keep;
+    for (size_t idx : rim) without[idx] = 0;
+    bool any = false;
+    for (uint8_t k : without) any = any || k;
+    if (any && componentCount(g, without) == 1) keep.swap(without);
+}
+
+}  // namespace
+
 KeptCells cullCells(const HexField& field, const CellHeights& heights, const SceneParams& params) {
     const HexGrid& g = field.grid;
     const size_t n = size_t(g.cellCount());
@@ -52,6 +91,7 @@ KeptCells cullCells(const HexField& field, const CellHeights& heights, const Sce
         out.notes.push_back("the hull of the non-empty cells is too thin to hold the model together; "
                             "cells touching it were added so the model is one piece");
     }
+    dropRimCellsWithoutData(field, keep);
     if (params.cull == Cull::Concave) {
         std::vector<uint8_t> anchor(n, 0);
         for (size_t idx = 0; idx < n; ++idx)

@@ -8,6 +8,7 @@
 #include "gen/model/phases/cell_heights.h"
 #include "gen/model/phases/halves_slab.h"
 #include "gen/model/phases/kept_cells.h"
+#include "gen/model/convex_hull.h"
 #include "gen/model/features/halves.h"
 #include "gen/util/error.h"
 #include "tests/support/fields.h"
@@ -96,6 +97,83 @@ TEST(KeptCells, ATileShareInTwoPiecesIsAnInputError) {
     keep.assign(5, 1);
     keepTileShare(field.grid, p, keep);
     EXPECT_EQ(keep, (std::vector<uint8_t>{1, 1, 0, 0, 0}));
+}
+
+// Heights as the cull reads them: a cell with data is non-empty.
+CellHeights heightsOf(const HexField& f) {
+    CellHeights h;
+    for (double v : f.values) {
+        h.units.push_back(std::isnan(v) ? 0 : 1000);
+        h.nonempty.push_back(std::isnan(v) ? 0 : 1);
+        h.nonempty_count += std::isnan(v) ? 0 : 1;
+    }
+    return h;
+}
+
+// A kept cell without data with a side on the outside (a cell left out, or
+// beyond the grid).
+int rimCellsWithoutData(const HexField& f, const std::vector<uint8_t>& keep) {
+    int n = 0;
+    for (int32_t r = 0; r < f.grid.rows; ++r)
+        for (int32_t c = 0; c < f.grid.cols; ++c) {
+            const size_t idx = size_t(f.grid.index(c, r));
+            if (!keep[idx] || !std::isnan(f.values[idx])) continue;
+            for (int e = 0; e < kHexCorners; ++e) {
+                int32_t nc = 0, nr = 0;
+                hexNeighbour(c, r, e, nc, nr);
+                if (!f.grid.contains(nc, nr) || !keep[size_t(f.grid.index(nc, nr))]) {
+                    ++n;
+                    break;
+                }
+            }
+        }
+    return n;
+}
+
+// Data that ends on a slant (a rotated raster resampled north-up): the
+// convex hull's edges cross the hexagons' staircase and kept a row of
+// no-data pits along the rim, which a reader took for missing values and
+// which left the orientation tab no pillars to stand against. Every slant,
+// both ways: every cell with data kept, no pit on the rim, one piece, and
+// the no-data cell inside the data still a pit.
+TEST(KeptCells, DataEndingOnASlantKeepsNoPitsAlongItsEdge) {
+    int had_rim_pits = 0;
+    for (const double slope : {0.3, 0.5, 0.58, 1.0, 1.7, -0.5, -1.2}) {
+        std::vector<std::vector<double>> rows(24, std::vector<double>(24, NAN));
+        for (int r = 0; r < 24; ++r)
+            for (int c = 0; c < 24; ++c) {
+                const double x = c - 12, y = 12 - r;
+                // A band between two parallel slanted lines, cut square north and south.
+                if (std::fabs(y - slope * x) < 6.0 && std::abs(r - 12) < 9) rows[size_t(r)][size_t(c)] = 1 + r + c;
+            }
+        rows[12][12] = NAN;  // no data inside the data
+        const HexField field = test::fieldFromRows(rows);
+        const KeptCells kept = cullCells(field, heightsOf(field), test::smallParams(Bottom::Flat, Cull::Hull));
+        for (size_t idx = 0; idx < field.values.size(); ++idx)
+            if (!std::isnan(field.values[idx])) ASSERT_TRUE(kept.keep[idx]) << "slope " << slope << ": a value left out";
+        EXPECT_EQ(rimCellsWithoutData(field, kept.keep), 0) << "slope " << slope;
+        EXPECT_EQ(componentCount(field.grid, kept.keep), 1) << "slope " << slope;
+        EXPECT_TRUE(kept.keep[size_t(field.grid.index(12, 12))]) << "slope " << slope << ": the pit inside the data";
+        // What the plain convex hull keeps: the pits this removes were there.
+        std::vector<LatticePoint> centres;
+        for (int32_t r = 0; r < 24; ++r)
+            for (int32_t c = 0; c < 24; ++c)
+                if (!std::isnan(field.at(c, r))) centres.push_back(hexCentre(field.grid, c, r));
+        const std::vector<LatticePoint> hull = convexHull(centres);
+        std::vector<uint8_t> convex(field.values.size(), 0);
+        for (int32_t r = 0; r < 24; ++r)
+            for (int32_t c = 0; c < 24; ++c) convex[size_t(field.grid.index(c, r))] = hullContains(hull, hexCentre(field.grid, c, r));
+        had_rim_pits += rimCellsWithoutData(field, convex) > 0;
+    }
+    EXPECT_GE(had_rim_pits, 4) << "the slants must be ones where the hull alone keeps rim pits";
+}
+
+// A no-data cell that holds the model together stays (a pit), as do all of
+// them then: the model is one piece.
+TEST(KeptCells, ARimCellWithoutDataThatHoldsTheModelTogetherStays) {
+    const HexField field = test::fieldFromRows({{1.0, NAN, 1.0}});
+    const KeptCells kept = cullCells(field, heightsOf(field), test::smallParams(Bottom::Flat, Cull::Hull));
+    EXPECT_EQ(kept.keep, (std::vector<uint8_t>{1, 1, 1}));
 }
 
 }  // namespace
