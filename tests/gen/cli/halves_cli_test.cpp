@@ -36,12 +36,19 @@ TEST(HalvesCli, WritesTwoSupportFreeHalvesAndThePins) {
     }
     const auto up = j["halves"]["upper"]["checks"];
     EXPECT_EQ(test::checkStatusIn(j["halves"]["upper"], "overhang"), "pass") << up.dump();
+    // The whole is never printed in one piece: its mirrored underside's
+    // overhang is no "supports needed" warning beside halves that need none.
+    const auto& whole = j["verify"];
+    EXPECT_EQ(test::checkStatusIn(whole, "overhang"), "pass") << whole["checks"].dump();
+    for (const auto& c : whole["checks"])
+        if (c["id"] == "overhang") EXPECT_NE(c["note"].get<std::string>().find("printed as two halves"), std::string::npos) << c.dump();
 
     const auto text = test::runTsf("gen " + (dir / "f.csv").string() + " --cell 6 --mirror --halves -o " +
                                        (dir / "n.3mf").string(), dir);
     ASSERT_EQ(text.exit_code, test::kExitOk) << text.err;
     EXPECT_NE(text.out.find("n-lower.3mf"), std::string::npos) << text.out;
     EXPECT_NE(text.out.find("nothing overhangs"), std::string::npos) << text.out;
+    EXPECT_EQ(text.out.find("supports needed"), std::string::npos) << text.out;
 }
 
 TEST(HalvesCli, OnePieceMirroredSaysItNeedsSupports) {
