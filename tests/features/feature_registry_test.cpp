@@ -34,21 +34,25 @@ SceneParams tabAndScale() {
     return p;
 }
 
-TEST(FeatureRegistry, TheLegendIsPlacedFirstThenTheTabWithTheMarksThenTheFeaturesBesideThePillars) {
+TEST(FeatureRegistry, TheTexturesAreDecidedFirstThenTheLegendThenTheTabWithTheMarksThenTheFeaturesBesideThePillars) {
     const std::vector<const Feature*>& all = features();
-    ASSERT_GE(all.size(), 2u);
-    EXPECT_STREQ(all[0]->name, "legend");
-    EXPECT_EQ(all[0]->phase, FeaturePhase::BeforeMarks);
-    EXPECT_STREQ(all[1]->name, "marks.tab");
-    EXPECT_EQ(all[1]->phase, FeaturePhase::Marks);
+    ASSERT_GE(all.size(), 3u);
+    EXPECT_STREQ(all[0]->name, "class_textures");
+    EXPECT_EQ(all[0]->phase, FeaturePhase::Frame);
+    EXPECT_STREQ(all[1]->name, "legend");
+    EXPECT_EQ(all[1]->phase, FeaturePhase::BeforeMarks);
+    EXPECT_STREQ(all[2]->name, "marks.tab");
+    EXPECT_EQ(all[2]->phase, FeaturePhase::Marks);
     // The phases split the registry in its own order, as buildScene places
-    // them: BeforeMarks, then Marks, then Beside.
-    EXPECT_EQ(featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Marks, FeaturePhase::Beside}), all);
+    // them: Frame, BeforeMarks, then Marks, then Beside.
+    EXPECT_EQ(featuresOf({FeaturePhase::Frame, FeaturePhase::BeforeMarks, FeaturePhase::Marks, FeaturePhase::Beside}),
+              all);
     EXPECT_EQ(featuresOf({FeaturePhase::Marks}).size(), 1u);
+    EXPECT_EQ(featuresOf({FeaturePhase::Frame}).size(), 1u);
     // Asked in another order, phase by phase in that order.
     const std::vector<const Feature*> marks_first =
         featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside});
-    ASSERT_EQ(marks_first.size(), all.size());
+    ASSERT_EQ(marks_first.size(), all.size() - 1);
     EXPECT_STREQ(marks_first[0]->name, "marks.tab");
     EXPECT_STREQ(marks_first[1]->name, "legend");
 }
