@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "gen/model/features/class_textures.h"
 #include "gen/model/features/ruler/ruler.h"
 #include "gen/model/scene_scale.h"
 #include "gen/util/error.h"
@@ -130,11 +131,17 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                     "Join a class map's codes into classes a reader needs: LO-HI=NAME or CODE=NAME, separated by ; "
                     "(e.g. \"21-24=Developed;41-43=Forest\"); each group becomes one class, coded LO")
         ->group(in);
-    cmd->add_option("--classes", o.scene.class_textures.max_textures,
-                    "A class map's textures: at most N (1-5: level, ridges east-west, dimples, ridges north-south, "
-                    "bumps), the commonest classes one each, the rarer ones sharing the last (the summary and the key "
-                    "say which)")
-        ->capture_default_str()->group(in);
+    cmd->add_option_function<int>(
+           "--classes",
+           [&o](int n) {
+               ClassTextureRequest rq;
+               rq.max_textures = n;
+               o.scene.requests.set(rq);
+           },
+           "A class map's textures: at most N (1-5: level, ridges east-west, dimples, ridges north-south, "
+           "bumps), the commonest classes one each, the rarer ones sharing the last (the summary and the key "
+           "say which)")
+        ->default_str(std::to_string(kTextureCount))->group(in);
     cmd->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; tab space (default: detect)")->group(in);
     cmd->add_flag("--decimal-comma", o.decimal_comma,
                   "Grid CSV: read 1,5 as 1.5 (spreadsheet exports; default: detected when the delimiter is ; "

@@ -119,10 +119,9 @@ std::string formatSceneFacts(const Scene& s, bool with_size_and_heights) {
         }
         o << "\n";
     }
-    if (s.textures)
-        o << "  heights   one height for every class, " << formatFixed(s.zMm(s.textures->height_units), 2)
-          << " mm above the floor: a class map's codes are names, not amounts (--class-order stands ordered "
-             "classes at heights)\n";
+    const std::optional<OneHeight> one_height = featureOneHeight(s);
+    if (one_height)
+        o << "  heights   " << one_height->summary_heights << "\n";
     else if (with_size_and_heights)
         o << "  heights   " << mappingText(s) << "\n"
           << "  levels    " << feltLevelsSentence(s.mapping.max_height_mm, sceneMeasures(s)) << "\n";
@@ -145,7 +144,7 @@ std::string formatSceneFacts(const Scene& s, bool with_size_and_heights) {
              "shallower north-south than the ground\n";
     if (s.one_to_one)
         o << "  values    one pillar per value: each of the " << s.cells_with_data
-          << (s.textures ? " values is one pillar with its class's texture\n" : " values stands at its own height\n");
+          << (one_height ? one_height->summary_values : std::string(" values stands at its own height")) << "\n";
     if (s.marks.notch)
         o << "  notch     V " << formatFixed(s.marks.notch->depth_mm, 1) << " mm deep, " << formatFixed(s.marks.notch->width_mm, 1)
           << " mm wide, at the origin (south-west) corner, through the whole height\n";
@@ -175,9 +174,10 @@ std::string formatSceneFacts(const Scene& s, bool with_size_and_heights) {
 static std::string classesLine(const Scene& scene, const FieldInput& input) {
     constexpr size_t kListed = 16;  // the rest are in --json and the key
     const std::vector<SceneClass> classes = sceneClasses(scene, input.classes, input.class_order);
+    const std::optional<OneHeight> one_height = featureOneHeight(scene);
     std::string o = "  classes   " + std::to_string(classes.size()) +
                     " classes, each hexagon one class (the most common of its pixels, never a mean); " +
-                    (scene.textures                ? "each class a texture, commonest first:"
+                    (one_height                  ? one_height->summary_classes
                      : input.class_order.empty() ? "heights follow the class codes and mean no more or less:"
                                                  : "heights follow the order given (--class-order), one step each:");
     for (size_t k = 0; k < classes.size() && k < kListed; ++k)
@@ -273,7 +273,7 @@ std::string formatSummary(const GenSummary& s) {
               << " mm with what stands beside the pillars";
         }
         o << "\n";
-        if (!sc.textures)
+        if (!featureOneHeight(sc))
             o << "  heights   " << mappingText(sc) << "\n"
               << "  levels    " << feltLevelsSentence(sc.mapping.max_height_mm, sceneMeasures(sc)) << "\n";
     }

@@ -6,6 +6,7 @@
 
 #include "gen/mesh/direct_mesher.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/felt_heights.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/util/error.h"
@@ -173,7 +174,9 @@ std::vector<std::string> failedLegibility(const VerifyReport& report) {
 LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const std::vector<std::string>& failed,
                                 const LegibilityGiven& given, const VerifyOptions& vo, const FieldAtBins& field_at) {
     LegibleDefaults out;
-    if (failed.empty() || first.textures) return out;
+    // A feature that stands every value at one height (a class map's
+    // textures) leaves no heights to change.
+    if (failed.empty() || featureOneHeight(first)) return out;
     const SceneParams& p0 = first.params;
     const Trial at_first = tryParams(field, first, p0, vo);
     if (at_first.failing == 0) return out;

@@ -9,7 +9,6 @@
 
 #include "gen/field/hex_grid.h"
 #include "gen/model/feature_registry.h"
-#include "gen/model/features/class_textures.h"
 #include "gen/model/features/felt_heights.h"
 #include "gen/model/features/legend/legend.h"
 #include "gen/model/features/marks.h"
@@ -350,16 +349,13 @@ void checkPillars(const Scene& s, const TactileOptions& o, TactileResult& r) {
 void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r) {
     Check c{"tactile_height_steps", "neighbouring values at least a felt step apart"};
     c.unit = "mm";
-    if (s.textures) {
-        // A class map's classes share one height and are told apart by the
-        // feel of their tops: what must be felt is the textures' relief.
-        const double relief = s.zMm(s.textures->relief_units);
-        c.status = relief + 1e-9 >= kMinFeltTextureReliefMm ? CheckStatus::Pass : CheckStatus::Warn;
-        c.count = c.status == CheckStatus::Pass ? 0 : 1;
-        c.note = "a class map: its classes stand at one height and are told apart by " +
-                 std::to_string(s.textures->textures_used) + " textures " + formatSignificant(relief, 3) +
-                 " mm deep (at least " + formatSignificant(kMinFeltTextureReliefMm, 2) + " mm is felt without searching" +
-                 (c.count ? "; larger cells give deeper textures)" : ")");
+    if (const std::optional<OneHeight> one = featureOneHeight(s)) {
+        // Every value at one height (a class map's classes, told apart by
+        // the feel of their tops): what must be felt is what the feature
+        // says, not steps between heights.
+        c.status = one->felt ? CheckStatus::Pass : CheckStatus::Warn;
+        c.count = one->felt ? 0 : 1;
+        c.note = one->felt_note;
         c.stage = "tactile_marks";
         r.checks.push_back(std::move(c));
         return;
@@ -442,59 +438,63 @@ void checkBraille(const Scene& s, const TactileOptions& o, TactileResult& r) {
 }  // namespace
 
 const std::vector<TactileThreshold>& tactileThresholds() {
-    static const std::vector<TactileThreshold> table = {
-        {"tactile_sharp_points", "narrowest point of the touched surface (cone half-angle)", kSharpPointHalfAngleDeg, "deg",
-         "tsf's rule: a needle or spike reads as a prick, not a shape; a 20-degree cone (a sharpened pencil's tip is "
-         "about 10) passes the corners of hexagons (120), of the tab's triangle (31) and of the scale (90)"},
-        {"tactile_knife_edges", "smallest angle between two faces along a convex edge", kKnifeEdgeDeg, "deg",
-         "tsf's rule: a blade is felt as a cut; a top tilted steeper than 60 degrees meets its wall under 30"},
-        {"tactile_finger_reach", "adult fingertip radius", kAdultFingertipRadiusMm, "mm",
-         "half the width of an adult index fingertip (about 16 mm across the pad)"},
-        {"tactile_finger_reach", "child fingertip radius", kChildFingertipRadiusMm, "mm",
-         "index finger diameter 9-22 mm, mean 15 mm, in children aged 3-10 (Ann. Anat. 192(3):156-161, 2010); the "
-         "fingertip is narrower than the finger: 11 mm is taken"},
-        {"tactile_finger_reach", "depth below a rigid fingertip that a pressing finger still reaches", kUnreachedDepthMm, "mm",
-         "the fingertip's pulp yields about 2 mm under a light press of 1 N (Serina, Mote, Rempel, J. Biomech. "
-         "30(10):1035-1040, 1997); deeper, the bottom is not felt and its value not read"},
-        {"tactile_marks", "notch depth", kMinNotchDepthMm, "mm",
-         "1/8 in, the smallest space between two elements a reader perceives (L. Hasty, Design principles for "
-         "tactile graphics, '1/8th inch rule')"},
-        {"tactile_marks", "triangle's shorter leg", kMinTriangleLegMm, "mm",
-         "1/4 in, the smallest component read on its own (L. Hasty, ibid.); APH: symbols closer than 1/4 in are hard "
-         "to tell apart"},
-        {"tactile_marks", "triangle's longer leg", kMinTriangleLongLegMm, "mm",
-         "1/2 in: shapes with sides under 1/2 in may not be recognisable (APH, Guidelines for Design of Tactile "
-         "Graphics, 1997)"},
-        {"tactile_slender_pillars", "push at a pillar's top", kHandPushN, "N",
-         "tsf's rule: a hand leaning on the model, several times the 0.5-2 N fingers use to explore"},
-        {"tactile_slender_pillars", "strength of printed PLA across its layers", kPrintedPlaInterlayerMpa, "MPa",
-         "the low end of the interlayer strengths measured for FDM-printed PLA (Chacon et al., Materials & Design "
-         "124:143-157, 2017: upright specimens, 20-50 MPa)"},
-        {"tactile_height_steps", "smallest height step between neighbouring values a reader compares by", kFeltHeightStepMm,
-         "mm",
-         "3D-printed tactile graphics: heights >= 0.5 mm to detect, >= 1 mm for what matters (printdisability.org, "
-         "Round Table on Information Access, 3D printing guidance); steps of 0.56 mm worked as levels on FDM maps "
-         "(Wabinski, Moscicka, Touya, PLOS ONE 17(3):e0264564, 2022). A fingertip detects a 1 um edge (Johansson and "
-         "LaMotte 1983), but detecting is not comparing. With coarser --layer, one layer"},
-        {"tactile_height_steps", "heights a reader identifies without the scale", double(kLevelsReadWithoutScale), "",
-         "three levels (0.56, 1.12, 1.68 mm) worked on FDM-printed maps (Wabinski et al. 2022); the summary and the "
-         "key say so, not range / 0.5 mm"},
-        {"tactile_height_steps", "class textures' relief, in whole layers", kMinFeltTextureReliefMm, "mm",
-         "0.02 in for an areal pattern (BANA, Guidelines and Standards for Tactile Graphics, 2010); printed in whole "
-         "layers: 0.6 mm at 0.2 mm layers where the cells' slope allows it"},
-        {"tactile_height_steps", "most textures on one model", double(kTextureCount), "",
-         "at most five area textures on a graphic, else a key (APH, Guidelines for Design of Tactile Graphics, 1997; "
-         "BANA 2010)"},
-        {"cell size", "spacing under which neighbouring features merge", kMergeSpacingMm, "mm",
-         "1/8 in, the smallest space between two elements a reader perceives (L. Hasty, '1/8th inch rule'); tsf "
-         "never makes or advises cells under 3 mm by default"},
-        {"tactile_braille", "lowest printed dot", kMinPrintedDotHeightMm, "mm",
-         "0.019 in, the dot height of NLS Specification 800 (2008) 3.2 (paper braille)"},
-        {"tactile_braille", "highest printed dot", kMaxBrailleDotHeightMm, "mm",
-         "0.037 in, the top of the dot height range for tactile signs (2010 ADA Standards 703.3.1)"},
-        {"tactile_braille", "narrowest dot base, in nozzle widths", kMinDotBaseNozzles, "",
-         "tsf's rule: two perimeters side by side make a dome; fewer, a blob"},
-    };
+    static const std::vector<TactileThreshold> table = [] {
+        std::vector<TactileThreshold> t = {
+            {"tactile_sharp_points", "narrowest point of the touched surface (cone half-angle)", kSharpPointHalfAngleDeg, "deg",
+             "tsf's rule: a needle or spike reads as a prick, not a shape; a 20-degree cone (a sharpened pencil's tip is "
+             "about 10) passes the corners of hexagons (120), of the tab's triangle (31) and of the scale (90)"},
+            {"tactile_knife_edges", "smallest angle between two faces along a convex edge", kKnifeEdgeDeg, "deg",
+             "tsf's rule: a blade is felt as a cut; a top tilted steeper than 60 degrees meets its wall under 30"},
+            {"tactile_finger_reach", "adult fingertip radius", kAdultFingertipRadiusMm, "mm",
+             "half the width of an adult index fingertip (about 16 mm across the pad)"},
+            {"tactile_finger_reach", "child fingertip radius", kChildFingertipRadiusMm, "mm",
+             "index finger diameter 9-22 mm, mean 15 mm, in children aged 3-10 (Ann. Anat. 192(3):156-161, 2010); the "
+             "fingertip is narrower than the finger: 11 mm is taken"},
+            {"tactile_finger_reach", "depth below a rigid fingertip that a pressing finger still reaches", kUnreachedDepthMm, "mm",
+             "the fingertip's pulp yields about 2 mm under a light press of 1 N (Serina, Mote, Rempel, J. Biomech. "
+             "30(10):1035-1040, 1997); deeper, the bottom is not felt and its value not read"},
+            {"tactile_marks", "notch depth", kMinNotchDepthMm, "mm",
+             "1/8 in, the smallest space between two elements a reader perceives (L. Hasty, Design principles for "
+             "tactile graphics, '1/8th inch rule')"},
+            {"tactile_marks", "triangle's shorter leg", kMinTriangleLegMm, "mm",
+             "1/4 in, the smallest component read on its own (L. Hasty, ibid.); APH: symbols closer than 1/4 in are hard "
+             "to tell apart"},
+            {"tactile_marks", "triangle's longer leg", kMinTriangleLongLegMm, "mm",
+             "1/2 in: shapes with sides under 1/2 in may not be recognisable (APH, Guidelines for Design of Tactile "
+             "Graphics, 1997)"},
+            {"tactile_slender_pillars", "push at a pillar's top", kHandPushN, "N",
+             "tsf's rule: a hand leaning on the model, several times the 0.5-2 N fingers use to explore"},
+            {"tactile_slender_pillars", "strength of printed PLA across its layers", kPrintedPlaInterlayerMpa, "MPa",
+             "the low end of the interlayer strengths measured for FDM-printed PLA (Chacon et al., Materials & Design "
+             "124:143-157, 2017: upright specimens, 20-50 MPa)"},
+            {"tactile_height_steps", "smallest height step between neighbouring values a reader compares by", kFeltHeightStepMm,
+             "mm",
+             "3D-printed tactile graphics: heights >= 0.5 mm to detect, >= 1 mm for what matters (printdisability.org, "
+             "Round Table on Information Access, 3D printing guidance); steps of 0.56 mm worked as levels on FDM maps "
+             "(Wabinski, Moscicka, Touya, PLOS ONE 17(3):e0264564, 2022). A fingertip detects a 1 um edge (Johansson and "
+             "LaMotte 1983), but detecting is not comparing. With coarser --layer, one layer"},
+            {"tactile_height_steps", "heights a reader identifies without the scale", double(kLevelsReadWithoutScale), "",
+             "three levels (0.56, 1.12, 1.68 mm) worked on FDM-printed maps (Wabinski et al. 2022); the summary and the "
+             "key say so, not range / 0.5 mm"},
+            {"cell size", "spacing under which neighbouring features merge", kMergeSpacingMm, "mm",
+             "1/8 in, the smallest space between two elements a reader perceives (L. Hasty, '1/8th inch rule'); tsf "
+             "never makes or advises cells under 3 mm by default"},
+            {"tactile_braille", "lowest printed dot", kMinPrintedDotHeightMm, "mm",
+             "0.019 in, the dot height of NLS Specification 800 (2008) 3.2 (paper braille)"},
+            {"tactile_braille", "highest printed dot", kMaxBrailleDotHeightMm, "mm",
+             "0.037 in, the top of the dot height range for tactile signs (2010 ADA Standards 703.3.1)"},
+            {"tactile_braille", "narrowest dot base, in nozzle widths", kMinDotBaseNozzles, "",
+             "tsf's rule: two perimeters side by side make a dome; fewer, a blob"},
+        };
+        // The features' own (gen/model/feature.h), after their check's rows.
+        for (const FeatureThreshold& f : featureThresholds()) {
+            auto at = t.end();
+            for (auto it = t.begin(); it != t.end(); ++it)
+                if (std::string(it->id) == f.check) at = it + 1;
+            t.insert(at, {f.check, f.what, f.value, f.unit, f.source});
+        }
+        return t;
+    }();
     return table;
 }
 

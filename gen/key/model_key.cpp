@@ -4,13 +4,13 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "gen/field/hex_grid.h"
 #include "gen/key/places_in_words.h"
 #include "gen/key/unit_words.h"
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/braille.h"
-#include "gen/model/features/class_textures.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/features/felt_heights.h"
@@ -139,37 +139,40 @@ std::string orientationParagraph(const Scene& s) {
     return p;
 }
 
-void classParagraphs(const Scene& s, const ModelKeyFacts& facts, std::vector<std::string>& out) {
+void classParagraphs(const Scene& s, const ModelKeyFacts& facts, const KeyNumbers& numbers,
+                     std::vector<std::string>& out) {
     // Class codes: their range and a height per unit mean nothing; each
-    // class is told by name and height.
+    // class is told by name and height, or by what a feature tells it
+    // apart by (a class map's textures).
     const std::vector<SceneClass> classes = sceneClasses(s, facts.class_names, facts.class_order);
+    const std::optional<KeyClasses> told_apart = featureKeyClasses(s, numbers);
     out.push_back("The values are classes, not amounts: " + std::to_string(classes.size()) +
                   (classes.size() == 1 ? " class" : " classes") +
                   ". Each hexagon holds one class, the most common where it stands, never a mix. " +
-                  (s.textures ? "Every class stands at one height, " + mm(s.zMm(s.textures->height_units)) +
-                                    " above the floor, and is told apart by the feel of its tops, " +
-                                    mm(s.zMm(s.textures->relief_units)) + " deep; no class is more than another."
+                  (told_apart ? told_apart->heights
                    : facts.class_order.empty()
                        ? std::string("Each class stands at its own height, in the order of its code in the file; a "
                                      "higher pillar is not more of anything.")
                        : std::string("The classes are ordered, lowest first, as the model's maker gave them: each "
                                      "stands one even step above the one before.")));
     auto hexagons = [](int64_t n) { return num(double(n)) + (n == 1 ? " hexagon" : " hexagons"); };
-    if (s.textures) {
-        // One sentence per texture, the classes that have it, commonest first.
-        std::string list = "The textures:";
-        for (int t = 0; t < s.textures->textures_used; ++t) {
+    if (told_apart) {
+        // One sentence per mark (a texture), the classes that have it, in
+        // the feature's order.
+        std::string list = told_apart->list_lead;
+        for (size_t t = 0; t < told_apart->marks.size(); ++t) {
+            const KeyClasses::Mark& mark = told_apart->marks[t];
             std::string who;
             int64_t cells = 0;
             size_t named = 0;
             for (const SceneClass& c : classes)
-                if (c.texture == textureName(Texture(t))) {
+                if (c.texture == mark.name) {
                     who += std::string(named++ == 0 ? "" : ", ") + "class " + className(c);
                     cells += c.cells;
                 }
             if (named == 0) continue;
-            list += std::string(t == 0 ? " " : "; ") + textureName(Texture(t)) + " (" + textureFeel(Texture(t)) +
-                    "): " + who + (named > 1 ? " (these classes share it)" : "") + ", " + hexagons(cells);
+            list += std::string(t == 0 ? " " : "; ") + mark.name + " (" + mark.feel + "): " + who +
+                    (named > 1 ? " (these classes share it)" : "") + ", " + hexagons(cells);
         }
         out.push_back(list + ".");
     } else {
@@ -187,6 +190,7 @@ void classParagraphs(const Scene& s, const ModelKeyFacts& facts, std::vector<std
 std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts& facts) {
     std::vector<std::string> out;
     const UnitWords u = readerUnits(s, facts);
+    const KeyNumbers numbers{num, [&u](double v) { return amount(v, u); }, mm};
     out.push_back(titleParagraph(s, facts));
     out.push_back(showsParagraph(facts, u));
 
@@ -207,7 +211,7 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
     else values += " and stands for the values that fell in it.";
     if (facts.categorical) {
         out.push_back(values);
-        classParagraphs(s, facts, out);
+        classParagraphs(s, facts, numbers, out);
     } else {
         const bool data_range = std::isfinite(facts.data_min) && std::isfinite(facts.data_max);
         if (data_range) values += " The data's own values go " + range(facts.data_min, facts.data_max, u) + ".";
@@ -244,7 +248,6 @@ std::vector<std::string> modelKeyParagraphs(const Scene& s, const ModelKeyFacts&
                       ", at most " + num(s.params.max_slope_deg) + kNoBreak +
                       "degrees. The height at a top's centre is its value.");
     out.push_back(orientationParagraph(s));
-    const KeyNumbers numbers{num, [&u](double v) { return amount(v, u); }};
     for (const Feature* f : features())
         if (f->key_paragraph)
             if (std::string p = f->key_paragraph(s, numbers); !p.empty()) out.push_back(std::move(p));

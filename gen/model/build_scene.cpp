@@ -38,8 +38,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     s.hull = std::move(culled.hull);
     s.cells_convex = culled.cells_convex;
     s.notes.insert(s.notes.end(), culled.notes.begin(), culled.notes.end());
-    const int64_t mirror_shift = lowerToMirroredFloor(field, culled.keep, params,
-                                                      s.textures ? s.textures->relief_units : 0, heights);
+    const int64_t mirror_shift =
+        lowerToMirroredFloor(field, culled.keep, params, featureReliefBelowUnits(s), heights);
     keepTileShare(s.grid, params, culled.keep);
     assert(componentCount(s.grid, culled.keep) == 1);
     listKeptCells(field, culled.keep, s);

@@ -1,5 +1,6 @@
 // The feature contract: what a feature of a model (something it carries
-// besides the pillars: the tactile scale, ...) hands to the rest of tsf, so
+// besides the pillars: the tactile scale, ...; or something of the pillars
+// themselves: a class map's textures) hands to the rest of tsf, so
 // that buildScene, the mesher, the parts, the read-backs, the sidecar, the
 // summary and the key draw and report it without naming it. Each feature
 // fills in one Feature, and features() (gen/model/feature_registry.h) is
@@ -24,13 +25,21 @@
 //     or draws with the feature's own scad_lib/ module;
 //   - says whether it survives a cut into tiles;
 //   - claims what a hand must find on it (TactileClaim), which the tactile
-//     check proves as printed.
+//     check proves as printed;
+//   - a feature of the pillars themselves (FeaturePhase::Frame) decides
+//     from the field before any height, may stand the values at heights of
+//     its own (the value mapping), shapes the cells' tops (TopShaping) and
+//     keeps their relief under a mirrored model, says what the summary, the
+//     key and the tactile check say instead of the heights (OneHeight), what
+//     tells a class map's classes apart (ClassMark, KeyClasses) and the
+//     thresholds its check is held to (FeatureThreshold); a feature that
+//     measures heights (needs_heights) is refused beside it.
 // What the user asks of a feature is held in SceneParams::requests by the
 // feature's own request type, set by the command line.
 // Every entry may be null: the feature has nothing of that kind.
 //
-// Features not yet in the registry are still named by the lists in
-// gen/model/attachments.cpp, gen/model/feature_records.cpp,
+// Features not yet in the registry (the halves, the tiles) are still
+// named by the lists in gen/model/attachments.cpp, gen/model/feature_records.cpp,
 // gen/scad/scad_attachments.cpp and gen/key/model_key.cpp, which splice the
 // registry in where its features stood, phase by phase (FeaturePhase), so
 // every output keeps its order.
@@ -44,6 +53,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gen/field/bin_regression.h"
+#include "gen/field/hex_field.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_attachments.h"
 
@@ -51,6 +62,12 @@ namespace tsf {
 
 /// Where in buildScene a feature places itself.
 enum class FeaturePhase : uint8_t {
+    /// Before any height, once the frame is set (the pitch, the lattice's
+    /// stretch, the value mapping): a feature of the pillars themselves,
+    /// decided from the field (Feature::frame), that may stand the values
+    /// at heights of its own and shape the cells' tops (a class map's
+    /// textures).
+    Frame,
     /// After the cells' tops are final (tilted, textured): a body beside
     /// the pillars placed before the one carrying the marks, which keeps
     /// clear of what it claims (the braille legend's plate).
@@ -132,6 +149,65 @@ struct TactileClaim {
 struct KeyNumbers {
     std::function<std::string(double)> number;
     std::function<std::string(double)> amount;
+    std::function<std::string(double)> length_mm;  ///< a length in mm with its unit: "5 millimetres"
+};
+
+/// The shapes a feature gives the cells' tops, drawn by resolveTopShapes
+/// (gen/model/features/tilt.h) as they are, not times --steepness.
+struct TopShaping {
+    std::vector<PlaneSlope> slopes;  ///< per kept cell: its top's slope, mm per mm (x east, y north)
+    std::vector<int32_t> centre_dz;  ///< per kept cell: its top's centre above its level, z units
+    /// What a reader should know about them, added to Scene::notes once
+    /// the tops are shaped; "" for nothing.
+    std::string note;
+};
+
+/// What a feature that stands every value at one height says instead of the
+/// value mapping's heights (which then measure nothing).
+struct OneHeight {
+    std::string summary_heights;  ///< the summary's heights line, after "heights   "
+    std::string summary_values;   ///< the summary's values line after "each of the N"
+    std::string summary_classes;  ///< the summary's classes line: how they are told apart, and in what order
+    /// Why a measure of heights means nothing on it, and what to change,
+    /// for the refusal of a feature that measures ("a class map has one
+    /// height (...); give ...").
+    std::string unmeasurable;
+    /// What a hand must feel instead of the steps between heights (the
+    /// tactile check's height steps, verify/tactile.h, warns when not felt).
+    bool felt = true;
+    std::string felt_note;
+};
+
+/// A class of a class map as a feature tells it apart: by what
+/// (SceneClass::texture, gen/model/scene_classes.h).
+struct ClassMark {
+    double code = 0;      ///< the class's value in the data
+    std::string name;     ///< what tells it apart: "ridges east-west"
+    bool shared = false;  ///< it shares that with other classes (there are more classes than marks)
+};
+
+/// What the key says of a class map's classes when a feature tells them
+/// apart: a sentence on their heights, and a paragraph listing them
+/// (instead of by height) as `list_lead`, then per mark the classes that
+/// have it.
+struct KeyClasses {
+    std::string heights;    ///< "Every class stands at one height, ..."
+    std::string list_lead;  ///< "The textures:"
+    struct Mark {
+        std::string name;  ///< ClassMark::name
+        std::string feel;  ///< how it feels: "flat tops"
+    };
+    std::vector<Mark> marks;  ///< in the order they are handed out
+};
+
+/// A threshold a feature's tactile claims are held to, with its source, for
+/// the tactile check's table (verify/tactile.h, tactileThresholds()).
+struct FeatureThreshold {
+    const char* check;  ///< the tactile check it belongs to
+    const char* what;
+    double value;
+    const char* unit;
+    const char* source;
 };
 
 struct Feature {
@@ -179,6 +255,42 @@ struct Feature {
     /// What it asks a hand to find (the tactile check proves it as
     /// printed); none without it.
     std::vector<TactileClaim> (*tactile_claims)(const Scene& scene);
+
+    // --- A feature of the pillars themselves (FeaturePhase::Frame) ---
+    // (Each with its default: a feature without it need not list it.)
+    /// Its record is listed as null in the sidecar when the Scene has none
+    /// even where its facts are not (facts_listed_when_absent false): a
+    /// record the sidecar always had.
+    bool record_listed_when_absent = false;
+    /// Decides what the field asks of it once the frame is set, before any
+    /// height; may replace the value mapping (Scene::mapping) and the
+    /// model's words (SceneParams::words). Throws InputError saying what to
+    /// change when it cannot stand, or when the model asks for what it
+    /// cannot be combined with.
+    void (*frame)(Scene& scene, const HexField& field) = nullptr;
+    /// How far below their level it shapes the tops, z units: a mirrored
+    /// model keeps that much under its lowest cell (gen/model/phases/cell_heights.h).
+    int64_t (*relief_below_units)(const Scene& scene) = nullptr;
+    /// The shapes of the cells' tops (after the heights, the marks and a
+    /// tile's code); none when it shapes none.
+    std::optional<TopShaping> (*top_shaping)(const Scene& scene) = nullptr;
+    /// When it stands every value at one height, what is said instead of
+    /// the heights; none otherwise.
+    std::optional<OneHeight> (*one_height)(const Scene& scene) = nullptr;
+    /// Per class of a class map it tells apart, in its order: what tells
+    /// it apart; empty when it tells none apart.
+    std::vector<ClassMark> (*class_marks)(const Scene& scene) = nullptr;
+    /// What the key says of the classes it tells apart; none when it tells
+    /// none apart.
+    std::optional<KeyClasses> (*key_classes)(const Scene& scene, const KeyNumbers& numbers) = nullptr;
+    /// The thresholds its tactile check is held to, with their sources.
+    std::vector<FeatureThreshold> (*thresholds)() = nullptr;
+    /// True when the user asked for it (null: asked for by the field).
+    bool (*asked)(const SceneParams& params) = nullptr;
+    /// It measures heights: when asked for on a model whose values a
+    /// feature stands at one height (one_height), it is refused before it
+    /// is placed, saying why.
+    bool needs_heights = false;
 };
 
 }  // namespace tsf

@@ -1,15 +1,20 @@
 #include "gen/model/feature_registry.h"
 
+#include <algorithm>
+#include <string>
+
+#include "gen/model/features/class_textures_feature.h"
 #include "gen/model/features/legend/legend_feature.h"
 #include "gen/model/features/ruler/ruler_feature.h"
 #include "gen/model/features/scale_feature.h"
 #include "gen/model/features/tab/tab_feature.h"
+#include "gen/util/error.h"
 
 namespace tsf {
 
 const std::vector<const Feature*>& features() {
-    static const std::vector<const Feature*> registry = {&legendFeature(), &tabFeature(), &scaleFeature(),
-                                                         &rulerFeature()};
+    static const std::vector<const Feature*> registry = {&classTexturesFeature(), &legendFeature(), &tabFeature(),
+                                                         &scaleFeature(), &rulerFeature()};
     return registry;
 }
 
@@ -23,6 +28,9 @@ std::vector<const Feature*> featuresOf(std::initializer_list<FeaturePhase> phase
 
 void placeFeatures(Scene& scene, FeaturePhase phase) {
     for (const Feature* f : featuresOf({phase})) {
+        if (f->needs_heights && f->asked && f->asked(scene.params) && scene.keptCount() > 0)
+            if (const std::optional<OneHeight> one = featureOneHeight(scene))
+                throw InputError(std::string(f->option) + " measures heights, and " + one->unmeasurable);
         if (f->place) f->place(scene);
         if (f->claim)
             if (std::optional<FootprintClaim> c = f->claim(scene)) scene.claims.push_back(std::move(*c));
@@ -39,6 +47,54 @@ const Feature* featureRefusingTiles(const Scene& scene) {
     for (const Feature* f : features())
         if (f->survives_tiles && !f->survives_tiles(scene)) return f;
     return nullptr;
+}
+
+void frameFeatures(Scene& scene, const HexField& field) {
+    for (const Feature* f : featuresOf({FeaturePhase::Frame}))
+        if (f->frame) f->frame(scene, field);
+}
+
+int64_t featureReliefBelowUnits(const Scene& scene) {
+    int64_t most = 0;
+    for (const Feature* f : features())
+        if (f->relief_below_units) most = std::max(most, f->relief_below_units(scene));
+    return most;
+}
+
+std::optional<TopShaping> featureTopShaping(const Scene& scene) {
+    for (const Feature* f : features())
+        if (f->top_shaping)
+            if (std::optional<TopShaping> t = f->top_shaping(scene)) return t;
+    return std::nullopt;
+}
+
+std::optional<OneHeight> featureOneHeight(const Scene& scene) {
+    for (const Feature* f : features())
+        if (f->one_height)
+            if (std::optional<OneHeight> o = f->one_height(scene)) return o;
+    return std::nullopt;
+}
+
+std::vector<ClassMark> featureClassMarks(const Scene& scene) {
+    for (const Feature* f : features())
+        if (f->class_marks)
+            if (std::vector<ClassMark> marks = f->class_marks(scene); !marks.empty()) return marks;
+    return {};
+}
+
+std::optional<KeyClasses> featureKeyClasses(const Scene& scene, const KeyNumbers& numbers) {
+    for (const Feature* f : features())
+        if (f->key_classes)
+            if (std::optional<KeyClasses> k = f->key_classes(scene, numbers)) return k;
+    return std::nullopt;
+}
+
+std::vector<FeatureThreshold> featureThresholds() {
+    std::vector<FeatureThreshold> out;
+    for (const Feature* f : features())
+        if (f->thresholds)
+            for (const FeatureThreshold& t : f->thresholds()) out.push_back(t);
+    return out;
 }
 
 }  // namespace tsf

@@ -5,7 +5,9 @@
 // those names a feature of the registry.
 #pragma once
 
+#include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <vector>
 
 #include "gen/model/feature.h"
@@ -13,8 +15,9 @@
 
 namespace tsf {
 
-/// Every feature in the registry, in the order they are placed (the
-/// braille legend, the orientation tab, the tactile scale, the edge ruler).
+/// Every feature in the registry, in the order they are placed (a class
+/// map's textures, decided in the frame, the braille legend, the
+/// orientation tab, the tactile scale, the edge ruler).
 const std::vector<const Feature*>& features();
 
 /// The features of the registry placed in `phases`, phase by phase in the
@@ -24,7 +27,9 @@ const std::vector<const Feature*>& features();
 std::vector<const Feature*> featuresOf(std::initializer_list<FeaturePhase> phases);
 
 /// Places each feature of `phase`, in the registry's order, and adds the
-/// footprint each claims to Scene::claims.
+/// footprint each claims to Scene::claims. A feature that needs heights
+/// (Feature::needs_heights), asked for on a model whose values a feature
+/// stands at one height, is refused (InputError) before it is placed.
 void placeFeatures(Scene& scene, FeaturePhase phase);
 
 /// True when some feature of the Scene lets a reader measure values by it.
@@ -33,5 +38,34 @@ bool sceneMeasures(const Scene& scene);
 /// The first feature of the Scene that refuses a cut into tiles; null
 /// when none does.
 const Feature* featureRefusingTiles(const Scene& scene);
+
+/// Decides each feature of FeaturePhase::Frame from the field (Feature::frame),
+/// in the registry's order.
+void frameFeatures(Scene& scene, const HexField& field);
+
+/// The most any feature shapes the tops below their level, z units; 0 when
+/// none does.
+int64_t featureReliefBelowUnits(const Scene& scene);
+
+/// The shapes a feature gives the cells' tops (the first that shapes any);
+/// none when no feature shapes them.
+std::optional<TopShaping> featureTopShaping(const Scene& scene);
+
+/// What a feature that stands every value at one height says instead of
+/// the heights (the first that does); none when the heights are the value
+/// mapping's.
+std::optional<OneHeight> featureOneHeight(const Scene& scene);
+
+/// The classes a feature tells apart, in its order, with what tells each
+/// apart (Feature::class_marks); empty when none does.
+std::vector<ClassMark> featureClassMarks(const Scene& scene);
+
+/// What the key says of the classes a feature tells apart; none when none
+/// does.
+std::optional<KeyClasses> featureKeyClasses(const Scene& scene, const KeyNumbers& numbers);
+
+/// The thresholds the features' tactile checks are held to, in the
+/// registry's order.
+std::vector<FeatureThreshold> featureThresholds();
 
 }  // namespace tsf

@@ -33,7 +33,6 @@
 #include "gen/model/scene_attachments.h"
 #include "gen/model/scene_halves.h"
 #include "gen/model/scene_marks.h"
-#include "gen/model/scene_textures.h"
 #include "gen/model/scene_tiles.h"
 #include "gen/model/scene_top_shapes.h"
 
@@ -143,8 +142,6 @@ struct SceneParams {
     double steepness = 1.0;        ///< multiplies every tilt's slope (> 0)
     double max_slope_deg = kDefaultMaxSlopeDeg;  ///< steepest a tilted top may lean, degrees from level
     bool structural_texture = false;  ///< dimple the cells kept only to hold the model together
-    // --- a class map's textures (gen/model/features/class_textures.h) ---
-    ClassTextureRequest class_textures;
     // --- what the model says in words: its key, its braille legend ---
     ModelWords words;
     /// The printer's layer (mm, 0: not known): the braille dots are made a
@@ -230,16 +227,13 @@ struct Scene {
     /// Tilted tops and the dimples of structural cells (empty: every top a
     /// level hexagon). Planar ids after the faces' (gen/model/features/top_shapes.h).
     TopShapes shapes;
-    /// A class map's classes at one height, told apart by the textures of
-    /// their tops (gen/model/features/class_textures.h); none for measurements
-    /// and for classes given an order.
-    std::optional<SceneTextures> textures;
     /// The cut into two support-free halves and the pin holes (gen/model/features/halves.h); none unless asked for.
     std::optional<SceneHalves> halves;
     /// The tile of a tiled model this Scene draws, and its code (gen/model/features/tiles.h); none for a whole model.
     std::optional<SceneTile> tile;
     /// What the features of the registry placed (gen/model/feature.h): each
-    /// holds its own state here, by its type (the tactile scale's SceneScale).
+    /// holds its own state here, by its type (the tactile scale's
+    /// SceneScale, a class map's textures).
     FeatureStates features;
     /// The footprints placed so far claim (gen/model/feature.h): a feature
     /// placed later keeps clear of them. Placement only: not in the sidecar.

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <map>
 
-#include "gen/model/features/class_textures.h"
+#include "gen/model/feature_registry.h"
 #include "gen/util/number_format.h"
 
 namespace tsf {
@@ -32,16 +32,17 @@ std::vector<SceneClass> sceneClasses(const Scene& s, const std::vector<RasterCla
             if (n.code == c.code) c.name = n.name;
         out.push_back(std::move(c));
     }
-    if (s.textures) {
-        std::vector<SceneClass> by_texture;
-        for (const ClassTexture& t : s.textures->classes)
+    // Told apart by a feature (a class map's textures): in its order.
+    if (const std::vector<ClassMark> marks = featureClassMarks(s); !marks.empty()) {
+        std::vector<SceneClass> in_order;
+        for (const ClassMark& m : marks)
             for (SceneClass& c : out)
-                if (c.code == t.code) {
-                    c.texture = textureName(t.texture);
-                    c.texture_shared = t.shared;
-                    by_texture.push_back(std::move(c));
+                if (c.code == m.code) {
+                    c.texture = m.name;
+                    c.texture_shared = m.shared;
+                    in_order.push_back(std::move(c));
                 }
-        out.swap(by_texture);
+        out.swap(in_order);
     }
     return out;
 }

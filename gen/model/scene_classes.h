@@ -18,8 +18,9 @@ struct SceneClass {
     std::string name;      ///< from the file ("" when it names none)
     int64_t cells = 0;     ///< kept cells that hold it
     double height_mm = 0;  ///< its height above the floor (mm, on the z grid), as its cells stand
-    /// Its texture (gen/model/features/class_textures.h) when the classes are
-    /// told apart by texture; "" when they stand at heights.
+    /// What tells it apart when a feature does (Feature::class_marks: a
+    /// class map's texture, gen/model/features/class_textures.h); "" when
+    /// the classes stand at heights.
     std::string texture;
     bool texture_shared = false;  ///< one of the rarer classes that share the last texture
     int64_t border_cells = 0;     ///< of its cells, those on the grid's edge
@@ -37,8 +38,9 @@ inline constexpr double kBackgroundBorderShare = 0.5;
 /// from `names` (the file's, gen/field/raster.h) where it has one. With
 /// `order` (FieldInput::class_order) the cells hold ranks, 1 for order[0],
 /// and each class is told by its code; without, they hold the codes.
-/// Lowest first; with textures (Scene::textures), commonest first, the
-/// order the textures are handed out in.
+/// Lowest first; told apart by a feature (Feature::class_marks: a class
+/// map's textures), in its order (commonest first, the order the textures
+/// are handed out in).
 std::vector<SceneClass> sceneClasses(const Scene& scene, const std::vector<RasterClass>& names,
                                      const std::vector<double>& order = {});
 

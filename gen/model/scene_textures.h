@@ -1,4 +1,5 @@
-// The tactile textures of a class map as the Scene holds them: data only.
+// The tactile textures of a class map as the Scene holds them (in
+// Scene::features, gen/model/feature_state.h): data only.
 // Where they come from is gen/model/features/class_textures.h; the mesher,
 // the OpenSCAD file and the verifier draw and read them through the shaped
 // tops (scene_top_shapes.h) they are made of.
@@ -24,7 +25,8 @@ enum class Texture : uint8_t {
 /// How many textures a finger tells apart on a map: the five above.
 inline constexpr int kTextureCount = 5;
 
-/// What the user asked for (SceneParams::class_textures).
+/// What the user asked for (--classes), in SceneParams::requests: none
+/// there, textures wanted, up to kTextureCount.
 struct ClassTextureRequest {
     /// A class map (FieldInput::categorical) without --class-order gets textures at one height.
     bool wanted = true;
@@ -40,7 +42,7 @@ struct ClassTexture {
     int64_t cells = 0;        ///< the field's cells of this class (what the order is by)
 };
 
-/// The textures as placed (Scene::textures).
+/// The textures as placed (in Scene::features).
 struct SceneTextures {
     int64_t height_units = 0;  ///< every class's top above the floor, z units
     int64_t relief_units = 0;  ///< a dimple's depth, a bump's height, a ridge's step, z units

@@ -14,7 +14,9 @@
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/scene_scale.h"
+#include "gen/util/error.h"
 #include "tests/support/fields.h"
+#include "verify/tactile.h"
 
 namespace tsf {
 namespace {
@@ -34,21 +36,25 @@ SceneParams tabAndScale() {
     return p;
 }
 
-TEST(FeatureRegistry, TheLegendIsPlacedFirstThenTheTabWithTheMarksThenTheFeaturesBesideThePillars) {
+TEST(FeatureRegistry, TheTexturesAreDecidedFirstThenTheLegendThenTheTabWithTheMarksThenTheFeaturesBesideThePillars) {
     const std::vector<const Feature*>& all = features();
-    ASSERT_GE(all.size(), 2u);
-    EXPECT_STREQ(all[0]->name, "legend");
-    EXPECT_EQ(all[0]->phase, FeaturePhase::BeforeMarks);
-    EXPECT_STREQ(all[1]->name, "marks.tab");
-    EXPECT_EQ(all[1]->phase, FeaturePhase::Marks);
+    ASSERT_GE(all.size(), 3u);
+    EXPECT_STREQ(all[0]->name, "class_textures");
+    EXPECT_EQ(all[0]->phase, FeaturePhase::Frame);
+    EXPECT_STREQ(all[1]->name, "legend");
+    EXPECT_EQ(all[1]->phase, FeaturePhase::BeforeMarks);
+    EXPECT_STREQ(all[2]->name, "marks.tab");
+    EXPECT_EQ(all[2]->phase, FeaturePhase::Marks);
     // The phases split the registry in its own order, as buildScene places
-    // them: BeforeMarks, then Marks, then Beside.
-    EXPECT_EQ(featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Marks, FeaturePhase::Beside}), all);
+    // them: Frame, BeforeMarks, then Marks, then Beside.
+    EXPECT_EQ(featuresOf({FeaturePhase::Frame, FeaturePhase::BeforeMarks, FeaturePhase::Marks, FeaturePhase::Beside}),
+              all);
     EXPECT_EQ(featuresOf({FeaturePhase::Marks}).size(), 1u);
+    EXPECT_EQ(featuresOf({FeaturePhase::Frame}).size(), 1u);
     // Asked in another order, phase by phase in that order.
     const std::vector<const Feature*> marks_first =
         featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside});
-    ASSERT_EQ(marks_first.size(), all.size());
+    ASSERT_EQ(marks_first.size(), all.size() - 1);
     EXPECT_STREQ(marks_first[0]->name, "marks.tab");
     EXPECT_STREQ(marks_first[1]->name, "legend");
 }
@@ -92,6 +98,55 @@ TEST(FeatureRegistry, TheTabsBedWidthComesAfterTheFeaturesBesideThePillars) {
     what.clear();
     for (const SideWidth& w : attachmentSideWidths(in_data)) what.push_back(w.what);
     EXPECT_EQ(what, (std::vector<std::string>{"the tactile scale"}));
+}
+
+// A feature that measures heights (the scale) is refused, before it is
+// placed, where a feature of the frame stands every value at one height
+// (a class map's textures), with that feature's reason; with the classes
+// given an order they stand at heights and the scale stands.
+TEST(FeatureRegistry, AFeatureThatMeasuresHeightsIsRefusedWhereAFeatureStandsEveryValueAtOneHeight) {
+    HexField classes = test::fieldFromFunction(10, 6, [](int c, int r) { return c < 5 ? 41.0 : r < 2 ? 90.0 : 11.0; });
+    classes.input.categorical = true;
+    SceneParams p = tabAndScale();
+    try {
+        buildScene(classes, p);
+        ADD_FAILURE() << "the scale was placed on a class map at one height";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("--scale measures heights, and a class map has one height", 0), 0u)
+            << e.what();
+    }
+    const Scene plain = buildScene(classes, test::smallParams());
+    ASSERT_TRUE(featureOneHeight(plain));
+    EXPECT_TRUE(featureTopShaping(plain)) << "its classes are told apart by their tops";
+    EXPECT_FALSE(featureClassMarks(plain).empty());
+
+    // Ordered classes (ranks, one even step each): the heights are the
+    // value mapping's, nothing is said instead of them, the scale stands.
+    HexField ordered = test::fieldFromFunction(10, 6, [](int c, int r) { return c < 5 ? 1.0 : r < 2 ? 2.0 : 3.0; });
+    ordered.input.categorical = true;
+    ordered.input.class_order = {41, 90, 11};
+    const Scene measured = buildScene(ordered, p);
+    EXPECT_FALSE(featureOneHeight(measured));
+    EXPECT_FALSE(featureTopShaping(measured));
+    EXPECT_TRUE(featureClassMarks(measured).empty());
+    EXPECT_TRUE(sceneMeasures(measured));
+}
+
+// The features' thresholds join the tactile check's table after the rows
+// of the check they belong to.
+TEST(FeatureRegistry, TheFeaturesThresholdsFollowTheRowsOfTheirCheck) {
+    const std::vector<FeatureThreshold> own = featureThresholds();
+    ASSERT_FALSE(own.empty());
+    const std::vector<TactileThreshold>& table = tactileThresholds();
+    for (const FeatureThreshold& f : own) {
+        size_t at = table.size();
+        for (size_t i = 0; i < table.size(); ++i)
+            if (std::string(table[i].what) == f.what) at = i;
+        ASSERT_LT(at, table.size()) << f.what;
+        EXPECT_STREQ(table[at].id, f.check);
+        EXPECT_EQ(table[at].value, f.value);
+        EXPECT_STREQ(table[at - 1].id, f.check) << f.what << " follows a row of another check";
+    }
 }
 
 }  // namespace

@@ -104,6 +104,23 @@ const std::vector<MigratedFeature>& migrated() {
              // least rise and width) does not yet say.
              "verify/tactile.cpp",
          }},
+        {"class textures",
+         std::regex(R"(\b(SceneTextures|ClassTexture|ClassTextureRequest|Texture|textureName|textureNamed|textureFeel|)"
+                    R"(sceneTextures|classTexturesApply|decideClassTextures|classTextureMapping|classTextureLegendLines|)"
+                    R"(classTexture|classTextureShapes|frameClassTextures|classTexturesRecord|readClassTexturesRecord|)"
+                    R"(classTexturesFactsJson|classTexturesFactsLines|classTexturesFeature|kTexture\w+|)"
+                    R"(kMinFeltTextureReliefMm|class_textures)\b|\.textures\b|features/class_textures|scene_textures\.h)"),
+         {
+             // Its own files.
+             "gen/model/features/class_textures.h", "gen/model/features/class_textures.cpp",
+             "gen/model/features/class_textures_record.h", "gen/model/features/class_textures_record.cpp",
+             "gen/model/features/class_textures_feature.h", "gen/model/features/class_textures_feature.cpp",
+             "gen/model/scene_textures.h",
+             // The registry.
+             "gen/model/feature_registry.cpp",
+             // The command line: --classes fills in its request.
+             "app/gen_options.cpp",
+         }},
     };
     return list;
 }

@@ -14,6 +14,7 @@
 #include "same_solid.h"
 #include "tests/support/fields.h"
 #include "gen/mesh/direct_mesher.h"
+#include "gen/model/features/class_textures.h"
 #include "gen/model/features/scale.h"
 #include "gen/mesh/halves_mesh.h"
 #include "gen/mesh_io/stl_reader.h"
@@ -168,8 +169,8 @@ TEST_P(CrossEngineClassTextures, RendersTheSameSolidAsTheDirectMesher) {
     p.marks = MarkParams{};  // the tab, against textured walls
     p.pitch_mm = 5.0;
     const Scene scene = buildScene(field, p);
-    ASSERT_TRUE(scene.textures.has_value());
-    EXPECT_EQ(scene.textures->textures_used, 5);
+    ASSERT_TRUE((sceneTextures(scene) != nullptr));
+    EXPECT_EQ(sceneTextures(scene)->textures_used, 5);
     EXPECT_EQ(scene.y_scale, kRowsAPitchApart);
     ASSERT_TRUE(scene.marks.tab.has_value());
     const fs::path dir = test::scratchDir("textures_" + engine_name + "_" + toString(bottom));

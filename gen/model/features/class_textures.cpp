@@ -42,12 +42,16 @@ const char* textureFeel(Texture t) {
     return "";
 }
 
+const SceneTextures* sceneTextures(const Scene& s) { return s.features.get<SceneTextures>(); }
+
 bool classTexturesApply(const HexField& field, const SceneParams& p) {
-    return field.input.categorical && field.input.class_order.empty() && p.class_textures.wanted;
+    const ClassTextureRequest* rq = p.requests.get<ClassTextureRequest>();
+    return field.input.categorical && field.input.class_order.empty() && (!rq || rq->wanted);
 }
 
 SceneTextures decideClassTextures(const HexField& field, const SceneParams& p, double pitch_mm, double y_scale) {
-    const int most = p.class_textures.max_textures;
+    const ClassTextureRequest* rq = p.requests.get<ClassTextureRequest>();
+    const int most = rq ? rq->max_textures : kTextureCount;
     if (most < 1 || most > kTextureCount)
         throw InputError("--classes must be 1 to " + std::to_string(kTextureCount) + " (got " + std::to_string(most) +
                          "): a finger tells " + std::to_string(kTextureCount) +
@@ -130,23 +134,33 @@ const ClassTexture* classTexture(const SceneTextures& t, double code) {
     return nullptr;
 }
 
+void frameClassTextures(Scene& s, const HexField& field) {
+    if (!classTexturesApply(field, s.params)) return;
+    const SceneTextures& t = s.features.set(decideClassTextures(field, s.params, s.pitch_mm, s.y_scale));
+    s.mapping = classTextureMapping(field, s.zMm(t.height_units));
+    // The braille legend names the classes by texture where they fit.
+    if (s.params.words.inBraille() && s.params.words.key_lines.empty())
+        s.params.words.key_lines = classTextureLegendLines(t, field.input.classes);
+}
+
 void classTextureShapes(const Scene& s, std::vector<PlaneSlope>& slopes, std::vector<int32_t>& centre_dz) {
     slopes.assign(s.keptCount(), {});
     centre_dz.assign(s.keptCount(), 0);
-    if (!s.textures) return;
-    const double relief_mm = s.zMm(s.textures->relief_units);
+    const SceneTextures* textures = sceneTextures(s);
+    if (!textures) return;
+    const double relief_mm = s.zMm(textures->relief_units);
     const double row_spacing_mm = latticeY({0, 3}, s.pitch_mm, s.y_scale);  // rows are 3 lattice j apart
     for (size_t k = 0; k < s.keptCount(); ++k) {
         if (s.kind[k] != CellKind::Data) continue;
         if (!s.drawn_by_face.empty() && s.drawn_by_face[k]) continue;
-        const ClassTexture* c = classTexture(*s.textures, s.value[k]);
+        const ClassTexture* c = classTexture(*textures, s.value[k]);
         if (!c) continue;
         switch (c->texture) {
             case Texture::Level: break;
             case Texture::RidgesEastWest: slopes[k].y = relief_mm / row_spacing_mm; break;
             case Texture::RidgesNorthSouth: slopes[k].x = relief_mm / s.pitch_mm; break;
-            case Texture::Dimples: centre_dz[k] = -int32_t(s.textures->relief_units); break;
-            case Texture::Bumps: centre_dz[k] = int32_t(s.textures->relief_units); break;
+            case Texture::Dimples: centre_dz[k] = -int32_t(textures->relief_units); break;
+            case Texture::Bumps: centre_dz[k] = int32_t(textures->relief_units); break;
         }
     }
 }

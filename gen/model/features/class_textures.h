@@ -29,6 +29,7 @@
 #include "gen/field/bin_regression.h"
 #include "gen/field/hex_field.h"
 #include "gen/model/scene.h"
+#include "gen/model/scene_textures.h"
 
 namespace tsf {
 
@@ -50,8 +51,12 @@ std::optional<Texture> textureNamed(const std::string& name);
 /// How the texture feels, one phrase for the key ("flat tops", ...).
 const char* textureFeel(Texture texture);
 
+/// The textures placed on `scene` (Scene::features); null without them.
+const SceneTextures* sceneTextures(const Scene& scene);
+
 /// True when `field` is a class map whose classes get textures: categorical,
-/// no class order given, textures wanted.
+/// no class order given, textures wanted (ClassTextureRequest in
+/// SceneParams::requests; none there: wanted, up to kTextureCount).
 bool classTexturesApply(const HexField& field, const SceneParams& params);
 
 /// The textures of a class map's classes (classTexturesApply), by the
@@ -76,7 +81,13 @@ std::vector<std::string> classTextureLegendLines(const SceneTextures& textures, 
 /// The texture of class `code`; none when the Scene has no such class.
 const ClassTexture* classTexture(const SceneTextures& textures, double code);
 
-/// Per kept cell of `scene` (heights and marks placed, scene.textures set):
+/// Decides a class map's textures once the frame is set (classTexturesApply;
+/// nothing otherwise): keeps them in Scene::features, stands every class at
+/// their one height (Scene::mapping) and, for the braille legend, names the
+/// classes by texture (SceneParams::words.key_lines) unless lines are given.
+void frameClassTextures(Scene& scene, const HexField& field);
+
+/// Per kept cell of `scene` (heights and marks placed, textures decided):
 /// the slope of a ridged top (mm per mm, for resolveTopShapes) and the
 /// centre offset of a dimpled or bumped one (z units). Cells without data
 /// and cells drawn by a mark's face stay level.

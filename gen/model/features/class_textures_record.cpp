@@ -13,13 +13,14 @@ namespace tsf {
 using namespace sidecar;
 
 json classTexturesRecord(const Scene& s) {
-    if (!s.textures) return nullptr;
+    const SceneTextures* t = sceneTextures(s);
+    if (!t) return nullptr;
     json classes = json::array();
-    for (const ClassTexture& c : s.textures->classes)
+    for (const ClassTexture& c : t->classes)
         classes.push_back({c.code, textureName(c.texture), c.shared, c.cells});
-    return {{"height_units", s.textures->height_units},
-            {"relief_units", s.textures->relief_units},
-            {"textures_used", s.textures->textures_used},
+    return {{"height_units", t->height_units},
+            {"relief_units", t->relief_units},
+            {"textures_used", t->textures_used},
             {"classes", classes}};
 }
 
@@ -43,24 +44,27 @@ void readClassTexturesRecord(const json& record, const std::string& path, int /*
         t.classes.push_back({toNumber(c[0], p + "[0]"), *texture, c[2].get<bool>(), toInt(c[3], p + "[3]")});
     }
     if (t.classes.empty()) fail(join(path, "classes"), "a class map has at least one class");
-    s.textures = std::move(t);
-    s.params.class_textures.max_textures = s.textures->textures_used;
+    ClassTextureRequest rq;
+    rq.max_textures = t.textures_used;
+    s.params.requests.set(rq);
+    s.features.set(std::move(t));
 }
 
 json classTexturesFactsJson(const Scene& s) {
-    if (!s.textures) return nullptr;
+    const SceneTextures* t = sceneTextures(s);
+    if (!t) return nullptr;
     json shared = json::array();
-    for (const ClassTexture& c : s.textures->classes)
+    for (const ClassTexture& c : t->classes)
         if (c.shared) shared.push_back(c.code);
-    return {{"height_mm", s.zMm(s.textures->height_units)},
-            {"relief_mm", s.zMm(s.textures->relief_units)},
-            {"textures_used", s.textures->textures_used},
+    return {{"height_mm", s.zMm(t->height_units)},
+            {"relief_mm", s.zMm(t->relief_units)},
+            {"textures_used", t->textures_used},
             {"shared", shared}};
 }
 
 std::string classTexturesFactsLines(const Scene& s) {
-    if (!s.textures) return "";
-    const SceneTextures& t = *s.textures;
+    if (!sceneTextures(s)) return "";
+    const SceneTextures& t = *sceneTextures(s);
     std::ostringstream o;
     o << "  textures  the classes are nominal: every class " << formatFixed(s.zMm(t.height_units), 2)
       << " mm above the floor, told apart by " << t.textures_used << (t.textures_used == 1 ? " texture" : " textures")

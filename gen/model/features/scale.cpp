@@ -108,9 +108,6 @@ void placeScale(Scene& s) {
     const ScaleRequest* request = s.params.requests.get<ScaleRequest>();
     if (!request || s.keptCount() == 0) return;
     const ScaleRequest& rq = *request;
-    if (s.textures)
-        throw InputError("--scale measures heights, and a class map has one height (its classes stand at one height "
-                         "and are told apart by texture); give --class-order if the classes are ordered, for heights");
     if (s.params.bottom == Bottom::Mirrored)
         throw InputError("--scale: the tactile scale stands on the floor of a flat model; a mirrored model has none. "
                          "Leave out --mirror, or leave out --scale");

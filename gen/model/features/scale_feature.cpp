@@ -21,6 +21,8 @@ std::optional<SideWidth> scaleSideWidth(const SceneParams& p) {
 
 bool scaleMeasures(const Scene& s) { return sceneScale(s) != nullptr; }
 
+bool scaleAsked(const SceneParams& p) { return p.requests.get<ScaleRequest>() != nullptr; }
+
 // Not yet cut into tiles: a tile would hold a piece of a staircase.
 bool scaleSurvivesTiles(const Scene& s) { return sceneScale(s) == nullptr; }
 
@@ -50,6 +52,8 @@ const Feature& scaleFeature() {
         .measures = scaleMeasures,
         .survives_tiles = scaleSurvivesTiles,
         .tactile_claims = scaleTactileClaims,
+        .asked = scaleAsked,
+        .needs_heights = true,  // a class map's classes at one height have none to measure
     };
     return feature;
 }

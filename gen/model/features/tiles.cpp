@@ -386,7 +386,7 @@ TileLayout planTiles(const Scene& s, const std::vector<BoxMm>& attached, double 
     if (const Feature* f = featureRefusingTiles(s))
         throw InputError(std::string("--tile cannot cut what ") + f->option + " adds into tiles (a tile would hold a piece of it); leave out " +
                          f->option + " to tile the model");
-    if (s.params.bottom != Bottom::Flat || s.halves || s.textures || s.params.tilt != TiltSource::None)
+    if (s.params.bottom != Bottom::Flat || s.halves || featureTopShaping(s) || s.params.tilt != TiltSource::None)
         throw InputError("--tile cuts a flat model with level tops, without a legend or a scale (not yet with --mirror, "
                          "--tilt, class textures, --title, --units or --scale)");
     if (s.keptCount() == 0) throw InputError("--tile: the model has no cells");

@@ -23,14 +23,14 @@ CellHeights snapCellHeights(const HexField& field, const ValueMapping& mapping, 
 }
 
 int64_t lowerToMirroredFloor(const HexField& field, const std::vector<uint8_t>& keep, const SceneParams& params,
-                             int64_t texture_relief_units, CellHeights& heights) {
+                             int64_t relief_below_units, CellHeights& heights) {
     if (params.bottom != Bottom::Mirrored) return 0;
     const size_t n = field.values.size();
     int64_t shift = std::numeric_limits<int64_t>::max();
     for (size_t idx = 0; idx < n; ++idx)
         if (keep[idx] && !std::isnan(field.values[idx])) shift = std::min(shift, heights.units[idx]);
     if (shift == std::numeric_limits<int64_t>::max() || params.tilt != TiltSource::None) shift = 0;
-    shift = std::max<int64_t>(0, shift - texture_relief_units);
+    shift = std::max<int64_t>(0, shift - relief_below_units);
     for (size_t idx = 0; idx < n; ++idx)
         if (!std::isnan(field.values[idx])) heights.units[idx] = std::max<int64_t>(0, heights.units[idx] - shift);
     return shift;

@@ -28,11 +28,11 @@ CellHeights snapCellHeights(const HexField& field, const ValueMapping& mapping, 
 /// every data cell's height by that shift (never below 0) and returns it,
 /// units; 0 for a flat model. The shift is taken over every cell the
 /// culling keeps, before a tile takes its share, so the tiles of one model
-/// share it. Tops shaped below their level (class textures' dimples and
-/// ridges, relief_units) mirror into the underside: their relief is kept
-/// below the lowest cell. Tilted tops keep the whole height below them
+/// share it. Tops a feature shapes below their level (a class map's
+/// dimples and ridges: Feature::relief_below_units, gen/model/feature.h)
+/// mirror into the underside: that relief is kept below the lowest cell. Tilted tops keep the whole height below them
 /// (no shift) until their corners are resolved (shaped_tops.h).
 int64_t lowerToMirroredFloor(const HexField& field, const std::vector<uint8_t>& keep, const SceneParams& params,
-                             int64_t texture_relief_units, CellHeights& heights);
+                             int64_t relief_below_units, CellHeights& heights);
 
 }  // namespace tsf

@@ -6,7 +6,7 @@
 #include "gen/field/resample.h"
 #include "gen/model/phases/scene_limits.h"
 #include "gen/model/phases/value_mapping.h"
-#include "gen/model/features/class_textures.h"
+#include "gen/model/feature_registry.h"
 #include "gen/util/error.h"
 
 namespace tsf {
@@ -71,14 +71,9 @@ Scene sceneFrame(const HexField& field, const SceneParams& params) {
           << " mm a fingertip tells apart: neighbouring values will feel like texture (fewer --bins, or a larger --cell)";
         s.notes.push_back(w.str());
     }
-    // A class map's classes stand at one height, told apart by texture.
-    if (classTexturesApply(field, params)) {
-        s.textures = decideClassTextures(field, params, s.pitch_mm, s.y_scale);
-        s.mapping = classTextureMapping(field, s.zMm(s.textures->height_units));
-        // The braille legend names the classes by texture where they fit.
-        if (s.params.words.inBraille() && s.params.words.key_lines.empty())
-            s.params.words.key_lines = classTextureLegendLines(*s.textures, field.input.classes);
-    }
+    // The features of the pillars themselves (a class map's classes at one
+    // height, told apart by texture) may stand the values at their own.
+    frameFeatures(s, field);
     return s;
 }
 

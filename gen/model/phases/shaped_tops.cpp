@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
-#include "gen/model/features/class_textures.h"
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/tiles.h"
 #include "gen/model/features/tilt.h"
 #include "gen/model/features/top_shapes.h"
-#include "gen/util/number_format.h"
 
 namespace tsf {
 
@@ -62,24 +62,26 @@ void shapeTops(const HexField& field, const std::vector<int64_t>& h_units, const
     if (params.structural_texture && params.halves)
         s.notes.push_back("structural cells are left level on a model cut into halves (the cut and the pin "
                           "holes are drawn on level cells): give --no-texture-structural to silence this");
-    if (params.tilt != TiltSource::None || (params.structural_texture && !params.halves) || s.textures) {
+    // A feature's shaped tops (a class map's textures), drawn as they are:
+    // such a feature refuses --tilt (its slopes replace the tilt's).
+    std::optional<TopShaping> shaping = featureTopShaping(s);
+    if (params.tilt != TiltSource::None || (params.structural_texture && !params.halves) || shaping) {
         const std::vector<uint8_t> structural = structuralCells(field, h_units, params, s);
         std::vector<PlaneSlope> slopes = tiltSlopes(field, s, params.tilt);
         std::vector<int32_t> centre_dz;
-        if (s.textures) classTextureShapes(s, slopes, centre_dz);  // no --tilt with textures (decideClassTextures)
+        if (shaping) {
+            slopes = std::move(shaping->slopes);
+            centre_dz = std::move(shaping->centre_dz);
+        }
         // Nothing to shape (a raster's cells are never structural, and no
-        // tilt or texture was asked for): every top stays a level hexagon,
-        // with no per-cell shape lists to build, check and carry.
-        const bool any = params.tilt != TiltSource::None || s.textures ||
+        // tilt or shaped tops were asked for): every top stays a level
+        // hexagon, with no per-cell shape lists to build, check and carry.
+        const bool any = params.tilt != TiltSource::None || shaping ||
                          std::any_of(structural.begin(), structural.end(), [](uint8_t b) { return b != 0; });
-        if (any) resolveTopShapes(s, slopes, s.textures ? 1.0 : params.steepness, structural, centre_dz);
+        if (any) resolveTopShapes(s, slopes, shaping ? 1.0 : params.steepness, structural, centre_dz);
         if (any && params.bottom == Bottom::Mirrored && params.tilt != TiltSource::None) lowerToLowestCorner(s);
     }
-    if (s.textures && s.textures->relief_units * s.z_snap_mm < kMinFeltTextureReliefMm - 1e-9)
-        s.notes.push_back("the class textures rise only " + formatSignificant(s.zMm(s.textures->relief_units), 2) +
-                          " mm on cells " + formatSignificant(s.pitch_mm, 3) + " mm across, below the " +
-                          formatSignificant(kMinFeltTextureReliefMm) +
-                          " mm a finger finds without searching: larger cells (fewer --bins, a larger --cell)");
+    if (shaping && !shaping->note.empty()) s.notes.push_back(shaping->note);
 }
 
 }  // namespace tsf

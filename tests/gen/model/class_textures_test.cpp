@@ -43,19 +43,19 @@ void expectVerified(const Scene& s, const char* what) {
 
 TEST(ClassTextures, TheCommonestClassesGetTheTexturesInTurnAtOneHeight) {
     const Scene s = buildScene(threeClasses(), test::smallParams());
-    ASSERT_TRUE(s.textures);
-    ASSERT_EQ(s.textures->classes.size(), 3u);
-    EXPECT_EQ(s.textures->classes[0].code, 41.0);
-    EXPECT_EQ(s.textures->classes[0].texture, Texture::Level);
-    EXPECT_EQ(s.textures->classes[1].code, 11.0);
-    EXPECT_EQ(s.textures->classes[1].texture, Texture::RidgesEastWest);
-    EXPECT_EQ(s.textures->classes[2].code, 90.0);
-    EXPECT_EQ(s.textures->classes[2].texture, Texture::Dimples);
-    EXPECT_EQ(s.textures->textures_used, 3);
+    ASSERT_TRUE(sceneTextures(s));
+    ASSERT_EQ(sceneTextures(s)->classes.size(), 3u);
+    EXPECT_EQ(sceneTextures(s)->classes[0].code, 41.0);
+    EXPECT_EQ(sceneTextures(s)->classes[0].texture, Texture::Level);
+    EXPECT_EQ(sceneTextures(s)->classes[1].code, 11.0);
+    EXPECT_EQ(sceneTextures(s)->classes[1].texture, Texture::RidgesEastWest);
+    EXPECT_EQ(sceneTextures(s)->classes[2].code, 90.0);
+    EXPECT_EQ(sceneTextures(s)->classes[2].texture, Texture::Dimples);
+    EXPECT_EQ(sceneTextures(s)->textures_used, 3);
     // 5 mm cells: the full 1 mm relief leans atan(1 / 2.5) = 21.8 degrees at
     // most, under the 26.6 a top may; every class 2 mm above the 2 mm base.
-    EXPECT_EQ(s.textures->relief_units, 1000);
-    EXPECT_EQ(s.textures->height_units, 2000);
+    EXPECT_EQ(sceneTextures(s)->relief_units, 1000);
+    EXPECT_EQ(sceneTextures(s)->height_units, 2000);
     for (size_t k = 0; k < s.keptCount(); ++k) EXPECT_EQ(s.top[k], 4000) << "one height for every class";
 
     for (size_t k = 0; k < s.keptCount(); ++k) {
@@ -116,29 +116,29 @@ TEST(ClassTextures, RarerClassesShareTheLastTexture) {
     f.input.categorical = true;
     SceneParams p = test::smallParams();
     const Scene all = buildScene(f, p);
-    ASSERT_TRUE(all.textures);
-    EXPECT_EQ(all.textures->textures_used, kTextureCount);
+    ASSERT_TRUE(sceneTextures(all));
+    EXPECT_EQ(sceneTextures(all)->textures_used, kTextureCount);
     size_t shared = 0;
-    for (const ClassTexture& c : all.textures->classes) {
+    for (const ClassTexture& c : sceneTextures(all)->classes) {
         shared += c.shared;
         if (c.shared) EXPECT_EQ(c.texture, Texture::Bumps);
     }
-    EXPECT_EQ(all.textures->classes.size(), 7u);
+    EXPECT_EQ(sceneTextures(all)->classes.size(), 7u);
     EXPECT_EQ(shared, 3u) << "seven classes, five textures: the three rarest share the fifth";
 
-    p.class_textures.max_textures = 2;
+    p.requests.set(ClassTextureRequest{true, 2});
     const Scene two = buildScene(f, p);
-    EXPECT_EQ(two.textures->textures_used, 2);
-    EXPECT_EQ(two.textures->classes[0].texture, Texture::Level);
-    EXPECT_FALSE(two.textures->classes[0].shared);
-    for (size_t i = 1; i < two.textures->classes.size(); ++i) {
-        EXPECT_EQ(two.textures->classes[i].texture, Texture::RidgesEastWest);
-        EXPECT_TRUE(two.textures->classes[i].shared);
+    EXPECT_EQ(sceneTextures(two)->textures_used, 2);
+    EXPECT_EQ(sceneTextures(two)->classes[0].texture, Texture::Level);
+    EXPECT_FALSE(sceneTextures(two)->classes[0].shared);
+    for (size_t i = 1; i < sceneTextures(two)->classes.size(); ++i) {
+        EXPECT_EQ(sceneTextures(two)->classes[i].texture, Texture::RidgesEastWest);
+        EXPECT_TRUE(sceneTextures(two)->classes[i].shared);
     }
     expectVerified(two, "two textures");
 
     for (const int bad : {0, 6}) {
-        p.class_textures.max_textures = bad;
+        p.requests.set(ClassTextureRequest{true, bad});
         EXPECT_THROW(buildScene(f, p), InputError) << bad;
     }
 }
@@ -148,10 +148,10 @@ TEST(ClassTextures, SmallCellsGetALowerReliefAndTheSummarySaysWhenItIsHardToFeel
     p.pitch_mm = 3.0;
     const Scene three = buildScene(threeClasses(), p);
     // tan(26.57 deg) x 1.5 mm, less a z step: 0.749 mm.
-    EXPECT_EQ(three.textures->relief_units, 749);
+    EXPECT_EQ(sceneTextures(three)->relief_units, 749);
     p.pitch_mm = 1.5;
     const Scene small = buildScene(threeClasses(), p);
-    EXPECT_EQ(small.textures->relief_units, 374);
+    EXPECT_EQ(sceneTextures(small)->relief_units, 374);
     bool said = false;
     for (const std::string& n : small.notes) said = said || n.find("class textures rise only") != std::string::npos;
     EXPECT_TRUE(said);
@@ -166,11 +166,11 @@ TEST(ClassTextures, AtLayersOfPointTwoTheReliefIsThreeWholeLayersWhereTheCellsAl
     p.pitch_mm = 3.0;
     p.z_snap_mm = 0.2;
     const Scene three = buildScene(threeClasses(), p);
-    EXPECT_EQ(three.textures->relief_units, 3);
+    EXPECT_EQ(sceneTextures(three)->relief_units, 3);
     expectVerified(three, "3 mm cells at 0.2 mm layers");
     p.pitch_mm = 2.0;
     const Scene two = buildScene(threeClasses(), p);
-    EXPECT_EQ(two.textures->relief_units, 2);
+    EXPECT_EQ(sceneTextures(two)->relief_units, 2);
     bool said = false;
     for (const std::string& n : two.notes) said = said || n.find("class textures rise only 0.4 mm") != std::string::npos;
     EXPECT_TRUE(said);
@@ -179,13 +179,13 @@ TEST(ClassTextures, AtLayersOfPointTwoTheReliefIsThreeWholeLayersWhereTheCellsAl
 TEST(ClassTextures, OrderedClassesAndMeasurementsStandAtHeights) {
     HexField ordered = threeClasses();
     ordered.input.class_order = {41, 11, 90};
-    EXPECT_FALSE(buildScene(ordered, test::smallParams()).textures);
+    EXPECT_FALSE(sceneTextures(buildScene(ordered, test::smallParams())));
     HexField measured = threeClasses();
     measured.input.categorical = false;
-    EXPECT_FALSE(buildScene(measured, test::smallParams()).textures);
+    EXPECT_FALSE(sceneTextures(buildScene(measured, test::smallParams())));
     SceneParams off = test::smallParams();
-    off.class_textures.wanted = false;
-    EXPECT_FALSE(buildScene(threeClasses(), off).textures);
+    off.requests.set(ClassTextureRequest{false, kTextureCount});
+    EXPECT_FALSE(sceneTextures(buildScene(threeClasses(), off)));
 }
 
 TEST(ClassTextures, WhatCannotBeCombinedWithTexturesIsRefused) {
@@ -210,13 +210,13 @@ TEST(ClassTextures, TheSidecarHoldsTheTexturesAsDecided) {
     const auto dir = test::scratchDir("class_textures_sidecar");
     writeSceneJson(s, (dir / "m.scene.json").string());
     const Scene back = readSceneJson((dir / "m.scene.json").string());
-    ASSERT_TRUE(back.textures);
-    EXPECT_EQ(back.textures->relief_units, s.textures->relief_units);
-    EXPECT_EQ(back.textures->height_units, s.textures->height_units);
-    ASSERT_EQ(back.textures->classes.size(), s.textures->classes.size());
-    for (size_t i = 0; i < s.textures->classes.size(); ++i) {
-        EXPECT_EQ(back.textures->classes[i].code, s.textures->classes[i].code);
-        EXPECT_EQ(back.textures->classes[i].texture, s.textures->classes[i].texture);
+    ASSERT_TRUE(sceneTextures(back));
+    EXPECT_EQ(sceneTextures(back)->relief_units, sceneTextures(s)->relief_units);
+    EXPECT_EQ(sceneTextures(back)->height_units, sceneTextures(s)->height_units);
+    ASSERT_EQ(sceneTextures(back)->classes.size(), sceneTextures(s)->classes.size());
+    for (size_t i = 0; i < sceneTextures(s)->classes.size(); ++i) {
+        EXPECT_EQ(sceneTextures(back)->classes[i].code, sceneTextures(s)->classes[i].code);
+        EXPECT_EQ(sceneTextures(back)->classes[i].texture, sceneTextures(s)->classes[i].texture);
     }
     expectVerified(back, "read back");
     // A texture the sidecar does not know is an error naming where it is.
