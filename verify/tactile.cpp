@@ -213,6 +213,21 @@ std::vector<uint8_t> noValueSamples(const TopHeightField& top, const Scene* s) {
     std::vector<uint8_t> out;
     if (!s) return out;
     out.assign(top.z.size(), 1);
+    // (x, y) lies so far inside the hexagon of (col, row) that the points
+    // kRimMm from it lie inside too, by more than any rounding: those four
+    // would find the same cell, and need not be looked up (most samples of
+    // a top are such). In pitches, hexagon centred, across flats 1 in x
+    // (hexCellAt's frame): inside is |dx| <= 1/2 and |dx| / 2 + |dy| sqrt(3)
+    // / 2 <= 1/2, and a step of ex in x and ey in y moves those by at most
+    // ex and ex / 2 + ey sqrt(3) / 2.
+    const double ex = kRimMm / s->pitch_mm, ey = kRimMm / (s->pitch_mm * s->y_scale);
+    constexpr double kSurely = 1e-9;  // pitches: far beyond the roundings of these few operations
+    const auto wellInside = [&](double x, double y, int32_t col, int32_t row) {
+        const LatticePoint ctr = hexCentre(s->grid, col, row);
+        const double dx = std::fabs(x / s->pitch_mm - double(ctr.i) * 0.5);
+        const double dy = std::fabs(y / (s->pitch_mm * s->y_scale) - double(ctr.j) / (2.0 * kSqrt3));
+        return 0.5 - dx > ex + kSurely && 0.5 - 0.5 * dx - 0.5 * kSqrt3 * dy > 0.5 * ex + 0.5 * kSqrt3 * ey + kSurely;
+    };
     for (int j = 0; j < top.ny; ++j)
         for (int i = 0; i < top.nx; ++i) {
             const double x = top.x0 + i * top.step, y = top.y0 + j * top.step;
@@ -220,16 +235,17 @@ std::vector<uint8_t> noValueSamples(const TopHeightField& top, const Scene* s) {
             // half millimetres, where walls can stand) reads the wall or
             // the floor below it, not the top: a data sample lies inside
             // the cell, a hundredth of a millimetre from every side.
-            const auto cellAt = [&](double dx, double dy) {
-                int32_t col = 0, row = 0;
+            const auto cellAt = [&](double dx, double dy, int32_t& col, int32_t& row) {
                 return hexCellAt(s->grid, (x + dx) / s->pitch_mm, (y + dy) / (s->pitch_mm * s->y_scale), col, row)
                            ? s->keptAt(col, row)
                            : -1;
             };
-            const int32_t cell = cellAt(0, 0);
+            int32_t col = 0, row = 0, c = 0, r = 0;
+            const int32_t cell = cellAt(0, 0, col, row);
             if (cell < 0 || s->kind[size_t(cell)] != CellKind::Data) continue;
-            if (cellAt(kRimMm, 0) == cell && cellAt(-kRimMm, 0) == cell && cellAt(0, kRimMm) == cell &&
-                cellAt(0, -kRimMm) == cell)
+            if (wellInside(x, y, col, row) ||
+                (cellAt(kRimMm, 0, c, r) == cell && cellAt(-kRimMm, 0, c, r) == cell && cellAt(0, kRimMm, c, r) == cell &&
+                 cellAt(0, -kRimMm, c, r) == cell))
                 out[size_t(j) * size_t(top.nx) + size_t(i)] = 0;
         }
     return out;
