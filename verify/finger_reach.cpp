@@ -50,11 +50,11 @@ std::vector<Chord> discChords(double r, double step, int n) {
 // last block are scratch, never read back.
 constexpr size_t kLanes = 4;
 
-// The two kernels below are built twice on x86-64 Linux with g++: for AVX2
+// The two kernels below are built twice with g++ on x86-64 glibc: for AVX2
 // (four doubles a vector) and for the baseline's SSE2 (two), the one the
 // processor runs chosen when the program loads. An add and a max or min
 // per sample: the same IEEE operations at either width, so the same bits.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && defined(__GLIBC__)
 #define TSF_WIDE_VECTORS __attribute__((target_clones("avx2", "default")))
 #else
 #define TSF_WIDE_VECTORS
