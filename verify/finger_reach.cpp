@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 #include "gen/util/number_format.h"
 #include "verify/detail/workers.h"
@@ -177,14 +178,20 @@ struct Sets {
 std::vector<uint32_t> readAnyway(const TopHeightField& h, const std::vector<uint32_t>& reached_by,
                                  const std::vector<uint32_t>& deep_for) {
     const size_t n = h.z.size();
-    std::vector<int32_t> order, asked;
+    // Sorted by height with the height beside the sample (not looked up at
+    // every comparison). How samples of one height are ordered does not
+    // matter: every one of them has joined before a sample is asked about.
+    std::vector<std::pair<double, int32_t>> by_z, asked_by_z;
     for (size_t s = 0; s < n; ++s)
         if (std::isfinite(h.z[s])) {
-            order.push_back(int32_t(s));
-            if (deep_for[s]) asked.push_back(int32_t(s));
+            by_z.push_back({h.z[s], int32_t(s)});
+            if (deep_for[s]) asked_by_z.push_back({h.z[s], int32_t(s)});
         }
-    std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return h.z[size_t(a)] < h.z[size_t(b)]; });
-    std::sort(asked.begin(), asked.end(), [&](int32_t a, int32_t b) { return h.z[size_t(a)] < h.z[size_t(b)]; });
+    std::sort(by_z.begin(), by_z.end());
+    std::sort(asked_by_z.begin(), asked_by_z.end());
+    std::vector<int32_t> order(by_z.size()), asked(asked_by_z.size());
+    for (size_t k = 0; k < by_z.size(); ++k) order[k] = by_z[k].second;
+    for (size_t k = 0; k < asked_by_z.size(); ++k) asked[k] = asked_by_z[k].second;
     Sets sets{std::vector<int32_t>(n, -1), std::vector<uint32_t>(n, 0)};
     std::vector<uint32_t> answer(n, 0);
     size_t next = 0;
