@@ -33,6 +33,11 @@ void rasteriseRange(const Mesh& mesh, size_t from, size_t to, const TopHeightFie
         const Vec3 &a = mesh.positions[q[0]], &b = mesh.positions[q[1]], &c = mesh.positions[q[2]];
         if (!std::isfinite(a.x + a.y + a.z + b.x + b.y + b.z + c.x + c.y + c.z)) continue;
         const P2 pa{a.x, a.y}, pb{b.x, b.y}, pc{c.x, c.y};
+        // Two corners over one point (a wall of the lattice): that edge's
+        // function is exactly 0 and the other two are exact negations of
+        // each other, so no sample is covered with an area; skipped whole.
+        const auto same = [](const P2& u, const P2& v) { return u.x == v.x && u.y == v.y; };
+        if (same(pa, pb) || same(pb, pc) || same(pc, pa)) continue;
         const double z_lo = std::min({a.z, b.z, c.z}), z_hi = std::max({a.z, b.z, c.z});
         // The samples within the shadow's box.
         const double x_lo = std::min({a.x, b.x, c.x}), x_hi = std::max({a.x, b.x, c.x});

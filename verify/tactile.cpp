@@ -74,36 +74,49 @@ bool dihedralAngles(const Mesh& m, std::vector<std::vector<EdgeAngle>>& parts, s
     incident.assign(nv, 0);
     const unsigned workers = detail::workerCount(0);
     parts.assign(workers, {});
+    // One use of an edge x-y by a triangle around x: y, the triangle, and
+    // whether it runs x -> y.
+    struct Use {
+        uint32_t y, t;
+        bool forward;
+    };
     auto work = [&](unsigned w) {
-        std::vector<uint32_t> neighbours;
+        std::vector<Use> uses;
         const size_t from = nv * w / workers, to = nv * (w + 1) / workers;
         for (size_t x = from; x < to; ++x) {
-            neighbours.clear();
-            for (uint32_t e = start[x]; e < start[x + 1]; ++e)
-                for (uint32_t v : m.triangles[around[e]])
-                    if (v != x) neighbours.push_back(v);
-            std::sort(neighbours.begin(), neighbours.end());
-            neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-            incident[x] = uint32_t(neighbours.size());
-            for (const uint32_t y : neighbours) {
-                if (y < x) continue;
-                // The triangles using edge x-y, and which way each runs along it.
-                uint32_t uses = 0, tri[2] = {0, 0};
-                bool forward[2] = {false, false};
-                for (uint32_t e = start[x]; e < start[x + 1]; ++e) {
-                    const auto& q = m.triangles[around[e]];
-                    for (int k = 0; k < 3; ++k) {
-                        const bool fwd = q[k] == x && q[(k + 1) % 3] == y, back = q[k] == y && q[(k + 1) % 3] == x;
-                        if (!fwd && !back) continue;
-                        if (uses < 2) {
-                            tri[uses] = around[e];
-                            forward[uses] = fwd;
-                        }
-                        ++uses;
-                    }
+            // Every side at x of the triangles around it, once: a side
+            // x -> y or y -> x (y != x), in the order of the triangles and of
+            // their sides; then grouped by y, that order kept in a group.
+            uses.clear();
+            for (uint32_t e = start[x]; e < start[x + 1]; ++e) {
+                const auto& q = m.triangles[around[e]];
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t p = q[k], n = q[(k + 1) % 3];
+                    if (p == x && n != x) uses.push_back({n, around[e], true});
+                    else if (n == x && p != x) uses.push_back({p, around[e], false});
                 }
+            }
+            // Insertion (stable, and no buffer to allocate: a vertex has a dozen or two sides).
+            for (size_t i = 1; i < uses.size(); ++i) {
+                const Use u = uses[i];
+                size_t k = i;
+                for (; k > 0 && uses[k - 1].y > u.y; --k) uses[k] = uses[k - 1];
+                uses[k] = u;
+            }
+            uint32_t distinct = 0;
+            for (size_t g = 0; g < uses.size();) {
+                const uint32_t y = uses[g].y;
+                size_t g1 = g;
+                while (g1 < uses.size() && uses[g1].y == y) ++g1;
+                ++distinct;
+                // The triangles using edge x-y (the first two), and which way each runs along it.
+                const size_t used = g1 - g;
+                const uint32_t tri[2] = {uses[g].t, used > 1 ? uses[g + 1].t : 0};
+                const bool forward[2] = {uses[g].forward, used > 1 && uses[g + 1].forward};
+                g = g1;
+                if (y < x) continue;
                 // Measured when one triangle runs x -> y and one y -> x.
-                if (uses != 2 || forward[0] == forward[1]) continue;
+                if (used != 2 || forward[0] == forward[1]) continue;
                 const auto& t1 = m.triangles[tri[0]];
                 const auto& t2 = m.triangles[tri[1]];
                 const Vec3 n1 = cross(sub(m.positions[t1[1]], m.positions[t1[0]]), sub(m.positions[t1[2]], m.positions[t1[0]]));
@@ -119,6 +132,7 @@ bool dihedralAngles(const Mesh& m, std::vector<std::vector<EdgeAngle>>& parts, s
                 const bool convex = dot(n1, sub(m.positions[apex2], m.positions[x])) < 0;
                 parts[w].push_back({uint32_t(x), y, convex ? kPi - phi : kPi + phi});
             }
+            incident[x] = distinct;
         }
     };
     detail::runOnWorkers(workers, [&](unsigned w, const auto&) { work(w); });
@@ -212,6 +226,21 @@ std::vector<uint8_t> noValueSamples(const TopHeightField& top, const Scene* s) {
     std::vector<uint8_t> out;
     if (!s) return out;
     out.assign(top.z.size(), 1);
+    // (x, y) lies so far inside the hexagon of (col, row) that the points
+    // kRimMm from it lie inside too, by more than any rounding: those four
+    // would find the same cell, and need not be looked up (most samples of
+    // a top are such). In pitches, hexagon centred, across flats 1 in x
+    // (hexCellAt's frame): inside is |dx| <= 1/2 and |dx| / 2 + |dy| sqrt(3)
+    // / 2 <= 1/2, and a step of ex in x and ey in y moves those by at most
+    // ex and ex / 2 + ey sqrt(3) / 2.
+    const double ex = kRimMm / s->pitch_mm, ey = kRimMm / (s->pitch_mm * s->y_scale);
+    constexpr double kSurely = 1e-9;  // pitches: far beyond the roundings of these few operations
+    const auto wellInside = [&](double x, double y, int32_t col, int32_t row) {
+        const LatticePoint ctr = hexCentre(s->grid, col, row);
+        const double dx = std::fabs(x / s->pitch_mm - double(ctr.i) * 0.5);
+        const double dy = std::fabs(y / (s->pitch_mm * s->y_scale) - double(ctr.j) / (2.0 * kSqrt3));
+        return 0.5 - dx > ex + kSurely && 0.5 - 0.5 * dx - 0.5 * kSqrt3 * dy > 0.5 * ex + 0.5 * kSqrt3 * ey + kSurely;
+    };
     for (int j = 0; j < top.ny; ++j)
         for (int i = 0; i < top.nx; ++i) {
             const double x = top.x0 + i * top.step, y = top.y0 + j * top.step;
@@ -219,16 +248,17 @@ std::vector<uint8_t> noValueSamples(const TopHeightField& top, const Scene* s) {
             // half millimetres, where walls can stand) reads the wall or
             // the floor below it, not the top: a data sample lies inside
             // the cell, a hundredth of a millimetre from every side.
-            const auto cellAt = [&](double dx, double dy) {
-                int32_t col = 0, row = 0;
+            const auto cellAt = [&](double dx, double dy, int32_t& col, int32_t& row) {
                 return hexCellAt(s->grid, (x + dx) / s->pitch_mm, (y + dy) / (s->pitch_mm * s->y_scale), col, row)
                            ? s->keptAt(col, row)
                            : -1;
             };
-            const int32_t cell = cellAt(0, 0);
+            int32_t col = 0, row = 0, c = 0, r = 0;
+            const int32_t cell = cellAt(0, 0, col, row);
             if (cell < 0 || s->kind[size_t(cell)] != CellKind::Data) continue;
-            if (cellAt(kRimMm, 0) == cell && cellAt(-kRimMm, 0) == cell && cellAt(0, kRimMm) == cell &&
-                cellAt(0, -kRimMm) == cell)
+            if (wellInside(x, y, col, row) ||
+                (cellAt(kRimMm, 0, c, r) == cell && cellAt(-kRimMm, 0, c, r) == cell && cellAt(0, kRimMm, c, r) == cell &&
+                 cellAt(0, -kRimMm, c, r) == cell))
                 out[size_t(j) * size_t(top.nx) + size_t(i)] = 0;
         }
     return out;
