@@ -347,6 +347,9 @@ void checkPillars(const Scene& s, const TactileOptions& o, TactileResult& r) {
     const double free_max = kPrintedPlaInterlayerMpa * section_mm3 / kHandPushN;
     Check c{"tactile_slender_pillars", "no pillar slender enough to break under a hand"};
     c.unit = "mm";
+    // Tenths of a millimetre; below them two significant digits: a 0.15 mm
+    // pillar holds 0.0007 mm free, which one decimal writes as "0.0".
+    const auto mm = [](double v) { return v >= 0.1 || v <= 0 ? formatFixed(v, 1) : formatSignificant(v, 2); };
     const double floor_mm = s.zMm(s.params.bottom == Bottom::Mirrored ? 0 : s.floor_units);
     double freest = 0;
     for (size_t k = 0; k < s.keptCount(); ++k) {
@@ -363,15 +366,15 @@ void checkPillars(const Scene& s, const TactileOptions& o, TactileResult& r) {
             const Vec3 at = s.point(hexCentre(s.grid, s.col[k], s.row[k]), centreTop(s, k));
             c.worst.push_back({at, free,
                                "cell (col " + std::to_string(s.col[k]) + ", row " + std::to_string(s.row[k]) + ") stands " +
-                                   formatFixed(free, 1) + " mm above its neighbours, " + formatFixed(w, 2) +
-                                   " mm across: more than " + formatFixed(free_max, 1) + " mm breaks under " +
+                                   mm(free) + " mm above its neighbours, " + formatFixed(w, 2) +
+                                   " mm across: more than " + mm(free_max) + " mm breaks under " +
                                    formatSignificant(kHandPushN, 3) + " N"});
         }
     }
     keepWorst(c.worst, o.max_offenders, false);
     c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
-    c.note = "highest free stand " + formatFixed(freest, 1) + " mm; a " + formatFixed(w, 2) + " mm pillar stands up to " +
-             formatFixed(free_max, 1) + " mm free under a " + formatSignificant(kHandPushN, 3) + " N push";
+    c.note = "highest free stand " + mm(freest) + " mm; a " + formatFixed(w, 2) + " mm pillar stands up to " +
+             mm(free_max) + " mm free under a " + formatSignificant(kHandPushN, 3) + " N push";
     c.stage = "tactile_marks";
     r.checks.push_back(std::move(c));
 }

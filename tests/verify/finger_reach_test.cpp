@@ -217,6 +217,28 @@ TEST(FingerReach, RaisingAWallOrDeepeningAPitNeverHelps) {
     EXPECT_GT(checked, 10);
 }
 
+// Pillars of a tenth of a millimetre hold a few ten-thousandths of a
+// millimetre free: the note and each offender say so in figures a reader
+// can use, not "stands 0.0 mm above ...: more than 0.0 mm breaks".
+TEST(TactileSlender, TinyPillarsAreDescribedInSignificantFigures) {
+    SceneParams p = test::smallParams(Bottom::Flat, Cull::None);
+    p.pitch_mm = 0.15;
+    p.max_height_mm = 20;
+    p.baseline_mode = BaselineMode::Zero;
+    p.value_max = 20;
+    const Scene s = buildScene(test::fieldFromFunction(5, 5, [](int c, int r) { return c == 2 && r == 2 ? 0.02 : 0.0; }), p);
+    for (const Check& c : checkTactile(meshScene(s), &s, TactileOptions{}).checks) {
+        if (c.id != "tactile_slender_pillars") continue;
+        EXPECT_EQ(c.status, CheckStatus::Fail) << c.note;
+        EXPECT_EQ(c.note.find("0.0 mm"), std::string::npos) << c.note;
+        EXPECT_NE(c.note.find("up to 0.0007 mm free"), std::string::npos) << c.note;
+        ASSERT_FALSE(c.worst.empty());
+        EXPECT_NE(c.worst[0].detail.find("stands 0.02 mm above its neighbours"), std::string::npos) << c.worst[0].detail;
+        return;
+    }
+    ADD_FAILURE() << "no slender-pillar check";
+}
+
 // The slender-pillar check on built models: raising the spike never makes
 // it stand stronger, and a thinner pillar never stands stronger (a failure
 // at w mm cells stays one at thinner cells).
