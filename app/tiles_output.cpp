@@ -17,7 +17,7 @@ std::string tilePath(const std::string& output, const TilePlace& t) {
 
 std::vector<std::string> tilePaths(const VerifiedTiles& v, const std::string& output) {
     std::vector<std::string> out;
-    for (const VerifiedTile& t : v.tiles) out.push_back(tilePath(output, t.scene.tile->place));
+    for (const VerifiedTile& t : v.tiles) out.push_back(tilePath(output, sceneTile(t.scene)->place));
     return out;
 }
 
@@ -76,7 +76,7 @@ void summarizeTiles(const VerifiedTiles& v, GenSummary& summary) {
     nlohmann::json list = nlohmann::json::array();
     for (const VerifiedTile& t : v.tiles) {
         const Bounds b = meshBounds(t.model.mesh);
-        const SceneTile& st = *t.scene.tile;
+        const SceneTile& st = *sceneTile(t.scene);
         nlohmann::json one = {{"row", st.place.row + 1},
                               {"col", st.place.col + 1},
                               {"cells", t.scene.keptCount()},
@@ -119,9 +119,9 @@ void summarizeTiles(const VerifiedTiles& v, GenSummary& summary) {
 void writeTiles(const VerifiedTiles& v, const std::string& output, const MeshWriteOptions& wo, GenSummary& summary) {
     nlohmann::json files = nlohmann::json::array();
     for (const VerifiedTile& t : v.tiles) {
-        const std::string path = tilePath(output, t.scene.tile->place);
+        const std::string path = tilePath(output, sceneTile(t.scene)->place);
         writeMesh(t.model.mesh, path, wo);
-        summary.outputs.push_back({path, "tile " + tileName(t.scene.tile->place)});
+        summary.outputs.push_back({path, "tile " + tileName(sceneTile(t.scene)->place)});
         files.push_back(path);
     }
     summary.tiles["files"] = files;
@@ -130,8 +130,8 @@ void writeTiles(const VerifiedTiles& v, const std::string& output, const MeshWri
 std::string tilesMarksSentence(const VerifiedTiles& v) {
     std::string tab, notch, triangle;
     for (const VerifiedTile& t : v.tiles) {
-        const std::string name = "row " + std::to_string(t.scene.tile->place.row + 1) + ", column " +
-                                 std::to_string(t.scene.tile->place.col + 1);
+        const std::string name = "row " + std::to_string(sceneTile(t.scene)->place.row + 1) + ", column " +
+                                 std::to_string(sceneTile(t.scene)->place.col + 1);
         if (t.scene.marks.tab) tab = name;
         if (t.scene.marks.notch) notch = name;
         if (t.scene.marks.triangle) triangle = name;
@@ -147,7 +147,7 @@ Mesh tilesApart(const VerifiedTiles& v) {
     constexpr double kGapMm = 8;
     Mesh m;
     for (const VerifiedTile& t : v.tiles) {
-        const double dx = kGapMm * t.scene.tile->place.col, dy = -kGapMm * t.scene.tile->place.row;
+        const double dx = kGapMm * sceneTile(t.scene)->place.col, dy = -kGapMm * sceneTile(t.scene)->place.row;
         const uint32_t base = uint32_t(m.positions.size());
         for (const Vec3& p : t.model.mesh.positions) m.positions.push_back({p.x + dx, p.y + dy, p.z});
         for (const auto& tri : t.model.mesh.triangles) m.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});

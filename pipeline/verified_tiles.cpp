@@ -25,11 +25,11 @@ VerifiedTiles makeVerifiedTiles(const HexField& field, const Scene& whole, doubl
         VerifiedTile tile;
         tile.scene = buildScene(field, tileParams(whole, L, t));
         ModelRequest trq = rq;
-        trq.verify_options.name = rq.verify_options.name + " (tile " + tileName(tile.scene.tile->place) + ")";
+        trq.verify_options.name = rq.verify_options.name + " (tile " + tileName(sceneTile(tile.scene)->place) + ")";
         try {
             tile.model = makeVerifiedModel(tile.scene, trq, progress);
         } catch (const ModelVerificationFailed& e) {
-            throw ModelVerificationFailed("tile " + tileName(tile.scene.tile->place), e.report());
+            throw ModelVerificationFailed("tile " + tileName(sceneTile(tile.scene)->place), e.report());
         }
         out.tiles.push_back(std::move(tile));
     }
@@ -41,7 +41,7 @@ VerifiedTiles makeVerifiedTiles(const HexField& field, const Scene& whole, doubl
         TiledWholeRequest tiled;
         tiled.level_cells.assign(size_t(whole.grid.cellCount()), 0);
         for (const VerifiedTile& t : out.tiles)
-            for (int32_t k : t.scene.tile->code_cells)
+            for (int32_t k : sceneTile(t.scene)->code_cells)
                 tiled.level_cells[size_t(whole.grid.index(t.scene.col[size_t(k)], t.scene.row[size_t(k)]))] = 1;
         level.requests.set(std::move(tiled));
         const Scene assembled = buildScene(field, level);

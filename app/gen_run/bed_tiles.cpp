@@ -31,7 +31,7 @@ std::optional<VerifiedTiles> tilesForBed(const GenCommandOptions& o, const HexFi
         return tiles;
     }
     for (const VerifiedTile& t : tiles->tiles)
-        if (tilePath(o.output, t.scene.tile->place) == o.gen.input)
+        if (tilePath(o.output, sceneTile(t.scene)->place) == o.gen.input)
             throw InputError(o.output, 0, 0, "a tile would be written over the input: give another -o");
     summarizeTiles(*tiles, summary);
     return tiles;

@@ -5,7 +5,6 @@
 
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/halves.h"
-#include "gen/model/features/tiles.h"
 #include "gen/model/features/marks.h"
 
 namespace tsf {
@@ -78,7 +77,7 @@ std::vector<SideWidth> attachmentSideWidths(const SceneParams& params) {
 
 std::vector<BottomHole> sceneBottomHoles(const Scene& scene) {
     std::vector<BottomHole> holes = halfBottomHoles(scene);
-    for (BottomHole& h : tileBottomHoles(scene)) holes.push_back(std::move(h));
+    for (BottomHole& h : featureBottomHoles(scene)) holes.push_back(std::move(h));
     return holes;
 }
 

@@ -21,7 +21,6 @@
 #include "gen/model/phases/shaped_tops.h"
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/halves.h"
-#include "gen/model/features/tiles.h"
 
 namespace tsf {
 
@@ -30,7 +29,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     Scene s = sceneFrame(field, params);
 
     // The cells: heights snapped once, the cull's decision, the mirrored
-    // floor taken over the whole model, then a tile's share of it.
+    // floor taken over the whole model, then a piece's share of it (a
+    // tile's: Feature::keep_share).
     CellHeights heights = snapCellHeights(field, s.mapping, s.z_snap_mm);
     s.cells_with_data = heights.with_data;
     s.cells_nonempty = heights.nonempty_count;
@@ -40,7 +40,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
     s.notes.insert(s.notes.end(), culled.notes.begin(), culled.notes.end());
     const int64_t mirror_shift =
         lowerToMirroredFloor(field, culled.keep, params, featureReliefBelowUnits(s), heights);
-    keepTileShare(s.grid, params, culled.keep);
+    keepFeatureShares(s.grid, params, culled.keep);
     assert(componentCount(s.grid, culled.keep) == 1);
     listKeptCells(field, culled.keep, s);
 
@@ -68,8 +68,8 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         });
         return buildScene(field, grown);
     }
-    // A tile's code pits go under level tops, so before the dimples.
-    if (params.requests.get<TileRequest>()) placeTileCode(s);
+    // What goes under level tops (a tile's code pits), so before the dimples.
+    placeFeatures(s, FeaturePhase::UnderTops);
     shapeTops(field, heights.units, params, s);
 
     // The features last: they stand against cells whose tops (tilted or

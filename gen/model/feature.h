@@ -33,12 +33,15 @@
 //     key and the tactile check say instead of the heights (OneHeight), what
 //     tells a class map's classes apart (ClassMark, KeyClasses) and the
 //     thresholds its check is held to (FeatureThreshold); a feature that
-//     measures heights (needs_heights) is refused beside it.
+//     measures heights (needs_heights) is refused beside it;
+//   - a feature that is a piece of the model (a tile, FeaturePhase::UnderTops)
+//     keeps its share of the cells the cull keeps, cuts into the bottom
+//     (BottomHole: a tile's code pits) and keeps the tops over them level.
 // What the user asks of a feature is held in SceneParams::requests by the
 // feature's own request type, set by the command line.
 // Every entry may be null: the feature has nothing of that kind.
 //
-// Features not yet in the registry (the halves, the tiles) are still
+// The feature not yet in the registry (the halves) is still
 // named by the lists in gen/model/attachments.cpp, gen/model/feature_records.cpp,
 // gen/scad/scad_attachments.cpp and gen/key/model_key.cpp, which splice the
 // registry in where its features stood, phase by phase (FeaturePhase), so
@@ -68,6 +71,10 @@ enum class FeaturePhase : uint8_t {
     /// at heights of its own and shape the cells' tops (a class map's
     /// textures).
     Frame,
+    /// After the cells and the marks in the data are placed, before the
+    /// tops are shaped: what goes under level tops (a tile's code pits
+    /// under the cells they keep level).
+    UnderTops,
     /// After the cells' tops are final (tilted, textured): a body beside
     /// the pillars placed before the one carrying the marks, which keeps
     /// clear of what it claims (the braille legend's plate).
@@ -291,6 +298,18 @@ struct Feature {
     /// feature stands at one height (one_height), it is refused before it
     /// is placed, saying why.
     bool needs_heights = false;
+
+    // --- A feature that is a piece of the model (FeaturePhase::UnderTops) ---
+    /// Of the cells the cull keeps (grid layout, 1 = keep), keeps only its
+    /// share (a tile's cells). Throws InputError when the share cannot
+    /// stand (not one piece).
+    void (*keep_share)(const HexGrid& grid, const SceneParams& params, std::vector<uint8_t>& keep) = nullptr;
+    /// Its cuts into the model's bottom (BottomHole, gen/model/scene_attachments.h);
+    /// none without them.
+    std::vector<BottomHole> (*bottom_holes)(const Scene& scene) = nullptr;
+    /// True when kept cell k's top must stay level (a pit under it, or the
+    /// same cell of a piece that keeps it level): no structural dimple.
+    bool (*keeps_level)(const Scene& scene, size_t kept) = nullptr;
 };
 
 }  // namespace tsf

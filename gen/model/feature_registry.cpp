@@ -8,13 +8,14 @@
 #include "gen/model/features/ruler/ruler_feature.h"
 #include "gen/model/features/scale_feature.h"
 #include "gen/model/features/tab/tab_feature.h"
+#include "gen/model/features/tile_feature.h"
 #include "gen/util/error.h"
 
 namespace tsf {
 
 const std::vector<const Feature*>& features() {
     static const std::vector<const Feature*> registry = {&classTexturesFeature(), &legendFeature(), &tabFeature(),
-                                                         &scaleFeature(), &rulerFeature()};
+                                                         &scaleFeature(), &rulerFeature(), &tileFeature()};
     return registry;
 }
 
@@ -95,6 +96,25 @@ std::vector<FeatureThreshold> featureThresholds() {
         if (f->thresholds)
             for (const FeatureThreshold& t : f->thresholds()) out.push_back(t);
     return out;
+}
+
+void keepFeatureShares(const HexGrid& grid, const SceneParams& params, std::vector<uint8_t>& keep) {
+    for (const Feature* f : features())
+        if (f->keep_share) f->keep_share(grid, params, keep);
+}
+
+std::vector<BottomHole> featureBottomHoles(const Scene& scene) {
+    std::vector<BottomHole> holes;
+    for (const Feature* f : features())
+        if (f->bottom_holes)
+            for (BottomHole& h : f->bottom_holes(scene)) holes.push_back(std::move(h));
+    return holes;
+}
+
+bool featureKeepsLevel(const Scene& scene, size_t kept) {
+    for (const Feature* f : features())
+        if (f->keeps_level && f->keeps_level(scene, kept)) return true;
+    return false;
 }
 
 }  // namespace tsf

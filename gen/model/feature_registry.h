@@ -15,9 +15,10 @@
 
 namespace tsf {
 
-/// Every feature in the registry, in the order they are placed (a class
-/// map's textures, decided in the frame, the braille legend, the
-/// orientation tab, the tactile scale, the edge ruler).
+/// Every feature in the registry, in the registry's order (a class map's
+/// textures, decided in the frame, the braille legend, the orientation
+/// tab, the tactile scale, the edge ruler, a tile of a tiled model); each
+/// is placed in its phase (FeaturePhase).
 const std::vector<const Feature*>& features();
 
 /// The features of the registry placed in `phases`, phase by phase in the
@@ -67,5 +68,17 @@ std::optional<KeyClasses> featureKeyClasses(const Scene& scene, const KeyNumbers
 /// The thresholds the features' tactile checks are held to, in the
 /// registry's order.
 std::vector<FeatureThreshold> featureThresholds();
+
+/// Of the cells the cull keeps (grid layout, 1 = keep), only the share of
+/// each feature that is a piece of the model (a tile's cells).
+void keepFeatureShares(const HexGrid& grid, const SceneParams& params, std::vector<uint8_t>& keep);
+
+/// The features' cuts into the model's bottom (a tile's code pits), in the
+/// registry's order.
+std::vector<BottomHole> featureBottomHoles(const Scene& scene);
+
+/// True when some feature keeps kept cell k's top level (no structural
+/// dimple: a tile's code pit is under it).
+bool featureKeepsLevel(const Scene& scene, size_t kept);
 
 }  // namespace tsf

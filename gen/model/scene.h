@@ -33,7 +33,6 @@
 #include "gen/model/scene_attachments.h"
 #include "gen/model/scene_halves.h"
 #include "gen/model/scene_marks.h"
-#include "gen/model/scene_tiles.h"
 #include "gen/model/scene_top_shapes.h"
 
 namespace tsf {
@@ -159,9 +158,6 @@ struct SceneParams {
     /// in pillars with room for them), then the thinnest slab that gives
     /// three pillars room, found by bisection (to kHalvesSlabSearchMm).
     std::optional<int64_t> halves_slab_units;
-    // A tile of a model cut into tiles, and the whole model its tiles are
-    // checked against, are asked for through `requests` (TileRequest,
-    // TiledWholeRequest: gen/model/scene_tiles.h).
     // --- what the model is written as ---
     /// The model file stores float32 coordinates (STL, 3MF): a z grid finer
     /// than float32 resolves at the model's height is made coarser (the
@@ -229,8 +225,6 @@ struct Scene {
     TopShapes shapes;
     /// The cut into two support-free halves and the pin holes (gen/model/features/halves.h); none unless asked for.
     std::optional<SceneHalves> halves;
-    /// The tile of a tiled model this Scene draws, and its code (gen/model/features/tiles.h); none for a whole model.
-    std::optional<SceneTile> tile;
     /// What the features of the registry placed (gen/model/feature.h): each
     /// holds its own state here, by its type (the tactile scale's
     /// SceneScale, a class map's textures).

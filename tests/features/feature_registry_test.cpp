@@ -46,15 +46,19 @@ TEST(FeatureRegistry, TheTexturesAreDecidedFirstThenTheLegendThenTheTabWithTheMa
     EXPECT_STREQ(all[2]->name, "marks.tab");
     EXPECT_EQ(all[2]->phase, FeaturePhase::Marks);
     // The phases split the registry in its own order, as buildScene places
-    // them: Frame, BeforeMarks, then Marks, then Beside.
-    EXPECT_EQ(featuresOf({FeaturePhase::Frame, FeaturePhase::BeforeMarks, FeaturePhase::Marks, FeaturePhase::Beside}),
+    // them: Frame, UnderTops, BeforeMarks, then Marks, then Beside; a tile
+    // (UnderTops) is last in the registry.
+    EXPECT_EQ(featuresOf({FeaturePhase::Frame, FeaturePhase::BeforeMarks, FeaturePhase::Marks, FeaturePhase::Beside,
+                          FeaturePhase::UnderTops}),
               all);
     EXPECT_EQ(featuresOf({FeaturePhase::Marks}).size(), 1u);
     EXPECT_EQ(featuresOf({FeaturePhase::Frame}).size(), 1u);
+    ASSERT_EQ(featuresOf({FeaturePhase::UnderTops}).size(), 1u);
+    EXPECT_STREQ(featuresOf({FeaturePhase::UnderTops})[0]->name, "tile");
     // Asked in another order, phase by phase in that order.
     const std::vector<const Feature*> marks_first =
         featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside});
-    ASSERT_EQ(marks_first.size(), all.size() - 1);
+    ASSERT_EQ(marks_first.size(), all.size() - 2);
     EXPECT_STREQ(marks_first[0]->name, "marks.tab");
     EXPECT_STREQ(marks_first[1]->name, "legend");
 }

@@ -81,6 +81,28 @@ const std::vector<MigratedFeature>& migrated() {
              // The command line: --ruler fills in its request.
              "app/gen_options.cpp",
          }},
+        // A tile of a model cut into tiles: its state, its requests, its
+        // layout and its code. The tiles' outputs (their files, their
+        // check as an assembly, the summary's tiles) are the tiles' own.
+        {"tile",
+         std::regex(R"(\b(SceneTile|TilePlace|TileRequest|TiledWholeRequest|TileLayout|planTiles|tileParams|placeTileCode|)"
+                    R"(sceneTile|keepTileShare|tileKeepsLevel|tileBottomHoles|tileFeature|kTileCode\w+|kMaxTileCount|)"
+                    R"(kToothMm)\b|features/tiles\.h|features/tile_(feature|code)\.h|scene_tiles\.h)"),
+         {
+             // Its own files.
+             "gen/model/features/tiles.h", "gen/model/features/tiles.cpp", "gen/model/features/tile_feature.h",
+             "gen/model/features/tile_feature.cpp", "gen/model/features/tile_code.h", "gen/model/features/tile_code.cpp",
+             "gen/model/scene_tiles.h",
+             // The registry.
+             "gen/model/feature_registry.cpp",
+             // Its outputs: the tiles made and verified as an assembly, their
+             // files and their lines in the summary.
+             "pipeline/verified_tiles.h", "pipeline/verified_tiles.cpp", "verify/tiles_check.h", "verify/tiles_check.cpp",
+             "app/tiles_output.h", "app/tiles_output.cpp", "app/gen_run/bed_tiles.cpp",
+             // A tile carries the model's marks where the model has them (its
+             // request's marks: the notch and triangle, or the tab).
+             "gen/model/phases/model_marks.cpp", "gen/model/features/tab/tab_feature.cpp",
+         }},
         {"legend",
          std::regex(R"(\b(SceneLegend|sceneLegend|placeLegend|LegendParams|LegendLayout|LegendDot|layoutLegend|)"
                     R"(legendRangeText|PlateOutline|PlateSpec|legendPlateOutline|legendEastOnLattice|meshPlateBody|)"

@@ -25,13 +25,8 @@
 //     them; a tile that would fall apart gives its loose cells to a
 //     neighbour.
 //
-// The code (placeTileCode): each tile's place is pitted into its flat
-// bottom as an L of cone-topped pits under cell centres, read from the
-// underside: a corner pit, then one pit per column number going east (column
-// 1: one pit) and one per row number going south (row 1: one pit). The L is
-// chiral, so it also says which way the tile is turned. The pits print face
-// down without a bridge (a one-layer wall and a cone steeper than 45
-// degrees) and keep kTileCodeRoofMm of material under the cell's top.
+// Each tile's share of the cells and its code (an L of pits in its bottom
+// that says its place) are the tile's own piece: tile_code.h.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +35,8 @@
 #include "gen/model/scene.h"
 #include "gen/model/features/bottom_hole_ring.h"
 #include "gen/model/scene_attachments.h"
+#include "gen/model/features/tile_code.h"
+#include "gen/model/scene_tiles.h"
 
 namespace tsf {
 
@@ -72,19 +69,5 @@ TileLayout planTiles(const Scene& whole, const std::vector<BoxMm>& attached, dou
 /// orientation marks only on layout.marks_tile (and, marks in the data, the
 /// triangle on layout.triangle_tile), where the whole model has them.
 SceneParams tileParams(const Scene& whole, const TileLayout& layout, int32_t tile);
-
-/// Pits a tile Scene's code into its bottom (Scene::tile); buildScene calls
-/// it for a Scene asked for as a tile (TileRequest). Adds a note when the tile has no
-/// room for it.
-void placeTileCode(Scene& scene);
-
-/// True when kept cell k of a tile Scene has a code pit under it (its top stays level).
-bool isTileCodeCell(const Scene& scene, size_t k);
-
-/// The code pits of a tile Scene as cuts into its bottom; none otherwise.
-std::vector<BottomHole> tileBottomHoles(const Scene& scene);
-
-/// "row 2, column 3" for people (rows and columns from 1).
-std::string tileName(const TilePlace& place);
 
 }  // namespace tsf

@@ -106,14 +106,6 @@ KeptCells cullCells(const HexField& field, const CellHeights& heights, const Sce
     return out;
 }
 
-void keepTileShare(const HexGrid& grid, const SceneParams& params, std::vector<uint8_t>& keep) {
-    const TileRequest* tile = params.requests.get<TileRequest>();
-    if (!tile) return;
-    // gen/model/features/tiles.h made each tile one piece.
-    if (tile->cells.size() != keep.size()) throw InputError("a tile's cell list does not match the grid");
-    for (size_t idx = 0; idx < keep.size(); ++idx) keep[idx] = keep[idx] && tile->cells[idx];
-    if (componentCount(grid, keep) != 1) throw InputError("a tile of the model is not one piece");
-}
 
 void listKeptCells(const HexField& field, const std::vector<uint8_t>& keep, Scene& s) {
     const HexGrid& g = s.grid;

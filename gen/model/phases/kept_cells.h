@@ -1,6 +1,7 @@
 // Which cells the model keeps (the cull: all, the convex hull of the
-// non-empty cells, or a concave closing of them; docs/model.md), a tile's
-// share of them, and the kept cells listed in the Scene.
+// non-empty cells, or a concave closing of them; docs/model.md) and the
+// kept cells listed in the Scene. (A piece of the model keeps its share of
+// them: Feature::keep_share, gen/model/feature.h.)
 #pragma once
 
 #include <cstdint>
@@ -25,11 +26,6 @@ struct KeptCells {
 /// The cells params.cull keeps: always one piece (a thin hull is widened
 /// to the cells touching it).
 KeptCells cullCells(const HexField& field, const CellHeights& heights, const SceneParams& params);
-
-/// One tile of a tiled model: its share (TileRequest::cells) of the cells
-/// the whole keeps. Throws InputError when the share does not match the
-/// grid or is not one piece.
-void keepTileShare(const HexGrid& grid, const SceneParams& params, std::vector<uint8_t>& keep);
 
 /// Lists the kept cells in the Scene, row by row: kept_index, col, row,
 /// value, kind and cells_nodata_kept.

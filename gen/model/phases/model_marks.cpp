@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "gen/model/features/marks.h"
+#include "gen/model/scene_tiles.h"
 #include "gen/util/error.h"
 
 namespace tsf {

@@ -5,7 +5,6 @@
 #include <optional>
 
 #include "gen/model/feature_registry.h"
-#include "gen/model/features/tiles.h"
 #include "gen/model/features/tilt.h"
 #include "gen/model/features/top_shapes.h"
 
@@ -24,14 +23,10 @@ std::vector<uint8_t> structuralCells(const HexField& field, const std::vector<in
     std::vector<uint8_t> structural(kept, 0);
     const bool dimples = params.structural_texture && s.cells_nonempty > 0 && !field.moments.empty();
     if (!dimples) return structural;
-    const TiledWholeRequest* tiled = params.requests.get<TiledWholeRequest>();
-    const std::vector<uint8_t> none;
-    const std::vector<uint8_t>& level_cells = tiled ? tiled->level_cells : none;
     for (size_t k = 0; k < kept; ++k) {
         const size_t idx = size_t(s.grid.index(s.col[k], s.row[k]));
         structural[k] = s.kind[k] == CellKind::Data && h_units[idx] == 0 && field.moments[idx].n == 0 &&
-                        (s.drawn_by_face.empty() || !s.drawn_by_face[k]) &&
-                        (level_cells.empty() || !level_cells[idx]) && !isTileCodeCell(s, k);
+                        (s.drawn_by_face.empty() || !s.drawn_by_face[k]) && !featureKeepsLevel(s, k);
     }
     return structural;
 }

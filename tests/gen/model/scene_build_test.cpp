@@ -10,6 +10,7 @@
 #include "gen/model/phases/kept_cells.h"
 #include "gen/model/convex_hull.h"
 #include "gen/model/features/halves.h"
+#include "gen/model/features/tiles.h"
 #include "gen/util/error.h"
 #include "tests/support/fields.h"
 

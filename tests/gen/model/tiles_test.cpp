@@ -11,6 +11,7 @@
 #include "gen/mesh/direct_mesher.h"
 #include "gen/model/attachments.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/tiles.h"
 #include "pipeline/verified_tiles.h"
 #include "tests/support/fields.h"
@@ -126,10 +127,10 @@ TEST(TilePlan, RefusesWhatItCannotCutYet) {
 // The 16-gon code pit's volume from its radius and heights alone (not the
 // code's rings): a prism one wall high and a cone to the apex.
 double pitVolume(const Scene& tile) {
-    const double r = tile.tile->pit_radius_mm;
+    const double r = sceneTile(tile)->pit_radius_mm;
     const double area = 0.5 * kHoleSides * r * r * std::sin(2 * kPi / kHoleSides);
     double v = 0;
-    for (const BottomHole& h : tile.tile->code_pits)
+    for (const BottomHole& h : sceneTile(tile)->code_pits)
         v += area * (tile.zMm(h.depth_units) + tile.zMm(h.apex_units - h.depth_units) / 3);
     return v;
 }
@@ -154,7 +155,7 @@ TEST(Tiles, EachTileVerifiedAndTogetherTheyAreTheModel) {
         EXPECT_LE(b.max.x - b.min.x, kBedW + 1e-6);
         EXPECT_LE(b.max.y - b.min.y, kBedD + 1e-6);
         // The code: a corner pit, one per column number east, one per row number south.
-        const SceneTile& st = *t.scene.tile;
+        const SceneTile& st = *sceneTile(t.scene);
         ASSERT_EQ(st.code_cells.size(), size_t(st.place.row + st.place.col + 3)) << tileName(st.place);
         const size_t corner = size_t(st.code_cells[0]);
         for (int32_t e = 1; e <= st.place.col + 1; ++e) {
@@ -275,7 +276,34 @@ TEST(Tiles, CodeCellsOfStructuralCellsStayLevel) {
     ASSERT_TRUE(v.assembly);
     EXPECT_TRUE(v.assembly->passed());
     for (const VerifiedTile& t : v.tiles)
-        for (int32_t k : t.scene.tile->code_cells) EXPECT_FALSE(isStructural(t.scene.shapes, size_t(k)));
+        for (int32_t k : sceneTile(t.scene)->code_cells) EXPECT_FALSE(isStructural(t.scene.shapes, size_t(k)));
+}
+
+// A tile reaches the mesher, the read-back and the dimples through the
+// registry (gen/model/feature_registry.h) as a piece of the model: its
+// share of the cells, its code pits as cuts into the bottom, its code
+// cells kept level; a whole model has none of them.
+TEST(Tiles, ATileIsAPieceOfTheModelThroughTheRegistry) {
+    const HexField f = hill();
+    const Scene s = buildScene(f, hillParams());
+    EXPECT_EQ(sceneTile(s), nullptr);
+    EXPECT_TRUE(featureBottomHoles(s).empty());
+    const TileLayout L = planTiles(s, attachmentBoxes(s), kBedW, kBedD);
+    ASSERT_GT(L.rows * L.cols, 1);
+    const SceneParams p = tileParams(s, L, 0);
+    std::vector<uint8_t> keep(size_t(f.grid.cellCount()), 1);
+    keepFeatureShares(f.grid, p, keep);
+    EXPECT_EQ(keep, p.requests.get<TileRequest>()->cells);
+    const Scene tile = buildScene(f, p);
+    const SceneTile* t = sceneTile(tile);
+    ASSERT_NE(t, nullptr);
+    ASSERT_FALSE(t->code_cells.empty()) << (tile.notes.empty() ? "" : tile.notes.back());
+    EXPECT_EQ(featureBottomHoles(tile).size(), t->code_pits.size());
+    EXPECT_EQ(sceneBottomHoles(tile).size(), t->code_pits.size());
+    for (int32_t k : t->code_cells) EXPECT_TRUE(featureKeepsLevel(tile, size_t(k)));
+    size_t level = 0;
+    for (size_t k = 0; k < tile.keptCount(); ++k) level += featureKeepsLevel(tile, k);
+    EXPECT_EQ(level, t->code_cells.size());
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "gen/model/features/marks.h"
 #include "gen/model/features/tab/orientation_tab.h"
 #include "gen/model/features/tab/orientation_tab_record.h"
+#include "gen/model/scene_tiles.h"
 #include "gen/util/error.h"
 
 namespace tsf {
