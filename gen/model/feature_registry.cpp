@@ -41,4 +41,11 @@ const Feature* featureRefusingTiles(const Scene& scene) {
     return nullptr;
 }
 
+std::optional<PlacedMarks> carriedMarks(const Scene& scene) {
+    for (const Feature* f : features())
+        if (f->carried_marks)
+            if (std::optional<PlacedMarks> m = f->carried_marks(scene)) return m;
+    return std::nullopt;
+}
+
 }  // namespace tsf

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <optional>
 #include <vector>
 
 #include "gen/model/feature.h"
@@ -33,5 +34,10 @@ bool sceneMeasures(const Scene& scene);
 /// The first feature of the Scene that refuses a cut into tiles; null
 /// when none does.
 const Feature* featureRefusingTiles(const Scene& scene);
+
+/// The orientation marks a feature of the Scene carries (the first that
+/// carries any), as placed; none when no feature carries them (they are in
+/// the data, or there are none).
+std::optional<PlacedMarks> carriedMarks(const Scene& scene);
 
 }  // namespace tsf

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -115,6 +116,26 @@ struct Marks {
     std::optional<OrientationTriangle> triangle;
     /// MarkPlace::Tab: the tab that carries both marks (notch and triangle above are then none).
     std::optional<OrientationTab> tab;
+};
+
+/// The orientation marks as placed, wherever they stand (in the data, or on
+/// a feature that carries them: the orientation tab), as a reader is told of
+/// them and the tactile check measures them (placedMarks,
+/// gen/model/features/placed_marks.h).
+struct PlacedMarks {
+    bool has_notch = false;
+    double notch_depth_mm = 0;
+    bool has_triangle = false;
+    double long_leg_mm = 0, short_leg_mm = 0;
+    bool underside = false;  ///< the triangle also raised on the underside (mirrored)
+    /// Where the triangle stands, for a person: "on a flat tab west of the
+    /// pillars" or "on a flat region of the model".
+    std::string triangle_place;
+    /// Where both marks are, in a few words: "on the orientation tab", "in the data".
+    std::string where;
+    /// Said last to a reader ("The tab holds no data."); "" for none.
+    std::string note;
+    double corner_x_mm = 0, corner_y_mm = 0;  ///< the model's south-west corner the marks are read from
 };
 
 /// What lies across one edge of a face.

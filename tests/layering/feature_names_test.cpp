@@ -48,9 +48,6 @@ const std::vector<MigratedFeature>& migrated() {
              "gen/model/features/tab/tab_scad.cpp",
              // The registry.
              "gen/model/feature_registry.cpp",
-             // The halves' slab keeps room for the tab across the cut
-             // (kTabMinThicknessMm on each side), whatever the marks.
-             "gen/model/phases/halves_slab.cpp",
          }},
         {"scale",
          std::regex(R"(\b(SceneScale|ScaleStep|ScaleRequest|scaleLevels|chooseScaleStep|placeScale|sceneScale|scaleTopAt|)"

@@ -49,6 +49,11 @@ const Feature& scaleFeature() {
         .scad_piece = scaleScadPiece,
         .measures = scaleMeasures,
         .survives_tiles = scaleSurvivesTiles,
+        .carried_marks = nullptr,
+        .room_across_cut_units = nullptr,
+        .cut_into_half = nullptr,
+        .tile_cells = nullptr,
+        .carry_into_tile = nullptr,
         .tactile_claims = scaleTactileClaims,
     };
     return feature;
