@@ -22,7 +22,12 @@
 //   - hands in its piece of the generated OpenSCAD file (ScadPiece) as text,
 //     which gen/scad/scad_attachments.h joins into the terrain polyhedron
 //     or draws with the feature's own scad_lib/ module;
-//   - says whether it survives a cut into tiles;
+//   - says whether it survives a cut into tiles, and how it is carried
+//     when the model is more than one piece or carries the orientation
+//     marks: the marks it carries (PlacedMarks, which the key, the tiles
+//     and the tactile check read without naming it), the room it
+//     needs across a cut into halves and its side of the cut in each half,
+//     the cells a tile keeps with it and what that tile is asked;
 //   - claims what a hand must find on it (TactileClaim), which the tactile
 //     check proves as printed.
 // What the user asks of a feature is held in SceneParams::requests by the

@@ -33,19 +33,16 @@ struct MigratedFeature {
 
 const std::vector<MigratedFeature>& migrated() {
     static const std::vector<MigratedFeature> list = {
-        // Its state is still the marks' (OrientationTab, TabPoint in
-        // Marks::tab, gen/model/scene_marks.h), read by the marks, the
-        // halves and the tiles: those names are left out here.
         {"orientation tab",
-         std::regex(R"(\b(placeTab|tabTopAt|tabAreaMm2|meshTabBody|tabBoxMm|tabClaim|tabAttachment|tabProbes|)"
-                    R"(checkTabInScene|checkTab|tabRecord|readTabRecord|tabFactsJson|tabFactsLines|tabWidthMm|)"
-                    R"(tabScadPiece|tabFeature|kTab\w+)\b|features/tab/|scad_tab\.h)"),
+         std::regex(R"(\b(OrientationTab|sceneTab|TileTabRequest|placeTab|tabTopAt|tabAreaMm2|meshTabBody|tabBoxMm|)"
+                    R"(tabClaim|tabAttachment|tabProbes|checkTabInScene|checkTab|tabRecord|readTabRecord|tabFactsJson|)"
+                    R"(tabFactsLines|tabWidthMm|tabScadPiece|tabFeature|kTab\w+)\b|features/tab/|scad_tab\.h)"),
          {
              // Its own files.
              "gen/model/features/tab/orientation_tab.h", "gen/model/features/tab/orientation_tab.cpp",
              "gen/model/features/tab/orientation_tab_record.h", "gen/model/features/tab/orientation_tab_record.cpp",
              "gen/model/features/tab/tab_feature.h", "gen/model/features/tab/tab_feature.cpp",
-             "gen/model/features/tab/tab_scad.cpp",
+             "gen/model/features/tab/tab_scad.cpp", "gen/model/features/tab/tab_state.h",
              // The registry.
              "gen/model/feature_registry.cpp",
          }},

@@ -35,12 +35,13 @@ void placeTabAsAsked(Scene& s) {
             throw InputError("a tile does not hold the pillars its orientation tab stands against");
         k = s.kept_index[size_t(k)];
     }
-    s.marks.tab = std::move(tab);
+    s.features.set(std::move(tab));
 }
 
 void carryTabIntoTile(const Scene& whole, SceneParams& tile) {
-    if (!whole.marks.tab) return;
-    TileTabRequest request{*whole.marks.tab};
+    const OrientationTab* tab = sceneTab(whole);
+    if (!tab) return;
+    TileTabRequest request{*tab};
     for (auto& [k, e] : request.tab.touched) k = int32_t(whole.grid.index(whole.col[size_t(k)], whole.row[size_t(k)]));
     tile.requests.set(std::move(request));
 }
@@ -48,15 +49,16 @@ void carryTabIntoTile(const Scene& whole, SceneParams& tile) {
 // The cells it stands against stay with it in one tile.
 std::vector<int32_t> tabTileCells(const Scene& s) {
     std::vector<int32_t> out;
-    if (s.marks.tab)
-        for (const auto& [k, e] : s.marks.tab->touched) out.push_back(k);
+    if (const OrientationTab* tab = sceneTab(s))
+        for (const auto& [k, e] : tab->touched) out.push_back(k);
     return out;
 }
 
 // Both marks, at full size whatever the cells.
 std::optional<PlacedMarks> tabMarks(const Scene& s) {
-    if (!s.marks.tab) return std::nullopt;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return std::nullopt;
+    const OrientationTab& t = *tab;
     PlacedMarks m;
     m.has_notch = t.has_notch;
     m.notch_depth_mm = t.notch_depth_mm;
@@ -88,10 +90,12 @@ int64_t tabRoomAcrossCut(const Scene& s) {
 // triangle on its face away from the cut (the lower half's is the
 // underside's).
 void cutTabIntoHalf(const Scene& whole, Scene& half, HalfKind kind) {
-    if (!half.marks.tab) return;
-    OrientationTab& t = *half.marks.tab;
+    OrientationTab* tab = sceneTab(half);
+    const OrientationTab* whole_tab = sceneTab(whole);
+    if (!tab || !whole_tab) return;
+    OrientationTab& t = *tab;
     const int64_t cut = whole.halves->split_units;
-    const int64_t bottom = whole.marks.tab->bottom_units, top = whole.marks.tab->top_units;
+    const int64_t bottom = whole_tab->bottom_units, top = whole_tab->top_units;
     t.bottom_units = 0;
     t.top_units = kind == HalfKind::Upper ? top - cut : cut - bottom;
     t.under_triangle = false;
