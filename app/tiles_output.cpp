@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "app/commands.h"
+#include "gen/model/feature_registry.h"
 #include "gen/util/number_format.h"
 
 namespace tsf::cli {
@@ -82,7 +83,7 @@ void summarizeTiles(const VerifiedTiles& v, GenSummary& summary) {
                               {"cells", t.scene.keptCount()},
                               {"size_mm", {b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z}},
                               {"volume_mm3", signedVolume(t.model.mesh)},
-                              {"marks", t.scene.marks.tab.has_value() || !t.scene.faces.faces.empty()},
+                              {"marks", carriedMarks(t.scene).has_value() || !t.scene.faces.faces.empty()},
                               {"code_pits", st.code_cells.size()},
                               {"code_pit_diameter_mm", 2 * st.pit_radius_mm}};
         if (t.model.report) one["verify"] = toJson(*t.model.report);
@@ -128,15 +129,15 @@ void writeTiles(const VerifiedTiles& v, const std::string& output, const MeshWri
 }
 
 std::string tilesMarksSentence(const VerifiedTiles& v) {
-    std::string tab, notch, triangle;
+    std::string carried, notch, triangle;
     for (const VerifiedTile& t : v.tiles) {
         const std::string name = "row " + std::to_string(sceneTile(t.scene)->place.row + 1) + ", column " +
                                  std::to_string(sceneTile(t.scene)->place.col + 1);
-        if (t.scene.marks.tab) tab = name;
+        if (carriedMarks(t.scene)) carried = name;
         if (t.scene.marks.notch) notch = name;
         if (t.scene.marks.triangle) triangle = name;
     }
-    if (!tab.empty()) return "The orientation tab, with the notch and the triangle, is on the tile in " + tab + ".";
+    if (!carried.empty()) return "The orientation tab, with the notch and the triangle, is on the tile in " + carried + ".";
     std::string out;
     if (!notch.empty()) out += "The orientation notch is on the tile in " + notch + ".";
     if (!triangle.empty()) out += std::string(out.empty() ? "" : " ") + "The orientation triangle is on the tile in " + triangle + ".";

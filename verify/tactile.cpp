@@ -11,7 +11,7 @@
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/felt_heights.h"
 #include "gen/model/features/legend/legend.h"
-#include "gen/model/features/marks.h"
+#include "gen/model/features/placed_marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
 #include "gen/util/number_format.h"

@@ -23,7 +23,12 @@
 //   - hands in its piece of the generated OpenSCAD file (ScadPiece) as text,
 //     which gen/scad/scad_attachments.h joins into the terrain polyhedron
 //     or draws with the feature's own scad_lib/ module;
-//   - says whether it survives a cut into tiles;
+//   - says whether it survives a cut into tiles, and how it is carried
+//     when the model is more than one piece or carries the orientation
+//     marks: the marks it carries (PlacedMarks, which the key, the tiles
+//     and the tactile check read without naming it), the room it
+//     needs across a cut into halves and its side of the cut in each half,
+//     the cells a tile keeps with it and what that tile is asked;
 //   - claims what a hand must find on it (TactileClaim), which the tactile
 //     check proves as printed;
 //   - a feature of the pillars themselves (FeaturePhase::Frame) decides
@@ -259,6 +264,29 @@ struct Feature {
     bool (*measures)(const Scene& scene);
     /// False when the model carries it and cannot be cut into tiles.
     bool (*survives_tiles)(const Scene& scene);
+    // How it is carried when the model is more than one piece, or carries
+    // the orientation marks (a body beside the pillars can carry them in
+    // their stead):
+    /// The orientation marks it carries, as placed (what a reader is told
+    /// of them and the tactile check measures); none when it carries none
+    /// (they are in the data, or there are none).
+    std::optional<PlacedMarks> (*carried_marks)(const Scene& scene);
+    /// The z units it needs across the cut into halves in every pillar it
+    /// may stand against, both sides together: the slab the model is cut at
+    /// grows to hold them (gen/model/phases/halves_slab.h). 0 without.
+    int64_t (*room_across_cut_units)(const Scene& scene);
+    /// Its state in one half (gen/model/features/halves.h): `half` is a copy
+    /// of `whole` whose pillars are cut at whole.halves->split_units; it
+    /// keeps its side of the cut there.
+    void (*cut_into_half)(const Scene& whole, Scene& half, HalfKind kind);
+    /// A cut into tiles keeps it whole, in the tile that carries the marks
+    /// (gen/model/features/tiles.h): the kept cells it stands against,
+    /// which stay in that tile.
+    std::vector<int32_t> (*tile_cells)(const Scene& scene);
+    /// What that tile is asked (tile.requests) so that it carries it as the
+    /// whole model placed it rather than placing it again against fewer
+    /// pillars (its cells named by grid cell index).
+    void (*carry_into_tile)(const Scene& whole, SceneParams& tile);
     /// What it asks a hand to find (the tactile check proves it as
     /// printed); none without it.
     std::vector<TactileClaim> (*tactile_claims)(const Scene& scene);

@@ -117,4 +117,11 @@ bool featureKeepsLevel(const Scene& scene, size_t kept) {
     return false;
 }
 
+std::optional<PlacedMarks> carriedMarks(const Scene& scene) {
+    for (const Feature* f : features())
+        if (f->carried_marks)
+            if (std::optional<PlacedMarks> m = f->carried_marks(scene)) return m;
+    return std::nullopt;
+}
+
 }  // namespace tsf

@@ -81,4 +81,9 @@ std::vector<BottomHole> featureBottomHoles(const Scene& scene);
 /// dimple: a tile's code pit is under it).
 bool featureKeepsLevel(const Scene& scene, size_t kept);
 
+/// The orientation marks a feature of the Scene carries (the first that
+/// carries any), as placed; none when no feature carries them (they are in
+/// the data, or there are none).
+std::optional<PlacedMarks> carriedMarks(const Scene& scene);
+
 }  // namespace tsf

@@ -40,6 +40,15 @@ enum class Assembly : uint8_t {
     Parts,     ///< an attachment's own part apart; only what stays with the pillars joined
 };
 
+/// A corner of an attachment's outline seen from +z (the orientation tab's,
+/// the braille legend's plate): its position (mm, on the kXYSnapMm grid)
+/// and, where it is a hex corner of a pillar the body stands against, that
+/// corner's lattice vertex id (hex_grid.h; -1: the body's own).
+struct OutlinePoint {
+    double x_mm = 0, y_mm = 0;
+    int64_t lattice = -1;
+};
+
 /// Edge `edge` (0..5, hex_grid.h) of kept cell `kept` is covered by an
 /// attachment over [bottom_units, top_units]: no wall is drawn there over
 /// that span.

@@ -12,7 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <utility>
+#include <string>
 #include <vector>
 
 #include "gen/field/hex_grid.h"
@@ -73,48 +73,31 @@ struct OrientationTriangle {
     int32_t anchor = -1;      ///< kept index of a cell of the region it stands on
 };
 
-/// A corner of the orientation tab's outline: its position (mm, on the
-/// kXYSnapMm grid) and, where it is a hex corner of a pillar the tab stands
-/// against, that corner's lattice vertex id (hex_grid.h; -1: the tab's own).
-struct TabPoint {
-    double x_mm = 0, y_mm = 0;
-    int64_t lattice = -1;
-};
-
-/// The orientation tab (gen/model/features/tab/orientation_tab.h): a flat plate
-/// from z = 0 to the floor against the pillars' westernmost walls, its
-/// south-west corner cut by the notch, the triangle standing on its top.
-struct OrientationTab {
-    /// The plate's outline, counter-clockwise from +z: starts at the notch's
-    /// mouth on the south edge; the notch's apex is the last point.
-    std::vector<TabPoint> outline;
-    /// joined[n]: the edge outline[n] -> outline[n + 1] is a pillar's wall
-    /// (the plate stands against it from 0 to its top and has no wall there).
-    std::vector<uint8_t> joined;
-    /// The hexagon edges (kept cell, edge 0..5 of hex_grid.h) the plate
-    /// covers from 0 to its top: the joined edges, as the pillars see them.
-    std::vector<std::pair<int32_t, int>> touched;
-    /// The plate's z span: flat, 0 to the floor; mirrored, the span every
-    /// pillar it stands against holds (the thickest band they share).
-    int64_t bottom_units = 0, top_units = 0;
-    double x_west_mm = 0, x_east_mm = 0, y_south_mm = 0, y_north_mm = 0;  ///< its bounding box
-    /// The notch: apex at notch_depth_mm from the south-west corner along the diagonal.
-    double notch_depth_mm = 0, notch_width_mm = 0, notch_opening_deg = 0;
-    /// The triangle: right angle, east end, north end (mm, snapped), standing
-    /// triangle_raise_units above the plate's top and, on a mirrored model
-    /// (under_triangle), as far below its bottom: the underside shows it
-    /// mirrored exactly as it shows the data.
-    std::array<TabPoint, 3> triangle;
-    int64_t triangle_raise_units = 0;
-    bool under_triangle = false;
-    bool has_notch = false, has_triangle = false;
-};
-
+/// The marks in the data (with MarkPlace::Tab, the orientation tab carries
+/// both and these are none).
 struct Marks {
     std::optional<Notch> notch;
     std::optional<OrientationTriangle> triangle;
-    /// MarkPlace::Tab: the tab that carries both marks (notch and triangle above are then none).
-    std::optional<OrientationTab> tab;
+};
+
+/// The orientation marks as placed, wherever they stand (in the data, or on
+/// a feature that carries them: the orientation tab), as a reader is told of
+/// them and the tactile check measures them (placedMarks,
+/// gen/model/features/placed_marks.h).
+struct PlacedMarks {
+    bool has_notch = false;
+    double notch_depth_mm = 0;
+    bool has_triangle = false;
+    double long_leg_mm = 0, short_leg_mm = 0;
+    bool underside = false;  ///< the triangle also raised on the underside (mirrored)
+    /// Where the triangle stands, for a person: "on a flat tab west of the
+    /// pillars" or "on a flat region of the model".
+    std::string triangle_place;
+    /// Where both marks are, in a few words: "on the orientation tab", "in the data".
+    std::string where;
+    /// Said last to a reader ("The tab holds no data."); "" for none.
+    std::string note;
+    double corner_x_mm = 0, corner_y_mm = 0;  ///< the model's south-west corner the marks are read from
 };
 
 /// What lies across one edge of a face.

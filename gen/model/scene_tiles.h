@@ -40,11 +40,12 @@ struct TileRequest {
     std::vector<uint8_t> cells;
     /// The tile's place, pitted into its bottom as its code.
     TilePlace place;
-    /// On the tile that carries them, the whole model's marks, drawn where
-    /// the model has them rather than placed again on the tile's cells: its
-    /// notch and triangle (the triangle's anchor as a grid cell index), or
-    /// its tab (the cells it touches as grid cell indices). None on the
-    /// other tiles.
+    /// On the tile that carries them, the whole model's marks in the data,
+    /// drawn where the model has them rather than placed again on the
+    /// tile's cells: its notch and triangle (the triangle's anchor as a grid
+    /// cell index), or none when a feature carries the marks (an empty
+    /// Marks: the feature's own request carries it, Feature::carry_into_tile
+    /// in gen/model/feature.h). None on the other tiles.
     std::optional<Marks> marks;
 };
 

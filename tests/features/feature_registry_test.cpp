@@ -13,6 +13,7 @@
 #include "gen/model/build_scene.h"
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/marks.h"
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/model/scene_scale.h"
 #include "gen/util/error.h"
 #include "tests/support/fields.h"
@@ -65,7 +66,7 @@ TEST(FeatureRegistry, TheTexturesAreDecidedFirstThenTheLegendThenTheTabWithTheMa
 
 TEST(FeatureRegistry, TheTabComesFirstAmongTheBodiesAndIsReadBackWithTheMarks) {
     const Scene s = buildScene(hill(), tabAndScale());
-    ASSERT_TRUE(s.marks.tab.has_value()) << (s.notes.empty() ? "" : s.notes.back());
+    ASSERT_TRUE(sceneTab(s) != nullptr) << (s.notes.empty() ? "" : s.notes.back());
     ASSERT_TRUE(s.features.get<SceneScale>());
 
     std::vector<std::string> parts;
@@ -87,7 +88,7 @@ TEST(FeatureRegistry, TheTabComesFirstAmongTheBodiesAndIsReadBackWithTheMarks) {
     const std::vector<BoxMm> boxes = attachmentBoxes(s);
     ASSERT_EQ(boxes.size(), 2u);
     EXPECT_LT(boxes[0].x1, boxes[1].x0);
-    EXPECT_DOUBLE_EQ(boxes[0].x0, s.marks.tab->x_west_mm);
+    EXPECT_DOUBLE_EQ(boxes[0].x0, sceneTab(s)->x_west_mm);
 }
 
 TEST(FeatureRegistry, TheTabsBedWidthComesAfterTheFeaturesBesideThePillars) {

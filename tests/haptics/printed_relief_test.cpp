@@ -8,6 +8,7 @@
 
 #include "gen/model/build_scene.h"
 #include "gen/model/features/scale.h"
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/model/scene.h"
 #include "gen/model/features/legend/legend.h"
 #include "haptics/field_mapping.h"
@@ -223,18 +224,18 @@ TEST(PrintedRelief, TheOrientationTabIsFeltWestOfThePillars) {
     p.pitch_mm = 4.0;
     p.marks = MarkParams{};
     const Scene s = buildScene(fieldFromFunction(10, 8, [](int c, int r) { return 2.0 + (c + r) % 3; }), p);
-    ASSERT_TRUE(s.marks.tab.has_value());
+    ASSERT_TRUE(sceneTab(s) != nullptr);
     ReliefInfo info;
     const HeightGrid h = printedRelief(s, &info);
     EXPECT_GT(info.origin_i, 0);
-    EXPECT_NEAR(info.origin_i * info.sample_mm, -s.marks.tab->x_west_mm, info.sample_mm);
+    EXPECT_NEAR(info.origin_i * info.sample_mm, -sceneTab(s)->x_west_mm, info.sample_mm);
     // Every cell is still felt at its centre.
     for (size_t k = 0; k < s.keptCount(); ++k) {
         const GridPoint c = reliefCellCentre(s, s.col[k], s.row[k], info);
         EXPECT_FLOAT_EQ(h.at(int32_t(std::lround(c.gi)), int32_t(std::lround(c.gj))),
                         float(s.zMm(s.top[k] - s.floor_units) / s.mapping.max_height_mm));
     }
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab& t = *sceneTab(s);
     const double cx = (t.triangle[0].x_mm + t.triangle[1].x_mm + t.triangle[2].x_mm) / 3;
     const double cy = (t.triangle[0].y_mm + t.triangle[1].y_mm + t.triangle[2].y_mm) / 3;
     const auto i = int32_t(std::floor(cx / info.sample_mm)) + info.origin_i, j = int32_t(std::floor(cy / info.sample_mm)) + info.origin_j;

@@ -33,24 +33,18 @@ struct MigratedFeature {
 
 const std::vector<MigratedFeature>& migrated() {
     static const std::vector<MigratedFeature> list = {
-        // Its state is still the marks' (OrientationTab, TabPoint in
-        // Marks::tab, gen/model/scene_marks.h), read by the marks, the
-        // halves and the tiles: those names are left out here.
         {"orientation tab",
-         std::regex(R"(\b(placeTab|tabTopAt|tabAreaMm2|meshTabBody|tabBoxMm|tabClaim|tabAttachment|tabProbes|)"
-                    R"(checkTabInScene|checkTab|tabRecord|readTabRecord|tabFactsJson|tabFactsLines|tabWidthMm|)"
-                    R"(tabScadPiece|tabFeature|kTab\w+)\b|features/tab/|scad_tab\.h)"),
+         std::regex(R"(\b(OrientationTab|sceneTab|TileTabRequest|placeTab|tabTopAt|tabAreaMm2|meshTabBody|tabBoxMm|)"
+                    R"(tabClaim|tabAttachment|tabProbes|checkTabInScene|checkTab|tabRecord|readTabRecord|tabFactsJson|)"
+                    R"(tabFactsLines|tabWidthMm|tabScadPiece|tabFeature|kTab\w+)\b|features/tab/|scad_tab\.h)"),
          {
              // Its own files.
              "gen/model/features/tab/orientation_tab.h", "gen/model/features/tab/orientation_tab.cpp",
              "gen/model/features/tab/orientation_tab_record.h", "gen/model/features/tab/orientation_tab_record.cpp",
              "gen/model/features/tab/tab_feature.h", "gen/model/features/tab/tab_feature.cpp",
-             "gen/model/features/tab/tab_scad.cpp",
+             "gen/model/features/tab/tab_scad.cpp", "gen/model/features/tab/tab_state.h",
              // The registry.
              "gen/model/feature_registry.cpp",
-             // The halves' slab keeps room for the tab across the cut
-             // (kTabMinThicknessMm on each side), whatever the marks.
-             "gen/model/phases/halves_slab.cpp",
          }},
         {"scale",
          std::regex(R"(\b(SceneScale|ScaleStep|ScaleRequest|scaleLevels|chooseScaleStep|placeScale|sceneScale|scaleTopAt|)"
@@ -99,9 +93,9 @@ const std::vector<MigratedFeature>& migrated() {
              // files and their lines in the summary.
              "pipeline/verified_tiles.h", "pipeline/verified_tiles.cpp", "verify/tiles_check.h", "verify/tiles_check.cpp",
              "app/tiles_output.h", "app/tiles_output.cpp", "app/gen_run/bed_tiles.cpp",
-             // A tile carries the model's marks where the model has them (its
-             // request's marks: the notch and triangle, or the tab).
-             "gen/model/phases/model_marks.cpp", "gen/model/features/tab/tab_feature.cpp",
+             // A tile carries the model's marks in the data where the model
+             // has them (its request's notch and triangle).
+             "gen/model/phases/model_marks.cpp",
          }},
         {"legend",
          std::regex(R"(\b(SceneLegend|sceneLegend|placeLegend|LegendParams|LegendLayout|LegendDot|layoutLegend|)"

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/util/error.h"
 #include "gen/scad/scad_emitter.h"
 #include "gen/scad/scad_library.h"
@@ -191,7 +192,7 @@ TEST(ScadEmitter, ParameterSetsLeaveTheOrientationTabOutWhereItWouldNotStand) {
     SceneParams p = smallParams(Bottom::Flat);
     p.marks = MarkParams{};
     const Scene scene = buildScene(bumpyField(9, 8), p);
-    ASSERT_TRUE(scene.marks.tab.has_value());
+    ASSERT_TRUE(sceneTab(scene) != nullptr);
     const nlohmann::json sets = nlohmann::json::parse(emitScadParameterSets(scene))["parameterSets"];
     EXPECT_EQ(sets["as generated"]["show_orientation_tab"], "true");
     for (const char* name : {"layer steps 0.2 mm", "mirrored bottom", "half size"})

@@ -19,6 +19,7 @@
 #include "gen/mesh/halves_mesh.h"
 #include "gen/mesh_io/stl_reader.h"
 #include "runners/openscad/engine_output_check.h"
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/scad/scad_emitter.h"
 #include "verify/verify_model.h"
 #include "gen/model/build_scene.h"
@@ -172,7 +173,7 @@ TEST_P(CrossEngineClassTextures, RendersTheSameSolidAsTheDirectMesher) {
     ASSERT_TRUE((sceneTextures(scene) != nullptr));
     EXPECT_EQ(sceneTextures(scene)->textures_used, 5);
     EXPECT_EQ(scene.y_scale, kRowsAPitchApart);
-    ASSERT_TRUE(scene.marks.tab.has_value());
+    ASSERT_TRUE(sceneTab(scene) != nullptr);
     const fs::path dir = test::scratchDir("textures_" + engine_name + "_" + toString(bottom));
     ScadOptions opts;
     opts.inline_library = bottom == Bottom::Flat;
@@ -319,15 +320,15 @@ TEST_P(CrossEngineTab, RendersTheSameSolidAsTheDirectMesher) {
         p.steepness = 3.0;
     }
     const Scene scene = buildScene(field, p);
-    ASSERT_TRUE(scene.marks.tab.has_value());
+    ASSERT_TRUE(sceneTab(scene) != nullptr);
     EXPECT_FALSE(scene.marks.notch.has_value());
     // Flat: two contacts and the notch filled between them; mirrored: one contact.
-    if (bottom == Bottom::Flat) EXPECT_GE(scene.marks.tab->touched.size(), 4u);
-    else EXPECT_EQ(scene.marks.tab->touched.size(), 1u);
+    if (bottom == Bottom::Flat) EXPECT_GE(sceneTab(scene)->touched.size(), 4u);
+    else EXPECT_EQ(sceneTab(scene)->touched.size(), 1u);
     ScadOptions opts;
     ASSERT_TRUE(parseScadStrategy(strategy_name, opts.strategy));
     opts.inline_library = strategy_name == "polyhedron";
-    EXPECT_EQ(scene.marks.tab->under_triangle, bottom == Bottom::Mirrored);
+    EXPECT_EQ(sceneTab(scene)->under_triangle, bottom == Bottom::Mirrored);
     const fs::path dir = test::scratchDir("tab_" + engine_name + "_" + strategy_name + "_" + toString(bottom));
     writeScad(scene, opts, (dir / "model.scad").string());
     expectSameSolid(*engineNamed(engine_name).engine, scene, dir / "model.scad", dir / "model.stl");
@@ -426,7 +427,7 @@ TEST_P(CrossEngineHalves, RendersTheSameHalfAsTheDirectMesher) {
     p.halves = true;
     const Scene scene = buildScene(field, p);
     ASSERT_TRUE(scene.halves.has_value());
-    ASSERT_TRUE(scene.marks.tab.has_value());
+    ASSERT_TRUE(sceneTab(scene) != nullptr);
     const bool upper = kind == HalfKind::Upper;
     const std::string piece = upper ? "upper" : "lower";
     const fs::path dir = test::scratchDir("halves_" + engine_name + "_" + piece);

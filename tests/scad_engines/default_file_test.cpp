@@ -22,6 +22,7 @@
 #include "same_solid.h"
 #include "gen/model/build_scene.h"
 #include "gen/model/features/scale.h"
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/readers/load_field.h"
 #include "gen/scad/scad_emitter.h"
 #include "gen/model/features/legend/legend.h"
@@ -92,7 +93,7 @@ DefaultModel modelNamed(const std::string& name) {
 
 // The Scene without its tab: what the file draws with show_orientation_tab = false.
 Scene withoutTab(Scene s) {
-    s.marks.tab.reset();
+    s.features.reset<OrientationTab>();
     return s;
 }
 
@@ -106,7 +107,7 @@ TEST_P(DefaultScadFile, RendersCleanAndEqualToTheDirectMesh) {
     TSF_NEED_ENGINE(test::engineNamed(engine_name));
     const DefaultModel m = modelNamed(model_name);
     const Scene scene = buildScene(m.field, m.params);
-    ASSERT_TRUE(scene.marks.tab.has_value()) << "the default model carries the tab";
+    ASSERT_TRUE(sceneTab(scene) != nullptr) << "the default model carries the tab";
     if (model_name == "true_aspect") EXPECT_EQ(scene.y_scale, kRowsAPitchApart);
     if (model_name == "volcano") {
         ASSERT_TRUE(sceneLegend(scene) != nullptr);
@@ -148,9 +149,9 @@ TEST_P(DefaultScadFileEdit, AValueBesideTheTabMovesOnlyItsPillar) {
     HexField field = test::fieldFromFunction(10, 8, [](int c, int r) { return 2.0 + (c * 3 + r * 5) % 7; });
     const SceneParams params = defaults();
     const Scene scene = buildScene(field, params);
-    ASSERT_TRUE(scene.marks.tab.has_value());
-    ASSERT_FALSE(scene.marks.tab->touched.empty());
-    const size_t k = size_t(scene.marks.tab->touched.front().first);
+    ASSERT_TRUE(sceneTab(scene) != nullptr);
+    ASSERT_FALSE(sceneTab(scene)->touched.empty());
+    const size_t k = size_t(sceneTab(scene)->touched.front().first);
     const int32_t col = scene.col[k], row = scene.row[k];
     const fs::path dir = test::scratchDir("default_edit_" + engine_name);
     writeScad(scene, ScadOptions{}, (dir / "model.scad").string());

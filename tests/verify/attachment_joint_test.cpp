@@ -14,6 +14,7 @@
 #include "gen/model/build_scene.h"
 #include "gen/model/features/legend/legend_join.h"
 #include "gen/model/features/scale.h"
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/model/scene.h"
 #include "tests/support/fields.h"
 #include "tests/support/files.h"
@@ -85,7 +86,7 @@ const AttachmentJoint* jointOf(const std::vector<AttachmentJoint>& joints, const
 TEST(AttachmentJoints, TheExtrasOfARegularGridHoldAHandsPush) {
     const Scene s = buildScene(test::fieldFromFunction(40, 30, [](int c, int r) { return 1.0 + (c * 7 + r * 3) % 11; }),
                                extrasParams());
-    ASSERT_TRUE(sceneLegend(s) && sceneScale(s) && s.marks.tab);
+    ASSERT_TRUE(sceneLegend(s) && sceneScale(s) && sceneTab(s));
     const std::vector<AttachmentJoint> joints = attachmentJoints(s, kHandPushN);
     ASSERT_EQ(joints.size(), 3u);
     for (const AttachmentJoint& j : joints) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <random>
 
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/util/error.h"
 #include "gen/mesh/direct_mesher.h"
 #include "gen/model/features/scale.h"
@@ -240,7 +241,7 @@ TEST(SceneJson, TheOrientationTabIsRecordedAsPlacedAndCheckedWhenRead) {
     p.pitch_mm = 5.0;
     p.cull = Cull::None;
     const Scene s = buildScene(test::fieldFromFunction(8, 10, [](int c, int r) { return 1.0 + (c * 3 + r) % 5; }), p);
-    ASSERT_TRUE(s.marks.tab.has_value());
+    ASSERT_TRUE(sceneTab(s) != nullptr);
     const nlohmann::json j = sceneToJson(s);
     EXPECT_GE(j["version"], 6);  // the tab since version 6
     ASSERT_TRUE(j["marks"]["tab"].is_object());

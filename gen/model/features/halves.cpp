@@ -7,8 +7,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "gen/util/error.h"
+#include "gen/model/feature_registry.h"
 #include "gen/model/scene.h"
+#include "gen/util/error.h"
 
 namespace tsf {
 namespace {
@@ -207,16 +208,9 @@ Scene halfScene(const Scene& s, HalfKind kind) {
         for (PlanarFace& f : h.faces.faces) f.raise_units = 0;
         if (h.marks.triangle) h.marks.triangle->raise_units = 0;
     }
-    // The orientation tab lies across the cut (gen/model/features/tab/orientation_tab.h):
-    // each half keeps its side of it, standing on the cut, with the triangle
-    // on its face away from the cut (the lower half's is the underside's).
-    if (h.marks.tab) {
-        OrientationTab& t = *h.marks.tab;
-        const int64_t bottom = s.marks.tab->bottom_units, top = s.marks.tab->top_units;
-        t.bottom_units = 0;
-        t.top_units = kind == HalfKind::Upper ? top - cut : cut - bottom;
-        t.under_triangle = false;
-    }
+    // A feature that lies across the cut keeps its side of it (gen/model/feature.h).
+    for (const Feature* f : features())
+        if (f->cut_into_half) f->cut_into_half(s, h, kind);
     return h;
 }
 

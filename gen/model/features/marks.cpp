@@ -766,39 +766,4 @@ ProbeSet markProbes(const Scene& s) {
     return set;
 }
 
-PlacedMarks placedMarks(const Scene& s) {
-    PlacedMarks m;
-    if (s.marks.tab) {
-        const OrientationTab& t = *s.marks.tab;
-        m.has_notch = t.has_notch;
-        m.notch_depth_mm = t.notch_depth_mm;
-        m.has_triangle = t.has_triangle;
-        if (t.has_triangle) {
-            const double ex = std::hypot(t.triangle[1].x_mm - t.triangle[0].x_mm, t.triangle[1].y_mm - t.triangle[0].y_mm);
-            const double ny = std::hypot(t.triangle[2].x_mm - t.triangle[0].x_mm, t.triangle[2].y_mm - t.triangle[0].y_mm);
-            m.long_leg_mm = std::max(ex, ny);
-            m.short_leg_mm = std::min(ex, ny);
-        }
-        m.underside = t.has_triangle && t.under_triangle;
-        m.triangle_place = "on a flat tab west of the pillars";
-        m.where = "on the orientation tab";
-        m.note = "The tab holds no data.";
-        m.corner_x_mm = t.x_west_mm;
-        m.corner_y_mm = t.y_south_mm;
-        return m;
-    }
-    if (s.marks.notch) {
-        m.has_notch = true;
-        m.notch_depth_mm = s.marks.notch->depth_mm;
-    }
-    if (s.marks.triangle) {
-        m.has_triangle = true;
-        m.long_leg_mm = std::max(s.marks.triangle->leg_x_mm, s.marks.triangle->leg_y_mm);
-        m.short_leg_mm = std::min(s.marks.triangle->leg_x_mm, s.marks.triangle->leg_y_mm);
-    }
-    m.triangle_place = "on a flat region of the model";
-    m.where = "in the data";
-    return m;
-}
-
 }  // namespace tsf

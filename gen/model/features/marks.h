@@ -82,26 +82,6 @@ PlanarPoint readPoint(const Scene& scene, size_t kept);
 /// centre (the orientation triangle), 0 where no mark stands.
 int64_t markRaiseAtCentre(const Scene& scene, size_t kept);
 
-/// The orientation marks as placed, wherever they stand (in the data, or on
-/// the orientation tab): what a reader is told of them and what the tactile
-/// check measures.
-struct PlacedMarks {
-    bool has_notch = false;
-    double notch_depth_mm = 0;
-    bool has_triangle = false;
-    double long_leg_mm = 0, short_leg_mm = 0;
-    bool underside = false;  ///< the triangle also raised on the underside (mirrored)
-    /// Where the triangle stands, for a person: "on a flat tab west of the
-    /// pillars" or "on a flat region of the model".
-    std::string triangle_place;
-    /// Where both marks are, in a few words: "on the orientation tab", "in the data".
-    std::string where;
-    /// Said last to a reader ("The tab holds no data."); "" for none.
-    std::string note;
-    double corner_x_mm = 0, corner_y_mm = 0;  ///< the model's south-west corner the marks are read from
-};
-PlacedMarks placedMarks(const Scene& scene);
-
 /// The read-back of the marks in the data (on a tab, the tab's feature
 /// reads them back in a set of the same name): the triangle at its centroid and a fifth of the way in from each
 /// corner (its region's top + its raise), and inside the notch's V a

@@ -51,6 +51,11 @@ const Feature& scaleFeature() {
         .scad_piece = scaleScadPiece,
         .measures = scaleMeasures,
         .survives_tiles = scaleSurvivesTiles,
+        .carried_marks = nullptr,
+        .room_across_cut_units = nullptr,
+        .cut_into_half = nullptr,
+        .tile_cells = nullptr,
+        .carry_into_tile = nullptr,
         .tactile_claims = scaleTactileClaims,
         .asked = scaleAsked,
         .needs_heights = true,  // a class map's classes at one height have none to measure

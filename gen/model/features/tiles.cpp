@@ -36,14 +36,15 @@ BoxMm cellBox(const Scene& s, size_t k) {
     return b;
 }
 
-// The kept cells the orientation marks are drawn on or stand against: they
-// stay in one tile.
+// The kept cells the orientation marks are drawn on or stand against, and
+// those of the features a tile keeps whole with them: they stay in one tile.
 std::vector<int32_t> markCells(const Scene& s) {
     std::vector<int32_t> out;
     for (size_t k = 0; k < s.drawn_by_face.size(); ++k)
         if (s.drawn_by_face[k]) out.push_back(int32_t(k));
-    if (s.marks.tab)
-        for (const auto& [k, e] : s.marks.tab->touched) out.push_back(k);
+    for (const Feature* f : features())
+        if (f->tile_cells)
+            for (const int32_t k : f->tile_cells(s)) out.push_back(k);
     if (s.marks.triangle && s.marks.triangle->anchor >= 0) out.push_back(s.marks.triangle->anchor);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -439,13 +440,11 @@ SceneParams tileParams(const Scene& whole, const TileLayout& L, int32_t tile) {
     request.place = TilePlace{tile / L.cols, tile % L.cols, L.rows, L.cols};
     const bool notch_here = tile == L.marks_tile && whole.marks.notch;
     const bool triangle_here = tile == L.triangle_tile && whole.marks.triangle;
-    if (tile == L.marks_tile && whole.marks.tab) {
-        // The model's own tab, not one placed again against fewer pillars.
-        Marks m;
-        m.tab = whole.marks.tab;
-        for (auto& [k, e] : m.tab->touched) k = int32_t(whole.grid.index(whole.col[size_t(k)], whole.row[size_t(k)]));
-        request.marks = std::move(m);
-    } else if (!whole.marks.tab && (notch_here || triangle_here)) {
+    const bool carried = carriedMarks(whole).has_value();
+    if (tile == L.marks_tile && carried) {
+        // A feature carries the marks (below): none in the data.
+        request.marks = Marks{};
+    } else if (!carried && (notch_here || triangle_here)) {
         // Marks in the data: the model's own, not placed again on fewer cells.
         Marks m;
         if (notch_here) m.notch = whole.marks.notch;
@@ -462,6 +461,11 @@ SceneParams tileParams(const Scene& whole, const TileLayout& L, int32_t tile) {
         p.marks = withoutMarks();
         p.marks.place = place;
     }
+    // The features a tile keeps whole go with the marks: the model's own,
+    // not placed again against fewer pillars.
+    if (tile == L.marks_tile)
+        for (const Feature* f : features())
+            if (f->carry_into_tile) f->carry_into_tile(whole, p);
     p.requests.set(std::move(request));
     return p;
 }

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <climits>
 
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/halves.h"
-#include "gen/model/features/tab/orientation_tab.h"
 
 namespace tsf {
 
@@ -25,13 +25,13 @@ void growSlabForHalves(const std::vector<int64_t>& h_units, int64_t flat_pit_uni
     // The pins go where the pillars have room for them on both sides
     // of the cut (material there anyway: placeHalves); only when no
     // three pillars have, the slab grows to hold them everywhere.
-    // At least the orientation tab's room: it lies across the cut, as
-    // thick as the base (at least kTabMinThicknessMm) on each side,
-    // in every pillar it may stand against (orientation_tab.h); and
-    // no pillar ends at the cut (it would vanish from one half).
-    const int64_t base_units = snapUnits(s.params.base_mm, s.z_snap_mm);
-    const int64_t tab_room = 2 * std::max({base_units, snapUnits(kTabMinThicknessMm, s.z_snap_mm), int64_t(1)});
-    const int64_t want = std::max(s.params.halves_slab_units.value_or(0), tab_room);
+    // At least the room each feature needs across the cut (a body that
+    // lies across it, gen/model/feature.h), and a unit on each side: no
+    // pillar ends at the cut (it would vanish from one half).
+    int64_t room = 2;
+    for (const Feature* f : features())
+        if (f->room_across_cut_units) room = std::max(room, f->room_across_cut_units(s));
+    const int64_t want = std::max(s.params.halves_slab_units.value_or(0), room);
     const int64_t grow = std::max<int64_t>(0, want - (lowest_top - highest_bottom));
     s.mirror_thickness_units += grow;
     s.nodata_pit_units = std::min(flat_pit_units, (s.mirror_thickness_units - 1) / 2);

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "gen/model/feature_registry.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/scene_tiles.h"
 #include "gen/util/error.h"
@@ -28,7 +29,7 @@ void placeModelMarks(const SceneParams& params, Scene& s) {
 }
 
 bool tabFallsBackToData(const SceneParams& params, const Scene& s) {
-    return marksOnTab(params) && !s.marks.tab && s.keptCount() > 0;
+    return marksOnTab(params) && !carriedMarks(s) && s.keptCount() > 0;
 }
 
 SceneParams marksInData(const SceneParams& params) {

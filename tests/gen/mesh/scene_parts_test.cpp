@@ -83,14 +83,14 @@ TEST(SceneParts, PillarsMarksAndLegendAreClosedBodiesThatAddUpToTheModel) {
 // the pillars' west walls, the parts adding up to the joined model.
 TEST(SceneParts, TheOrientationTabIsTheMarksPart) {
     const Scene s = partsScene(/*legend=*/false, MarkPlace::Tab);
-    ASSERT_TRUE(s.marks.tab.has_value());
+    ASSERT_TRUE(sceneTab(s) != nullptr);
     const std::vector<MeshPart> parts = meshSceneParts(s);
     ASSERT_EQ(parts.size(), 2u);
     EXPECT_EQ(parts[1].name, "marks");
     const test::Invariants inv = test::checkInvariants(parts[1].mesh);
     EXPECT_TRUE(inv.closedManifold()) << inv.describe();
     EXPECT_EQ(inv.components, 1u);
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab& t = *sceneTab(s);
     // The plate (its outline's area times the floor) and the triangle on it (mm^3).
     const double triangle = (t.triangle[1].x_mm - t.triangle[0].x_mm) * (t.triangle[2].y_mm - t.triangle[0].y_mm) / 2 *
                             s.zMm(t.triangle_raise_units);
@@ -113,8 +113,8 @@ TEST(SceneParts, WithoutALegendThereIsNoLegendPartAndMirroredModelsSplitToo) {
     p.pitch_mm = 4.0;
     p.marks = MarkParams{};  // on the tab, the triangle on both its faces
     const Scene m = buildScene(f, p);
-    ASSERT_TRUE(m.marks.tab.has_value());
-    EXPECT_TRUE(m.marks.tab->under_triangle);
+    ASSERT_TRUE(sceneTab(m) != nullptr);
+    EXPECT_TRUE(sceneTab(m)->under_triangle);
     const std::vector<MeshPart> mparts = meshSceneParts(m);
     ASSERT_EQ(mparts.size(), 2u);
     VerifyOptions vo;

@@ -12,6 +12,7 @@
 #include "gen/model/attachments.h"
 #include "gen/model/build_scene.h"
 #include "gen/model/feature_registry.h"
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/model/features/tiles.h"
 #include "pipeline/verified_tiles.h"
 #include "tests/support/fields.h"
@@ -40,7 +41,7 @@ constexpr double kBedW = 90, kBedD = 90;  // a 100 x 100 mm bed less 5 mm each s
 
 TEST(TilePlan, EveryCellInOneTileEachTileWholeAndOnTheBed) {
     const Scene s = buildScene(hill(), hillParams());
-    ASSERT_TRUE(s.marks.tab);
+    ASSERT_TRUE(sceneTab(s));
     const TileLayout L = planTiles(s, attachmentBoxes(s), kBedW, kBedD);
     EXPECT_GE(L.rows * L.cols, 6);  // 267 x 125 mm with the tab cannot go in fewer than 3 x 2
     EXPECT_LE(L.rows * L.cols, 12);
@@ -77,7 +78,7 @@ TEST(TilePlan, EveryCellInOneTileEachTileWholeAndOnTheBed) {
     }
     // The tab's cells and the marks are in one tile.
     ASSERT_GE(L.marks_tile, 0);
-    for (const auto& [k, e] : s.marks.tab->touched)
+    for (const auto& [k, e] : sceneTab(s)->touched)
         EXPECT_EQ(L.tile_of_cell[size_t(s.grid.index(s.col[size_t(k)], s.row[size_t(k)]))], L.marks_tile);
 }
 
@@ -168,7 +169,7 @@ TEST(Tiles, EachTileVerifiedAndTogetherTheyAreTheModel) {
             EXPECT_EQ(t.scene.col[k], t.scene.col[corner]);
             EXPECT_GT(t.scene.row[k], t.scene.row[corner]);  // rows count south
         }
-        with_marks += t.scene.marks.tab.has_value();
+        with_marks += sceneTab(t.scene) != nullptr;
         tiles_volume += signedVolume(t.model.mesh);
         pits += pitVolume(t.scene);
     }

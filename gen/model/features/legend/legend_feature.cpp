@@ -56,6 +56,11 @@ const Feature& legendFeature() {
         .scad_piece = legendScadPiece,
         .measures = nullptr,
         .survives_tiles = legendSurvivesTiles,
+        .carried_marks = nullptr,
+        .room_across_cut_units = nullptr,
+        .cut_into_half = nullptr,
+        .tile_cells = nullptr,
+        .carry_into_tile = nullptr,
         // The braille dots' own check (verify/tactile.h, tactile_braille)
         // proves them against the standards' range, not a least rise alone.
         .tactile_claims = nullptr,

@@ -44,7 +44,7 @@ PlateSpec plateSpec(const Scene& s, bool dots, const PlateOutline& outline) {
     // pit that meets the plate's own side only at that corner, below its
     // top): the plate's sides split there too, so no T-junction.
     const int64_t ids = latticeVertexIdCount(s.grid);
-    for (const TabPoint& p : spec.outline.points) {
+    for (const OutlinePoint& p : spec.outline.points) {
         std::vector<double> z;
         if (p.lattice >= 0 && p.lattice < ids) {
             int32_t cols[3], rows[3];

@@ -77,7 +77,7 @@ JoinedBody meshPlateBody(const PlateSpec& s, bool joined) {
     const uint32_t n = uint32_t(o.points.size());
     // Corners of the outline on the bottom (0 .. n-1) and the top (n .. 2n-1).
     for (const double z : {z0, h})
-        for (const TabPoint& p : o.points) {
+        for (const OutlinePoint& p : o.points) {
             b.add(p.x_mm, p.y_mm, z);
             body.lattice_id.push_back(p.lattice);
         }

@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "gen/model/scene_marks.h"
+#include "gen/model/scene_attachments.h"
 
 namespace tsf {
 
@@ -31,7 +31,7 @@ struct Scene;
 /// pillars standing inside it. Outlines may touch at a corner (a hexagon's
 /// tip on the south edge), never cross.
 struct PlateOutline {
-    std::vector<TabPoint> points;  ///< mm; lattice: the lattice vertex id of a kept cell's corner, -1 otherwise
+    std::vector<OutlinePoint> points;  ///< mm; lattice: the lattice vertex id of a kept cell's corner, -1 otherwise
     struct Edge {
         uint32_t a = 0, b = 0;  ///< into points
         int32_t cell = -1;      ///< the kept cell whose wall this is, -1: the plate's own side

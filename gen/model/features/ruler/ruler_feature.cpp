@@ -41,6 +41,11 @@ const Feature& rulerFeature() {
         .scad_piece = rulerScadPiece,
         .measures = nullptr,
         .survives_tiles = rulerSurvivesTiles,
+        .carried_marks = nullptr,
+        .room_across_cut_units = nullptr,
+        .cut_into_half = nullptr,
+        .tile_cells = nullptr,
+        .carry_into_tile = nullptr,
         .tactile_claims = rulerTactileClaims,
     };
     return feature;

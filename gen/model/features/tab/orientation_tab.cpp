@@ -76,7 +76,7 @@ const FootprintClaim* claimNorthOfTab(const Scene& s) {
     return south;
 }
 
-TabPoint corner(const Scene& s, int32_t k, int c) {
+OutlinePoint corner(const Scene& s, int32_t k, int c) {
     const size_t kk = size_t(k);
     const Vec3 p = s.point(hexCorner(s.grid, s.col[kk], s.row[kk], c), 0);
     return {p.x, p.y, hexCornerId(s.grid, s.col[kk], s.row[kk], c)};
@@ -84,7 +84,7 @@ TabPoint corner(const Scene& s, int32_t k, int c) {
 
 // Appends an outline corner; joined_after: the edge from it to the next
 // corner is a pillar's wall.
-void addCorner(OrientationTab& t, TabPoint p, bool joined_after) {
+void addCorner(OrientationTab& t, OutlinePoint p, bool joined_after) {
     if (!t.outline.empty() && t.outline.back().x_mm == p.x_mm && t.outline.back().y_mm == p.y_mm) {
         t.joined.back() = joined_after ? 1 : 0;
         return;
@@ -129,8 +129,8 @@ void endOutline(const Scene& s, OrientationTab& t, const TabSize& size) {
     }
     if (m.triangle) {
         const double x = snapXy(t.x_west_mm + size.inset), y = snapXy(t.y_south_mm + size.inset);
-        t.triangle = {TabPoint{x, y, -1}, TabPoint{snapXy(x + kTabTriangleLegMm), y, -1},
-                      TabPoint{x, snapXy(y + kTabTriangleLegMm * kTriangleLegRatio), -1}};
+        t.triangle = {OutlinePoint{x, y, -1}, OutlinePoint{snapXy(x + kTabTriangleLegMm), y, -1},
+                      OutlinePoint{x, snapXy(y + kTabTriangleLegMm * kTriangleLegRatio), -1}};
         t.triangle_raise_units = std::max<int64_t>(1, snapUnits(m.triangle_height_mm, s.z_snap_mm));
         t.has_triangle = true;
         t.under_triangle = s.params.bottom == Bottom::Mirrored;
@@ -141,7 +141,7 @@ void endOutline(const Scene& s, OrientationTab& t, const TabSize& size) {
 // kept cell k) is k: where the tab's own edge meets k's wall there, no
 // other pillar's wall (a pit's, whose top is below the tab's) starts at
 // that corner.
-bool aloneAt(const Scene& s, const TabPoint& p, int32_t k) {
+bool aloneAt(const Scene& s, const OutlinePoint& p, int32_t k) {
     if (p.lattice < 0) return false;
     int32_t cols[3], rows[3];
     latticeVertexCells(s.grid, p.lattice, cols, rows);
@@ -167,7 +167,7 @@ OrientationTab buildTab(const Scene& s, int64_t i_west, double y_south, double y
     t.y_north_mm = y_north;
     const double x_back = snapXy(t.x_east_mm - kTabSetbackMm);
     beginOutline(s, t);
-    const TabPoint first = corner(s, contacts.front(), kLowerLeft), last = corner(s, contacts.back(), kUpperLeft);
+    const OutlinePoint first = corner(s, contacts.front(), kLowerLeft), last = corner(s, contacts.back(), kUpperLeft);
     addCorner(t, {x_back, t.y_south_mm, -1}, false);
     addCorner(t, {x_back, first.y_mm, -1}, false);
     // The tab fills the outline's notches between contacts (else a hole
@@ -213,10 +213,10 @@ double tabJointStressMpa(const Scene& s, const OrientationTab& t) {
 
 // Where a point lies against a simple polygon (mm): -1 outside, 0 on its
 // boundary, 1 inside.
-int pointInOutline(const std::vector<TabPoint>& poly, double x, double y) {
+int pointInOutline(const std::vector<OutlinePoint>& poly, double x, double y) {
     bool inside = false;
     for (size_t a = 0, n = poly.size(), b = n - 1; a < n; b = a++) {
-        const TabPoint &p = poly[a], &q = poly[b];
+        const OutlinePoint &p = poly[a], &q = poly[b];
         const double cross = (q.x_mm - p.x_mm) * (y - p.y_mm) - (q.y_mm - p.y_mm) * (x - p.x_mm);
         const double len2 = (q.x_mm - p.x_mm) * (q.x_mm - p.x_mm) + (q.y_mm - p.y_mm) * (q.y_mm - p.y_mm);
         if (std::fabs(cross) <= 1e-9 * std::max(1.0, len2) && x >= std::min(p.x_mm, q.x_mm) - 1e-9 &&
@@ -230,7 +230,7 @@ int pointInOutline(const std::vector<TabPoint>& poly, double x, double y) {
 // Whether the tab's outline is clear of the pillars `near` (kept indices):
 // no centre, corner or edge middle of one inside it, and no corner on its
 // own edges (on the walls it stands against only at the walk's corners).
-bool clearOfPillars(const Scene& s, const OrientationTab& t, const std::vector<TabPoint>& walk, const std::vector<int32_t>& near) {
+bool clearOfPillars(const Scene& s, const OrientationTab& t, const std::vector<OutlinePoint>& walk, const std::vector<int32_t>& near) {
     const double reach_y = s.pitch_mm * s.y_scale;
     for (const int32_t k : near) {
         const size_t kk = size_t(k);
@@ -238,10 +238,10 @@ bool clearOfPillars(const Scene& s, const OrientationTab& t, const std::vector<T
         if (c.x - s.pitch_mm > t.x_east_mm || c.y + reach_y < t.y_south_mm || c.y - reach_y > t.y_north_mm) continue;
         if (pointInOutline(t.outline, c.x, c.y) >= 0) return false;
         for (int e = 0; e < kHexCorners; ++e) {
-            const TabPoint p = corner(s, k, e), q = corner(s, k, (e + 1) % kHexCorners);
+            const OutlinePoint p = corner(s, k, e), q = corner(s, k, (e + 1) % kHexCorners);
             const int where = pointInOutline(t.outline, p.x_mm, p.y_mm);
             if (where > 0) return false;
-            if (where == 0 && std::none_of(walk.begin(), walk.end(), [&](const TabPoint& w) { return w.x_mm == p.x_mm && w.y_mm == p.y_mm; }))
+            if (where == 0 && std::none_of(walk.begin(), walk.end(), [&](const OutlinePoint& w) { return w.x_mm == p.x_mm && w.y_mm == p.y_mm; }))
                 return false;
             if (pointInOutline(t.outline, 0.5 * (p.x_mm + q.x_mm), 0.5 * (p.y_mm + q.y_mm)) > 0) return false;
         }
@@ -283,17 +283,17 @@ std::optional<OrientationTab> outlineTab(const Scene& s, int64_t i_west, double 
     double best_stress = INFINITY;
     for (const int32_t k0 : near) {
         if (s.keptNeighbour(size_t(k0), kSouthWestEdge) >= 0 || !footCanTouch(s, k0)) continue;
-        const TabPoint start = corner(s, k0, kBottom);
+        const OutlinePoint start = corner(s, k0, kBottom);
         if (start.y_mm != y_south || !aloneAt(s, start, k0)) continue;
         std::vector<std::pair<int32_t, int>> walk;
-        std::vector<TabPoint> at{start};
+        std::vector<OutlinePoint> at{start};
         int32_t k = k0;
         int e = kSouthWestEdge;
         for (int steps = 0; steps < 400; ++steps) {
             if (!footCanTouch(s, k)) break;
             walk.push_back({k, e});
             at.push_back(corner(s, k, e));
-            const TabPoint& v = at.back();
+            const OutlinePoint& v = at.back();
             if (v.y_mm < start.y_mm || v.y_mm > y_cap) break;
             // The north edge leaves at a right angle to the wall above it:
             // at a top tip, or at a lower-left corner below an open west wall.
@@ -340,8 +340,8 @@ std::optional<OrientationTab> outlineTab(const Scene& s, int64_t i_west, double 
 }
 
 // Inside the triangle (edges included), mm.
-bool inTriangle(const std::array<TabPoint, 3>& t, double x, double y) {
-    auto side = [&](const TabPoint& a, const TabPoint& b) {
+bool inTriangle(const std::array<OutlinePoint, 3>& t, double x, double y) {
+    auto side = [&](const OutlinePoint& a, const OutlinePoint& b) {
         return (b.x_mm - a.x_mm) * (y - a.y_mm) - (b.y_mm - a.y_mm) * (x - a.x_mm);
     };
     return side(t[0], t[1]) >= 0 && side(t[1], t[2]) >= 0 && side(t[2], t[0]) >= 0;
@@ -352,7 +352,7 @@ bool inTriangle(const std::array<TabPoint, 3>& t, double x, double y) {
 double tabWidthMm(const MarkParams& m) { return tabSize(m).width; }
 
 void placeTab(Scene& s) {
-    s.marks.tab.reset();
+    s.features.reset<OrientationTab>();
     if (!marksOnTab(s.params) || s.keptCount() == 0) return;
     const TabSize size = tabSize(s.params.marks);
 
@@ -459,37 +459,40 @@ void placeTab(Scene& s) {
             };
             const int64_t step = std::max<int64_t>(1, snapUnits(1.0, s.z_snap_mm));
             for (int64_t want = std::max(thick, snapUnits(s.params.base_mm, s.z_snap_mm));; want += step) {
-                s.marks.tab = buildTab(s, i_west, y_south, y_north, best, best_fillers, size, centred(want));
-                if (want >= held.top - held.bottom || tabJointStressMpa(s, *s.marks.tab) <= kPrintedPlaInterlayerMpa) break;
+                const OrientationTab& t =
+                    s.features.set(buildTab(s, i_west, y_south, y_north, best, best_fillers, size, centred(want)));
+                if (want >= held.top - held.bottom || tabJointStressMpa(s, t) <= kPrintedPlaInterlayerMpa) break;
             }
         } else {
-            s.marks.tab = buildTab(s, i_west, y_south, y_north, best, best_fillers, size, best_band);
+            s.features.set(buildTab(s, i_west, y_south, y_north, best, best_fillers, size, best_band));
         }
     }
     // On a flat model whose west side is not a straight line, the tab on
     // the westernmost line may touch one pillar and snap off: one that
     // follows the outline stands against more of it.
     if (!mirrored && !cut_band) {
-        const double stress = s.marks.tab ? tabJointStressMpa(s, *s.marks.tab) : INFINITY;
+        const OrientationTab* placed = sceneTab(s);
+        const double stress = placed ? tabJointStressMpa(s, *placed) : INFINITY;
         if (stress > kPrintedPlaInterlayerMpa)
             if (std::optional<OrientationTab> along = outlineTab(s, i_west, y_south, size);
                 along && tabJointStressMpa(s, *along) < stress)
-                s.marks.tab = std::move(along);
+                s.features.set(std::move(*along));
     }
-    if (s.marks.tab) return;
+    if (sceneTab(s)) return;
     s.notes.push_back("no orientation tab: the tab that carries the marks (" + formatSignificant(size.width, 3) + " x " +
                       formatSignificant(size.depth, 3) + " mm) finds no pillar on the model's west side to stand "
                       "against, clear of " + blocked);
 }
 
 std::optional<int64_t> tabTopAt(const Scene& s, double x, double y) {
-    if (!s.marks.tab) return std::nullopt;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return std::nullopt;
+    const OrientationTab& t = *tab;
     // Even-odd test against the outline (points on it count as inside).
     bool inside = false;
     const size_t n = t.outline.size();
     for (size_t a = 0, b = n - 1; a < n; b = a++) {
-        const TabPoint &p = t.outline[a], &q = t.outline[b];
+        const OutlinePoint &p = t.outline[a], &q = t.outline[b];
         if ((p.y_mm > y) != (q.y_mm > y) && x < (q.x_mm - p.x_mm) * (y - p.y_mm) / (q.y_mm - p.y_mm) + p.x_mm) inside = !inside;
     }
     if (!inside) return std::nullopt;
@@ -500,7 +503,7 @@ std::optional<int64_t> tabTopAt(const Scene& s, double x, double y) {
 double tabAreaMm2(const OrientationTab& t) {
     double twice = 0;
     for (size_t a = 0, n = t.outline.size(); a < n; ++a) {
-        const TabPoint &p = t.outline[a], &q = t.outline[(a + 1) % n];
+        const OutlinePoint &p = t.outline[a], &q = t.outline[(a + 1) % n];
         twice += p.x_mm * q.y_mm - q.x_mm * p.y_mm;
     }
     return twice / 2;
@@ -508,12 +511,13 @@ double tabAreaMm2(const OrientationTab& t) {
 
 JoinedBody meshTabBody(const Scene& s, bool joined) {
     JoinedBody body;
-    if (!s.marks.tab) return body;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return body;
+    const OrientationTab& t = *tab;
     Mesh& m = body.mesh;
     const uint32_t n = uint32_t(t.outline.size());
     for (const int64_t z : {t.bottom_units, t.top_units})
-        for (const TabPoint& p : t.outline) {
+        for (const OutlinePoint& p : t.outline) {
             m.positions.push_back({p.x_mm, p.y_mm, s.zMm(z)});
             body.lattice_id.push_back(p.lattice);
         }
@@ -524,7 +528,7 @@ JoinedBody meshTabBody(const Scene& s, bool joined) {
     auto prism = [&](int64_t z0, int64_t z1, bool up) {
         const uint32_t first = uint32_t(m.positions.size());
         for (const int64_t z : {z0, z1})
-            for (const TabPoint& p : t.triangle) {
+            for (const OutlinePoint& p : t.triangle) {
                 m.positions.push_back({p.x_mm, p.y_mm, s.zMm(z)});
                 body.lattice_id.push_back(-1);
             }
@@ -564,8 +568,9 @@ JoinedBody meshTabBody(const Scene& s, bool joined) {
 }
 
 std::optional<BoxMm> tabBoxMm(const Scene& s) {
-    if (!s.marks.tab) return std::nullopt;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return std::nullopt;
+    const OrientationTab& t = *tab;
     return BoxMm{t.x_west_mm, t.x_east_mm, t.y_south_mm, t.y_north_mm};
 }
 
@@ -576,22 +581,24 @@ std::optional<FootprintClaim> tabClaim(const Scene& s) {
 }
 
 std::optional<Attachment> tabAttachment(const Scene& s, Assembly assembly) {
-    if (!s.marks.tab) return std::nullopt;
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return std::nullopt;
     Attachment a;
     a.part = "marks";
     if (assembly == Assembly::Parts) {
         a.own_part = meshTabBody(s, /*joined=*/false).mesh;  // touching the pillars' west walls
         return a;
     }
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab& t = *tab;
     for (const auto& [k, e] : t.touched) a.walls.push_back({k, e, t.bottom_units, t.top_units});
     a.joined = meshTabBody(s, /*joined=*/true);
     return a;
 }
 
 void checkTabInScene(const Scene& s) {
-    if (!s.marks.tab) return;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return;
+    const OrientationTab& t = *tab;
     checkTab(s, t);
     // Each wall it covers holds its whole band, so the pillar's wall goes on above and below it.
     for (const auto& [k, e] : t.touched)
@@ -619,14 +626,14 @@ void checkTab(const Scene& s, const OrientationTab& t) {
             corners.insert(hexCornerId(s.grid, s.col[size_t(k)], s.row[size_t(k)], c));
     }
     for (size_t n = 0; n < t.outline.size(); ++n) {
-        const TabPoint& p = t.outline[n];
+        const OutlinePoint& p = t.outline[n];
         if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm)) bad("has a corner that is not a number");
         if (p.lattice >= ids || p.lattice < -1) bad("names a lattice corner beyond the grid");
         if (p.lattice >= 0) {
             const Vec3 q = s.point(latticeVertexPoint(s.grid, p.lattice), 0);
             if (q.x != p.x_mm || q.y != p.y_mm) bad("has a corner away from the lattice corner it names");
         }
-        const TabPoint& q = t.outline[(n + 1) % t.outline.size()];
+        const OutlinePoint& q = t.outline[(n + 1) % t.outline.size()];
         if (t.joined[n] && (p.lattice < 0 || q.lattice < 0 || !corners.count(p.lattice) || !corners.count(q.lattice)))
             bad("joins a wall that is not one it touches");
     }
@@ -634,8 +641,9 @@ void checkTab(const Scene& s, const OrientationTab& t) {
 
 std::vector<SurfaceProbe> tabProbes(const Scene& s) {
     std::vector<SurfaceProbe> out;
-    if (!s.marks.tab) return out;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return out;
+    const OrientationTab& t = *tab;
     const double floor_mm = s.zMm(t.top_units);
     out.push_back({"the orientation tab's top", t.x_west_mm + 1.0, t.y_north_mm - 1.0, false, floor_mm});
     if (t.has_triangle) {

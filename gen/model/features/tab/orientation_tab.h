@@ -36,18 +36,21 @@
 // open above and below it, which the tab would ring (a handle).
 //
 // Cut into halves (gen/model/features/halves.h), the tab lies across the
-// cut, as thick as the base on each side of it: each half keeps its side,
-// standing on the cut face, with the marks on its face away from the cut
-// (halfScene), and the two together make one tab.
+// cut, as thick as the base on each side of it (the slab the model is cut
+// at keeps that room whatever the marks: the feature's
+// room_across_cut_units): each half keeps its side, standing on the cut
+// face, with the marks on its face away from the cut (its cut_into_half,
+// which halfScene calls), and the two together make one tab.
 //
 // A feature of the registry (tab_feature.h), placed in FeaturePhase::Marks
 // (after the top shapes and the legend) by placeTab when the marks go on a
 // tab (marksOnTab, gen/model/features/marks.h). When the west side has no
 // run of contacts clear of pits, tilted corners below the floor and the
 // legend's plate, placeTab notes why and buildScene places the marks in the
-// data where they fit. Its state is still the marks' (Marks::tab,
-// gen/model/scene_marks.h), which the marks' facts, the halves and the tiles
-// read.
+// data where they fit. Its state (OrientationTab, tab_state.h) is kept in
+// Scene::features; the marks' facts and key, the halves and the tiles ask
+// for it through the contract (tab_feature.h: the marks it carries, its
+// room across the cut and its side of it, the tile that carries it).
 #pragma once
 
 #include <cstdint>
@@ -57,6 +60,7 @@
 
 #include "gen/geometry/mesh.h"
 #include "gen/model/feature.h"
+#include "gen/model/features/tab/tab_state.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_attachments.h"
 
@@ -88,7 +92,8 @@ inline constexpr double kTabLegendClearanceMm = 2.0;
 double tabWidthMm(const MarkParams& marks);
 
 /// Places the orientation tab when the Scene asks for it (see above); when it
-/// finds no place, leaves Scene::marks.tab empty with a note saying why.
+/// finds no place, leaves the Scene without one (sceneTab: null) with a note
+/// saying why.
 void placeTab(Scene& scene);
 
 /// z (units) of the tab's top at (x, y) mm (the floor, or the triangle's

@@ -21,7 +21,7 @@ OrientationTab tabFrom(const json& t, const std::string& path) {
     OrientationTab tab;
     auto xy = [&](const json& v, const std::string& p, size_t n) {
         if (!v.is_array() || v.size() != n) fail(p, "expected [x, y" + std::string(n == 3 ? ", lattice id]" : "]"));
-        TabPoint q{toNumber(v[0], p + "[0]"), toNumber(v[1], p + "[1]"), -1};
+        OutlinePoint q{toNumber(v[0], p + "[0]"), toNumber(v[1], p + "[1]"), -1};
         if (!std::isfinite(q.x_mm) || !std::isfinite(q.y_mm)) fail(p, "expected finite numbers");
         if (n == 3) {
             if (!v[2].is_number_integer()) fail(p + "[2]", "expected a lattice id (an integer, -1 for none)");
@@ -85,12 +85,13 @@ OrientationTab tabFrom(const json& t, const std::string& path) {
 }  // namespace
 
 json tabRecord(const Scene& s) {
-    if (!s.marks.tab) return nullptr;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return nullptr;
+    const OrientationTab& t = *tab;
     json outline = json::array(), touched = json::array(), tri = json::array();
-    for (const TabPoint& p : t.outline) outline.push_back(json::array({p.x_mm, p.y_mm, p.lattice}));
+    for (const OutlinePoint& p : t.outline) outline.push_back(json::array({p.x_mm, p.y_mm, p.lattice}));
     for (const auto& [k, e] : t.touched) touched.push_back(json::array({k, e}));
-    for (const TabPoint& p : t.triangle) tri.push_back(json::array({p.x_mm, p.y_mm}));
+    for (const OutlinePoint& p : t.triangle) tri.push_back(json::array({p.x_mm, p.y_mm}));
     return {{"outline", outline},
                 {"joined", t.joined},
                 {"touched", touched},
@@ -107,17 +108,18 @@ json tabRecord(const Scene& s) {
 }
 
 void readTabRecord(const json& record, const std::string& path, int /*version*/, Scene& s) {
-    s.marks.tab = tabFrom(record, path);
+    const OrientationTab& tab = s.features.set(tabFrom(record, path));
     try {
-        checkTab(s, *s.marks.tab);
+        checkTab(s, tab);
     } catch (const InputError& e) {
         fail(path, e.what());
     }
 }
 
 nlohmann::json tabFactsJson(const Scene& s) {
-    if (!(s.marks.tab)) return nullptr;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab* placed = sceneTab(s);
+    if (!placed) return nullptr;
+    const OrientationTab& t = *placed;
     const double w = t.x_east_mm - t.x_west_mm, d = t.y_north_mm - t.y_south_mm;
     nlohmann::json tab = {{"box_mm", {{"west", t.x_west_mm}, {"east", t.x_east_mm}, {"south", t.y_south_mm}, {"north", t.y_north_mm}}},
                           {"size_mm", {w, d, s.zMm(t.top_units - t.bottom_units)}},
@@ -138,9 +140,10 @@ nlohmann::json tabFactsJson(const Scene& s) {
 }
 
 std::string tabFactsLines(const Scene& s) {
-    if (!(s.marks.tab)) return "";
+    const OrientationTab* tab = sceneTab(s);
+    if (!tab) return "";
     std::ostringstream o;
-    const OrientationTab& t = *s.marks.tab;
+    const OrientationTab& t = *tab;
     o << "  tab       " << formatFixed(t.x_east_mm - t.x_west_mm, 1) << " x " << formatFixed(t.y_north_mm - t.y_south_mm, 1)
       << " x " << formatFixed(s.zMm(t.top_units - t.bottom_units), 2) << " mm (" << formatFixed(tabAreaMm2(t), 0)
       << " mm^2) west of the pillars, "

@@ -51,7 +51,7 @@ std::string tabAssert(const Scene& s) {
 }  // namespace
 
 std::optional<ScadPiece> tabScadPiece(const Scene& s) {
-    if (!s.marks.tab) return std::nullopt;
+    if (!sceneTab(s)) return std::nullopt;
     ScadPiece piece;
     piece.show_switch = "show_orientation_tab";
     piece.variable = "orientation_tab";
