@@ -10,7 +10,7 @@
 #include "gen/field/hex_grid.h"
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/felt_heights.h"
-#include "gen/model/features/legend/legend.h"
+#include "gen/model/features/braille.h"
 #include "gen/model/features/placed_marks.h"
 #include "gen/model/features/top_shapes.h"
 #include "gen/model/scene.h"
@@ -426,15 +426,12 @@ void checkHeightSteps(const Scene& s, const TactileOptions& o, TactileResult& r)
     r.checks.push_back(std::move(c));
 }
 
-void checkBraille(const Scene& s, const TactileOptions& o, TactileResult& r) {
+void checkBraille(const BrailleClaim& b, const TactileOptions& o, TactileResult& r) {
     Check c{"tactile_braille", "the braille dots print inside the standards' range"};
     c.unit = "mm";
-    const SceneLegend& l = *sceneLegend(s);
-    const BrailleStandard& st = l.layout.standard;
+    const BrailleStandard& st = b.standard;
     const double printed = printedDotHeightMm(st.dot_height_mm, o.layer_mm);
-    const Vec3 at = l.layout.dots.empty()
-                        ? Vec3{0, 0, 0}
-                        : Vec3{l.layout.dots[0].x_mm + l.x0_mm, l.layout.dots[0].y_mm + l.y0_mm, s.zMm(l.plate_top_units)};
+    const Vec3 at = b.first_dot_mm;
     const std::string layers = " at " + formatSignificant(o.layer_mm, 3) + " mm layers";
     if (printed < kMinPrintedDotHeightMm - 1e-9) {
         ++c.count;
@@ -461,7 +458,7 @@ void checkBraille(const Scene& s, const TactileOptions& o, TactileResult& r) {
                                formatSignificant(o.nozzle_mm, 3) + " mm nozzle: they print as blobs"});
     }
     c.status = c.count ? CheckStatus::Fail : CheckStatus::Pass;
-    c.note = std::to_string(l.layout.dots.size()) + " dots " + formatFixed(st.dot_base_mm, 2) + " mm across, " +
+    c.note = std::to_string(b.dots) + " dots " + formatFixed(st.dot_base_mm, 2) + " mm across, " +
              formatFixed(st.dot_height_mm, 2) + " mm high, printing " + formatFixed(printed, 2) + " mm" + layers +
              " (range " + formatFixed(kMinPrintedDotHeightMm, 2) + "-" + formatFixed(kMaxBrailleDotHeightMm, 2) + " mm)";
     c.stage = "tactile_marks";
@@ -582,7 +579,8 @@ TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOp
         checkHeightSteps(*scene, options, r);
         r.checks.push_back(checkAttachmentJoints(*scene, kHandPushN, kPrintedPlaInterlayerMpa, options.max_offenders));
     }
-    if (scene && sceneLegend(*scene)) checkBraille(*scene, options, r);
+    if (scene)
+        for (const BrailleClaim& b : featureBraille(*scene)) checkBraille(b, options, r);
     if (scene) checkFeatureClaims(*scene, options, r);
     return r;
 }

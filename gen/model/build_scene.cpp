@@ -50,7 +50,7 @@ Scene buildScene(const HexField& field, const SceneParams& params) {
         s.notes.push_back("the base is one z step thick: cells without data sit at the floor, like the lowest value");
     noteConcaveSavings(field, culled.dropped_by_concave, s);
 
-    placeModelMarks(params, s);
+    placeModelMarks(s);
     if (s.halves && !placeHalves(s, /*or_throw=*/lastHalvesSlabTry(params, s.z_snap_mm))) {
         // A try of the slab search below: the caller sees no halves.
         if (params.halves_slab_units) {

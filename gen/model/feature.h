@@ -29,8 +29,8 @@
 //     and the tactile check read without naming it), the room it
 //     needs across a cut into halves and its side of the cut in each half,
 //     the cells a tile keeps with it and what that tile is asked;
-//   - claims what a hand must find on it (TactileClaim), which the tactile
-//     check proves as printed;
+//   - claims what a hand must find on it (TactileClaim) and the braille it
+//     prints (BrailleClaim), which the tactile check proves as printed;
 //   - a feature of the pillars themselves (FeaturePhase::Frame) decides
 //     from the field before any height, may stand the values at heights of
 //     its own (the value mapping), shapes the cells' tops (TopShaping) and
@@ -41,7 +41,8 @@
 //     measures heights (needs_heights) is refused beside it;
 //   - a feature that is a piece of the model (a tile, FeaturePhase::UnderTops)
 //     keeps its share of the cells the cull keeps, cuts into the bottom
-//     (BottomHole: a tile's code pits) and keeps the tops over them level.
+//     (BottomHole: a tile's code pits), keeps the tops over them level and
+//     draws the whole model's marks in the data where the whole has them.
 // What the user asks of a feature is held in SceneParams::requests by the
 // feature's own request type, set by the command line.
 // Every entry may be null: the feature has nothing of that kind.
@@ -63,6 +64,8 @@
 
 #include "gen/field/bin_regression.h"
 #include "gen/field/hex_field.h"
+#include "gen/geometry/mesh.h"
+#include "gen/model/features/braille.h"
 #include "gen/model/scene.h"
 #include "gen/model/scene_attachments.h"
 
@@ -154,6 +157,15 @@ struct TactileClaim {
     double width_mm = 0;  ///< its narrowest width
     double min_width_mm = 0;
     std::string source;  ///< where the minimums come from
+};
+
+/// Braille a feature prints (a legend's text), which the tactile check
+/// (verify/tactile.h, `tactile_braille`) proves inside the standards'
+/// range of a printed dot: its dots' sizes and where the first stands.
+struct BrailleClaim {
+    BrailleStandard standard;
+    size_t dots = 0;
+    Vec3 first_dot_mm;  ///< the first dot's centre on its surface, model frame; 0 without dots
 };
 
 /// How the model's key (gen/key/model_key.h) writes numbers for a reader: a
@@ -290,6 +302,9 @@ struct Feature {
     /// What it asks a hand to find (the tactile check proves it as
     /// printed); none without it.
     std::vector<TactileClaim> (*tactile_claims)(const Scene& scene);
+    /// The braille it prints, which the tactile check proves printable;
+    /// none without it.
+    std::optional<BrailleClaim> (*braille)(const Scene& scene) = nullptr;
 
     // --- A feature of the pillars themselves (FeaturePhase::Frame) ---
     // (Each with its default: a feature without it need not list it.)
@@ -338,6 +353,12 @@ struct Feature {
     /// True when kept cell k's top must stay level (a pit under it, or the
     /// same cell of a piece that keeps it level): no structural dimple.
     bool (*keeps_level)(const Scene& scene, size_t kept) = nullptr;
+    /// The orientation marks in the data it draws where the whole model has
+    /// them rather than placing them again on its own cells (the tile that
+    /// carries them; the triangle's anchor a kept cell of this Scene); none:
+    /// the marks are placed as usual. Throws InputError when its cells do
+    /// not hold them.
+    std::optional<Marks> (*given_marks)(const Scene& scene) = nullptr;
 };
 
 }  // namespace tsf

@@ -124,4 +124,19 @@ std::optional<PlacedMarks> carriedMarks(const Scene& scene) {
     return std::nullopt;
 }
 
+std::vector<BrailleClaim> featureBraille(const Scene& scene) {
+    std::vector<BrailleClaim> out;
+    for (const Feature* f : features())
+        if (f->braille)
+            if (std::optional<BrailleClaim> b = f->braille(scene)) out.push_back(std::move(*b));
+    return out;
+}
+
+std::optional<Marks> featureGivenMarks(const Scene& scene) {
+    for (const Feature* f : features())
+        if (f->given_marks)
+            if (std::optional<Marks> m = f->given_marks(scene)) return m;
+    return std::nullopt;
+}
+
 }  // namespace tsf

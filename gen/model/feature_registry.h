@@ -86,4 +86,13 @@ bool featureKeepsLevel(const Scene& scene, size_t kept);
 /// the data, or there are none).
 std::optional<PlacedMarks> carriedMarks(const Scene& scene);
 
+/// The braille the features print (Feature::braille), in the registry's
+/// order.
+std::vector<BrailleClaim> featureBraille(const Scene& scene);
+
+/// The marks in the data a piece of the model is given where the whole
+/// has them (Feature::given_marks, the first that gives any); none when
+/// they are placed as usual.
+std::optional<Marks> featureGivenMarks(const Scene& scene);
+
 }  // namespace tsf

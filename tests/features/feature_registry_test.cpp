@@ -12,6 +12,8 @@
 #include "gen/model/attachments.h"
 #include "gen/model/build_scene.h"
 #include "gen/model/feature_registry.h"
+#include "gen/mesh/direct_mesher.h"
+#include "gen/model/features/legend/legend.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/tab/tab_state.h"
 #include "gen/model/scene_scale.h"
@@ -152,6 +154,45 @@ TEST(FeatureRegistry, TheFeaturesThresholdsFollowTheRowsOfTheirCheck) {
         EXPECT_EQ(table[at].value, f.value);
         EXPECT_STREQ(table[at - 1].id, f.check) << f.what << " follows a row of another check";
     }
+}
+
+// The tactile check proves the braille a feature prints from its
+// BrailleClaim, without naming the legend: one claim with a title, its
+// dots the legend's and the first on the plate's top; none without one.
+TEST(FeatureRegistry, TheBrailleAFeaturePrintsIsCheckedFromItsClaim) {
+    SceneParams p = test::smallParams();
+    p.pitch_mm = 3.0;
+    p.words.title = "Hill";
+    const Scene titled = buildScene(hill(), p);
+    const SceneLegend* legend = sceneLegend(titled);
+    ASSERT_NE(legend, nullptr);
+    const std::vector<BrailleClaim> claims = featureBraille(titled);
+    ASSERT_EQ(claims.size(), 1u);
+    const BrailleClaim& b = claims[0];
+    ASSERT_FALSE(legend->layout.dots.empty());
+    EXPECT_EQ(b.dots, legend->layout.dots.size());
+    EXPECT_STREQ(b.standard.name, legend->layout.standard.name);
+    EXPECT_EQ(b.standard.dot_height_mm, legend->layout.standard.dot_height_mm);
+    EXPECT_DOUBLE_EQ(b.first_dot_mm.x, legend->layout.dots[0].x_mm + legend->x0_mm);
+    EXPECT_DOUBLE_EQ(b.first_dot_mm.y, legend->layout.dots[0].y_mm + legend->y0_mm);
+    EXPECT_DOUBLE_EQ(b.first_dot_mm.z, titled.zMm(legend->plate_top_units));
+
+    TactileOptions o;
+    o.layer_mm = 0.2;
+    const TactileResult r = checkTactile(meshScene(titled), &titled, o);
+    size_t braille_checks = 0;
+    for (const Check& c : r.checks)
+        if (c.id == "tactile_braille") {
+            ++braille_checks;
+            EXPECT_EQ(c.note.rfind(std::to_string(legend->layout.dots.size()) + " dots ", 0), 0u) << c.note;
+        }
+    EXPECT_EQ(braille_checks, 1u);
+
+    SceneParams plain = p;
+    plain.words.title.clear();
+    const Scene untitled = buildScene(hill(), plain);
+    EXPECT_TRUE(featureBraille(untitled).empty());
+    for (const Check& c : checkTactile(meshScene(untitled), &untitled, o).checks) EXPECT_NE(c.id, "tactile_braille");
 }
 
 }  // namespace

@@ -80,7 +80,7 @@ const std::vector<MigratedFeature>& migrated() {
         // check as an assembly, the summary's tiles) are the tiles' own.
         {"tile",
          std::regex(R"(\b(SceneTile|TilePlace|TileRequest|TiledWholeRequest|TileLayout|planTiles|tileParams|placeTileCode|)"
-                    R"(sceneTile|keepTileShare|tileKeepsLevel|tileBottomHoles|tileFeature|kTileCode\w+|kMaxTileCount|)"
+                    R"(sceneTile|keepTileShare|tileKeepsLevel|tileBottomHoles|tileGivenMarks|tileFeature|kTileCode\w+|kMaxTileCount|)"
                     R"(kToothMm)\b|features/tiles\.h|features/tile_(feature|code)\.h|scene_tiles\.h)"),
          {
              // Its own files.
@@ -93,16 +93,13 @@ const std::vector<MigratedFeature>& migrated() {
              // files and their lines in the summary.
              "pipeline/verified_tiles.h", "pipeline/verified_tiles.cpp", "verify/tiles_check.h", "verify/tiles_check.cpp",
              "app/tiles_output.h", "app/tiles_output.cpp", "app/gen_run/bed_tiles.cpp",
-             // A tile carries the model's marks in the data where the model
-             // has them (its request's notch and triangle).
-             "gen/model/phases/model_marks.cpp",
          }},
         {"legend",
          std::regex(R"(\b(SceneLegend|sceneLegend|placeLegend|LegendParams|LegendLayout|LegendDot|layoutLegend|)"
                     R"(legendRangeText|PlateOutline|PlateSpec|legendPlateOutline|legendEastOnLattice|meshPlateBody|)"
                     R"(meshLegendPlate|meshLegendDots|legendPlateMesh|legendDotsMesh|legendAttachment|legendProbes|)"
                     R"(legendBoxMm|legendClaim|legendTopAt|legendScadPiece|legendRecord|readLegendRecord|legendFactsJson|)"
-                    R"(legendFactsLines|legendFeature|kMinMirroredPlateMm)\b|features/legend/|\b(params|p)\.legend\b)"),
+                    R"(legendFactsLines|legendBraille|legendFeature|kMinMirroredPlateMm)\b|features/legend/|\b(params|p)\.legend\b)"),
          {
              // Its own files.
              "gen/model/features/legend/legend.h", "gen/model/features/legend/legend.cpp",
@@ -115,10 +112,6 @@ const std::vector<MigratedFeature>& migrated() {
              "gen/model/features/legend/legend_feature.cpp",
              // The registry.
              "gen/model/feature_registry.cpp",
-             // The tactile check's braille dots against the standards' range
-             // of a printed dot (tactile_braille), which a TactileClaim (a
-             // least rise and width) does not yet say.
-             "verify/tactile.cpp",
          }},
         {"class textures",
          std::regex(R"(\b(SceneTextures|ClassTexture|ClassTextureRequest|Texture|textureName|textureNamed|textureFeel|)"

@@ -2,6 +2,8 @@
 
 #include <liblouis.h>
 
+#include <cmath>
+
 #include <mutex>
 
 #include "gen/util/error.h"
@@ -126,6 +128,12 @@ std::string brailleUnicode(const std::vector<uint8_t>& cells) {
     std::string s;
     for (const uint8_t c : cells) appendUtf8(0x2800u + c, s);
     return s;
+}
+
+double printedDotHeightMm(double dot_height_mm, double layer_mm) {
+    if (layer_mm <= 0) return dot_height_mm;
+    // Half a layer up rounds up: the slicer samples each layer at its middle.
+    return std::floor(dot_height_mm / layer_mm + 0.5 + 1e-9) * layer_mm;
 }
 
 }  // namespace tsf

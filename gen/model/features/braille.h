@@ -16,6 +16,35 @@
 
 namespace tsf {
 
+/// Braille dimensions, mm.
+struct BrailleStandard {
+    const char* name;
+    double dot_base_mm;    ///< diameter of a dot where it meets the surface
+    double dot_height_mm;  ///< how far a dot stands above the surface
+    double dot_pitch_mm;   ///< centre to centre of neighbouring dots in a cell
+    double cell_pitch_mm;  ///< centre to centre of the same dot in neighbouring cells
+    double line_pitch_mm;  ///< centre to centre of the same dot in neighbouring lines
+};
+
+/// NLS Specification 800, "Braille Books and Pamphlets" (Library of Congress,
+/// 2008), section 3.2, as quoted by the Braille Authority of North America
+/// (nominal values).
+inline constexpr BrailleStandard kNlsSpec800{"NLS Specification 800 (2008) 3.2", 1.44, 0.48, 2.34, 6.2, 10.0};
+
+/// The highest dot a reader expects, mm: 0.037 in, the top of the range for
+/// tactile signs (2010 ADA Standards for Accessible Design, 703.3.1).
+inline constexpr double kMaxBrailleDotHeightMm = 0.94;
+
+/// The dot height (mm) when the printer's layer is not known: whole layers
+/// at 0.1, 0.12, 0.15, 0.2 and 0.3 mm, 0.5 mm at 0.25 mm; the standard's
+/// 0.48 mm would print 0.4 mm at 0.2 mm layers, under what a reader expects.
+inline constexpr double kUnknownLayerDotHeightMm = 0.6;
+
+/// The dot height (mm) printed at `layer_mm` layers: the slicer keeps a
+/// layer where the dot reaches past its middle, so the height rounds to
+/// whole layers. layer_mm <= 0 gives the height as it is.
+double printedDotHeightMm(double dot_height_mm, double layer_mm);
+
 /// Unified English Braille, uncontracted (docs/printing.md says why).
 inline constexpr const char* kDefaultBrailleTable = "en-ueb-g1.ctb";
 

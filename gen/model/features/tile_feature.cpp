@@ -2,6 +2,7 @@
 #include "gen/model/features/tile_feature.h"
 
 #include "gen/model/features/tile_code.h"
+#include "gen/util/error.h"
 
 namespace tsf {
 
@@ -9,6 +10,23 @@ namespace {
 
 void placeTile(Scene& s) {
     if (s.params.requests.get<TileRequest>()) placeTileCode(s);
+}
+
+// The tile that carries the marks in the data draws the whole model's,
+// where the model has them, rather than placing them again on its cells.
+std::optional<Marks> tileGivenMarks(const Scene& s) {
+    const TileRequest* tile = s.params.requests.get<TileRequest>();
+    if (!tile || !tile->marks) return std::nullopt;
+    Marks m;
+    m.notch = tile->marks->notch;
+    m.triangle = tile->marks->triangle;
+    if (m.triangle) {
+        const int32_t anchor = m.triangle->anchor;
+        if (anchor < 0 || size_t(anchor) >= s.kept_index.size() || s.kept_index[size_t(anchor)] < 0)
+            throw InputError("a tile does not hold the cell its orientation triangle stands on");
+        m.triangle->anchor = s.kept_index[size_t(anchor)];
+    }
+    return m;
 }
 
 }  // namespace
@@ -40,6 +58,7 @@ const Feature& tileFeature() {
         .keep_share = keepTileShare,
         .bottom_holes = tileBottomHoles,
         .keeps_level = tileKeepsLevel,
+        .given_marks = tileGivenMarks,
     };
     return feature;
 }

@@ -4,27 +4,19 @@
 
 #include "gen/model/feature_registry.h"
 #include "gen/model/features/marks.h"
-#include "gen/model/scene_tiles.h"
 #include "gen/util/error.h"
 
 namespace tsf {
 
-void placeModelMarks(const SceneParams& params, Scene& s) {
-    const TileRequest* tile = params.requests.get<TileRequest>();
-    if (!tile || !tile->marks) {
+void placeModelMarks(Scene& s) {
+    // A piece of the model (a tile) draws the whole model's marks where the
+    // model has them.
+    std::optional<Marks> given = featureGivenMarks(s);
+    if (!given) {
         placeMarks(s);
         return;
     }
-    // A tile draws the model's marks where the model has them.
-    s.marks = {};
-    s.marks.notch = tile->marks->notch;
-    s.marks.triangle = tile->marks->triangle;
-    if (s.marks.triangle) {
-        const int32_t anchor = s.marks.triangle->anchor;
-        if (anchor < 0 || size_t(anchor) >= s.kept_index.size() || s.kept_index[size_t(anchor)] < 0)
-            throw InputError("a tile does not hold the cell its orientation triangle stands on");
-        s.marks.triangle->anchor = s.kept_index[size_t(anchor)];
-    }
+    s.marks = std::move(*given);
     buildMarkFaces(s);
 }
 

@@ -13,11 +13,11 @@
 
 namespace tsf {
 
-/// The notch and the triangle: the tile's (its TileRequest's marks, the
-/// triangle's anchor given as a grid index) or placed for the model, with
-/// the faces they need. Throws InputError when a tile does not hold the
-/// triangle's cell.
-void placeModelMarks(const SceneParams& params, Scene& s);
+/// The notch and the triangle: the ones a piece of the model is given
+/// where the whole has them (Feature::given_marks: a tile's) or placed for
+/// the model, with the faces they need. Throws InputError when a tile does
+/// not hold the triangle's cell.
+void placeModelMarks(Scene& s);
 
 /// The marks were asked on a tab (the registry's feature placed in
 /// FeaturePhase::Marks) and none could be placed (its last note says why).

@@ -96,13 +96,3 @@ std::string legendRangeText(double low, double high, const std::string& units) {
 }
 
 }  // namespace tsf
-
-namespace tsf {
-
-double printedDotHeightMm(double dot_height_mm, double layer_mm) {
-    if (layer_mm <= 0) return dot_height_mm;
-    // Half a layer up rounds up: the slicer samples each layer at its middle.
-    return std::floor(dot_height_mm / layer_mm + 0.5 + 1e-9) * layer_mm;
-}
-
-}  // namespace tsf

@@ -27,6 +27,16 @@ std::string legendKeyParagraph(const Scene& s, const KeyNumbers&) {
     return p;
 }
 
+// Its dots, on the plate's top.
+std::optional<BrailleClaim> legendBraille(const Scene& s) {
+    const SceneLegend* l = sceneLegend(s);
+    if (!l) return std::nullopt;
+    BrailleClaim b{.standard = l->layout.standard, .dots = l->layout.dots.size(), .first_dot_mm = {0, 0, 0}};
+    if (!l->layout.dots.empty())
+        b.first_dot_mm = {l->layout.dots[0].x_mm + l->x0_mm, l->layout.dots[0].y_mm + l->y0_mm, s.zMm(l->plate_top_units)};
+    return b;
+}
+
 // Not cut into tiles: a tile would hold a piece of the plate.
 bool legendSurvivesTiles(const Scene& s) { return sceneLegend(s) == nullptr; }
 
@@ -64,6 +74,7 @@ const Feature& legendFeature() {
         // The braille dots' own check (verify/tactile.h, tactile_braille)
         // proves them against the standards' range, not a least rise alone.
         .tactile_claims = nullptr,
+        .braille = legendBraille,
     };
     return feature;
 }
