@@ -17,7 +17,7 @@ std::vector<Attachment> sceneAttachments(const Scene& scene, Assembly assembly) 
     };
     // The registry's features where they stood: the one carrying the
     // marks first, the legend, the features beside the pillars.
-    for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
+    for (const Feature* f : featuresMarksFirst())
         if (f->attachment) add(f->attachment(scene, assembly));
     return out;
 }
@@ -37,14 +37,14 @@ std::vector<ProbeSet> sceneProbes(const Scene& scene) {
 }
 
 void checkAttachments(const Scene& scene) {
-    for (const Feature* f : featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Beside, FeaturePhase::Marks}))
+    for (const Feature* f : featuresMarksLast())
         if (f->check) f->check(scene);
 }
 
 std::vector<BoxMm> attachmentBoxes(const Scene& scene) {
     std::vector<BoxMm> boxes;
     std::vector<std::optional<BoxMm>> all;
-    for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
+    for (const Feature* f : featuresMarksFirst())
         if (f->box) all.push_back(f->box(scene));
     for (const auto& box : all)
         if (box) boxes.push_back(*box);
@@ -69,7 +69,7 @@ std::vector<SideWidth> attachmentSideWidths(const SceneParams& params) {
     // The features beside the pillars (the tactile scale east of them),
     // then the one carrying the marks (the orientation tab west of them).
     std::vector<SideWidth> out;
-    for (const Feature* f : featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Beside, FeaturePhase::Marks}))
+    for (const Feature* f : featuresMarksLast())
         if (f->side_width)
             if (std::optional<SideWidth> w = f->side_width(params)) out.push_back(std::move(*w));
     return out;
@@ -84,7 +84,7 @@ std::vector<BottomHole> sceneBottomHoles(const Scene& scene) {
 std::vector<int64_t> attachmentTopsAt(const Scene& scene, double x_mm, double y_mm) {
     std::vector<int64_t> tops;
     std::vector<std::optional<int64_t>> all;
-    for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
+    for (const Feature* f : featuresMarksFirst())
         if (f->top_at) all.push_back(f->top_at(scene, x_mm, y_mm));
     for (const auto& top : all)
         if (top) tops.push_back(*top);

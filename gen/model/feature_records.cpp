@@ -24,7 +24,7 @@ const std::vector<FeatureRecord>& featureRecords() {
 const std::vector<FeatureFacts>& featureFacts() {
     static const std::vector<FeatureFacts> facts = [] {
         std::vector<FeatureFacts> r;
-        for (const Feature* f : featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside}))
+        for (const Feature* f : featuresMarksFirst())
             if (f->facts_json) r.push_back({f->name, f->facts_listed_when_absent, f->facts_json, f->facts_lines});
         r.push_back({"halves", false, halvesFactsJson, halvesFactsLines});
         for (const Feature* f : featuresOf({FeaturePhase::Frame}))

@@ -27,6 +27,18 @@ std::vector<const Feature*> featuresOf(std::initializer_list<FeaturePhase> phase
     return out;
 }
 
+const std::vector<const Feature*>& featuresMarksFirst() {
+    static const std::vector<const Feature*> list =
+        featuresOf({FeaturePhase::Marks, FeaturePhase::BeforeMarks, FeaturePhase::Beside});
+    return list;
+}
+
+const std::vector<const Feature*>& featuresMarksLast() {
+    static const std::vector<const Feature*> list =
+        featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Beside, FeaturePhase::Marks});
+    return list;
+}
+
 void placeFeatures(Scene& scene, FeaturePhase phase) {
     for (const Feature* f : featuresOf({phase})) {
         if (f->needs_heights && f->asked && f->asked(scene.params) && scene.keptCount() > 0)

@@ -27,6 +27,14 @@ const std::vector<const Feature*>& features();
 /// feature carrying the marks first among the bodies, its read-back last).
 std::vector<const Feature*> featuresOf(std::initializer_list<FeaturePhase> phases);
 
+/// The features beside the pillars (the phases BeforeMarks, Marks, Beside)
+/// in the two orders the lists read them, each list made once: the one
+/// carrying the marks first (bodies, boxes, tops, records: where the
+/// marks' own entries stood), or last (checks, bed widths, OpenSCAD
+/// pieces: after the features beside the pillars).
+const std::vector<const Feature*>& featuresMarksFirst();
+const std::vector<const Feature*>& featuresMarksLast();
+
 /// Places each feature of `phase`, in the registry's order, and adds the
 /// footprint each claims to Scene::claims. A feature that needs heights
 /// (Feature::needs_heights), asked for on a model whose values a feature

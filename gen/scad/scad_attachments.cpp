@@ -44,7 +44,7 @@ std::vector<ScadAttachment> scadAttachments(const Scene& scene, bool join) {
     // The features of the registry stand where they stood before it: the
     // legend, those beside the pillars, then the one carrying the marks.
     std::vector<std::optional<ScadAttachment>> pieces;
-    for (const Feature* f : featuresOf({FeaturePhase::BeforeMarks, FeaturePhase::Beside, FeaturePhase::Marks}))
+    for (const Feature* f : featuresMarksLast())
         pieces.push_back(scadPiece(scene, *f, join));
     pieces.push_back(scadHalves(scene));
     std::vector<ScadAttachment> out;
