@@ -19,6 +19,20 @@ const std::vector<const Feature*>& features() {
     return registry;
 }
 
+namespace {
+
+// What the first feature that gives one gives (hook returns an optional),
+// in the registry's order; none when no feature gives one.
+template <class R, class... Params, class... Args>
+std::optional<R> firstGiven(std::optional<R> (*Feature::*hook)(Params...), const Args&... args) {
+    for (const Feature* f : features())
+        if (f->*hook)
+            if (std::optional<R> r = (f->*hook)(args...)) return r;
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::vector<const Feature*> featuresOf(std::initializer_list<FeaturePhase> phases) {
     std::vector<const Feature*> out;
     for (const FeaturePhase phase : phases)
@@ -75,17 +89,11 @@ int64_t featureReliefBelowUnits(const Scene& scene) {
 }
 
 std::optional<TopShaping> featureTopShaping(const Scene& scene) {
-    for (const Feature* f : features())
-        if (f->top_shaping)
-            if (std::optional<TopShaping> t = f->top_shaping(scene)) return t;
-    return std::nullopt;
+    return firstGiven(&Feature::top_shaping, scene);
 }
 
 std::optional<OneHeight> featureOneHeight(const Scene& scene) {
-    for (const Feature* f : features())
-        if (f->one_height)
-            if (std::optional<OneHeight> o = f->one_height(scene)) return o;
-    return std::nullopt;
+    return firstGiven(&Feature::one_height, scene);
 }
 
 std::vector<ClassMark> featureClassMarks(const Scene& scene) {
@@ -96,10 +104,7 @@ std::vector<ClassMark> featureClassMarks(const Scene& scene) {
 }
 
 std::optional<KeyClasses> featureKeyClasses(const Scene& scene, const KeyNumbers& numbers) {
-    for (const Feature* f : features())
-        if (f->key_classes)
-            if (std::optional<KeyClasses> k = f->key_classes(scene, numbers)) return k;
-    return std::nullopt;
+    return firstGiven(&Feature::key_classes, scene, numbers);
 }
 
 std::vector<FeatureThreshold> featureThresholds() {
@@ -130,10 +135,7 @@ bool featureKeepsLevel(const Scene& scene, size_t kept) {
 }
 
 std::optional<PlacedMarks> carriedMarks(const Scene& scene) {
-    for (const Feature* f : features())
-        if (f->carried_marks)
-            if (std::optional<PlacedMarks> m = f->carried_marks(scene)) return m;
-    return std::nullopt;
+    return firstGiven(&Feature::carried_marks, scene);
 }
 
 std::vector<BrailleClaim> featureBraille(const Scene& scene) {
@@ -145,10 +147,7 @@ std::vector<BrailleClaim> featureBraille(const Scene& scene) {
 }
 
 std::optional<Marks> featureGivenMarks(const Scene& scene) {
-    for (const Feature* f : features())
-        if (f->given_marks)
-            if (std::optional<Marks> m = f->given_marks(scene)) return m;
-    return std::nullopt;
+    return firstGiven(&Feature::given_marks, scene);
 }
 
 }  // namespace tsf
