@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gen/field/bin_regression.h"
+#include "gen/field/data_place.h"
 #include "gen/field/field_input.h"
 #include "gen/field/hex_grid.h"
 
@@ -44,6 +45,9 @@ struct HexField {
     /// offsets from the centre (and weights), for the tilt of its top
     /// (gen/model/features/tilt.h). Empty for rasters.
     std::vector<BinMoments> moments;
+    /// Where each hexagon lies in the data's own coordinates; unknown when
+    /// the input does not say (gen/field/data_place.h).
+    CellPlace place;
     BinStatistic statistic = BinStatistic::Density;  ///< what a cell's value is, with moments
 
     double at(int32_t col, int32_t row) const { return values[size_t(row) * size_t(grid.cols) + size_t(col)]; }

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "gen/field/data_place.h"
+
 namespace tsf {
 
 /// One thing a reader detected or assumed about a file, for `tsf info`:
@@ -73,6 +75,10 @@ struct Raster {
     /// Lower-left corner of the lower-left cell in data units (ESRI xllcorner/yllcorner).
     double x_origin = 0.0;
     double y_origin = 0.0;
+    /// Where the pixels lie in the file's own coordinates (x_origin and
+    /// cell_size are on the ground, this in the file's units); unknown for
+    /// formats without coordinates.
+    PixelPlace place;
     /// What the reader detected (dialect, header, no-data value, ...), in reading order.
     std::vector<ReadFact> facts;
 

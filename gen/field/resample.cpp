@@ -130,6 +130,20 @@ HexField resampleRaster(const Raster& raster, const ResampleOptions& opts) {
     field.source = raster.source;
     field.pitch_data = p * raster.cell_size;
     field.values.assign(size_t(grid.cellCount()), NAN);
+    if (raster.place.known) {
+        // Each hexagon stands for its centre: a column p pixels east of the
+        // last, an odd row half a column further, a row p sqrt(3) / 2 pixels
+        // south of the row north of it.
+        const PixelPlace& px = raster.place;
+        const PixelPoint first = hexCentrePx(layout, 0, 0);
+        field.place = {.known = true,
+                       .x0 = px.x_west + px.dx * first.x,
+                       .x_per_col = px.dx * p,
+                       .odd_row_shift_cols = 0.5,
+                       .y0 = px.y_north - px.dy * first.y,
+                       .y_per_row = -px.dy * p * kSqrt3 / 2.0,
+                       .axes = px.axes};
+    }
 
     switch (opts.method) {
         case ResampleOptions::Method::Nearest:
@@ -243,6 +257,9 @@ Raster squarePixels(const Raster& raster) {
     }
     if (raster.row_aspect < 1) out.cell_size = raster.cell_size * raster.row_aspect;
     out.row_aspect = 1.0;
+    // The same extent in more, or fewer, pixels.
+    out.place.dx = raster.place.dx * double(raster.cols) / double(cols);
+    out.place.dy = raster.place.dy * double(raster.rows) / double(rows);
     out.pixels_repeated = true;
     out.facts.push_back({"resampled", std::to_string(raster.cols) + " x " + std::to_string(raster.rows) + " -> " +
                                           std::to_string(cols) + " x " + std::to_string(rows) +
@@ -262,6 +279,7 @@ HexField rasterOneToOne(const Raster& raster) {
     field.one_to_one = raster.decimation <= 1 && !raster.pixels_repeated;
     field.rows_a_pitch_apart = true;
     field.row_aspect = raster.row_aspect;
+    field.place = pixelCells(raster.place);
     if (raster.decimation > 1)
         field.per_hexagon = raster.categorical ? "the most common class of a block of the file's values"
                                                : "the mean of a block of the file's values";

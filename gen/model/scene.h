@@ -188,6 +188,9 @@ struct ValueMapping {
 
 struct Scene {
     HexGrid grid;
+    /// Where each cell lies in the data's own coordinates, as the field
+    /// says (gen/field/data_place.h); unknown for inputs without them.
+    CellPlace place;
     double pitch_mm = 1.0;
     /// North-south stretch of the lattice (hex_grid.h): 1 for regular
     /// hexagons, kRowsAPitchApart when rows stand a pitch apart to keep a

@@ -141,6 +141,12 @@ Raster parseEsriAscii(std::string_view text, const std::string& path) {
     raster.cell_size = cellsize;
     raster.x_origin = h.xllcorner ? h.xllcorner->value : h.xllcenter->value - 0.5 * cellsize;
     raster.y_origin = h.yllcorner ? h.yllcorner->value : h.yllcenter->value - 0.5 * cellsize;
+    raster.place = {.known = true,
+                    .x_west = raster.x_origin,
+                    .dx = cellsize,
+                    .y_north = raster.y_origin + cellsize * double(raster.rows),
+                    .dy = cellsize,
+                    .axes = {}};
     const bool has_nodata = h.nodata.has_value() && !std::isnan(h.nodata->value);
     const double nodata = has_nodata ? h.nodata->value : 0.0;
 

@@ -158,6 +158,7 @@ HexField loadField(const FieldLoadOptions& o) {
     if (o.ignore_georef) {  // the plain grid, also of formats that carry a cell size (ESRI ASCII)
         raster.metres_per_unit = 0;
         raster.longitude_scale = 0;
+        raster.place = {};
     }
     if (o.categorical && !raster.categorical) {
         raster.categorical = true;

@@ -15,6 +15,8 @@
 #include "gen/model/build_scene.h"
 #include "gen/model/features/ruler/ruler.h"
 #include "gen/model/scene_json.h"
+#include "gen/readers/esri_ascii_reader.h"
+#include "gen/field/resample.h"
 #include "gen/scad/scad_emitter.h"
 #include "haptics/height_grid.h"
 #include "verify/tactile.h"
@@ -137,6 +139,42 @@ TEST(Ruler, TheKeySaysWhichColumnAndRowEachToothMarks) {
         if (!t.south) listed.push_back(s.grid.rows - t.row);
     ASSERT_GE(listed.size(), 2u);
     EXPECT_NE(text.find("the teeth mark rows " + std::to_string(listed[0]) + ", "), std::string::npos) << text;
+}
+
+// An ESRI grid says where its cells lie: the key gives the x and y each
+// tooth marks, the centres of the cells the teeth stand at, worked out
+// here from the header (one pillar per value: pixel (c, r) is centred at
+// xllcorner + (c + 0.5) cellsize, yllcorner + (rows - r - 0.5) cellsize).
+// A field without coordinates gives only the columns and rows.
+TEST(Ruler, TheKeySaysTheDataCoordinatesEachToothMarks) {
+    std::string grid = "ncols 20\nnrows 12\nxllcorner 987.5\nyllcorner 4987.5\ncellsize 25\n";
+    for (int r = 0; r < 12; ++r) {
+        for (int c = 0; c < 20; ++c) grid += std::to_string(5.0 + std::sin(0.3 * c) + std::cos(0.4 * r)) + " ";
+        grid += "\n";
+    }
+    const HexField f = rasterOneToOne(parseEsriAscii(grid, "hill.asc"));
+    const Scene s = buildScene(f, rulerParams());
+    std::string text;
+    for (const std::string& line : modelKeyParagraphs(s, {})) text += line + "\n";
+    // Columns 1, 5, 9, 13 and 17: x 987.5 + 12.5 + 25 * (column - 1).
+    EXPECT_NE(text.find("the teeth mark columns 1, 5, 9, 13 and 17 of 20, counted from the west (every 4, 12 "
+                        "millimetres apart). They stand at x 1000, 1100, 1200, 1300 and 1400, 100 apart."),
+              std::string::npos)
+        << text;
+    // Row k counted from the south: y 4987.5 + 25 * (k - 0.5).
+    std::string rows = "They stand at y ";
+    std::vector<int32_t> listed;
+    for (const RulerTooth& t : sceneRuler(s)->teeth)
+        if (!t.south) listed.push_back(s.grid.rows - t.row);
+    ASSERT_GE(listed.size(), 2u);
+    for (size_t k = 0; k < listed.size(); ++k)
+        rows += (k == 0 ? "" : k + 1 == listed.size() ? " and " : ", ") +
+                std::to_string(int(4987.5 + 25 * (listed[k] - 0.5)));  // four digits: no comma (formatForReader)
+    EXPECT_NE(text.find(rows + ", 100 apart."), std::string::npos) << text;
+
+    std::string plain;
+    for (const std::string& line : modelKeyParagraphs(buildScene(hill(), rulerParams()), {})) plain += line + "\n";
+    EXPECT_EQ(plain.find("They stand at"), std::string::npos) << plain;
 }
 
 TEST(Ruler, TsfFeelFeelsEachToothBesideTheEdge) {

@@ -131,6 +131,7 @@ TEST(Georef, IgnoreGeorefReadsThePlainGrid) {
     EXPECT_EQ(r.rows, 20);
     EXPECT_EQ(r.cell_size, 1.0);
     EXPECT_EQ(r.metres_per_unit, 0.0);
+    EXPECT_FALSE(r.place.known);
     EXPECT_EQ(r.at(19, 0), 19.0);
     EXPECT_EQ(r.at(0, 19), 1900.0);
     EXPECT_NE(r.fact("georeference").find("--ignore-georef"), std::string::npos);
@@ -143,6 +144,45 @@ TEST(Georef, IgnoreGeorefReadsThePlainGrid) {
     const auto points = test::runTsf("gen " + path + " --points x=0,y=1 --ignore-georef -o " + (dir / "p.stl").string());
     EXPECT_EQ(points.exit_code, 2) << points.output;
     EXPECT_NE(points.output.find("--ignore-georef is for rasters"), std::string::npos) << points.output;
+}
+
+// A north-up file's pixels in its own coordinates, with the axes' names:
+// longitude and latitude in degrees, easting and northing in metres.
+TEST(Georef, ANorthUpRasterSaysWhereItsPixelsLieAndOnWhichAxes) {
+    const auto dir = test::scratchDir();
+    test::GeoTiffSpec g;
+    g.cols = 8;
+    g.rows = 6;
+    g.values.assign(48, 1.0f);
+    g.epsg = 4326;
+    g.west = 10;
+    g.north = 50;
+    g.pixel_w = 0.25;
+    g.pixel_h = 0.125;
+    ASSERT_TRUE(test::writeGeoTiff((dir / "lonlat.tif").string(), g));
+    const Raster lonlat = readRaster((dir / "lonlat.tif").string(), {});
+    ASSERT_TRUE(lonlat.place.known);
+    EXPECT_EQ(lonlat.place.axes.x, "longitude");
+    EXPECT_EQ(lonlat.place.axes.y, "latitude");
+    EXPECT_EQ(lonlat.place.axes.unit, "degrees");
+    EXPECT_DOUBLE_EQ(lonlat.place.x_west, 10);
+    EXPECT_DOUBLE_EQ(lonlat.place.dx, 0.25);
+    EXPECT_DOUBLE_EQ(lonlat.place.y_north, 50);
+    EXPECT_DOUBLE_EQ(lonlat.place.dy, 0.125);
+
+    g.epsg = 32633;
+    g.west = 400000;
+    g.north = 5500000;
+    g.pixel_w = g.pixel_h = 30;
+    ASSERT_TRUE(test::writeGeoTiff((dir / "utm.tif").string(), g));
+    const Raster utm = readRaster((dir / "utm.tif").string(), {});
+    ASSERT_TRUE(utm.place.known);
+    EXPECT_EQ(utm.place.axes.x, "easting");
+    EXPECT_EQ(utm.place.axes.y, "northing");
+    EXPECT_EQ(utm.place.axes.unit, "metres");
+    EXPECT_DOUBLE_EQ(utm.place.x_west, 400000);
+    EXPECT_DOUBLE_EQ(utm.place.y_north, 5500000);
+    EXPECT_DOUBLE_EQ(utm.place.dx, 30);
 }
 
 // Degrees must be on the globe: a latitude of 435 is named, not modelled.

@@ -248,6 +248,43 @@ TEST(Resample, RecordsHowAndPitchInDataUnits) {
     EXPECT_NE(f.how.find("61 x 87 px"), std::string::npos);
 }
 
+// Where each hexagon lies in the data's coordinates (gen/field/data_place.h),
+// from the layout recomputed above: a resampled hexagon stands for its
+// centre; one pillar per value for its pixel's centre; squared pixels
+// keep the raster's extent.
+TEST(Resample, EachHexagonSaysWhereItLiesInTheData) {
+    Raster r = makeRaster(61, 87, 1.0);
+    r.place = {.known = true, .x_west = 1000, .dx = 10, .y_north = 2000, .dy = 10, .axes = {"easting", "northing", "metres"}};
+    const HexField f = resampleRaster(r, {.hex_cols = 34});
+    const ExpectedLayout e = expectedLayout(61, 87, 34);
+    ASSERT_TRUE(f.place.known);
+    EXPECT_EQ(f.place.axes.x, "easting");
+    EXPECT_EQ(f.place.axes.unit, "metres");
+    for (const auto& [c, row] : std::vector<std::pair<int, int>>{{0, 0}, {4, 0}, {4, 1}, {33, 48}, {10, e.rows - 1}}) {
+        EXPECT_NEAR(f.place.x(c, row), 1000 + 10 * e.centreX(c, row), 1e-9) << c << " " << row;
+        EXPECT_NEAR(f.place.y(row), 2000 - 10 * e.centreY(row), 1e-9) << row;
+    }
+
+    const HexField one = rasterOneToOne(r);
+    ASSERT_TRUE(one.place.known);
+    EXPECT_DOUBLE_EQ(one.place.x(0, 0), 1005);
+    EXPECT_DOUBLE_EQ(one.place.x(60, 1), 1605);  // odd rows stand for their own pixels
+    EXPECT_DOUBLE_EQ(one.place.y(86), 2000 - 865);
+
+    // Rows twice as far apart on the ground: squared by repeating rows, the
+    // same extent in twice the rows, each half as tall in the data.
+    Raster tall = makeRaster(4, 3, 1.0);
+    tall.row_aspect = 2.0;
+    tall.place = {.known = true, .x_west = 0, .dx = 1, .y_north = 30, .dy = 10, .axes = {}};
+    const Raster square = squarePixels(tall);
+    ASSERT_EQ(square.rows, 6);
+    EXPECT_DOUBLE_EQ(square.place.dy, 5);
+    EXPECT_DOUBLE_EQ(square.place.dx, 1);
+    EXPECT_DOUBLE_EQ(rasterOneToOne(square).place.y(5), 2.5);
+
+    EXPECT_FALSE(resampleRaster(makeRaster(10, 10), {.hex_cols = 5}).place.known);  // a picture has no coordinates
+}
+
 TEST(Resample, LimitsAndBadOptions) {
     EXPECT_THROW(resampleRaster(makeRaster(10, 10), {-1}), InputError);
     EXPECT_THROW(resampleRaster(makeRaster(10, 10), {kMaxResampleCols + 1}), InputError);

@@ -47,6 +47,7 @@ Scene sceneFrame(const HexField& field, const SceneParams& params) {
     Scene s;
     s.grid = field.grid;
     s.params = params;
+    s.place = field.place;
     if (field.input.categorical && s.params.words.inBraille() && s.params.words.range_line.empty()) {
         // A class map's legend says how many classes it shows, not the
         // range of their codes (the key names them).

@@ -382,6 +382,7 @@ void readRotated(GDALRasterBandH band, const std::string& path, int64_t cols, in
     r.row_aspect = 1.0;
     r.x_origin = n.x0;
     r.y_origin = n.y0 - n.px_h * double(n.rows);
+    r.place = {.known = true, .x_west = n.x0, .dx = n.px_w, .y_north = n.y0, .dy = n.px_h, .axes = {}};
     // The raster's own sides on the ground and where its top edge faced.
     const double side_x = std::hypot(gt[1] * x_scale, gt[4]) * double(cols);
     const double side_y = std::hypot(gt[2] * x_scale, gt[5]) * double(rows);
@@ -573,11 +574,20 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         r.facts.push_back({"crs", has_gt ? "none; pixel sizes taken as they are" : "none (no georeference)"});
         if (has_gt) r.facts.push_back({"pixel", formatSignificant(px_w) + " x " + formatSignificant(px_h)});
     }
+    // The axes a reader is told the model's places in (the pixels' place
+    // itself is set below, once the grid read is known).
+    DataAxes axes;
+    if (lon_lat) {
+        axes = {"longitude", "latitude", "degrees"};
+    } else if (srs && OSRIsProjected(srs)) {
+        axes = {"easting", "northing", OSRGetLinearUnits(srs, nullptr) == 1.0 ? "metres" : ""};
+    }
 
     int has_nodata = 0;
     const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
     if (rotated) {
         readRotated(band, path, cols, rows, gt, x_scale, r.categorical, has_nodata != 0, nodata, r);
+        r.place.axes = axes;
         return finishValues(band, has_nodata != 0, nodata, r);
     }
 
@@ -623,6 +633,14 @@ Raster readDataset(const std::string& gdal_name, const std::string& path, int ba
         if (!readPixels(band, 0, 0, cols, rows, r.values.data()))
             throw InputError(path, 0, 0, "GDAL could not read the pixels: " + QuietGdal::lastMessage());
     }
+    // North-up (a south-up file's rows are not turned here: no place said).
+    if (has_gt && gt[1] > 0 && gt[5] < 0)
+        r.place = {.known = true,
+                   .x_west = gt[0],
+                   .dx = gt[1] * double(cols) / double(r.cols),
+                   .y_north = gt[3],
+                   .dy = -gt[5] * double(rows) / double(r.rows),
+                   .axes = axes};
 
     return finishValues(band, has_nodata != 0, nodata, r);
 }

@@ -1,5 +1,7 @@
 // The edge ruler's sidecar record, facts, key paragraph and OpenSCAD piece.
 // See ruler.h.
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "gen/model/features/ruler/ruler.h"
@@ -23,6 +25,36 @@ std::vector<const RulerTooth*> teethOn(const SceneRuler& r, bool south) {
 // the south, both from 1 (the grid's row 0 is its north row).
 int32_t columnFromWest(const RulerTooth& t) { return t.col + 1; }
 int32_t rowFromSouth(const Scene& s, const RulerTooth& t) { return s.grid.rows - t.row; }
+
+// The data coordinates teeth `step` apart stand at, for a reader: to as
+// many decimals as tell one tooth's from the next ("10.067, 10.133 and
+// 10.2"), thousands by commas.
+std::string coordinateList(const std::vector<double>& v, double step) {
+    const int decimals = step > 0 && std::isfinite(step) ? std::max(0, 1 - int(std::floor(std::log10(step)))) : 0;
+    std::string out;
+    for (size_t k = 0; k < v.size(); ++k) {
+        const double whole = std::fabs(v[k]) >= 1 ? std::floor(std::log10(std::fabs(v[k]))) + 1 : 1;
+        out += (k == 0 ? "" : k + 1 == v.size() ? " and " : ", ") +
+               formatForReader(v[k], std::clamp(int(whole) + (step >= 10 ? 0 : decimals), 1, 15));
+    }
+    return out;
+}
+
+// Where the teeth of one edge stand in the data's own coordinates (the
+// centres of the cells they stand at), as a sentence; "" when the input
+// gives no coordinates.
+std::string placeSentence(const Scene& s, const std::vector<const RulerTooth*>& teeth, bool south, int every) {
+    if (!s.place.known || teeth.empty()) return "";
+    std::vector<double> at;
+    for (const RulerTooth* t : teeth) at.push_back(south ? s.place.x(t->col, t->row) : s.place.y(t->row));
+    const double step = std::fabs(south ? s.place.x_per_col : s.place.y_per_row) * every;
+    const std::string& axis = south ? s.place.axes.x : s.place.axes.y;
+    const std::string& unit = s.place.axes.unit;
+    std::string out = std::string(teeth.size() == 1 ? "It stands at " : "They stand at ") + axis + " " +
+                      coordinateList(at, step) + (unit.empty() ? "" : " " + unit);
+    if (teeth.size() > 1) out += ", " + formatForReader(step, 3) + (unit.empty() ? "" : " " + unit) + " apart";
+    return out + ". ";
+}
 
 std::string list(const std::vector<int32_t>& v) {
     std::string out;
@@ -112,8 +144,9 @@ std::string rulerKeyParagraph(const Scene& s, const KeyNumbers& /*numbers*/) {
     const SceneRuler* r = sceneRuler(s);
     if (!r) return "";
     std::vector<int32_t> columns, rows;
-    for (const RulerTooth* t : teethOn(*r, true)) columns.push_back(columnFromWest(*t));
-    for (const RulerTooth* t : teethOn(*r, false)) rows.push_back(rowFromSouth(s, *t));
+    const std::vector<const RulerTooth*> south = teethOn(*r, true), west = teethOn(*r, false);
+    for (const RulerTooth* t : south) columns.push_back(columnFromWest(*t));
+    for (const RulerTooth* t : west) rows.push_back(rowFromSouth(s, *t));
     const std::string rise = formatSignificant(s.zMm(r->top_units - s.floor_units), 2);
     std::string out = "An edge ruler: small teeth stand out at the foot of the south and west edges, each a ridge " + rise +
                       (rise == "1" ? " millimetre" : " millimetres") + " high. ";
@@ -126,9 +159,11 @@ std::string rulerKeyParagraph(const Scene& s, const KeyNumbers& /*numbers*/) {
                formatSignificant(mm, 3) + " millimetres apart). ";
     };
     out += edge("south", "from west to east", columns, r->every_x, r->spacing_x_mm, "column", s.grid.cols,
-                "counted from the west");
+                "counted from the west") +
+           placeSentence(s, south, true, r->every_x);
     out += edge("west", "from south to north", rows, r->every_y, r->spacing_y_mm, "row", s.grid.rows,
-                "counted from the south");
+                "counted from the south") +
+           placeSentence(s, west, false, r->every_y);
     out += "Count the teeth along each edge to say where a value is.";
     return out;
 }
