@@ -132,6 +132,8 @@ HexField loadField(const FieldLoadOptions& o) {
         const std::string projected = projectPoints(points, parseProjection(o.project), o.crs, &metres_per_unit);
         HexField f = binPoints(points, b);
         f.source = o.input;
+        // Projected, a tooth along an edge marks no one longitude or latitude.
+        if (!projected.empty()) f.place = {};
         f.input.kind = "points";
         // (All points at one place give one hexagon of an arbitrary size: no ground to state.)
         if (metres_per_unit > 0 && (f.grid.cellCount() > 1 || o.bin_size > 0)) {

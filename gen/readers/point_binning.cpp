@@ -142,6 +142,21 @@ HexField binPoints(const PointTable& points, const BinOptions& opts) {
     field.source = points.source;
     field.pitch_data = layout.pitch;
     field.values.resize(cells);
+    {
+        // Each hexagon's centre in the points' own x and y (the inverse of
+        // u, v above); load_field forgets it when the points were projected.
+        const auto x = [&](int32_t c, int32_t r) {
+            return layout.x_min + (latticeX(hexCentre(grid, c, r), 1.0) - layout.u_min) * layout.pitch;
+        };
+        const auto y = [&](int32_t r) { return layout.y_min + (latticeY(hexCentre(grid, 0, r), 1.0, 1.0) - layout.v_min) * layout.pitch; };
+        field.place = {.known = true,
+                       .x0 = x(0, 0),
+                       .x_per_col = x(1, 0) - x(0, 0),
+                       .odd_row_shift_cols = 0.5,
+                       .y0 = y(0),
+                       .y_per_row = y(1) - y(0),
+                       .axes = {points.x_name, points.y_name, ""}};
+    }
     field.moments = std::move(moments);
     field.statistic = opts.aggregate == BinOptions::Aggregate::Count  ? BinStatistic::Density
                       : opts.aggregate == BinOptions::Aggregate::Sum ? BinStatistic::WeightSum

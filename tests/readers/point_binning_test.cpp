@@ -247,3 +247,34 @@ TEST(PointBinning, AirportExampleBinsEveryAirport) {
 
 }  // namespace
 }  // namespace tsf
+
+namespace tsf {
+namespace {
+
+// Each hexagon says where its centre lies in the points' own x and y: every
+// hexagon that holds points has one within its circumradius (pitch / sqrt 3).
+TEST(PointBinning, EachHexagonSaysWhereItsCentreLiesInThePointsCoordinates) {
+    PointTable pts = makePoints({0, 10, 0, 10, 5, 2.5}, {0, 0, 10, 10, 5, 7.5});
+    pts.x_name = "east";
+    pts.y_name = "north";
+    BinOptions o;
+    o.hex_cols = 6;
+    const HexField f = binPoints(pts, o);
+    ASSERT_TRUE(f.place.known);
+    EXPECT_EQ(f.place.axes.x, "east");
+    EXPECT_EQ(f.place.axes.y, "north");
+    int held = 0;
+    for (int32_t r = 0; r < f.grid.rows; ++r)
+        for (int32_t c = 0; c < f.grid.cols; ++c) {
+            if (!(f.at(c, r) > 0)) continue;
+            ++held;
+            double nearest = 1e300;
+            for (size_t k = 0; k < pts.size(); ++k)
+                nearest = std::min(nearest, std::hypot(pts.x[k] - f.place.x(c, r), pts.y[k] - f.place.y(r)));
+            EXPECT_LE(nearest, f.pitch_data / std::sqrt(3.0) + 1e-9) << c << ", " << r;
+        }
+    EXPECT_GE(held, 5);
+}
+
+}  // namespace
+}  // namespace tsf
