@@ -14,6 +14,7 @@
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/model/build_scene.h"
 #include "gen/model/features/ruler/ruler.h"
+#include "gen/model/feature_records.h"
 #include "gen/model/scene_json.h"
 #include "gen/readers/esri_ascii_reader.h"
 #include "gen/field/resample.h"
@@ -171,6 +172,15 @@ TEST(Ruler, TheKeySaysTheDataCoordinatesEachToothMarks) {
         rows += (k == 0 ? "" : k + 1 == listed.size() ? " and " : ", ") +
                 std::to_string(int(4987.5 + 25 * (listed[k] - 0.5)));  // four digits: no comma (formatForReader)
     EXPECT_NE(text.find(rows + ", 100 apart."), std::string::npos) << text;
+
+    // The summary's JSON says the same to a program.
+    nlohmann::json facts;
+    for (const FeatureFacts& f : featureFacts())
+        if (std::string(f.path) == "ruler") facts = f.json(s);
+    ASSERT_TRUE(facts.is_object());
+    EXPECT_EQ(facts["data_axes"]["x"], "x");
+    EXPECT_DOUBLE_EQ(facts["south_teeth"][1]["x"].get<double>(), 1100.0);
+    EXPECT_DOUBLE_EQ(facts["west_teeth"][0]["y"].get<double>(), 4987.5 + 25 * (listed[0] - 0.5));
 
     std::string plain;
     for (const std::string& line : modelKeyParagraphs(buildScene(hill(), rulerParams()), {})) plain += line + "\n";

@@ -120,12 +120,24 @@ nlohmann::json rulerFactsJson(const Scene& s) {
     const SceneRuler* r = sceneRuler(s);
     if (!r) return nullptr;
     json south = json::array(), west = json::array();
-    for (const RulerTooth* t : teethOn(*r, true)) south.push_back({{"column_from_west", columnFromWest(*t)}, {"line", t->ordinal}});
-    for (const RulerTooth* t : teethOn(*r, false)) west.push_back({{"row_from_south", rowFromSouth(s, *t)}, {"line", t->ordinal}});
-    return {{"every", {r->every_x, r->every_y}}, {"every_given", r->every_given},
-            {"spacing_mm", {r->spacing_x_mm, r->spacing_y_mm}}, {"lines", {r->lines_x, r->lines_y}},
-            {"tooth_depth_mm", kRulerToothDepthMm}, {"ridge_above_floor_mm", s.zMm(r->top_units - s.floor_units)},
-            {"south_teeth", south}, {"west_teeth", west}};
+    // With the data's coordinates, each tooth's x or y in them, and the axes.
+    for (const RulerTooth* t : teethOn(*r, true)) {
+        json tooth = {{"column_from_west", columnFromWest(*t)}, {"line", t->ordinal}};
+        if (s.place.known) tooth["x"] = s.place.x(t->col, t->row);
+        south.push_back(std::move(tooth));
+    }
+    for (const RulerTooth* t : teethOn(*r, false)) {
+        json tooth = {{"row_from_south", rowFromSouth(s, *t)}, {"line", t->ordinal}};
+        if (s.place.known) tooth["y"] = s.place.y(t->row);
+        west.push_back(std::move(tooth));
+    }
+    json facts = {{"every", {r->every_x, r->every_y}}, {"every_given", r->every_given},
+                  {"spacing_mm", {r->spacing_x_mm, r->spacing_y_mm}}, {"lines", {r->lines_x, r->lines_y}},
+                  {"tooth_depth_mm", kRulerToothDepthMm}, {"ridge_above_floor_mm", s.zMm(r->top_units - s.floor_units)},
+                  {"south_teeth", south}, {"west_teeth", west}};
+    if (s.place.known)
+        facts["data_axes"] = {{"x", s.place.axes.x}, {"y", s.place.axes.y}, {"unit", s.place.axes.unit}};
+    return facts;
 }
 
 std::string rulerFactsLines(const Scene& s) {
