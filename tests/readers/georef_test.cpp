@@ -150,39 +150,30 @@ TEST(Georef, IgnoreGeorefReadsThePlainGrid) {
 // longitude and latitude in degrees, easting and northing in metres.
 TEST(Georef, ANorthUpRasterSaysWhereItsPixelsLieAndOnWhichAxes) {
     const auto dir = test::scratchDir();
-    test::GeoTiffSpec g;
-    g.cols = 8;
-    g.rows = 6;
-    g.values.assign(48, 1.0f);
-    g.epsg = 4326;
-    g.west = 10;
-    g.north = 50;
-    g.pixel_w = 0.25;
-    g.pixel_h = 0.125;
-    ASSERT_TRUE(test::writeGeoTiff((dir / "lonlat.tif").string(), g));
-    const Raster lonlat = readRaster((dir / "lonlat.tif").string(), {});
-    ASSERT_TRUE(lonlat.place.known);
-    EXPECT_EQ(lonlat.place.axes.x, "longitude");
-    EXPECT_EQ(lonlat.place.axes.y, "latitude");
-    EXPECT_EQ(lonlat.place.axes.unit, "degrees");
-    EXPECT_DOUBLE_EQ(lonlat.place.x_west, 10);
-    EXPECT_DOUBLE_EQ(lonlat.place.dx, 0.25);
-    EXPECT_DOUBLE_EQ(lonlat.place.y_north, 50);
-    EXPECT_DOUBLE_EQ(lonlat.place.dy, 0.125);
-
-    g.epsg = 32633;
-    g.west = 400000;
-    g.north = 5500000;
-    g.pixel_w = g.pixel_h = 30;
-    ASSERT_TRUE(test::writeGeoTiff((dir / "utm.tif").string(), g));
-    const Raster utm = readRaster((dir / "utm.tif").string(), {});
-    ASSERT_TRUE(utm.place.known);
-    EXPECT_EQ(utm.place.axes.x, "easting");
-    EXPECT_EQ(utm.place.axes.y, "northing");
-    EXPECT_EQ(utm.place.axes.unit, "metres");
-    EXPECT_DOUBLE_EQ(utm.place.x_west, 400000);
-    EXPECT_DOUBLE_EQ(utm.place.y_north, 5500000);
-    EXPECT_DOUBLE_EQ(utm.place.dx, 30);
+    const auto expectPlace = [&](int epsg, double west, double north, double w, double h, const DataAxes& axes) {
+        test::GeoTiffSpec g;
+        g.cols = 8;
+        g.rows = 6;
+        g.values.assign(48, 1.0f);
+        g.epsg = epsg;
+        g.west = west;
+        g.north = north;
+        g.pixel_w = w;
+        g.pixel_h = h;
+        const std::string path = (dir / ("epsg" + std::to_string(epsg) + ".tif")).string();
+        ASSERT_TRUE(test::writeGeoTiff(path, g));
+        const PixelPlace p = readRaster(path, {}).place;
+        ASSERT_TRUE(p.known) << epsg;
+        EXPECT_EQ(p.axes.x, axes.x);
+        EXPECT_EQ(p.axes.y, axes.y);
+        EXPECT_EQ(p.axes.unit, axes.unit);
+        EXPECT_DOUBLE_EQ(p.x_west, west);
+        EXPECT_DOUBLE_EQ(p.dx, w);
+        EXPECT_DOUBLE_EQ(p.y_north, north);
+        EXPECT_DOUBLE_EQ(p.dy, h);
+    };
+    expectPlace(4326, 10, 50, 0.25, 0.125, {"longitude", "latitude", "degrees"});
+    expectPlace(32633, 400000, 5500000, 30, 30, {"easting", "northing", "metres"});
 }
 
 // Degrees must be on the globe: a latitude of 435 is named, not modelled.
