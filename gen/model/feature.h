@@ -251,7 +251,7 @@ struct Feature {
     std::optional<int64_t> (*top_at)(const Scene& scene, double x_mm, double y_mm);
     /// z (mm) of its highest point where it may stand above the highest
     /// pillar (the float32 z grid must resolve it); none without it.
-    std::optional<double> (*highest_z_mm)(const Scene& scene);
+    std::optional<double> (*highest_z_mm)(const Scene& scene) = nullptr;
     /// Its read-back; no probes without it.
     ProbeSet (*probes)(const Scene& scene);
     /// Checks what the mesher relies on to join it (InputError "scene: ...").
@@ -282,23 +282,23 @@ struct Feature {
     /// The orientation marks it carries, as placed (what a reader is told
     /// of them and the tactile check measures); none when it carries none
     /// (they are in the data, or there are none).
-    std::optional<PlacedMarks> (*carried_marks)(const Scene& scene);
+    std::optional<PlacedMarks> (*carried_marks)(const Scene& scene) = nullptr;
     /// The z units it needs across the cut into halves in every pillar it
     /// may stand against, both sides together: the slab the model is cut at
     /// grows to hold them (gen/model/phases/halves_slab.h). 0 without.
-    int64_t (*room_across_cut_units)(const Scene& scene);
+    int64_t (*room_across_cut_units)(const Scene& scene) = nullptr;
     /// Its state in one half (gen/model/features/halves.h): `half` is a copy
     /// of `whole` whose pillars are cut at whole.halves->split_units; it
     /// keeps its side of the cut there.
-    void (*cut_into_half)(const Scene& whole, Scene& half, HalfKind kind);
+    void (*cut_into_half)(const Scene& whole, Scene& half, HalfKind kind) = nullptr;
     /// A cut into tiles keeps it whole, in the tile that carries the marks
     /// (gen/model/features/tiles.h): the kept cells it stands against,
     /// which stay in that tile.
-    std::vector<int32_t> (*tile_cells)(const Scene& scene);
+    std::vector<int32_t> (*tile_cells)(const Scene& scene) = nullptr;
     /// What that tile is asked (tile.requests) so that it carries it as the
     /// whole model placed it rather than placing it again against fewer
     /// pillars (its cells named by grid cell index).
-    void (*carry_into_tile)(const Scene& whole, SceneParams& tile);
+    void (*carry_into_tile)(const Scene& whole, SceneParams& tile) = nullptr;
     /// What it asks a hand to find (the tactile check proves it as
     /// printed); none without it.
     std::vector<TactileClaim> (*tactile_claims)(const Scene& scene);

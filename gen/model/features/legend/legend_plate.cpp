@@ -109,7 +109,7 @@ PlateOutline legendPlateOutline(const Scene& s) {
     const int64_t js = hexCentre(g, 0, reach).j + 1;  // the south edge
     const bool east_lattice = legendEastOnLattice(s);
     const int64_t ie = gridEastI(g);
-    OutlineBuilder b{s, {}, {}, {}};
+    OutlineBuilder b{s, {}, {}, {}, {}};
     for (int32_t r = 0; r <= reach; ++r)
         for (int32_t c = 0; c < g.cols; ++c)
             if (s.keptAt(c, r) >= 0)
