@@ -300,8 +300,8 @@ void addGenOptions(CLI::App* cmd, GenOptions& o, bool with_input) {
                p.requests.set(rq);
            },
            "Teeth on the bed along the south and west edges, every N columns and rows (default: N so they "
-           "stand at least 10 mm apart), so a reader counts them to say where a value is; the key says what "
-           "each marks. Flat models only")
+           "stand at least 10 mm apart), so a reader counts them to say where a value is; the key says the "
+           "column or row each marks, and its x or y where the file gives coordinates. Flat models only")
         ->expected(0, 1)->type_name("[N]")->group(ruler);
     cmd->add_option("--triangle-leg", p.marks.triangle_leg_mm, "Preferred east leg of the triangle in the data (--marks-on data), mm (north leg 0.6 of it); on the tab it is 14 mm")
         ->check(CLI::Range(5.0, 200.0))->capture_default_str()->group(marks);
