@@ -19,6 +19,8 @@ namespace {
 // The checks a setting of height or transfer can fix.
 constexpr const char* kFixable[] = {"tactile_finger_reach", "tactile_slender_pillars"};
 
+bool isFixable(const std::string& id) { return std::find(std::begin(kFixable), std::end(kFixable), id) != std::end(kFixable); }
+
 // Lowest height tried, mm: below it a model is a plate.
 constexpr double kLowestHeightMm = 2.0;
 
@@ -90,13 +92,29 @@ Trial tryParams(const HexField& field, const Scene& reference, const SceneParams
     to.layer_mm = vo.layer_mm;
     to.nozzle_mm = vo.nozzle_mm;
     to.max_offenders = 3;
-    TactileResult r = checkTactile(meshScene(s), &s, to);
+    TactileResult r = checkLegibility(meshScene(s), s, to);
     for (Check& c : r.checks)
-        if (std::find(std::begin(kFixable), std::end(kFixable), c.id) != std::end(kFixable)) {
+        if (isFixable(c.id)) {
             if (c.status == CheckStatus::Fail) t.failing += c.count;
             t.checks.push_back(std::move(c));
         }
     return t;
+}
+
+// The fixable checks of gen's self-check, as checkTactile gave them: gen
+// turns a failed tactile check into a warning (both fixable checks only
+// ever pass or fail), and lists up to its own number of offenders, worst
+// first, of which the summary and key name the first three.
+std::vector<Check> fixableChecks(const VerifyReport& report) {
+    std::vector<Check> out;
+    for (const Check& c : report.checks) {
+        if (!isFixable(c.id)) continue;
+        Check k = c;
+        if (k.status == CheckStatus::Warn) k.status = CheckStatus::Fail;
+        if (k.worst.size() > 3) k.worst.resize(3);
+        out.push_back(std::move(k));
+    }
+    return out;
 }
 
 std::string settingText(const SceneParams& p) {
@@ -171,14 +189,25 @@ std::vector<std::string> failedLegibility(const VerifyReport& report) {
     return out;
 }
 
-LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const std::vector<std::string>& failed,
+LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const VerifyReport& first_report,
                                 const LegibilityGiven& given, const VerifyOptions& vo, const FieldAtBins& field_at) {
     LegibleDefaults out;
+    const std::vector<std::string> failed = failedLegibility(first_report);
     // A feature that stands every value at one height (a class map's
     // textures) leaves no heights to change.
     if (failed.empty() || featureOneHeight(first)) return out;
     const SceneParams& p0 = first.params;
-    const Trial at_first = tryParams(field, first, p0, vo);
+    // The first setting as gen's own self-check found it: the model as
+    // written (float32 in an STL) at verify's sampling, so what this pass
+    // says fails is what tsf verify --tactile says, and it is not built,
+    // meshed and checked a second time (at 1000 x 1000, seconds).
+    Trial at_first;
+    at_first.params = p0;
+    at_first.pitch_mm = first.pitch_mm;
+    at_first.cols = first.grid.cols;
+    at_first.checks = fixableChecks(first_report);
+    for (const Check& c : at_first.checks)
+        if (c.status != CheckStatus::Pass && c.status != CheckStatus::Skipped) at_first.failing += c.count;
     if (at_first.failing == 0) return out;
 
     // Every trial is a build, a mesh and the tactile checks: each setting once.

@@ -57,10 +57,12 @@ struct LegibleDefaults {
 /// when none did.
 std::vector<std::string> failedLegibility(const VerifyReport& report);
 
-/// Searches the settings for a model of `field` that passes every check in
-/// `failed`, starting from `first` (built from first.params). `field_at`
-/// reads the input at other --bins (empty: the cell is not tried).
-LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const std::vector<std::string>& failed,
+/// Searches the settings for a model of `field` that passes every check
+/// `first_report` (gen's self-check of `first`, built from first.params)
+/// failed that a setting can fix; the first setting is taken as that report
+/// found it, not checked again. `field_at` reads the input at other --bins
+/// (empty: the cell is not tried).
+LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const VerifyReport& first_report,
                                 const LegibilityGiven& given, const VerifyOptions& verify_options,
                                 const FieldAtBins& field_at = {});
 

@@ -41,11 +41,11 @@ struct Check {
     std::string title;    ///< short human name
     CheckStatus status = CheckStatus::Skipped;
     int64_t count = 0;    ///< offenders found
-    std::string unit;     ///< unit of Offender::amount ("mm", "mm^3", "" for none)
-    std::vector<Offender> worst;  ///< the worst offenders, worst first, at most VerifyOptions::max_offenders
-    std::string note;     ///< one line: what was measured, or why the check was skipped
+    std::string unit{};   ///< unit of Offender::amount ("mm", "mm^3", "" for none)
+    std::vector<Offender> worst{};  ///< the worst offenders, worst first, at most VerifyOptions::max_offenders
+    std::string note{};   ///< one line: what was measured, or why the check was skipped
     double time_ms = 0;   ///< wall time of the stage that produced this check (see VerifyReport::stages)
-    std::string stage;    ///< that stage's name; checks produced together share one stage
+    std::string stage{};  ///< that stage's name; checks produced together share one stage
 };
 
 /// A timed step of the verifier (several checks can come from one step).

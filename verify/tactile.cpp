@@ -569,6 +569,13 @@ void checkFeatureClaims(const Scene& s, const TactileOptions& o, TactileResult& 
 
 }  // namespace
 
+TactileResult checkLegibility(const Mesh& mesh, const Scene& scene, const TactileOptions& options) {
+    TactileResult r;
+    checkFingerReach(mesh, &scene, options, r);
+    checkPillars(scene, options, r);
+    return r;
+}
+
 TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOptions& options) {
     TactileResult r;
     checkPointsAndEdges(mesh, options, r);

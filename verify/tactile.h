@@ -91,4 +91,11 @@ struct TactileResult {
 /// the marks check.
 TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOptions& options);
 
+/// Only the two checks a model's height, transfer or cell size can fix,
+/// tactile_finger_reach and tactile_slender_pillars, by the same code on the
+/// same samples as checkTactile and in its order: what a search over
+/// settings asks of each model it tries (the sharp points, marks and braille
+/// a setting does not change are not measured again).
+TactileResult checkLegibility(const Mesh& mesh, const Scene& scene, const TactileOptions& options);
+
 }  // namespace tsf

@@ -15,11 +15,10 @@ LegibilityOutcome passLegibility(GenCommandOptions& o, HexField& field, Scene& s
                                  const ModelRequest& rq, StageTimer& timer, GenSummary& summary) {
     LegibilityOutcome out;
     if (!made.report) return out;
-    const std::vector<std::string> failed = failedLegibility(*made.report);
-    if (failed.empty()) return out;
+    if (failedLegibility(*made.report).empty()) return out;
     timer.begin("legibility");
     const LegibleDefaults ld =
-        legibleDefaults(field, scene, failed, o.legibility_given, rq.verify_options, [&](int bins) -> std::optional<HexField> {
+        legibleDefaults(field, scene, *made.report, o.legibility_given, rq.verify_options, [&](int bins) -> std::optional<HexField> {
             GenOptions at = o.gen;
             at.bins = bins;
             try {

@@ -272,5 +272,43 @@ TEST(TactileMonotone, SlenderPillarsAreMonotoneInHeightAndWidth) {
     EXPECT_TRUE(failed_wider) << "12 mm free, 3 mm across: breaks";
 }
 
+// What a search over settings asks of each model it tries: the two checks a
+// setting can fix, each exactly as the whole tactile check gives it (status,
+// count, note, offenders), failing here, where a pit one cell wide sits 20
+// mm deep beside a spike 12 mm above its neighbours at 3 mm cells.
+TEST(TactileLegibility, TheChecksASettingCanFixAreTheTactileChecksOwn) {
+    SceneParams p = test::smallParams(Bottom::Flat, Cull::None);
+    p.pitch_mm = 3;
+    p.max_height_mm = 20;
+    p.baseline_mode = BaselineMode::Zero;
+    p.value_max = 20;
+    const Scene s = buildScene(test::fieldFromFunction(9, 9, [](int c, int r) {
+                                   return c == 2 && r == 2 ? 0.0 : c == 6 && r == 6 ? 20.0 : 8.0;
+                               }),
+                               p);
+    const Mesh m = meshScene(s);
+    TactileOptions o;
+    o.max_offenders = 3;
+    const TactileResult whole = checkTactile(m, &s, o), fixable = checkLegibility(m, s, o);
+    std::vector<const Check*> expected;
+    for (const Check& c : whole.checks)
+        if (c.id == "tactile_finger_reach" || c.id == "tactile_slender_pillars") expected.push_back(&c);
+    ASSERT_EQ(expected.size(), 2u);
+    ASSERT_EQ(fixable.checks.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+        const Check &a = *expected[k], &b = fixable.checks[k];
+        EXPECT_EQ(a.id, b.id);
+        EXPECT_EQ(a.status, CheckStatus::Fail) << a.id << ": " << a.note;
+        EXPECT_EQ(a.status, b.status) << a.id;
+        EXPECT_EQ(a.count, b.count) << a.id;
+        EXPECT_EQ(a.note, b.note) << a.id;
+        ASSERT_EQ(a.worst.size(), b.worst.size()) << a.id;
+        for (size_t w = 0; w < a.worst.size(); ++w) {
+            EXPECT_EQ(a.worst[w].detail, b.worst[w].detail) << a.id;
+            EXPECT_EQ(a.worst[w].amount, b.worst[w].amount) << a.id;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace tsf
