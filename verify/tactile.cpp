@@ -569,6 +569,12 @@ void checkFeatureClaims(const Scene& s, const TactileOptions& o, TactileResult& 
 
 }  // namespace
 
+Check checkSlenderPillars(const Scene& scene, const TactileOptions& options) {
+    TactileResult r;
+    checkPillars(scene, options, r);
+    return std::move(r.checks.front());
+}
+
 TactileResult checkLegibility(const Mesh& mesh, const Scene& scene, const TactileOptions& options) {
     TactileResult r;
     checkFingerReach(mesh, &scene, options, r);

@@ -98,4 +98,8 @@ TactileResult checkTactile(const Mesh& mesh, const Scene* scene, const TactileOp
 /// a setting does not change are not measured again).
 TactileResult checkLegibility(const Mesh& mesh, const Scene& scene, const TactileOptions& options);
 
+/// tactile_slender_pillars alone, as checkTactile gives it: read from the
+/// Scene's pillars, so a model it fails needs no mesh to be known to fail.
+Check checkSlenderPillars(const Scene& scene, const TactileOptions& options);
+
 }  // namespace tsf
