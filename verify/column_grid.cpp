@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "verify/detail/ray_triangle.h"
-#include "verify/detail/workers.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 namespace {

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "gen/util/number_format.h"
-#include "verify/detail/workers.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 namespace {

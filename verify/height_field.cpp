@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "verify/detail/workers.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 namespace {

@@ -10,7 +10,7 @@
 #include <numeric>
 
 #include "verify/detail/concurrent_union_find.h"
-#include "verify/detail/workers.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 namespace {

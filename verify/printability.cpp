@@ -14,7 +14,7 @@
 #include "verify/detail/concurrent_union_find.h"
 #include "verify/detail/flat_planes.h"
 #include "verify/detail/format.h"
-#include "verify/detail/workers.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 namespace {

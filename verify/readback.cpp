@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "verify/detail/format.h"
-#include "verify/detail/workers.h"
+#include "gen/util/workers.h"
 #include "gen/model/attachments.h"
 #include "gen/model/features/marks.h"
 #include "gen/model/features/top_shapes.h"

@@ -17,7 +17,7 @@
 #include "gen/util/number_format.h"
 #include "verify/attachment_joint.h"
 #include "verify/finger_reach.h"
-#include "verify/detail/workers.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 namespace {

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "verify/detail/ray_triangle.h"
-#include "verify/detail/workers.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 namespace {

@@ -64,6 +64,7 @@
 
 #include "gen/geometry/cdt_parity.h"
 #include "gen/util/union_find.h"
+#include "gen/util/workers.h"
 
 #include "gen/model/attachments.h"
 #include "gen/model/features/top_shapes.h"
@@ -91,10 +92,7 @@ thread_local Triangles* t_sink = nullptr;
 // Runs work(part) for part = 0 .. parts-1 on as many threads.
 template <class Work>
 void runParts(unsigned parts, const Work& work) {
-    std::vector<std::thread> pool;
-    for (unsigned p = 1; p < parts; ++p) pool.emplace_back(work, p);
-    work(0u);
-    for (std::thread& t : pool) t.join();
+    detail::runOnWorkers(parts, [&](unsigned part, const std::atomic<bool>&) { work(part); });
 }
 
 class MeshBuilder {

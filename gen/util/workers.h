@@ -1,4 +1,5 @@
-// The verifier's parallel stages: how many threads, and running on them.
+// Work split over threads: how many, and running on them (the verifier's
+// parallel stages, the mesher's passes, welding positions).
 #pragma once
 
 #include <algorithm>
