@@ -37,10 +37,11 @@ ExactVertexIndex::ExactVertexIndex(size_t expected_count) {
     rehash(slotCountFor(expected_count));
 }
 
-size_t ExactVertexIndex::slotOf(const Vec3& p) const {
-    const uint64_t h = mix(std::bit_cast<uint64_t>(p.x) ^ mix(std::bit_cast<uint64_t>(p.y) ^ mix(std::bit_cast<uint64_t>(p.z))));
-    return static_cast<size_t>(h) & mask_;
+uint64_t positionHash(const Vec3& p) {
+    return mix(std::bit_cast<uint64_t>(p.x) ^ mix(std::bit_cast<uint64_t>(p.y) ^ mix(std::bit_cast<uint64_t>(p.z))));
 }
+
+size_t ExactVertexIndex::slotOf(const Vec3& p) const { return static_cast<size_t>(positionHash(p)) & mask_; }
 
 void ExactVertexIndex::rehash(size_t slot_count) {
     slots_.assign(slot_count, kEmptySlot);

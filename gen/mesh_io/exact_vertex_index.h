@@ -15,6 +15,10 @@
 
 namespace tsf::mesh_io {
 
+/// The hash both the index and weldExact (exact_weld.h) give a position
+/// (-0.0 already made +0.0): every bit of every coordinate counts.
+uint64_t positionHash(const Vec3& p);
+
 class ExactVertexIndex {
 public:
     /// expected_count: how many distinct positions to reserve room for.

@@ -1,6 +1,9 @@
 #include "gen/mesh_io/float32_mesh.h"
 
-#include "gen/mesh_io/exact_vertex_index.h"
+#include <atomic>
+
+#include "gen/mesh_io/exact_weld.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 namespace {
@@ -16,16 +19,29 @@ namespace {
 }  // namespace
 
 Mesh float32Mesh(const Mesh& mesh) {
-    mesh_io::ExactVertexIndex index(mesh.positions.size());
-    std::vector<uint32_t> remap(mesh.positions.size());
-    for (size_t v = 0; v < mesh.positions.size(); ++v) {
-        const Vec3& p = mesh.positions[v];
-        remap[v] = index.insert(Vec3{asFloat32(p.x), asFloat32(p.y), asFloat32(p.z)});
-    }
+    // Each position rounded, then welded exactly as a reader welds the
+    // file's corners (positions that round alike become one vertex), on
+    // every core; the triangles renumbered.
+    const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
+    const unsigned workers = nv + nt < (1u << 16) ? 1u : detail::workerCount(0);
+    std::vector<Vec3> rounded(nv);
+    detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
+        for (size_t v = nv * w / workers, end = nv * (w + 1) / workers; v < end; ++v) {
+            const Vec3& p = mesh.positions[v];
+            rounded[v] = Vec3{asFloat32(p.x), asFloat32(p.y), asFloat32(p.z)};
+        }
+    });
+    mesh_io::WeldedPositions welded = mesh_io::weldExact(std::move(rounded));
     Mesh out;
-    out.positions = index.takePositions();
-    out.triangles.reserve(mesh.triangles.size());
-    for (const auto& t : mesh.triangles) out.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
+    out.positions = std::move(welded.positions);
+    out.triangles.resize(nt);
+    const std::vector<uint32_t>& remap = welded.index_of;
+    detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
+        for (size_t t = nt * w / workers, end = nt * (w + 1) / workers; t < end; ++t) {
+            const auto& q = mesh.triangles[t];
+            out.triangles[t] = {remap[q[0]], remap[q[1]], remap[q[2]]};
+        }
+    });
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "gen/mesh_io/exact_vertex_index.h"
+#include "gen/mesh_io/exact_weld.h"
 #include "gen/mesh_io/obj_reader.h"
 #include "gen/mesh_io/off_reader.h"
 #include "gen/mesh_io/stl_reader.h"
@@ -99,6 +100,44 @@ TEST(ExactVertexIndex, AgreesWithABruteForceSearch) {
     }
     EXPECT_EQ(index.size(), seen.size());
     EXPECT_EQ(index.size(), 12u);  // 6 values of x, each with 2 distinct y
+}
+
+// The whole list at once, on any number of threads, numbers every position
+// as the index does one by one: near-duplicates one bit apart, -0.0 and
+// +0.0, repeats far apart in the list; small lists (one thread, one bucket)
+// and large ones (many buckets on several threads).
+TEST(WeldExact, NumbersEveryPositionAsTheIndexDoesOneByOne) {
+    std::mt19937 rng(11);
+    for (const size_t n : {size_t(0), size_t(1), size_t(1000), size_t(70'000), size_t(300'000)}) {
+        std::vector<Vec3> points;
+        points.reserve(n);
+        for (size_t i = 0; i < n; ++i) {
+            const double x = std::uniform_int_distribution<int>(-300, 300)(rng) * 0.25;
+            const double y = std::uniform_int_distribution<int>(0, 400)(rng) * 0.5;
+            switch (std::uniform_int_distribution<int>(0, 5)(rng)) {
+                case 0: points.push_back({x, std::nextafter(y, 1e9), 0.0}); break;
+                case 1: points.push_back({x == 0 ? -0.0 : x, y, -0.0}); break;
+                case 2: if (!points.empty()) { points.push_back(points[std::uniform_int_distribution<size_t>(0, points.size() - 1)(rng)]); break; }
+                    [[fallthrough]];
+                default: points.push_back({x, y, std::uniform_int_distribution<int>(0, 3)(rng) * 1.5}); break;
+            }
+        }
+        mesh_io::ExactVertexIndex index(4);
+        std::vector<uint32_t> expected;
+        for (const Vec3& p : points) expected.push_back(index.insert(p));
+        for (const unsigned workers : {1u, 2u, 3u, 5u}) {
+            const mesh_io::WeldedPositions w = mesh_io::weldExact(points, workers);
+            ASSERT_EQ(w.index_of, expected) << n << " positions, " << workers << " threads";
+            ASSERT_EQ(w.positions.size(), index.size()) << n;
+            for (size_t v = 0; v < w.positions.size(); ++v) {
+                // Bit for bit: -0.0 is stored as +0.0 by both.
+                EXPECT_EQ(std::signbit(w.positions[v].x), std::signbit(index.positions()[v].x));
+                EXPECT_EQ(std::signbit(w.positions[v].z), std::signbit(index.positions()[v].z));
+                ASSERT_TRUE(w.positions[v] == index.positions()[v]) << v;
+            }
+        }
+        if (n >= 1000) EXPECT_LT(index.size(), n) << "the list repeats positions";
+    }
 }
 
 TEST(ExactMerge, TouchingCubesShareCornersOnlyWhenExactlyEqual) {
