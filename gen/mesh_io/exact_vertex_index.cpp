@@ -1,6 +1,6 @@
 #include "gen/mesh_io/exact_vertex_index.h"
 
-#include <bit>
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -14,16 +14,6 @@ constexpr size_t kMinSlots = 64;
 constexpr size_t kMaxLoadNumerator = 1;
 constexpr size_t kMaxLoadDenominator = 2;
 
-uint64_t mix(uint64_t h) {
-    // splitmix64 finaliser: every input bit affects every output bit.
-    h ^= h >> 30;
-    h *= 0xbf58476d1ce4e5b9ULL;
-    h ^= h >> 27;
-    h *= 0x94d049bb133111ebULL;
-    h ^= h >> 31;
-    return h;
-}
-
 size_t slotCountFor(size_t count) {
     size_t slots = kMinSlots;
     while (slots * kMaxLoadNumerator / kMaxLoadDenominator <= count) slots *= 2;
@@ -35,10 +25,6 @@ size_t slotCountFor(size_t count) {
 ExactVertexIndex::ExactVertexIndex(size_t expected_count) {
     positions_.reserve(expected_count);
     rehash(slotCountFor(expected_count));
-}
-
-uint64_t positionHash(const Vec3& p) {
-    return mix(std::bit_cast<uint64_t>(p.x) ^ mix(std::bit_cast<uint64_t>(p.y) ^ mix(std::bit_cast<uint64_t>(p.z))));
 }
 
 size_t ExactVertexIndex::slotOf(const Vec3& p) const { return static_cast<size_t>(positionHash(p)) & mask_; }
@@ -57,7 +43,11 @@ uint32_t ExactVertexIndex::insert(const Vec3& p_in) {
     assert(!std::isnan(p_in.x) && !std::isnan(p_in.y) && !std::isnan(p_in.z));
     // x + 0.0 turns -0.0 into +0.0 and leaves every other value unchanged.
     const Vec3 p{p_in.x + 0.0, p_in.y + 0.0, p_in.z + 0.0};
-    size_t s = slotOf(p);
+    return insertHashed(p, positionHash(p));
+}
+
+uint32_t ExactVertexIndex::insertHashed(const Vec3& p, uint64_t hash) {
+    size_t s = static_cast<size_t>(hash) & mask_;
     while (slots_[s] != kEmptySlot) {
         if (positions_[slots_[s]] == p) return slots_[s];
         s = (s + 1) & mask_;
@@ -67,6 +57,27 @@ uint32_t ExactVertexIndex::insert(const Vec3& p_in) {
     slots_[s] = index;
     if (positions_.size() * kMaxLoadDenominator > slots_.size() * kMaxLoadNumerator) rehash(slots_.size() * 2);
     return index;
+}
+
+void ExactVertexIndex::insertBatch(const Vec3* in, size_t n, uint32_t* out) {
+    constexpr size_t kBatch = 32;
+    Vec3 p[kBatch];
+    uint64_t hash[kBatch];
+    for (size_t from = 0; from < n; from += kBatch) {
+        const size_t m = std::min(kBatch, n - from);
+        // Hints only: a slot or position fetched for nothing costs a load.
+        for (size_t i = 0; i < m; ++i) {
+            const Vec3& q = in[from + i];
+            assert(!std::isnan(q.x) && !std::isnan(q.y) && !std::isnan(q.z));
+            p[i] = {q.x + 0.0, q.y + 0.0, q.z + 0.0};
+            hash[i] = positionHash(p[i]);
+            __builtin_prefetch(&slots_[static_cast<size_t>(hash[i]) & mask_]);
+        }
+        for (size_t i = 0; i < m; ++i)
+            if (const uint32_t v = slots_[static_cast<size_t>(hash[i]) & mask_]; v != kEmptySlot)
+                __builtin_prefetch(&positions_[v]);
+        for (size_t i = 0; i < m; ++i) out[from + i] = insertHashed(p[i], hash[i]);
+    }
 }
 
 }  // namespace tsf::mesh_io

@@ -8,6 +8,8 @@
 // gen/mesh_io/ (the readers use it through MeshAssembler).
 #pragma once
 
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -15,9 +17,22 @@
 
 namespace tsf::mesh_io {
 
+/// The splitmix64 finaliser: every input bit affects every output bit.
+inline uint64_t mixBits(uint64_t h) {
+    h ^= h >> 30;
+    h *= 0xbf58476d1ce4e5b9ULL;
+    h ^= h >> 27;
+    h *= 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+    return h;
+}
+
 /// The hash both the index and weldExact (exact_weld.h) give a position
 /// (-0.0 already made +0.0): every bit of every coordinate counts.
-uint64_t positionHash(const Vec3& p);
+inline uint64_t positionHash(const Vec3& p) {
+    return mixBits(std::bit_cast<uint64_t>(p.x) ^
+                   mixBits(std::bit_cast<uint64_t>(p.y) ^ mixBits(std::bit_cast<uint64_t>(p.z))));
+}
 
 class ExactVertexIndex {
 public:
@@ -29,6 +44,12 @@ public:
     /// positions have -0.0 replaced by +0.0. The caller keeps the count below
     /// 2^32 - 1 (size() tells).
     uint32_t insert(const Vec3& p);
+    /// insert(p[i]) for i = 0 .. n-1 in order, its index in out[i]: the
+    /// same indices, with the table's slots and positions of a few at a
+    /// time fetched from memory together (on a large mesh the table is far
+    /// larger than the caches, and one by one each insert waits for its own
+    /// two misses).
+    void insertBatch(const Vec3* p, size_t n, uint32_t* out);
 
     size_t size() const { return positions_.size(); }
     const std::vector<Vec3>& positions() const { return positions_; }
@@ -37,6 +58,7 @@ public:
 private:
     void rehash(size_t slot_count);
     size_t slotOf(const Vec3& p) const;
+    uint32_t insertHashed(const Vec3& p, uint64_t hash);  // p already without -0.0
 
     std::vector<Vec3> positions_;
     std::vector<uint32_t> slots_;  ///< kEmptySlot or an index into positions_

@@ -21,6 +21,16 @@ uint32_t MeshAssembler::addVertex(const Vec3& p) {
     return index_.insert(p);
 }
 
+void MeshAssembler::addVertices(const Vec3* p, size_t n, uint32_t* out) {
+    // Near the limit, one by one: the error then comes at the very vertex.
+    if (index_.size() + n >= std::numeric_limits<uint32_t>::max() - 1) {
+        for (size_t i = 0; i < n; ++i) out[i] = addVertex(p[i]);
+        return;
+    }
+    input_vertices_ += n;
+    index_.insertBatch(p, n, out);
+}
+
 void MeshAssembler::addTriangle(uint32_t a, uint32_t b, uint32_t c) {
     assert(a < index_.size() && b < index_.size() && c < index_.size());
     if (a == b || b == c || a == c) {

@@ -28,6 +28,9 @@ public:
     /// returns its index in the output mesh. Throws tsf::InputError if the
     /// mesh would exceed 2^32 - 1 distinct vertices.
     uint32_t addVertex(const Vec3& p);
+    /// addVertex(p[i]) for i = 0 .. n-1 in order, the indices in out[i]
+    /// (ExactVertexIndex::insertBatch: faster on a large mesh).
+    void addVertices(const Vec3* p, size_t n, uint32_t* out);
     /// Adds a triangle of output indices (each < vertex count so far).
     void addTriangle(uint32_t a, uint32_t b, uint32_t c);
     /// Adds a reader's own note to the report.

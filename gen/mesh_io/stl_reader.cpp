@@ -59,26 +59,35 @@ Mesh parseBinary(std::string_view bytes, const std::string& name, uint32_t count
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     MeshAssembler assembler(name, count / kVerticesPerTriangleEstimateDivisor + 3, count);
     size_t with_attributes = 0;
-    for (uint32_t t = 0; t < count; ++t) {
-        const size_t facet = kFirstFacetOffset + size_t{t} * kFacetBytes;
-        uint32_t corner_index[3];
-        for (int c = 0; c < 3; ++c) {
-            double xyz[3];
-            for (int k = 0; k < 3; ++k) {
-                const size_t offset = facet + kFacetCornersOffset + 12 * c + 4 * k;
-                const float value = getFloat(data + offset);
-                if (!std::isfinite(value)) {
-                    throw InputError(name, 0, 0,
-                                     "byte " + std::to_string(offset) + ": triangle " + std::to_string(t) + " corner " +
-                                         std::to_string(c) + " " + axisName(k) + " is " +
-                                         (std::isnan(value) ? "NaN" : "infinite") + "; a finite coordinate is expected");
+    // The corners of a few facets at a time go to the vertex index together
+    // (MeshAssembler::addVertices), in file order: the same indices.
+    constexpr uint32_t kFacetsPerBatch = 16;
+    Vec3 corners[3 * kFacetsPerBatch];
+    uint32_t index[3 * kFacetsPerBatch];
+    for (uint32_t first = 0; first < count; first += kFacetsPerBatch) {
+        const uint32_t facets = std::min(kFacetsPerBatch, count - first);
+        for (uint32_t f = 0; f < facets; ++f) {
+            const uint32_t t = first + f;
+            const size_t facet = kFirstFacetOffset + size_t{t} * kFacetBytes;
+            for (int c = 0; c < 3; ++c) {
+                double xyz[3];
+                for (int k = 0; k < 3; ++k) {
+                    const size_t offset = facet + kFacetCornersOffset + 12 * c + 4 * k;
+                    const float value = getFloat(data + offset);
+                    if (!std::isfinite(value)) {
+                        throw InputError(name, 0, 0,
+                                         "byte " + std::to_string(offset) + ": triangle " + std::to_string(t) + " corner " +
+                                             std::to_string(c) + " " + axisName(k) + " is " +
+                                             (std::isnan(value) ? "NaN" : "infinite") + "; a finite coordinate is expected");
+                    }
+                    xyz[k] = value;
                 }
-                xyz[k] = value;
+                corners[3 * f + uint32_t(c)] = {xyz[0], xyz[1], xyz[2]};
             }
-            corner_index[c] = assembler.addVertex({xyz[0], xyz[1], xyz[2]});
+            if (data[facet + kFacetAttributeOffset] != 0 || data[facet + kFacetAttributeOffset + 1] != 0) ++with_attributes;
         }
-        assembler.addTriangle(corner_index[0], corner_index[1], corner_index[2]);
-        if (data[facet + kFacetAttributeOffset] != 0 || data[facet + kFacetAttributeOffset + 1] != 0) ++with_attributes;
+        assembler.addVertices(corners, 3 * size_t{facets}, index);
+        for (uint32_t f = 0; f < facets; ++f) assembler.addTriangle(index[3 * f], index[3 * f + 1], index[3 * f + 2]);
     }
     if (with_attributes > 0) {
         assembler.note(std::to_string(with_attributes) +

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -100,6 +101,26 @@ TEST(ExactVertexIndex, AgreesWithABruteForceSearch) {
     }
     EXPECT_EQ(index.size(), seen.size());
     EXPECT_EQ(index.size(), 12u);  // 6 values of x, each with 2 distinct y
+}
+
+// A batch gives every position the index insert gives it one by one, the
+// table growing (rehashing) in the middle of a batch included.
+TEST(ExactVertexIndex, ABatchNumbersAsInsertsOneByOne) {
+    std::mt19937 rng(5);
+    std::vector<Vec3> points;
+    for (int i = 0; i < 5000; ++i) {
+        const double x = std::uniform_int_distribution<int>(0, 40)(rng) * 0.5;
+        const double y = std::uniform_int_distribution<int>(0, 40)(rng) * 0.5;
+        points.push_back(i % 7 == 3 ? Vec3{-0.0, y, std::nextafter(x, 100.0)} : Vec3{x, y, 0.0});
+    }
+    mesh_io::ExactVertexIndex one(4), batch(4);
+    std::vector<uint32_t> expected, got(points.size());
+    for (const Vec3& p : points) expected.push_back(one.insert(p));
+    for (size_t from = 0; from < points.size(); from += 97)
+        batch.insertBatch(points.data() + from, std::min<size_t>(97, points.size() - from), got.data() + from);
+    EXPECT_EQ(got, expected);
+    ASSERT_EQ(batch.size(), one.size());
+    for (size_t v = 0; v < one.size(); ++v) EXPECT_TRUE(batch.positions()[v] == one.positions()[v]) << v;
 }
 
 // The whole list at once, on any number of threads, numbers every position
