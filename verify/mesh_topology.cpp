@@ -229,8 +229,7 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
             const auto& tri = mesh.triangles[t];
             for (uint32_t v : tri) {
                 const Vec3& p = mesh.positions[v];
-                c.bounds.min = {std::fmin(c.bounds.min.x, p.x), std::fmin(c.bounds.min.y, p.y), std::fmin(c.bounds.min.z, p.z)};
-                c.bounds.max = {std::fmax(c.bounds.max.x, p.x), std::fmax(c.bounds.max.y, p.y), std::fmax(c.bounds.max.z, p.z)};
+                extendBounds(c.bounds, p);
             }
             six_v += signedTetra6(o, mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]);
         }

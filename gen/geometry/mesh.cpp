@@ -8,17 +8,7 @@ namespace tsf {
 Bounds meshBounds(const Mesh& mesh) {
     const double inf = std::numeric_limits<double>::infinity();
     Bounds b{{inf, inf, inf}, {-inf, -inf, -inf}};
-    // Plain comparisons, not std::fmin/fmax (calls into libm the verifier made
-    // eight times a model): the same bits, since the running bound is never
-    // NaN, a NaN coordinate fails both tests and is skipped as fmin skips it,
-    // and on a tie the coordinate is taken as glibc's fmin/fmax take their
-    // second argument (which decides between -0 and +0).
-    const auto lower = [](double m, double p) { return p <= m ? p : m; };
-    const auto upper = [](double m, double p) { return p >= m ? p : m; };
-    for (const Vec3& p : mesh.positions) {
-        b.min = {lower(b.min.x, p.x), lower(b.min.y, p.y), lower(b.min.z, p.z)};
-        b.max = {upper(b.max.x, p.x), upper(b.max.y, p.y), upper(b.max.z, p.z)};
-    }
+    for (const Vec3& p : mesh.positions) extendBounds(b, p);
     return b;
 }
 

@@ -36,6 +36,19 @@ struct Bounds {
 };
 Bounds meshBounds(const Mesh& mesh);
 
+/// `b` widened to hold `p` with plain comparisons, not std::fmin/fmax (a
+/// call into libm per coordinate) and with the same bits, as long as the
+/// bound is never NaN (it starts at +-infinity): a NaN coordinate fails
+/// both tests and is skipped as fmin skips it, and on a tie the coordinate
+/// is taken as glibc's fmin/fmax take their second argument (which decides
+/// between -0 and +0).
+inline void extendBounds(Bounds& b, const Vec3& p) {
+    const auto lower = [](double m, double q) { return q <= m ? q : m; };
+    const auto upper = [](double m, double q) { return q >= m ? q : m; };
+    b.min = {lower(b.min.x, p.x), lower(b.min.y, p.y), lower(b.min.z, p.z)};
+    b.max = {upper(b.max.x, p.x), upper(b.max.y, p.y), upper(b.max.z, p.z)};
+}
+
 /// Area (mm^2) of triangle t (indices into mesh.positions).
 double triangleArea(const Mesh& mesh, const std::array<uint32_t, 3>& t);
 
