@@ -465,7 +465,7 @@ TEST(ThreeMfParts, VolumesNamedInTheSlicerConfigSplitTheObjectAndBadRangesKeepIt
     EXPECT_EQ(parts[1].mesh.triangles.size(), 12u);
 
     // Ranges past the end, overlapping, or leaving triangles out: one part, and a note says why.
-    for (const std::string& bad : {R"(<volume firstid="0" lastid="11"/><volume firstid="12" lastid="30"/>)",
+    for (const char* bad : {R"(<volume firstid="0" lastid="11"/><volume firstid="12" lastid="30"/>)",
                                    R"(<volume firstid="0" lastid="12"/><volume firstid="12" lastid="23"/>)",
                                    R"(<volume firstid="0" lastid="11"/>)"}) {
         MeshReadReport report;

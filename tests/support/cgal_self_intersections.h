@@ -11,7 +11,11 @@
 #include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+// g++ 12 warns falsely inside this CGAL header (see verify/detail/cgal_checks_impl.h).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#pragma GCC diagnostic pop
 #include <CGAL/Surface_mesh.h>
 
 #include "gen/geometry/mesh.h"

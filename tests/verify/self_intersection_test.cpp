@@ -8,7 +8,6 @@
 #include <random>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "tests/support/cgal_self_intersections.h"

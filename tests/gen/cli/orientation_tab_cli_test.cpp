@@ -127,7 +127,7 @@ Found findMarks(const Mesh& m, bool from_below = false) {
         stack.pop_back();
         region.push_back(n);
         const int r = n / top.cols, c = n % top.cols;
-        for (const auto [dc, dr] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        for (const auto& [dc, dr] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
             const int cc = c + dc, rr = r + dr;
             if (cc < 0 || rr < 0 || cc >= top.cols || rr >= top.rows) continue;
             const int q = rr * top.cols + cc;
