@@ -9,6 +9,7 @@
 #include <chrono>
 #include <iterator>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -134,9 +135,21 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     GeometricFindings out;
     auto t0 = std::chrono::steady_clock::now();
 
-    std::vector<P> points;
-    points.reserve(mesh.positions.size());
-    for (const Vec3& p : mesh.positions) points.emplace_back(p.x, p.y, p.z);
+    // The points and the zero-area test on the workers, each a run of
+    // vertices or triangles; the runs' findings joined in order, so the list
+    // is the same for any number of threads.
+    // (Points of the exact-construction kernel share reference-counted
+    // numbers: they are made on one thread.)
+    constexpr bool plain_points = std::is_same_v<K, CGAL::Exact_predicates_inexact_constructions_kernel>;
+    const unsigned degenerate_workers = !plain_points || mesh.triangles.size() < (1u << 16) ? 1u : workerCount(workers);
+    std::vector<P> points(mesh.positions.size());
+    runOnWorkers(degenerate_workers, [&](unsigned w, const std::atomic<bool>&) {
+        const size_t n = mesh.positions.size();
+        for (size_t v = n * w / degenerate_workers, end = n * (w + 1) / degenerate_workers; v < end; ++v) {
+            const Vec3& p = mesh.positions[v];
+            points[v] = P(p.x, p.y, p.z);
+        }
+    });
 
     // Usable triangles: indices in range and distinct.
     std::vector<uint8_t> usable(mesh.triangles.size(), 1);
@@ -144,12 +157,18 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     for (uint32_t t : topo.index_degenerate_triangles) usable[t] = 0;
 
     // Zero-area triangles: three collinear points, decided exactly.
-    typename K::Collinear_3 collinear = K().collinear_3_object();
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        if (!usable[t]) continue;
-        const auto& q = mesh.triangles[t];
-        if (collinear(points[q[0]], points[q[1]], points[q[2]])) out.zero_area_triangles.push_back(uint32_t(t));
-    }
+    std::vector<std::vector<uint32_t>> zero_area(degenerate_workers);
+    runOnWorkers(degenerate_workers, [&](unsigned w, const std::atomic<bool>&) {
+        typename K::Collinear_3 collinear = K().collinear_3_object();
+        const size_t n = mesh.triangles.size();
+        for (size_t t = n * w / degenerate_workers, end = n * (w + 1) / degenerate_workers; t < end; ++t) {
+            if (!usable[t]) continue;
+            const auto& q = mesh.triangles[t];
+            if (collinear(points[q[0]], points[q[1]], points[q[2]])) zero_area[w].push_back(uint32_t(t));
+        }
+    });
+    for (const std::vector<uint32_t>& part : zero_area)
+        out.zero_area_triangles.insert(out.zero_area_triangles.end(), part.begin(), part.end());
     out.degenerate_ms = msSince(t0);
 
     out.self_intersections_requested = self_intersections;
@@ -307,11 +326,17 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
         std::vector<FT> terms;
         for (const MeshComponent& c : topo.components) {
             const P o = points[mesh.triangles[c.triangles.front()][0]];
-            terms.clear();
-            for (uint32_t t : c.triangles) {
-                const auto& tri = mesh.triangles[t];
-                terms.push_back(tetra(o, points[tri[0]], points[tri[1]], points[tri[2]]));
-            }
+            // Each term on its own (on the workers with plain doubles), the
+            // sum in one order: the same bits for any number of threads.
+            terms.resize(c.triangles.size());
+            const unsigned volume_workers = c.triangles.size() < (1u << 16) ? 1u : degenerate_workers;
+            runOnWorkers(volume_workers, [&](unsigned w, const std::atomic<bool>&) {
+                const size_t n = c.triangles.size();
+                for (size_t k = n * w / volume_workers, end = n * (w + 1) / volume_workers; k < end; ++k) {
+                    const auto& tri = mesh.triangles[c.triangles[k]];
+                    terms[k] = tetra(o, points[tri[0]], points[tri[1]], points[tri[2]]);
+                }
+            });
             const FT v = pairwiseSum(terms);
             out.component_volume_mm3.push_back(CGAL::to_double(v));
             out.component_volume_sign.push_back(int(CGAL::sign(v)));  // exact with Epeck
