@@ -217,15 +217,22 @@ TEST(FingerReach, RaisingAWallOrDeepeningAPitNeverHelps) {
     EXPECT_GT(checked, 10);
 }
 
+// Cells `cell_mm` across, a value of 20 standing 20 mm above a zero floor:
+// a value is its height in millimetres.
+SceneParams pillarParams(double cell_mm) {
+    SceneParams p = test::smallParams(Bottom::Flat, Cull::None);
+    p.pitch_mm = cell_mm;
+    p.max_height_mm = 20;
+    p.baseline_mode = BaselineMode::Zero;
+    p.value_max = 20;
+    return p;
+}
+
 // Pillars of a tenth of a millimetre hold a few ten-thousandths of a
 // millimetre free: the note and each offender say so in figures a reader
 // can use, not "stands 0.0 mm above ...: more than 0.0 mm breaks".
 TEST(TactileSlender, TinyPillarsAreDescribedInSignificantFigures) {
-    SceneParams p = test::smallParams(Bottom::Flat, Cull::None);
-    p.pitch_mm = 0.15;
-    p.max_height_mm = 20;
-    p.baseline_mode = BaselineMode::Zero;
-    p.value_max = 20;
+    const SceneParams p = pillarParams(0.15);
     const Scene s = buildScene(test::fieldFromFunction(5, 5, [](int c, int r) { return c == 2 && r == 2 ? 0.02 : 0.0; }), p);
     for (const Check& c : checkTactile(meshScene(s), &s, TactileOptions{}).checks) {
         if (c.id != "tactile_slender_pillars") continue;
@@ -244,11 +251,7 @@ TEST(TactileSlender, TinyPillarsAreDescribedInSignificantFigures) {
 // at w mm cells stays one at thinner cells).
 TEST(TactileMonotone, SlenderPillarsAreMonotoneInHeightAndWidth) {
     auto verdict = [](double spike, double cell) {
-        SceneParams p = test::smallParams(Bottom::Flat, Cull::None);
-        p.pitch_mm = cell;
-        p.max_height_mm = 20;
-        p.baseline_mode = BaselineMode::Zero;
-        p.value_max = 20;
+        const SceneParams p = pillarParams(cell);
         const Scene s = buildScene(test::fieldFromFunction(5, 5, [&](int c, int r) { return c == 2 && r == 2 ? spike : 0.0; }), p);
         for (const Check& c : checkTactile(meshScene(s), &s, TactileOptions{}).checks)
             if (c.id == "tactile_slender_pillars") return c.status == CheckStatus::Fail;
@@ -277,11 +280,7 @@ TEST(TactileMonotone, SlenderPillarsAreMonotoneInHeightAndWidth) {
 // count, note, offenders), failing here, where a pit one cell wide sits 20
 // mm deep beside a spike 12 mm above its neighbours at 3 mm cells.
 TEST(TactileLegibility, TheChecksASettingCanFixAreTheTactileChecksOwn) {
-    SceneParams p = test::smallParams(Bottom::Flat, Cull::None);
-    p.pitch_mm = 3;
-    p.max_height_mm = 20;
-    p.baseline_mode = BaselineMode::Zero;
-    p.value_max = 20;
+    const SceneParams p = pillarParams(3);
     const Scene s = buildScene(test::fieldFromFunction(9, 9, [](int c, int r) {
                                    return c == 2 && r == 2 ? 0.0 : c == 6 && r == 6 ? 20.0 : 8.0;
                                }),
