@@ -9,7 +9,8 @@
 #                lib3mf/libzip leaks suppressed by name
 #                (tests/sanitizers/lsan.supp); and test_verify_threads, the
 #                verifier's threaded stages (column grid, self-intersection
-#                predicates, printability rays, topology) on hand-drawn meshes.
+#                predicates, printability rays, topology, the positions of the
+#                model as written welded) on hand-drawn meshes.
 #   build-tsan/  clang, ThreadSanitizer: the haptic loop and Falcon driver
 #                threads (test_haptics_threads) and the verifier's threaded
 #                stages (test_verify_threads, the same tests as under ASan).

@@ -14,6 +14,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
+#include "gen/mesh_io/exact_vertex_index.h"
+#include "gen/mesh_io/exact_weld.h"
 #include "tests/support/meshes.h"
 #include "verify/column_grid.h"
 #include "verify/mesh_topology.h"
@@ -152,6 +154,25 @@ TEST(VerifyThreads, PrintabilityMeasuresTheBoxesOnEveryCore) {
     EXPECT_NEAR(r.figures.min_gap_mm, kPitchMm - kWidthMm, 1e-9);
     EXPECT_NEAR(r.figures.min_slab_mm, kHeightMm, 1e-9);
     EXPECT_EQ(findCheck(r.checks, "wall_thickness").status, CheckStatus::Pass);
+}
+
+// The model as written is rounded to float32 and its positions welded on
+// every core (float32Mesh): the buckets filled and welded by several
+// threads number every position as the index does one by one.
+TEST(VerifyThreads, PositionsAreWeldedOnSeveralThreadsAsOneByOne) {
+    std::vector<Vec3> points;
+    for (int i = 0; i < 120000; ++i) {
+        const int k = (i * 7919) % 50000;  // every position about twice, far apart in the list
+        points.push_back({0.5 * (k % 211), 0.25 * (k / 211), k % 3 == 0 ? -0.0 : 1.5});
+    }
+    mesh_io::ExactVertexIndex index(4);
+    std::vector<uint32_t> expected;
+    for (const Vec3& p : points) expected.push_back(index.insert(p));
+    for (const unsigned workers : {2u, 4u}) {
+        const mesh_io::WeldedPositions w = mesh_io::weldExact(points, workers);
+        EXPECT_EQ(w.index_of, expected) << workers << " threads";
+        EXPECT_EQ(w.positions.size(), index.size());
+    }
 }
 
 }  // namespace
