@@ -220,7 +220,8 @@ LegibleDefaults legibleDefaults(const HexField& field, const Scene& first, const
         if (c.status != CheckStatus::Pass && c.status != CheckStatus::Skipped) at_first.failing += c.count;
     if (at_first.failing == 0) return out;
 
-    // Every trial is a build, a mesh and the tactile checks: each setting once.
+    // Every trial is a build (and, unless its pillars fail, a mesh and the
+    // fingertip's reach): each setting once.
     std::deque<Trial> tried;  // a deque: the trials found stay where they are
     std::string refused;
     auto passes = [](const Trial* t) { return t && t->flattens.empty() && t->failing == 0; };

@@ -14,7 +14,10 @@
 // Never by flattening: a setting is refused when a neighbouring step of
 // kFeltHeightStepMm or more would drop below it. Each candidate is built,
 // meshed and checked by the verifier's own tactile checks at its own
-// sampling, so what gen says passes is what tsf verify --tactile says.
+// sampling (the two a setting can fix; a candidate whose pillars are too
+// slender fails before it is meshed), so what gen says passes is what tsf
+// verify --tactile says; the first setting is taken as gen's own
+// self-check found it.
 // When nothing passes, the first model is kept, and the lines say which
 // check fails where and why (docs/tactile.md).
 #pragma once
