@@ -41,8 +41,7 @@ void ExactVertexIndex::rehash(size_t slot_count) {
 
 uint32_t ExactVertexIndex::insert(const Vec3& p_in) {
     assert(!std::isnan(p_in.x) && !std::isnan(p_in.y) && !std::isnan(p_in.z));
-    // x + 0.0 turns -0.0 into +0.0 and leaves every other value unchanged.
-    const Vec3 p{p_in.x + 0.0, p_in.y + 0.0, p_in.z + 0.0};
+    const Vec3 p = withoutNegativeZero(p_in);
     return insertHashed(p, positionHash(p));
 }
 
@@ -69,7 +68,7 @@ void ExactVertexIndex::insertBatch(const Vec3* in, size_t n, uint32_t* out) {
         for (size_t i = 0; i < m; ++i) {
             const Vec3& q = in[from + i];
             assert(!std::isnan(q.x) && !std::isnan(q.y) && !std::isnan(q.z));
-            p[i] = {q.x + 0.0, q.y + 0.0, q.z + 0.0};
+            p[i] = withoutNegativeZero(q);
             hash[i] = positionHash(p[i]);
             __builtin_prefetch(&slots_[static_cast<size_t>(hash[i]) & mask_]);
         }

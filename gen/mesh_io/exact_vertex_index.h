@@ -27,6 +27,10 @@ inline uint64_t mixBits(uint64_t h) {
     return h;
 }
 
+/// `p` with -0.0 made +0.0 and every other value unchanged (x + 0.0): the
+/// one form in which the index and weldExact store and hash a position.
+inline Vec3 withoutNegativeZero(const Vec3& p) { return {p.x + 0.0, p.y + 0.0, p.z + 0.0}; }
+
 /// The hash both the index and weldExact (exact_weld.h) give a position
 /// (-0.0 already made +0.0): every bit of every coordinate counts.
 inline uint64_t positionHash(const Vec3& p) {

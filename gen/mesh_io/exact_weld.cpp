@@ -12,12 +12,10 @@ namespace tsf::mesh_io {
 namespace {
 
 constexpr uint32_t kEmpty = UINT32_MAX;
-// About this many positions a bucket: its table (twice as many slots, 4
-// bytes each) and its positions stay in a core's L2 cache.
+// About this many positions a bucket: its entries (16 bytes each) and its
+// table (twice as many slots, 4 bytes each) stay in a core's L2 cache.
 constexpr size_t kBucketSize = 8192;
 constexpr int kMaxBucketBits = 16;
-// Below this many positions one thread welds them (a thread costs more).
-constexpr size_t kParallelPositions = 1 << 16;
 
 }  // namespace
 
@@ -25,8 +23,7 @@ WeldedPositions weldExact(std::vector<Vec3> points, unsigned workers) {
     WeldedPositions out;
     const size_t n = points.size();
     if (n == 0) return out;
-    workers = n < kParallelPositions ? 1u : detail::workerCount(workers);
-    auto range = [&](unsigned w) { return std::pair(n * w / workers, n * (w + 1) / workers); };
+    workers = n < detail::kMinItemsForThreads ? 1u : detail::workerCount(workers);
 
     // Each position's bucket, from the top bits of its hash (the table in a
     // bucket uses the low bits), counted per worker's range.
@@ -34,11 +31,10 @@ WeldedPositions weldExact(std::vector<Vec3> points, unsigned workers) {
     const size_t buckets = size_t(1) << bits;
     auto bucketOf = [bits](uint64_t hash) { return bits ? size_t(hash >> (64 - bits)) : 0; };
     std::vector<std::vector<uint32_t>> counts(workers, std::vector<uint32_t>(buckets, 0));
-    detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
-        for (auto [i, end] = range(w); i < end; ++i) {
-            Vec3& p = points[i];
-            p = {p.x + 0.0, p.y + 0.0, p.z + 0.0};  // -0.0 -> +0.0, every other value unchanged
-            ++counts[w][bucketOf(positionHash(p))];
+    detail::runOnRanges(workers, n, [&](unsigned w, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            points[i] = withoutNegativeZero(points[i]);
+            ++counts[w][bucketOf(positionHash(points[i]))];
         }
     });
     // Where each worker's positions of each bucket go: buckets in order,
@@ -60,9 +56,9 @@ WeldedPositions weldExact(std::vector<Vec3> points, unsigned workers) {
         uint32_t index;
     };
     std::vector<Entry> entries(n);
-    detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
+    detail::runOnRanges(workers, n, [&](unsigned w, size_t begin, size_t end) {
         std::vector<uint32_t>& next = counts[w];
-        for (auto [i, end] = range(w); i < end; ++i) {
+        for (size_t i = begin; i < end; ++i) {
             const uint64_t h = positionHash(points[i]);
             entries[next[bucketOf(h)]++] = {h, uint32_t(i)};
         }

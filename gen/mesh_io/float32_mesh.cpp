@@ -1,7 +1,5 @@
 #include "gen/mesh_io/float32_mesh.h"
 
-#include <atomic>
-
 #include "gen/mesh_io/exact_weld.h"
 #include "gen/util/workers.h"
 
@@ -23,10 +21,10 @@ Mesh float32Mesh(const Mesh& mesh) {
     // file's corners (positions that round alike become one vertex), on
     // every core; the triangles renumbered.
     const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
-    const unsigned workers = nv + nt < (1u << 16) ? 1u : detail::workerCount(0);
+    const unsigned workers = detail::workerCount(0);
     std::vector<Vec3> rounded(nv);
-    detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
-        for (size_t v = nv * w / workers, end = nv * (w + 1) / workers; v < end; ++v) {
+    detail::runOnRanges(workers, nv, [&](unsigned, size_t begin, size_t end) {
+        for (size_t v = begin; v < end; ++v) {
             const Vec3& p = mesh.positions[v];
             rounded[v] = Vec3{asFloat32(p.x), asFloat32(p.y), asFloat32(p.z)};
         }
@@ -36,8 +34,8 @@ Mesh float32Mesh(const Mesh& mesh) {
     out.positions = std::move(welded.positions);
     out.triangles.resize(nt);
     const std::vector<uint32_t>& remap = welded.index_of;
-    detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
-        for (size_t t = nt * w / workers, end = nt * (w + 1) / workers; t < end; ++t) {
+    detail::runOnRanges(workers, nt, [&](unsigned, size_t begin, size_t end) {
+        for (size_t t = begin; t < end; ++t) {
             const auto& q = mesh.triangles[t];
             out.triangles[t] = {remap[q[0]], remap[q[1]], remap[q[2]]};
         }

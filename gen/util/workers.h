@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstddef>
 #include <exception>
 #include <thread>
 #include <vector>
@@ -37,6 +38,20 @@ void runOnWorkers(unsigned workers, Fn&& fn) {
     guarded(0);
     for (std::thread& t : pool) t.join();
     if (error) std::rethrow_exception(error);
+}
+
+/// Below this many items a pass over them runs on one thread: a thread
+/// costs more than it saves.
+inline constexpr size_t kMinItemsForThreads = size_t(1) << 16;
+
+/// Splits [0, n) into `workers` runs of consecutive indices, in order, and
+/// calls fn(worker, begin, end) for each on runOnWorkers; one run on the
+/// calling thread when n < kMinItemsForThreads. A pass whose runs' findings
+/// are joined in worker order gives what one pass in index order gives.
+template <class Fn>
+void runOnRanges(unsigned workers, size_t n, Fn&& fn) {
+    const unsigned runs = n < kMinItemsForThreads ? 1u : workers;
+    runOnWorkers(runs, [&](unsigned w, const std::atomic<bool>&) { fn(w, n * w / runs, n * (w + 1) / runs); });
 }
 
 }  // namespace tsf::detail

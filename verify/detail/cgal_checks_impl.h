@@ -141,11 +141,10 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     // (Points of the exact-construction kernel share reference-counted
     // numbers: they are made on one thread.)
     constexpr bool plain_points = std::is_same_v<K, CGAL::Exact_predicates_inexact_constructions_kernel>;
-    const unsigned degenerate_workers = !plain_points || mesh.triangles.size() < (1u << 16) ? 1u : workerCount(workers);
+    const unsigned point_workers = plain_points ? workerCount(workers) : 1u;
     std::vector<P> points(mesh.positions.size());
-    runOnWorkers(degenerate_workers, [&](unsigned w, const std::atomic<bool>&) {
-        const size_t n = mesh.positions.size();
-        for (size_t v = n * w / degenerate_workers, end = n * (w + 1) / degenerate_workers; v < end; ++v) {
+    runOnRanges(point_workers, mesh.positions.size(), [&](unsigned, size_t begin, size_t end) {
+        for (size_t v = begin; v < end; ++v) {
             const Vec3& p = mesh.positions[v];
             points[v] = P(p.x, p.y, p.z);
         }
@@ -157,11 +156,10 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     for (uint32_t t : topo.index_degenerate_triangles) usable[t] = 0;
 
     // Zero-area triangles: three collinear points, decided exactly.
-    std::vector<std::vector<uint32_t>> zero_area(degenerate_workers);
-    runOnWorkers(degenerate_workers, [&](unsigned w, const std::atomic<bool>&) {
+    std::vector<std::vector<uint32_t>> zero_area(point_workers);
+    runOnRanges(point_workers, mesh.triangles.size(), [&](unsigned w, size_t begin, size_t end) {
         typename K::Collinear_3 collinear = K().collinear_3_object();
-        const size_t n = mesh.triangles.size();
-        for (size_t t = n * w / degenerate_workers, end = n * (w + 1) / degenerate_workers; t < end; ++t) {
+        for (size_t t = begin; t < end; ++t) {
             if (!usable[t]) continue;
             const auto& q = mesh.triangles[t];
             if (collinear(points[q[0]], points[q[1]], points[q[2]])) zero_area[w].push_back(uint32_t(t));
@@ -329,10 +327,8 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
             // Each term on its own (on the workers with plain doubles), the
             // sum in one order: the same bits for any number of threads.
             terms.resize(c.triangles.size());
-            const unsigned volume_workers = c.triangles.size() < (1u << 16) ? 1u : degenerate_workers;
-            runOnWorkers(volume_workers, [&](unsigned w, const std::atomic<bool>&) {
-                const size_t n = c.triangles.size();
-                for (size_t k = n * w / volume_workers, end = n * (w + 1) / volume_workers; k < end; ++k) {
+            runOnRanges(point_workers, c.triangles.size(), [&](unsigned, size_t begin, size_t end) {
+                for (size_t k = begin; k < end; ++k) {
                     const auto& tri = mesh.triangles[c.triangles[k]];
                     terms[k] = tetra(o, points[tri[0]], points[tri[1]], points[tri[2]]);
                 }
