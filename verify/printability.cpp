@@ -221,17 +221,28 @@ Check thinnest(const Mesh& mesh, const char* id, const char* title, std::vector<
     c.id = id;
     c.title = title;
     c.unit = "mm";
-    std::sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) {
+    // The check needs the samples below the limit counted, the thinnest
+    // few in order and the thinnest of all, not every sample in order: the
+    // few are picked from the whole list (5 million samples on a 1000 x 1000
+    // model, where a full sort took a third of a second on one core). A
+    // sample's distance is a number or +inf (nothing within the search),
+    // never NaN.
+    const auto thinner = [](const Sample& a, const Sample& b) {
         return a.distance_mm != b.distance_mm ? a.distance_mm < b.distance_mm : a.triangle < b.triangle;
-    });
-    min_out = samples.empty() ? std::numeric_limits<double>::quiet_NaN() : samples.front().distance_mm;
-    for (const Sample& s : samples) {
-        if (!(s.distance_mm < limit_mm)) break;
-        ++c.count;
-        if (c.worst.size() < o.max_offenders)
-            c.worst.push_back({triangleCentroid(mesh, s.triangle), s.distance_mm,
-                               std::string(what) + " " + fmtMm(s.distance_mm) + " mm (triangle " +
-                                   std::to_string(s.triangle) + ")"});
+    };
+    const size_t below = size_t(std::count_if(samples.begin(), samples.end(),
+                                              [&](const Sample& s) { return s.distance_mm < limit_mm; }));
+    const size_t listed = std::min(below, o.max_offenders);
+    std::partial_sort(samples.begin(), samples.begin() + ptrdiff_t(listed), samples.end(), thinner);
+    min_out = samples.empty() ? std::numeric_limits<double>::quiet_NaN()
+                              : (listed > 0 ? samples.front() : *std::min_element(samples.begin(), samples.end(), thinner))
+                                    .distance_mm;
+    c.count = int64_t(below);
+    for (size_t k = 0; k < listed; ++k) {
+        const Sample& s = samples[k];
+        c.worst.push_back({triangleCentroid(mesh, s.triangle), s.distance_mm,
+                           std::string(what) + " " + fmtMm(s.distance_mm) + " mm (triangle " +
+                               std::to_string(s.triangle) + ")"});
     }
     c.status = c.count == 0 ? CheckStatus::Pass : (o.fail_on_warnings ? CheckStatus::Fail : CheckStatus::Warn);
     c.note = samples.empty() ? std::string("nothing to measure")
