@@ -53,7 +53,44 @@ Vec3 triangleCentroid(const Mesh& mesh, uint32_t t) {
 }
 
 VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usable) {
-    return cornersByVertex(mesh, usable, 0, uint32_t(mesh.positions.size()));
+    // The same counting sort with the triangles in one run of consecutive
+    // triangles per worker: each counts its corners per vertex, each vertex's
+    // slots are handed out run by run, and each fills its own slots, so a
+    // vertex's corners stand by ascending triangle, as from one thread.
+    // (The range overload stays on one thread: the self-intersection test
+    // calls it from its own workers.)
+    const size_t nt = mesh.triangles.size(), nv = mesh.positions.size();
+    const unsigned workers = nt < detail::kMinItemsForThreads ? 1u : detail::workerCount(0);
+    if (workers == 1) return cornersByVertex(mesh, usable, 0, uint32_t(nv));
+    auto used = [&](size_t t) { return !usable || (*usable)[t]; };
+    // at[w][v]: run w's corners at vertex v, then where run w's next one goes.
+    std::vector<std::vector<uint32_t>> at(workers);
+    detail::runOnRanges(workers, nt, [&](unsigned w, size_t begin, size_t end) {
+        at[w].assign(nv, 0);
+        for (size_t t = begin; t < end; ++t)
+            if (used(t))
+                for (uint32_t v : mesh.triangles[t]) ++at[w][v];
+    });
+    VertexCorners c;
+    c.start.assign(nv + 1, 0);
+    uint32_t total = 0;
+    for (size_t v = 0; v < nv; ++v) {
+        c.start[v] = total;
+        for (unsigned w = 0; w < workers; ++w) {
+            const uint32_t n = at[w][v];
+            at[w][v] = total;
+            total += n;
+        }
+    }
+    c.start[nv] = total;
+    c.list.resize(total);
+    detail::runOnRanges(workers, nt, [&](unsigned w, size_t begin, size_t end) {
+        std::vector<uint32_t>& next = at[w];
+        for (size_t t = begin; t < end; ++t)
+            if (used(t))
+                for (uint32_t i = 0; i < 3; ++i) c.list[next[mesh.triangles[t][i]]++] = 3 * uint32_t(t) + i;
+    });
+    return c;
 }
 
 VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usable, uint32_t first, uint32_t last) {

@@ -17,6 +17,7 @@
 #include "gen/util/number_format.h"
 #include "verify/attachment_joint.h"
 #include "verify/finger_reach.h"
+#include "verify/mesh_topology.h"
 #include "gen/util/workers.h"
 
 namespace tsf {
@@ -57,20 +58,18 @@ struct EdgeAngle {
 // empty mesh.
 bool dihedralAngles(const Mesh& m, std::vector<std::vector<EdgeAngle>>& parts, std::vector<uint32_t>& incident) {
     const size_t nv = m.positions.size();
-    // Each vertex's triangles, ascending: a count, then a fill.
-    std::vector<uint32_t> start(nv + 1, 0);
+    // Each vertex's triangles, ascending (corner / 3), from the verifier's
+    // one grouping of corners by vertex; a triangle with an index out of
+    // range is left out.
     auto usable = [&](const std::array<uint32_t, 3>& q) { return q[0] < nv && q[1] < nv && q[2] < nv; };
-    for (const auto& q : m.triangles)
-        if (usable(q))
-            for (uint32_t v : q) ++start[v + 1];
-    for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<uint32_t> around(start[nv]);
-    {
-        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-        for (uint32_t t = 0; t < m.triangles.size(); ++t)
-            if (usable(m.triangles[t]))
-                for (uint32_t v : m.triangles[t]) around[fill[v]++] = t;
+    std::vector<uint8_t> in_range;
+    if (!std::all_of(m.triangles.begin(), m.triangles.end(), usable)) {
+        in_range.resize(m.triangles.size());
+        for (size_t t = 0; t < m.triangles.size(); ++t) in_range[t] = usable(m.triangles[t]);
     }
+    const VertexCorners corners = cornersByVertex(m, in_range.empty() ? nullptr : &in_range);
+    const std::vector<uint32_t>& start = corners.start;
+    auto triangleAt = [&](uint32_t e) { return corners.list[e] / 3; };
     incident.assign(nv, 0);
     const unsigned workers = detail::workerCount(0);
     parts.assign(workers, {});
@@ -89,11 +88,12 @@ bool dihedralAngles(const Mesh& m, std::vector<std::vector<EdgeAngle>>& parts, s
             // their sides; then grouped by y, that order kept in a group.
             uses.clear();
             for (uint32_t e = start[x]; e < start[x + 1]; ++e) {
-                const auto& q = m.triangles[around[e]];
+                const uint32_t t = triangleAt(e);
+                const auto& q = m.triangles[t];
                 for (int k = 0; k < 3; ++k) {
                     const uint32_t p = q[k], n = q[(k + 1) % 3];
-                    if (p == x && n != x) uses.push_back({n, around[e], true});
-                    else if (n == x && p != x) uses.push_back({p, around[e], false});
+                    if (p == x && n != x) uses.push_back({n, t, true});
+                    else if (n == x && p != x) uses.push_back({p, t, false});
                 }
             }
             // Insertion (stable, and no buffer to allocate: a vertex has a dozen or two sides).

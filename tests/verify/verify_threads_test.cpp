@@ -98,6 +98,32 @@ TEST(VerifyThreads, TopologyListsDefectsFoundOnSeveralThreadsInVertexOrder) {
     EXPECT_EQ(topo.components.size(), size_t(kSide * kSide + 1));
 }
 
+// The corners grouped by vertex on several threads, each thread a run of
+// triangles: every vertex's corners by ascending triangle, as the one-thread
+// pass over a range of vertices lists them, with vertices whose corners lie
+// in every run and triangles left out.
+TEST(VerifyThreads, CornersAreGroupedByVertexOnSeveralThreadsAsOnOne) {
+    const Mesh grid = boxGrid();
+    Mesh m = test::append(test::append(grid, grid), test::append(grid, grid));
+    ASSERT_GE(m.triangles.size(), size_t(1) << 16);  // enough to run on several threads
+    for (size_t t = 0; t < m.triangles.size(); t += 997) m.triangles[t][t % 3] = 5;  // vertex 5 in every run
+    std::vector<uint8_t> usable(m.triangles.size(), 1);
+    for (size_t t = 3; t < m.triangles.size(); t += 7) usable[t] = 0;
+    for (const std::vector<uint8_t>* keep : std::vector<const std::vector<uint8_t>*>{nullptr, &usable}) {
+        const VertexCorners threaded = cornersByVertex(m, keep);
+        const VertexCorners one = cornersByVertex(m, keep, 0, uint32_t(m.positions.size()));
+        EXPECT_EQ(threaded.start, one.start);
+        EXPECT_EQ(threaded.list, one.list);
+        // Vertex 5's corners: its own box's and every 997th triangle's, in order.
+        std::vector<uint32_t> at5;
+        for (size_t t = 0; t < m.triangles.size(); ++t)
+            for (uint32_t i = 0; i < 3; ++i)
+                if (m.triangles[t][i] == 5 && (!keep || usable[t])) at5.push_back(3 * uint32_t(t) + i);
+        EXPECT_EQ(std::vector<uint32_t>(threaded.list.begin() + threaded.start[5], threaded.list.begin() + threaded.start[6]),
+                  at5);
+    }
+}
+
 // Every box twice, at the same place, with vertices of its own: each of the
 // second copy's vertices repeats a position, counted once however the
 // threads meet in the hash set.
