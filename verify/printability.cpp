@@ -118,21 +118,44 @@ std::vector<uint32_t> planarRegionRepresentatives(const Mesh& mesh) {
     joinCoplanarNeighbours(mesh, regions);
     std::vector<double> best_area(nt, -1.0);
     std::vector<uint32_t> best(nt, 0);
-    for (uint32_t t = 0; t < nt; ++t) {
-        const auto& tri = mesh.triangles[t];
-        const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
-        const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-        const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-        const double area2 = nx * nx + ny * ny + nz * nz;
-        const uint32_t r = regions.find(t);
+    // A region's largest triangle, the first in index order among equals:
+    // each thread takes a run of triangles and keeps the best of the regions
+    // whose root (the smallest member) lies in its run; a triangle of a
+    // region rooted in an earlier run is set aside and weighed after, run by
+    // run, so every region sees its triangles in index order as on one thread.
+    struct SetAside {
+        uint32_t root, t;
+        double area2;
+    };
+    auto take = [&](uint32_t r, uint32_t t, double area2) {
         if (area2 > best_area[r]) {
             best_area[r] = area2;
             best[r] = t;
         }
-    }
+    };
+    const unsigned workers = detail::workerCount(0);
+    std::vector<std::vector<SetAside>> set_aside(workers);
+    std::vector<std::vector<uint32_t>> found(workers);
+    detail::runOnRanges(workers, nt, [&](unsigned w, size_t begin, size_t end) {
+        for (size_t t = begin; t < end; ++t) {
+            const auto& tri = mesh.triangles[t];
+            const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+            const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+            const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+            const double area2 = nx * nx + ny * ny + nz * nz;
+            const uint32_t r = regions.find(uint32_t(t));
+            if (r >= begin) take(r, uint32_t(t), area2);
+            else set_aside[w].push_back({r, uint32_t(t), area2});
+        }
+    });
+    for (const auto& list : set_aside)
+        for (const SetAside& s : list) take(s.root, s.t, s.area2);
+    detail::runOnRanges(workers, nt, [&](unsigned w, size_t begin, size_t end) {
+        for (size_t t = begin; t < end; ++t)
+            if (regions.find(uint32_t(t)) == t && best_area[t] > 0) found[w].push_back(best[t]);
+    });
     std::vector<uint32_t> out;
-    for (uint32_t t = 0; t < nt; ++t)
-        if (regions.find(t) == t && best_area[t] > 0) out.push_back(best[t]);
+    for (const auto& part : found) out.insert(out.end(), part.begin(), part.end());
     return out;
 }
 
