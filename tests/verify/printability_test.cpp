@@ -43,6 +43,37 @@ TEST(Printability, NarrowGapBetweenTwoBlocksIsWarned) {
     EXPECT_NEAR(c.worst.at(0).at_mm.x, 5.15, 0.16);
 }
 
+// Five slabs under the nozzle and one over it, far apart, not in order of
+// width (binary fractions at whole millimetres: each slab's two faces
+// measure it exactly alike): the count is every wall face under the limit,
+// the offenders the thinnest few in order (a slab's two faces, a tie, by
+// triangle index), the figure the thinnest of all.
+TEST(Printability, OffendersAreTheThinnestInOrderAndTheCountIsEveryOne) {
+    const double widths[] = {0.375, 0.3125, 0.5, 0.25, 0.28125, 0.125};
+    Mesh m;
+    for (int i = 0; i < 6; ++i) m = vtest::append(std::move(m), vtest::box({16.0 * i, 0, 0}, {16.0 * i + widths[i], 10, 5}));
+    PrintabilityOptions o;
+    o.max_offenders = 3;
+    const PrintabilityResult r = run(m, o);
+    const Check& c = findCheck(r, "wall_thickness");
+    EXPECT_EQ(c.count, 10);  // two faces each of the five slabs under 0.4 mm
+    ASSERT_EQ(c.worst.size(), 3u);
+    EXPECT_EQ(c.worst[0].amount, 0.125);
+    EXPECT_EQ(c.worst[1].amount, 0.125);
+    EXPECT_EQ(c.worst[2].amount, 0.25);
+    // The 0.1 mm slab's two faces, the lower triangle index first.
+    auto triangleOf = [](const Offender& off) {
+        const size_t at = off.detail.find("(triangle ");
+        return at == std::string::npos ? -1L : std::stol(off.detail.substr(at + 10));
+    };
+    EXPECT_LT(triangleOf(c.worst[0]), triangleOf(c.worst[1])) << c.worst[0].detail << " / " << c.worst[1].detail;
+    EXPECT_NEAR(c.worst[0].at_mm.x, 80.0625, 0.07);
+    EXPECT_NEAR(c.worst[1].at_mm.x, 80.0625, 0.07);
+    EXPECT_NEAR(c.worst[2].at_mm.x, 48.125, 0.13);
+    EXPECT_EQ(r.figures.min_wall_mm, 0.125);
+    EXPECT_EQ(c.note, "thinnest 0.125 mm over 24 samples; limit 0.400 mm");  // four walls a slab
+}
+
 /// A 10 mm deep block whose top falls from z = 6 at x = 0 (the rim) at
 /// `slope_deg` toward +x, `length` long: under the rim the material is a
 /// wedge, layer / tan(slope) wide one layer down.
