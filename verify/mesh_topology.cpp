@@ -72,18 +72,8 @@ VertexCorners cornersByVertex(const Mesh& mesh, const std::vector<uint8_t>* usab
                 for (uint32_t v : mesh.triangles[t]) ++at[w][v];
     });
     VertexCorners c;
-    c.start.assign(nv + 1, 0);
-    uint32_t total = 0;
-    for (size_t v = 0; v < nv; ++v) {
-        c.start[v] = total;
-        for (unsigned w = 0; w < workers; ++w) {
-            const uint32_t n = at[w][v];
-            at[w][v] = total;
-            total += n;
-        }
-    }
-    c.start[nv] = total;
-    c.list.resize(total);
+    c.start = detail::slotsByRun(at, nv);
+    c.list.resize(c.start[nv]);
     detail::runOnRanges(workers, nt, [&](unsigned w, size_t begin, size_t end) {
         std::vector<uint32_t>& next = at[w];
         for (size_t t = begin; t < end; ++t)

@@ -42,15 +42,7 @@ WeldedPositions weldExact(std::vector<Vec3> points, unsigned workers) {
     // positions by increasing index. Each entry carries its hash, so that a
     // bucket is welded from its own entries: the positions themselves are
     // read again only to confirm an equal hash.
-    std::vector<uint32_t> bucket_start(buckets + 1, 0);
-    {
-        uint32_t at = 0;
-        for (size_t b = 0; b < buckets; ++b) {
-            bucket_start[b] = at;
-            for (unsigned w = 0; w < workers; ++w) at += std::exchange(counts[w][b], at);
-        }
-        bucket_start[buckets] = at;
-    }
+    const std::vector<uint32_t> bucket_start = detail::slotsByRun(counts, buckets);
     struct Entry {
         uint64_t hash;
         uint32_t index;

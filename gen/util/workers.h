@@ -1,10 +1,12 @@
 // Work split over threads: how many, and running on them (the verifier's
-// parallel stages, the mesher's passes, welding positions).
+// parallel stages, the mesher's passes, welding positions), and the slots of
+// a counting sort counted on them.
 #pragma once
 
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <thread>
 #include <vector>
@@ -52,6 +54,28 @@ template <class Fn>
 void runOnRanges(unsigned workers, size_t n, Fn&& fn) {
     const unsigned runs = n < kMinItemsForThreads ? 1u : workers;
     runOnWorkers(runs, [&](unsigned w, const std::atomic<bool>&) { fn(w, n * w / runs, n * (w + 1) / runs); });
+}
+
+/// The slots of a counting sort whose items were counted run by run (see
+/// runOnRanges): `counts[w][k]` is how many items of key k run w holds, for
+/// keys 0 .. keys-1, and becomes the slot of the first of them; keys are in
+/// order and, within a key, the runs in order, so runs that then place their
+/// items in their own order (counts[w][k]++) list every key's items as one
+/// pass in index order would. Returns where each key's items start, and the
+/// total at [keys].
+inline std::vector<uint32_t> slotsByRun(std::vector<std::vector<uint32_t>>& counts, size_t keys) {
+    std::vector<uint32_t> start(keys + 1, 0);
+    uint32_t at = 0;
+    for (size_t k = 0; k < keys; ++k) {
+        start[k] = at;
+        for (std::vector<uint32_t>& run : counts) {
+            const uint32_t n = run[k];
+            run[k] = at;
+            at += n;
+        }
+    }
+    start[keys] = at;
+    return start;
 }
 
 }  // namespace tsf::detail
