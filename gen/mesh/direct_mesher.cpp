@@ -49,6 +49,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cassert>
 #include <map>
 #include <optional>
@@ -82,6 +83,9 @@ constexpr uint32_t kNotMerged = UINT32_MAX;
 // Below this many kept cells the mesher runs on one thread (a thread costs
 // more than meshing a few thousand cells).
 constexpr size_t kParallelCells = 20000;
+// Triangles a cell of a flat model usually has (top, walls, its share of the
+// bottom; 10.4 on a 1000 x 1000 terrain); mirrored, twice as many.
+constexpr size_t kTypicalTrianglesPerCell = 12;
 
 using Triangles = std::vector<std::array<uint32_t, 3>>;
 // Where tri() appends on this thread: each worker of a parallel pass has its
@@ -127,14 +131,18 @@ public:
     }
 
     Mesh build() {
-        if (flat_) collectRim();
-        findMergedTops();
-        if (flat_) findBottomPoints();
+        // The merged tops and (flat) the rim and the bottom's points read the
+        // Scene alone and each fills its own members: side by side.
+        runBoth([&] { findMergedTops(); },
+                [&] {
+                    if (!flat_) return;
+                    collectRim();
+                    findBottomPoints();
+                });
         assignVertices();
         addCells();
         for (const PlanarFace& f : s_.faces.faces) addFace(f);
-        addMergedTops();
-        if (flat_) addFlatBottom();
+        addPlanarRegions();
         for (const Attachment& a : attachments_) addJoinedBody(a.joined);
         return std::move(mesh_);
     }
@@ -181,15 +189,22 @@ private:
             if (mergeable(int32_t(k))) region_[k] = uf.find(uint32_t(k));
         dropped_top_.assign(size_t(lattice_ids_), 0);
         std::vector<uint8_t> has_dropped(n, 0);
-        for (size_t k = 0; k < n; ++k) {
-            if (region_[k] == kNotMerged) continue;
-            for (int e = 0; e < kHexCorners; ++e) {
-                const int64_t id = hexCornerId(g_, s_.col[k], s_.row[k], e);
-                if (onSparseLattice(id) || regionAround(id, region_[k]) == kNotMerged) continue;
-                dropped_top_[size_t(id)] = 1;
-                has_dropped[region_[k]] = 1;
+        // A lattice vertex whose three cells all lie in one region carries
+        // that top alone: left out, unless on the sparse lattice. Decided
+        // vertex by vertex on the threads (each vertex by one); the region
+        // hears of it by a store of the same 1 from any thread.
+        detail::runOnRanges(threads(), size_t(lattice_ids_), [&](unsigned, size_t from, size_t to) {
+            for (size_t id = from; id < to; ++id) {
+                if (onSparseLattice(int64_t(id))) continue;
+                int32_t cells[3];
+                incidentCells(int64_t(id), cells);
+                if (cells[0] < 0 || region_[size_t(cells[0])] == kNotMerged) continue;
+                const uint32_t root = region_[size_t(cells[0])];
+                if (regionAround(int64_t(id), root) == kNotMerged) continue;
+                dropped_top_[id] = 1;
+                std::atomic_ref<uint8_t>(has_dropped[root]).store(1, std::memory_order_relaxed);
             }
-        }
+        });
         // A region with nothing left out keeps its hexagons.
         for (size_t k = 0; k < n; ++k)
             if (region_[k] != kNotMerged && !has_dropped[region_[k]]) region_[k] = kNotMerged;
@@ -275,25 +290,58 @@ private:
         return std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
     }
 
-    // Vertex indices in id order: counted, summed, then placed, the first and
-    // last passes split over threads by id range.
+    // a() and b(), on two threads when the model is large enough for threads.
+    template <class A, class B>
+    void runBoth(const A& a, const B& b) const {
+        runParts(std::min(2u, threads()), [&](unsigned p) {
+            if (p == 0) a();
+            if (p == 1 || threads() == 1) b();
+        });
+    }
+
+    // Vertex indices in id order: each thread lists the heights of a range
+    // of ids (counting them), the counts are summed, then each places its
+    // range's vertices from its list (one usedHeights a vertex id, not two).
     void assignVertices() {
         const int64_t ids = int64_t(first_index_.size()) - 1;
         const unsigned parts = threads();
         const auto range = [&](unsigned p) { return std::pair(ids * p / parts, ids * (p + 1) / parts); };
+        std::vector<std::vector<int64_t>> heights(parts);
         runParts(parts, [&](unsigned p) {
             int64_t z[kMaxHeightsPerVertex];
-            for (auto [id, end] = range(p); id < end; ++id) first_index_[size_t(id)] = uint32_t(usedHeights(id, z));
+            std::vector<int64_t>& listed = heights[p];
+            auto [id, end] = range(p);
+            listed.reserve(size_t(end - id) * 3);  // most lattice vertices carry two or three heights
+            for (; id < end; ++id) {
+                const int n = usedHeights(id, z);
+                first_index_[size_t(id)] = uint32_t(n);
+                listed.insert(listed.end(), z, z + n);
+            }
         });
         uint32_t next = 0;
         for (int64_t id = 0; id < ids; ++id) next += std::exchange(first_index_[size_t(id)], next);
         first_index_[size_t(ids)] = next;
+        // Room for what is appended after the lattice's vertices (the pin
+        // holes' and the attachments' own): appending then never moves the
+        // vertices (a copy of 125 MB at 1000 x 1000).
+        size_t appended = 0;
+        for (const BottomHole& h : holes_) appended += 2 * h.ring.size() + 1;
+        for (const Attachment& a : attachments_)
+            appended += size_t(std::count_if(a.joined.lattice_id.begin(), a.joined.lattice_id.end(),
+                                             [](int64_t id) { return id < 0; }));
+        mesh_.positions.reserve(size_t(next) + appended);
         mesh_.positions.resize(next);
         runParts(parts, [&](unsigned p) {
-            int64_t z[kMaxHeightsPerVertex];
+            const int64_t* z = heights[p].data();
             for (auto [id, end] = range(p); id < end; ++id) {
-                const int n = usedHeights(id, z);
-                for (int h = 0; h < n; ++h) mesh_.positions[first_index_[size_t(id)] + uint32_t(h)] = s_.planarPoint(id, z[h]);
+                const uint32_t first = first_index_[size_t(id)], n = first_index_[size_t(id) + 1] - first;
+                if (n == 0) continue;
+                // The place is the id's; the heights differ in z alone.
+                Vec3 at = s_.planarPoint(id, *z);
+                for (uint32_t h = 0; h < n; ++h, ++z) {
+                    at.z = s_.zMm(*z);
+                    mesh_.positions[first + h] = at;
+                }
             }
         });
     }
@@ -303,20 +351,27 @@ private:
     void addCells() {
         const size_t n = s_.keptCount();
         const unsigned parts = threads();
+        // Room reserved (address space; only what is written takes memory)
+        // for a typical cell's triangles, the first part's for all of them
+        // and the planar regions': the parts then rarely grow by copying, and
+        // the first becomes the mesh's list, the others appended to it.
+        const size_t per_cell = flat_ ? kTypicalTrianglesPerCell : 2 * kTypicalTrianglesPerCell;
         std::vector<Triangles> out(parts);
         runParts(parts, [&](unsigned p) {
-            t_sink = parts > 1 ? &out[p] : &mesh_.triangles;
-            for (size_t k = n * p / parts, end = n * (p + 1) / parts; k < end; ++k)
+            const size_t from = n * p / parts, end = n * (p + 1) / parts;
+            out[p].reserve((p == 0 ? n + n / 8 : end - from) * per_cell);
+            t_sink = &out[p];
+            for (size_t k = from; k < end; ++k)
                 if (!drawnByFace(int32_t(k))) addCell(k);
             t_sink = nullptr;
         });
-        if (parts == 1) return;
+        mesh_.triangles = std::move(out[0]);
         size_t total = mesh_.triangles.size();
         for (const Triangles& t : out) total += t.size();
-        mesh_.triangles.reserve(total + total / 16);
-        for (Triangles& t : out) {
-            mesh_.triangles.insert(mesh_.triangles.end(), t.begin(), t.end());
-            Triangles().swap(t);
+        mesh_.triangles.reserve(total);
+        for (unsigned p = 1; p < parts; ++p) {
+            mesh_.triangles.insert(mesh_.triangles.end(), out[p].begin(), out[p].end());
+            Triangles().swap(out[p]);
         }
     }
 
@@ -546,10 +601,16 @@ private:
         rim_.insert(w);
     }
 
+    struct PlanarRegion {
+        std::vector<std::pair<int64_t, int64_t>> edges;  // boundary, planar ids, closed loops
+        std::vector<int64_t> inner;                      // interior vertices (planar ids)
+        int64_t z = 0;                                   // height, z snap units
+    };
+
     // The merged tops: per region, its boundary edges (counter-clockwise
-    // around the region) and its kept interior vertices, triangulated.
-    void addMergedTops() {
-        // Regions in the order of their roots (first cells), the same on every run.
+    // around the region) and its kept interior vertices; regions in the
+    // order of their roots (first cells), the same on every run.
+    std::vector<PlanarRegion> mergedTops() const {
         std::vector<uint32_t> slot(s_.keptCount(), kNotMerged);
         std::vector<PlanarRegion> regions;
         for (size_t k = 0; k < s_.keptCount(); ++k) {
@@ -571,23 +632,48 @@ private:
                     r.inner.push_back(id[e]);
             }
         }
-        for (const PlanarRegion& r : regions) addPlanarRegion(r, r.z, /*facing_up=*/true);
+        return regions;
     }
 
-    void addFlatBottom() {
-        if (next_on_rim_.empty()) return;
+    // Flat: the bottom at z 0, bounded by the rim, with the sparse points.
+    PlanarRegion flatBottom() {
         PlanarRegion r;
         r.edges.assign(next_on_rim_.begin(), next_on_rim_.end());
         std::sort(r.edges.begin(), r.edges.end());  // the same triangulation on every run
         r.inner = std::move(bottom_points_);
-        addPlanarRegion(r, 0, /*facing_up=*/false, /*with_holes=*/true);
+        return r;
     }
 
-    struct PlanarRegion {
-        std::vector<std::pair<int64_t, int64_t>> edges;  // boundary, planar ids, closed loops
-        std::vector<int64_t> inner;                      // interior vertices (planar ids)
-        int64_t z = 0;                                   // height, z snap units
-    };
+    // The merged tops, then (flat) the bottom: each a triangulation of its
+    // own, on the threads, the largest (the bottom) first; their triangles
+    // are appended in that order whatever thread drew them. A bottom with
+    // pin holes adds vertices, so it is drawn after the others, alone.
+    void addPlanarRegions() {
+        std::vector<PlanarRegion> regions = mergedTops();
+        const size_t tops = regions.size();
+        const bool bottom = flat_ && !next_on_rim_.empty();
+        if (bottom) regions.push_back(flatBottom());
+        const size_t together = bottom && !holes_.empty() ? tops : regions.size();
+        std::vector<Triangles> drawn(together);
+        std::atomic<size_t> next{0};
+        runParts(together > 1 ? threads() : 1, [&](unsigned) {
+            for (size_t n; (n = next.fetch_add(1)) < together;) {
+                // The last (the bottom, when there is one) first.
+                const size_t r = (n + together - 1) % together;
+                t_sink = &drawn[r];
+                addPlanarRegion(regions[r], regions[r].z, /*facing_up=*/r < tops);
+                t_sink = nullptr;
+            }
+        });
+        size_t total = mesh_.triangles.size();
+        for (const Triangles& t : drawn) total += t.size();
+        mesh_.triangles.reserve(total);
+        for (Triangles& t : drawn) {
+            mesh_.triangles.insert(mesh_.triangles.end(), t.begin(), t.end());
+            Triangles().swap(t);
+        }
+        if (together < regions.size()) addPlanarRegion(regions.back(), 0, /*facing_up=*/false, /*with_holes=*/true);
+    }
 
     // A horizontal polygon with holes at height z, bounded by r.edges, with
     // r.inner as extra vertices: a constrained Delaunay triangulation with
