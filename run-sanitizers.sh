@@ -10,10 +10,12 @@
 #                (tests/sanitizers/lsan.supp); and test_verify_threads, the
 #                verifier's threaded stages (column grid, self-intersection
 #                predicates, printability rays, topology, the positions of the
-#                model as written welded) on hand-drawn meshes.
+#                model as written welded) on hand-drawn meshes, and the
+#                binary STL writer's converting threads.
 #   build-tsan/  clang, ThreadSanitizer: the haptic loop and Falcon driver
 #                threads (test_haptics_threads) and the verifier's threaded
-#                stages (test_verify_threads, the same tests as under ASan).
+#                stages and the STL writer (test_verify_threads, the same
+#                tests as under ASan).
 #
 # Every fuzz target runs TSF_FUZZ_SECONDS (default 5) from its seed corpus in
 # tests/fuzz/corpus/<target>/ (new inputs go to a scratch folder, not the

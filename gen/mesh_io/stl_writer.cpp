@@ -6,8 +6,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <future>
+#include <condition_variable>
 #include <limits>
+#include <mutex>
 #include <ostream>
 #include <thread>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "gen/util/atomic_file.h"
 #include "gen/mesh_io/mesh_write_checks.h"
 #include "gen/mesh_io/number_text.h"
+#include "gen/util/workers.h"
 
 namespace tsf {
 
@@ -29,7 +31,8 @@ constexpr size_t kFacetBytes = 50;
 // Facets serialised per write() call: large enough to amortise the call,
 // small enough to stay in cache (~200 KB).
 constexpr size_t kFacetsPerChunk = 4096;
-// Binary STL: facets converted per block (~800 KB), two blocks in flight.
+// Binary STL: facets converted per block (~800 KB), two blocks a converting
+// thread in flight.
 constexpr size_t kBinaryFacetsPerBlock = 16384;
 
 struct FloatTriangle {
@@ -110,34 +113,64 @@ void writeStlBinary(const Mesh& mesh, std::ostream& out, const std::string& titl
         }
     };
     const size_t total = mesh.triangles.size();
-    std::array<std::vector<unsigned char>, 2> chunks;
-    for (auto& c : chunks) c.resize(std::min(total, kBinaryFacetsPerBlock) * kFacetBytes);
-    // The next chunk is converted on other threads, one part each, while
-    // this one is written (and copied by the kernel): a large model's
-    // conversion (a square root and three divisions a facet, the slower
-    // half of the pipeline) is then off the writing path and spread over
-    // the cores. Each facet's bytes depend on that facet alone, so the
-    // file is the same whatever the split.
-    const size_t parts = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 8);
-    std::vector<std::future<void>> next;
-    auto start = [&](size_t first, size_t slot) {
-        const size_t count = std::min(kBinaryFacetsPerBlock, total - first);
-        if (total <= 2 * kBinaryFacetsPerBlock) return convert(first, count, chunks[slot].data());
-        for (size_t p = 0; p < parts; ++p) {
-            const size_t from = count * p / parts, to = count * (p + 1) / parts;
-            if (from < to)
-                next.push_back(std::async(std::launch::async, convert, first + from, to - from,
-                                          chunks[slot].data() + from * kFacetBytes));
+    const size_t blocks = (total + kBinaryFacetsPerBlock - 1) / kBinaryFacetsPerBlock;
+    const auto facetsIn = [&](size_t block) { return std::min(kBinaryFacetsPerBlock, total - block * kBinaryFacetsPerBlock); };
+    const unsigned converters = blocks <= 2 ? 0u : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+    if (converters == 0) {
+        std::vector<unsigned char> chunk(std::min(total, kBinaryFacetsPerBlock) * kFacetBytes);
+        for (size_t b = 0; b < blocks; ++b) {
+            convert(b * kBinaryFacetsPerBlock, facetsIn(b), chunk.data());
+            out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(facetsIn(b) * kFacetBytes));
         }
-    };
-    if (total > 0) start(0, 0);
-    for (size_t first = 0, slot = 0; first < total; first += kBinaryFacetsPerBlock, slot ^= 1) {
-        for (std::future<void>& f : next) f.get();
-        next.clear();
-        const size_t count = std::min(kBinaryFacetsPerBlock, total - first);
-        if (first + count < total) start(first + count, slot ^ 1);
-        out.write(reinterpret_cast<const char*>(chunks[slot].data()), static_cast<std::streamsize>(count * kFacetBytes));
+        return;
     }
+    // The blocks are converted on threads of their own, each taking the next
+    // block as it finishes one, while this thread writes the converted blocks
+    // in order: the conversion (a square root and three divisions a facet)
+    // is the slower half and runs on every core, the kernel's copy beside
+    // it. A block goes into slot block % slots, free once the block `slots`
+    // before it is written. Each facet's bytes depend on that facet alone, so
+    // the file is the same whatever thread converted it.
+    const size_t slots = 2 * size_t(converters);
+    std::vector<std::vector<unsigned char>> slot(slots, std::vector<unsigned char>(kBinaryFacetsPerBlock * kFacetBytes));
+    std::vector<size_t> converted(slots, SIZE_MAX);  // the block each slot holds, converted
+    size_t written = 0;                               // blocks written
+    bool failed = false;                              // the stream failed: the rest is not converted
+    std::atomic<size_t> next{0};
+    std::mutex m;
+    std::condition_variable changed;
+    detail::runOnWorkers(converters + 1, [&](unsigned worker, const std::atomic<bool>&) {
+        if (worker > 0) {
+            for (size_t b; (b = next.fetch_add(1)) < blocks;) {
+                {
+                    std::unique_lock lock(m);
+                    changed.wait(lock, [&] { return failed || b < written + slots; });
+                    if (failed) return;
+                }
+                convert(b * kBinaryFacetsPerBlock, facetsIn(b), slot[b % slots].data());
+                {
+                    const std::lock_guard lock(m);
+                    converted[b % slots] = b;
+                }
+                changed.notify_all();
+            }
+            return;
+        }
+        for (size_t b = 0; b < blocks; ++b) {
+            {
+                std::unique_lock lock(m);
+                changed.wait(lock, [&] { return converted[b % slots] == b; });
+            }
+            out.write(reinterpret_cast<const char*>(slot[b % slots].data()), static_cast<std::streamsize>(facetsIn(b) * kFacetBytes));
+            {
+                const std::lock_guard lock(m);
+                written = b + 1;
+                failed = !out;
+            }
+            changed.notify_all();
+            if (failed) return;
+        }
+    });
 }
 
 void writeStlAscii(const Mesh& mesh, std::ostream& out, const std::string& title) {
