@@ -84,7 +84,10 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     // The model file's stamp, for its sidecar and its keys (tiles and halves
     // are several files: none).
     std::optional<FileStamp> model_stamp;
-    if (!o.output.empty() && !made.halves && !tiles) model_stamp = stampFile(written->currentPath(o.output));
+    if (!o.output.empty() && !made.halves && !tiles) {
+        model_stamp = written->stampOf(o.output);
+        if (!model_stamp) model_stamp = stampFile(written->currentPath(o.output));
+    }
     if (!o.no_sidecar) writeSidecarFile(o, scene, model_stamp, summary);
     if (!o.no_key && (!o.output.empty() || !o.scad.empty())) {
         timer.begin("writing key");

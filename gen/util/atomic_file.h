@@ -28,8 +28,11 @@
 
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "gen/util/file_stamp.h"
 
 namespace tsf {
 
@@ -54,8 +57,10 @@ public:
     /// (with an OutputSet alive: fsync and hand the file to the set).
     /// Throws tsf::OutputError with the OS message when the sync or the
     /// rename fails (the temporary file is then still removed by the
-    /// destructor). Calling it twice is a bug.
-    void commit();
+    /// destructor). Calling it twice is a bug. `stamp`, the stamp of what
+    /// was written when the writer took it (writeFileAtomically does), is
+    /// kept by the OutputSet for stampOf().
+    void commit(std::optional<FileStamp> stamp = std::nullopt);
 
 private:
     std::string target_path_;
@@ -92,10 +97,15 @@ public:
     /// Where the bytes of `target` are now: its temporary file while it
     /// waits in the set, else `target` itself.
     std::string currentPath(const std::string& target) const;
+    /// The stamp of `target`'s new bytes as taken while they were written
+    /// (writeFileAtomically), without reading the file back; none for a
+    /// file written otherwise or not in the set.
+    std::optional<FileStamp> stampOf(const std::string& target) const;
 
     struct Pending {
         std::string temp_path, target_path;
         int cleanup_slot = -1;
+        std::optional<FileStamp> stamp;
     };
 
 private:
@@ -111,7 +121,8 @@ int removeStaleTempFiles(const std::string& target_path);
 
 /// Writes path atomically through a stream: opens the temporary file as a
 /// binary std::ofstream, calls write(stream), checks the stream state (a full
-/// disk shows up here), then commits. If write throws, the exception
+/// disk shows up here), then commits. The bytes are stamped (XXH3, as
+/// stampFile) on their way to the file: see OutputSet::stampOf. If write throws, the exception
 /// propagates and no file appears at path (an existing one is untouched).
 /// Throws tsf::InputError for an unusable folder (see AtomicFile) and
 /// tsf::OutputError (also an InputError) for I/O failures: a full disk, a

@@ -3,7 +3,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <memory>
 #include <vector>
 
 // Header-only: the functions are compiled here, nothing to link.
@@ -27,28 +26,47 @@ uint64_t xxh3_64(const void* data, size_t size, uint64_t seed) { return XXH3_64b
 
 const char* stampHashName(StampHash algorithm) { return algorithm == StampHash::Fnv1a64 ? "fnv1a64" : "xxh3_64"; }
 
+struct StampHasher::State {
+    XXH3_state_t xxh;
+};
+
+StampHasher::StampHasher() : state_(std::make_unique<State>()) { XXH3_64bits_reset(&state_->xxh); }
+StampHasher::~StampHasher() = default;
+
+void StampHasher::update(const void* data, size_t size) {
+    XXH3_64bits_update(&state_->xxh, data, size);
+    bytes_ += int64_t(size);
+}
+
+FileStamp StampHasher::stamp() const {
+    FileStamp s;
+    s.algorithm = StampHash::Xxh3_64;
+    s.bytes = bytes_;
+    s.hash = XXH3_64bits_digest(&state_->xxh);
+    return s;
+}
+
 FileStamp stampFile(const std::string& path, StampHash algorithm) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) throw InputError(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
-    FileStamp s;
-    s.algorithm = algorithm;
-    s.hash = kFnv1a64Basis;
-    std::unique_ptr<XXH3_state_t, decltype(&XXH3_freeState)> xxh(XXH3_createState(), &XXH3_freeState);
-    if (!xxh || XXH3_64bits_reset(xxh.get()) != XXH_OK) {
-        std::fclose(f);
-        throw InputError(path, 0, 0, "cannot start hashing the file");
-    }
+    StampHasher xxh;
+    uint64_t fnv = kFnv1a64Basis;
+    int64_t bytes = 0;
     std::vector<unsigned char> buf(size_t(1) << 20);
     size_t n;
     while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) {
-        if (algorithm == StampHash::Fnv1a64) s.hash = fnv1a64(buf.data(), n, s.hash);
-        else XXH3_64bits_update(xxh.get(), buf.data(), n);
-        s.bytes += int64_t(n);
+        if (algorithm == StampHash::Fnv1a64) fnv = fnv1a64(buf.data(), n, fnv);
+        else xxh.update(buf.data(), n);
+        bytes += int64_t(n);
     }
     const bool failed = std::ferror(f) != 0;
     std::fclose(f);
     if (failed) throw InputError(path, 0, 0, "cannot read the file");
-    if (algorithm == StampHash::Xxh3_64) s.hash = XXH3_64bits_digest(xxh.get());
+    if (algorithm == StampHash::Xxh3_64) return xxh.stamp();
+    FileStamp s;
+    s.algorithm = algorithm;
+    s.bytes = bytes;
+    s.hash = fnv;
     return s;
 }
 

@@ -12,7 +12,9 @@
 // any size needs constant memory.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace tsf {
@@ -38,6 +40,24 @@ uint64_t fnv1a64(const void* data, size_t size, uint64_t hash = kFnv1a64Basis);
 
 /// XXH3 64 of `size` bytes with `seed` (0: the hash stamps record).
 uint64_t xxh3_64(const void* data, size_t size, uint64_t seed = 0);
+
+/// The XXH3 stamp of bytes given piece by piece: the stamp stampFile gives
+/// a file holding them, taken while the file is written instead of reading
+/// it back.
+class StampHasher {
+public:
+    StampHasher();
+    ~StampHasher();
+    StampHasher(const StampHasher&) = delete;
+    StampHasher& operator=(const StampHasher&) = delete;
+    void update(const void* data, size_t size);
+    FileStamp stamp() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+    int64_t bytes_ = 0;
+};
 
 /// The stamp of the file at path, hashed with `algorithm`. Throws
 /// tsf::InputError naming path when it cannot be opened or read.

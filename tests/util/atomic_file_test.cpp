@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -35,6 +36,48 @@ TEST(AtomicFile, SuccessfulWriteLeavesOnlyTheTarget) {
     writeFileAtomically(target, [](std::ostream& out) { out << "hello"; });
     EXPECT_EQ(readText(target), "hello");
     EXPECT_THAT(listFiles(dir), ElementsAre("out.txt"));
+}
+
+// The stamp a file gets as it is written is the one read back from it:
+// small pieces gathered in the stamping buffer, a piece larger than that
+// buffer passed straight through, and pieces on both sides of it.
+TEST(OutputSet, TheStampTakenWhileWritingIsTheFilesStamp) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "model.stl").string(), other = (dir / "other.txt").string();
+    std::string large(200000, '\0');
+    for (size_t k = 0; k < large.size(); ++k) large[k] = char(k * 7919 % 251);
+    OutputSet set;
+    writeFileAtomically(target, [&](std::ostream& out) {
+        out << "header " << 42 << ' ';
+        out.put('x');
+        out.write(large.data(), std::streamsize(large.size()));
+        for (int k = 0; k < 5000; ++k) out << k << ',';
+        out.write(large.data(), 1000);
+    });
+    AtomicFile plain(other);  // committed without a stamp: none to give
+    writeText(plain.tempPath(), "bytes");
+    plain.commit();
+    const std::optional<FileStamp> taken = set.stampOf(target);
+    ASSERT_TRUE(taken.has_value());
+    const FileStamp read_back = stampFile(set.currentPath(target));
+    EXPECT_EQ(*taken, read_back);
+    EXPECT_GT(read_back.bytes, int64_t(201000));
+    EXPECT_FALSE(set.stampOf(other).has_value());
+    EXPECT_FALSE(set.stampOf((dir / "never.txt").string()).has_value());
+    set.commit();
+    EXPECT_EQ(stampFile(target), *taken);
+}
+
+TEST(OutputSet, AnEmptyFilesStampIsTheHashOfNothing) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "empty.txt").string();
+    OutputSet set;
+    writeFileAtomically(target, [](std::ostream&) {});
+    const std::optional<FileStamp> taken = set.stampOf(target);
+    ASSERT_TRUE(taken.has_value());
+    EXPECT_EQ(taken->bytes, 0);
+    EXPECT_EQ(taken->hash, 0x2d06800538d394c2ull);  // XXH3-64 of no bytes (the published vector)
+    set.commit();
 }
 
 TEST(AtomicFile, TempFileIsInTheTargetFolderAndHidden) {
