@@ -1,6 +1,7 @@
 // tsf gen: field in, model out (mesh file, OpenSCAD, scene sidecar), verified.
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -28,6 +29,7 @@
 #include "app/tiles_output.h"
 #include "gen/mesh_io/mesh_writer.h"
 #include "gen/model/build_scene.h"
+#include "gen/model/scene_json.h"
 #include "gen/readers/cf_time.h"
 #include "gen/util/atomic_file.h"
 #include "gen/util/error.h"
@@ -72,6 +74,11 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     // or the new ones, never a mix).
     std::optional<OutputSet> written(std::in_place);
     if (!o.output.empty()) timer.begin("writing");
+    // The sidecar's cells do not depend on the model file: formatted on a
+    // thread of their own while the model is converted, written and synced
+    // (a million cells: 0.15 s of formatting off the writing path).
+    std::future<std::string> sidecar_cells;
+    if (!o.no_sidecar) sidecar_cells = std::async(std::launch::async, [&scene] { return sceneCellsJson(scene); });
     writeModelFiles(o, made, tiles, summary);
     if (!o.preview.empty()) {
         timer.begin("drawing preview");
@@ -88,7 +95,10 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         model_stamp = written->stampOf(o.output);
         if (!model_stamp) model_stamp = stampFile(written->currentPath(o.output));
     }
-    if (!o.no_sidecar) writeSidecarFile(o, scene, model_stamp, summary);
+    if (!o.no_sidecar) {
+        const std::string cells = sidecar_cells.get();
+        writeSidecarFile(o, scene, model_stamp, &cells, summary);
+    }
     if (!o.no_key && (!o.output.empty() || !o.scad.empty())) {
         timer.begin("writing key");
         writeKeyFiles(o, field, scene, tiles, legibility, model_stamp, summary);

@@ -16,7 +16,9 @@ namespace tsf::cli {
 /// (model_stamp; none without one model file): a run killed between the
 /// two leaves a new model beside an older sidecar, and `tsf verify
 /// --scene` refuses that pair instead of judging one model by another's data.
+/// `cells`: sceneCellsJson(scene), formatted while the model was written
+/// (nullptr: formatted here).
 void writeSidecarFile(const GenCommandOptions& o, const Scene& scene, const std::optional<FileStamp>& model_stamp,
-                      GenSummary& summary);
+                      const std::string* cells, GenSummary& summary);
 
 }  // namespace tsf::cli

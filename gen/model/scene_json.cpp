@@ -615,10 +615,35 @@ Scene sceneFromJson(const json& j) {
     return s;
 }
 
-void writeSceneJson(const Scene& scene, const std::string& path, const SceneModelRecord* model) {
+namespace {
+
+// The cells' text (see sceneCellsJson) into `block`, handed to flush(block)
+// whenever it passes 1 MiB and at the end (flush clears what it takes).
+template <class Flush>
+void formatCells(const Scene& scene, std::string& block, const Flush& flush) {
+    const size_t n = scene.keptCount();
+    for (size_t k = 0; k < n; ++k) {
+        block += k ? ",\n    " : "\n    ";
+        if (plainCell(scene, k)) appendPlainCell(block, scene, k);
+        else block += cellJson(scene, k).dump();
+        if (block.size() > (size_t(1) << 20)) flush(block);
+    }
+    block += n == 0 ? "]\n}\n" : "\n  ]\n}\n";
+    flush(block);
+}
+
+}  // namespace
+
+std::string sceneCellsJson(const Scene& scene) {
+    std::string text;
+    formatCells(scene, text, [](std::string&) {});
+    return text;
+}
+
+void writeSceneJson(const Scene& scene, const std::string& path, const SceneModelRecord* model, const std::string* cells) {
     // Everything but the cells indented; then one cell per line, so a person
     // can find a cell with a text editor and the file stays compact. Cells are
-    // streamed one at a time: a million-cell scene never exists as a JSON tree.
+    // streamed a block at a time: a million-cell scene never exists as a JSON tree.
     json head_json = sceneHeadJson(scene);
     if (model)
         head_json["model"] = {{"file", model->file},
@@ -629,19 +654,15 @@ void writeSceneJson(const Scene& scene, const std::string& path, const SceneMode
     while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
     writeFileAtomically(path, [&](std::ostream& out) {
         out << head << ",\n  \"cells\": [";
-        const size_t n = scene.keptCount();
-        std::string block;
-        for (size_t k = 0; k < n; ++k) {
-            block += k ? ",\n    " : "\n    ";
-            if (plainCell(scene, k)) appendPlainCell(block, scene, k);
-            else block += cellJson(scene, k).dump();
-            if (block.size() > (size_t(1) << 20)) {
-                out << block;
-                block.clear();
-            }
+        if (cells) {
+            out << *cells;
+            return;
         }
-        out << block;
-        out << (n == 0 ? "]\n}\n" : "\n  ]\n}\n");
+        std::string block;
+        formatCells(scene, block, [&out](std::string& b) {
+            out << b;
+            b.clear();
+        });
     });
 }
 

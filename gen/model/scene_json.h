@@ -117,10 +117,19 @@ nlohmann::json sceneToJson(const Scene& scene);
 /// (row, col) order or repeated, or a cell whose bottom is not below its top.
 Scene sceneFromJson(const nlohmann::json& j);
 
+/// The sidecar's cells as writeSceneJson writes them after the scene's head
+/// (one cell a line). They are most of a large sidecar (a million cells:
+/// 63 MB, about 0.15 s to format) and do not depend on the model's stamp,
+/// so a caller may format them while the model is still being written.
+std::string sceneCellsJson(const Scene& scene);
+
 /// Writes sceneToJson(scene) to path atomically (gen/util/atomic_file.h),
-/// one cell per line, with the "model" member when `model` is given. Throws
-/// InputError for an unusable folder, std::runtime_error for I/O failures.
-void writeSceneJson(const Scene& scene, const std::string& path, const SceneModelRecord* model = nullptr);
+/// one cell per line, with the "model" member when `model` is given; `cells`
+/// is sceneCellsJson(scene) when the caller formatted them already (else
+/// they are formatted here, a block at a time). Throws InputError for an
+/// unusable folder, std::runtime_error for I/O failures.
+void writeSceneJson(const Scene& scene, const std::string& path, const SceneModelRecord* model = nullptr,
+                    const std::string* cells = nullptr);
 
 /// Reads a sidecar (at most kMaxSceneJsonBytes). Throws InputError naming
 /// path: with line and column for malformed JSON, with the JSON path (as

@@ -307,6 +307,20 @@ TEST(SceneJson, FileRoundTripOneCellPerLineAndNoTemporaryLeft) {
     EXPECT_EQ(files, 1u);
 }
 
+// gen formats the cells while the model is written and hands them over:
+// the file is the one writeSceneJson writes formatting them itself.
+TEST(SceneJson, CellsFormattedAheadGiveTheSameFile) {
+    const auto dir = vtest::scratchDir("scene_json_cells_ahead");
+    const Scene s = awkwardScene();
+    const SceneModelRecord model{"model.stl", FileStamp{17, 0x0123456789abcdefull, StampHash::Xxh3_64}};
+    writeSceneJson(s, (dir / "streamed.json").string(), &model);
+    const std::string cells = sceneCellsJson(s);
+    writeSceneJson(s, (dir / "ahead.json").string(), &model, &cells);
+    const std::string streamed = vtest::readText(dir / "streamed.json");
+    EXPECT_EQ(vtest::readText(dir / "ahead.json"), streamed);
+    EXPECT_NE(streamed.find("\"cells\": [" + cells), std::string::npos);
+}
+
 TEST(SceneJson, TheModelItWasWrittenWithIsRecordedAndAnotherVersionRefused) {
     const auto dir = vtest::scratchDir("scene_json_model");
     const Scene s = awkwardScene();
