@@ -7,13 +7,14 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
-#include <fstream>
 #include <pthread.h>
 #include <stdexcept>
 #include <streambuf>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 #include "gen/util/error.h"
 #include "gen/util/temp_files.h"
@@ -91,16 +92,21 @@ struct TerminationSignalsHeld {
     ~TerminationSignalsHeld() { ::pthread_sigmask(SIG_SETMASK, &old, nullptr); }
 };
 
-// A stream buffer that stamps (file_stamp.h) every byte it passes on to
-// another: writers see an ordinary stream, and the file's stamp is known
-// when it is written, not read back (82 ms for a 519 MB model). Small
-// writes gather in a buffer of its own; large ones go straight through.
-class StampingBuf : public std::streambuf {
+// The stream writers write a file through: buffered, straight to the file
+// descriptor. Every byte is stamped (file_stamp.h) on its way, so the file's
+// stamp is known when it is written, not read back (82 ms for a 519 MB
+// model). Every kWritebackBytes written, the kernel is asked to start
+// writing those pages to disk (sync_file_range, Linux): the disk then works
+// while the writer still converts and writes, and the fsync of commit()
+// waits for the tail alone instead of the whole file (at 519 MB, 0.2 s of
+// close and fsync after the last write). Small writes gather in a buffer;
+// large ones go straight to the file.
+class FileWriteBuf : public std::streambuf {
 public:
-    explicit StampingBuf(std::streambuf& sink) : sink_(sink), buffer_(kBufferBytes) {
-        setp(buffer_.data(), buffer_.data() + buffer_.size());
-    }
+    explicit FileWriteBuf(int fd) : fd_(fd), buffer_(kBufferBytes) { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
     FileStamp stamp() const { return hasher_.stamp(); }
+    /// errno of the first write that failed, 0 if none did.
+    int error() const { return error_; }
 
 protected:
     int_type overflow(int_type c) override {
@@ -116,30 +122,49 @@ protected:
             pbump(int(n));
             return n;
         }
-        if (!flushBuffer()) return 0;
-        return pass(s, n);
+        if (!flushBuffer() || !writeAll(s, size_t(n))) return 0;
+        return n;
     }
-    int sync() override { return flushBuffer() && sink_.pubsync() == 0 ? 0 : -1; }
+    int sync() override { return flushBuffer() ? 0 : -1; }
 
 private:
     static constexpr size_t kBufferBytes = size_t(1) << 16;
+    static constexpr off_t kWritebackBytes = off_t(32) << 20;
 
-    // Hands n bytes to the sink and stamps those it took.
-    std::streamsize pass(const char* s, std::streamsize n) {
-        const std::streamsize put = sink_.sputn(s, n);
-        if (put > 0) hasher_.update(s, size_t(put));
-        return put;
+    bool writeAll(const char* s, size_t n) {
+        if (error_ != 0) return false;
+        while (n > 0) {
+            const ssize_t put = ::write(fd_, s, n);
+            if (put < 0) {
+                if (errno == EINTR) continue;
+                error_ = errno;
+                return false;
+            }
+            hasher_.update(s, size_t(put));
+            s += put;
+            n -= size_t(put);
+            written_ += put;
+        }
+#ifdef SYNC_FILE_RANGE_WRITE
+        // Started, not waited for; a file system without it says EINVAL or
+        // ENOSYS, and then fsync does all of it as before.
+        for (; written_ - started_ >= kWritebackBytes; started_ += kWritebackBytes)
+            (void)::sync_file_range(fd_, started_, kWritebackBytes, SYNC_FILE_RANGE_WRITE);
+#endif
+        return true;
     }
     bool flushBuffer() {
-        const std::streamsize n = pptr() - pbase();
-        const bool ok = n == 0 || pass(pbase(), n) == n;
+        const size_t n = size_t(pptr() - pbase());
+        const bool ok = n == 0 || writeAll(pbase(), n);
         setp(buffer_.data(), buffer_.data() + buffer_.size());
         return ok;
     }
 
-    std::streambuf& sink_;
+    const int fd_;
     std::vector<char> buffer_;
     StampHasher hasher_;
+    off_t written_ = 0, started_ = 0;
+    int error_ = 0;
 };
 
 }  // namespace
@@ -282,27 +307,29 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     AtomicFile file(path);
     std::optional<FileStamp> stamp;
     {
-        std::ofstream to_file(file.tempPath(), std::ios::binary | std::ios::trunc);
-        if (!to_file) {
-            throw OutputError(path, "cannot open '" + file.tempPath() + "' for writing: " + osMessage(errno));
-        }
-        StampingBuf stamping(*to_file.rdbuf());
-        std::ostream out(&stamping);
-        // The first failed write sets errno (EFBIG, ENOSPC) and the stream's
-        // state; errno is kept from then on, whatever the writer calls after.
-        errno = 0;
+        // The temporary file exists and is empty (AtomicFile made it).
+        const int fd = ::open(file.tempPath().c_str(), O_WRONLY | O_CLOEXEC);
+        if (fd < 0) throw OutputError(path, "cannot open '" + file.tempPath() + "' for writing: " + osMessage(errno));
+        struct Closer {
+            int fd;
+            ~Closer() {
+                if (fd >= 0) ::close(fd);
+            }
+        } closer{fd};
+        FileWriteBuf buf(fd);
+        std::ostream out(&buf);
         write(out);
-        const int write_errno = out.fail() ? errno : 0;
-        errno = 0;
         out.flush();
-        to_file.close();
-        if (out.fail() || to_file.fail()) {
-            const int error_number = write_errno != 0 ? write_errno : errno;
+        int error_number = buf.error();
+        const bool closed = ::close(std::exchange(closer.fd, -1)) == 0;
+        if (closed && error_number == 0 && !out.fail()) {
+            stamp = buf.stamp();
+        } else {
+            if (error_number == 0 && !closed) error_number = errno;
             const std::string reason =
                 error_number != 0 ? osMessage(error_number) : std::string("write error (is the disk full?)");
             throw OutputError(path, "writing failed: " + reason);
         }
-        stamp = stamping.stamp();
     }
     file.commit(stamp);
 }
