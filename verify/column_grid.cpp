@@ -123,9 +123,10 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
     positions_ = mesh.positions.data();
     triangles_ = mesh.triangles.data();
     const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
-    first_bin_.assign(nt, kNone);
-    z_range_.assign(nt, {0.0f, 0.0f});
-    std::vector<uint8_t> usable(nt, 0);
+    // Sized, not filled: the pass below writes every element, on the threads.
+    first_bin_.resize(nt);
+    z_range_.resize(nt);
+    UninitializedVector<uint8_t> usable(nt);
     const unsigned workers = nt < 20000 ? 1u : detail::workerCount(0);
     auto forWorkers = [&](const auto& fn) { detail::runOnWorkers(workers, [&](unsigned w, const auto&) { fn(w); }); };
     // The usable triangles, their z ranges and the box of x, y, on the
@@ -139,6 +140,9 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
         Extent& e = extents[w];
         for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) {
             const auto& q = mesh.triangles[t];
+            first_bin_[t] = kNone;
+            usable[t] = 0;
+            z_range_[t] = {0.0f, 0.0f};
             if (q[0] >= nv || q[1] >= nv || q[2] >= nv) continue;
             if (!finite(mesh.positions[q[0]]) || !finite(mesh.positions[q[1]]) || !finite(mesh.positions[q[2]])) continue;
             usable[t] = 1;
@@ -258,14 +262,16 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
     constexpr float kFloatInf = std::numeric_limits<float>::infinity();
     const std::array<float, 2> nothing{kFloatInf, -kFloatInf};
     column_z_.assign(columns, std::array<std::array<float, 2>, 2>{nothing, nothing});
-    for (size_t bin = 0; bin < columns; ++bin)
-        for (uint32_t e = start_[bin]; e < start_[bin + 1]; ++e) {
-            const auto& zr = z_range_[entries_[e]];
-            for (int part = e < flat_start_[bin] ? 0 : 1; part < 2; ++part) {
-                column_z_[bin][part][0] = std::min(column_z_[bin][part][0], zr[0]);
-                column_z_[bin][part][1] = std::max(column_z_[bin][part][1], zr[1]);
+    detail::runOnRanges(workers, columns, [&](unsigned, size_t from, size_t to) {
+        for (size_t bin = from; bin < to; ++bin)
+            for (uint32_t e = start_[bin]; e < start_[bin + 1]; ++e) {
+                const auto& zr = z_range_[entries_[e]];
+                for (int part = e < flat_start_[bin] ? 0 : 1; part < 2; ++part) {
+                    column_z_[bin][part][0] = std::min(column_z_[bin][part][0], zr[0]);
+                    column_z_[bin][part][1] = std::max(column_z_[bin][part][1], zr[1]);
+                }
             }
-        }
+    });
     // Blocks of kBlockColumns x kBlockColumns columns keep the range of z of
     // their columns' non-flat triangles: a horizontal ray at a z outside it
     // steps through the block without reading a column (through the air

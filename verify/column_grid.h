@@ -56,6 +56,7 @@
 #include <vector>
 
 #include "gen/geometry/mesh.h"
+#include "gen/util/default_init_allocator.h"
 #include "verify/ray_hit.h"
 
 namespace tsf {
@@ -124,9 +125,9 @@ private:
     double margin_ = 0;            // footprints' margin (mm)
     int32_t nx_ = 0, ny_ = 0;
     size_t listed_ = 0;
-    std::vector<uint32_t> first_bin_;  // per mesh triangle: the first column listing it (row-major), or UINT32_MAX
+    UninitializedVector<uint32_t> first_bin_;  // per mesh triangle: the first column listing it (row-major), or UINT32_MAX
     std::vector<uint32_t> start_;      // per column: where its triangles start in entries_ (nx * ny + 1)
-    std::vector<uint32_t> entries_;    // mesh triangle indices, column by column
+    UninitializedVector<uint32_t> entries_;  // mesh triangle indices, column by column (every one written by the fill)
     std::vector<uint32_t> other_start_;  // per column: where its triangles other than walls start in entries_
     std::vector<uint32_t> flat_start_; // per column: where its flat triangles start in entries_
     // Per column: the z range of its sloped and vertical triangles [0] and of
@@ -140,7 +141,7 @@ private:
     // ray along a column tests only the triangles its z passes there (the
     // grid's answer to a tree's boxes in z: a horizontal ray through a
     // solid crosses many columns of tops and walls it cannot hit).
-    std::vector<std::array<float, 2>> z_range_;
+    UninitializedVector<std::array<float, 2>> z_range_;
     double build_ms_ = 0;
 };
 
