@@ -76,15 +76,21 @@ void BM_VerifyRayTree(benchmark::State& state) {
     label(state, m);
 }
 
+// Arg 1: 0 a grid for any ray, 1 for vertical rays (no walls listed).
+tsf::ColumnGrid::Rays gridRays(const benchmark::State& state) {
+    return state.range(1) != 0 ? tsf::ColumnGrid::Rays::Vertical : tsf::ColumnGrid::Rays::Any;
+}
+
 void BM_VerifyColumnGrid(benchmark::State& state) {
     const Model& m = model(int(state.range(0)));
-    for (auto _ : state) benchmark::DoNotOptimize(std::make_unique<tsf::ColumnGrid>(m.mesh));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(std::make_unique<tsf::ColumnGrid>(m.mesh, tsf::ColumnGrid::kTrianglesPerColumn, gridRays(state)));
     label(state, m);
 }
 
 void BM_VerifyReadback(benchmark::State& state) {
     const Model& m = model(int(state.range(0)));
-    const tsf::ColumnGrid caster(m.mesh);
+    const tsf::ColumnGrid caster(m.mesh, tsf::ColumnGrid::kTrianglesPerColumn, gridRays(state));
     for (auto _ : state) benchmark::DoNotOptimize(tsf::readBack(m.mesh, m.scene, caster, {}));
     label(state, m);
 }
@@ -124,8 +130,8 @@ void BM_VerifyModel(benchmark::State& state) {
 
 BENCHMARK(BM_VerifySolid)->Args({100, 0})->Args({100, 1})->Args({300, 0})->Args({300, 1})->Args({1000, 0})->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyRayTree)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
-BENCHMARK(BM_VerifyColumnGrid)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
-BENCHMARK(BM_VerifyReadback)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
+BENCHMARK(BM_VerifyColumnGrid)->Args({100, 0})->Args({100, 1})->Args({300, 0})->Args({300, 1})->Args({1000, 0})->Args({1000, 1})->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
+BENCHMARK(BM_VerifyReadback)->Args({100, 0})->Args({100, 1})->Args({300, 0})->Args({300, 1})->Args({1000, 0})->Args({1000, 1})->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyPrintability)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyAgreement)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_VerifyModel)->Args({100, 0})->Args({100, 1})->Args({300, 0})->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();

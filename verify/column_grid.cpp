@@ -118,7 +118,7 @@ bool ColumnGrid::span(uint32_t t, int32_t r, int32_t& c0, int32_t& c1) const {
     return true;
 }
 
-ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
+ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column, Rays rays) : rays_(rays) {
     const auto t0 = std::chrono::steady_clock::now();
     positions_ = mesh.positions.data();
     triangles_ = mesh.triangles.data();
@@ -219,6 +219,10 @@ ColumnGrid::ColumnGrid(const Mesh& mesh, double triangles_per_column) {
         for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) {
             if (!usable[t]) continue;
             part_of[t] = z_range_[t][0] == z_range_[t][1] && isFlat(uint32_t(t)) ? 2 : isWall(uint32_t(t)) ? 0 : 1;
+            if (part_of[t] == 0 && rays_ == Rays::Vertical) {
+                usable[t] = 0;  // a wall: no vertical ray meets it
+                continue;
+            }
             std::vector<uint32_t>& count = at[w][part_of[t]];
             forFootprint(uint32_t(t), [&](size_t first, size_t last) {
                 if (first_bin_[t] == kNone) first_bin_[t] = uint32_t(first);
@@ -335,6 +339,7 @@ bool ColumnGrid::firstCommon(uint32_t a, uint32_t b, uint32_t bin) const {
 
 void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint32_t, uint32_t)>& visit,
                                         unsigned workers, bool share_no_vertex) const {
+    if (rays_ == Rays::Vertical) throw std::logic_error("ColumnGrid: a grid for vertical rays lists no walls, so no pairs");
     const size_t columns = start_.size() - 1;
     if (columns == 0 || entries_.empty()) return;
     workers = std::max(1u, std::min(detail::workerCount(workers), unsigned((columns + kColumnsPerTask - 1) / kColumnsPerTask)));
@@ -414,6 +419,8 @@ void ColumnGrid::forEachOverlappingPair(const std::function<void(unsigned, uint3
 
 std::optional<RayHit> ColumnGrid::firstHit(const Vec3& origin, const Vec3& direction, int64_t skip,
                                            double max_distance_mm) const {
+    if (rays_ == Rays::Vertical && (direction.x != 0 || direction.y != 0))
+        throw std::logic_error("ColumnGrid: a grid for vertical rays lists no walls; asked for a ray that is not vertical");
     if (entries_.empty() || !finite(origin) || !finite(direction)) return std::nullopt;
     if (direction.x == 0 && direction.y == 0 && direction.z == 0) return std::nullopt;
     const V3 o{origin.x, origin.y, origin.z}, d{direction.x, direction.y, direction.z};

@@ -66,8 +66,13 @@ public:
     /// `triangles_per_column`: how many triangles a column holds on average
     /// (the grid's size follows from it); fewer means more columns to walk
     /// and list, more means more triangles tested per column.
-    explicit ColumnGrid(const Mesh& mesh, double triangles_per_column = kTrianglesPerColumn);
-    explicit ColumnGrid(Mesh&&, double = kTrianglesPerColumn) = delete;  ///< read in place: the mesh must outlive the grid
+    /// The rays the grid will be asked about. Vertical: it lists no walls
+    /// (two corners over one point, which no vertical ray can hit), a grid
+    /// for reading heights back that is built in less time; it refuses a
+    /// ray that is not vertical and the pairs (std::logic_error).
+    enum class Rays : uint8_t { Any, Vertical };
+    explicit ColumnGrid(const Mesh& mesh, double triangles_per_column = kTrianglesPerColumn, Rays rays = Rays::Any);
+    explicit ColumnGrid(Mesh&&, double = kTrianglesPerColumn, Rays = Rays::Any) = delete;  ///< read in place: the mesh must outlive the grid
 
     /// The nearest hit of the ray origin + s * direction, s >= 0, ignoring
     /// triangle `skip` (-1: none) and anything farther than max_distance_mm;
@@ -87,7 +92,8 @@ public:
     void forEachOverlappingPair(const std::function<void(unsigned worker, uint32_t a, uint32_t b)>& visit,
                                 unsigned workers = 0, bool share_no_vertex = false) const;
 
-    size_t triangleCount() const { return listed_; }   ///< triangles in the grid
+    size_t triangleCount() const { return listed_; }   ///< triangles usable (listed, or walls left out of a Vertical grid)
+    Rays rays() const { return rays_; }
     int32_t columns() const { return nx_; }             ///< along x
     int32_t rows() const { return ny_; }                ///< along y
     size_t entries() const { return entries_.size(); }  ///< (column, triangle) listings
@@ -143,6 +149,7 @@ private:
     // solid crosses many columns of tops and walls it cannot hit).
     UninitializedVector<std::array<float, 2>> z_range_;
     double build_ms_ = 0;
+    Rays rays_ = Rays::Any;
 };
 
 }  // namespace tsf

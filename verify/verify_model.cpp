@@ -82,7 +82,9 @@ VerifyReport verifyModel(const Mesh& mesh, const Scene* scene, const VerifyOptio
     std::unique_ptr<ColumnGrid> caster = std::move(solid.grid);
     append(report, std::move(solid));
     if (!caster && (scene || options.printability)) {
-        caster = std::make_unique<ColumnGrid>(mesh);
+        // Without printability, only the heights read back ask: down and up.
+        caster = std::make_unique<ColumnGrid>(mesh, ColumnGrid::kTrianglesPerColumn,
+                                              options.printability ? ColumnGrid::Rays::Any : ColumnGrid::Rays::Vertical);
         report.stages.push_back({"grid", caster->buildMs()});
     }
 

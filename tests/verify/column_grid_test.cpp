@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
@@ -88,6 +89,45 @@ TEST_P(ColumnGridRays, SameFirstHitsAsTheTree) {
 
 INSTANTIATE_TEST_SUITE_P(FlatAndMirrored, ColumnGridRays, ::testing::Values(Bottom::Flat, Bottom::Mirrored),
                          [](const auto& info) { return info.param == Bottom::Flat ? "Flat" : "Mirrored"; });
+
+// A grid for vertical rays leaves the walls out and answers every vertical
+// ray as the tree does (no vertical ray hits a wall), on one thread and on
+// several; asked for another ray or for the pairs, it refuses.
+TEST(ColumnGrid, AGridForVerticalRaysHitsWhatTheTreeHits) {
+    for (const bool large : {false, true}) {
+        SceneParams p = vtest::smallFieldParams(large ? Bottom::Mirrored : Bottom::Flat, 0.01);
+        p.pitch_mm = 2.0;
+        const int n = large ? 45 : 9;
+        const Scene s = buildScene(
+            test::fieldFromFunction(n, n, [](int c, int r) { return 1.0 + std::sin(c * 0.3) * std::cos(r * 0.2); }), p);
+        const Mesh m = meshScene(s);
+        if (large) ASSERT_GT(m.triangles.size(), 20000u);  // built on the threads
+        const ColumnGrid all(m), vertical(m, ColumnGrid::kTrianglesPerColumn, ColumnGrid::Rays::Vertical);
+        EXPECT_EQ(vertical.rays(), ColumnGrid::Rays::Vertical);
+        EXPECT_LT(vertical.entries(), all.entries() * 3 / 4) << "the walls are listed";
+        const TriangleBvh tree(m);
+        const Bounds b = meshBounds(m);
+        size_t hits = 0;
+        for (size_t k = 0; k < s.keptCount(); ++k) {
+            std::vector<LatticePoint> pts{hexCentre(s.grid, s.col[k], s.row[k])};
+            for (int c = 0; c < kHexCorners; ++c) pts.push_back(hexCorner(s.grid, s.col[k], s.row[k], c));
+            for (const LatticePoint& lp : pts) {
+                const Vec3 q = s.point(lp, 0);
+                expectSameHit(vertical, tree, {q.x, q.y, b.max.z + 5}, {0, 0, -1}, -1, INFINITY, "down");
+                expectSameHit(vertical, tree, {q.x, q.y, b.min.z - 5}, {0, 0, 1}, -1, INFINITY, "up");
+                // From inside the solid, halfway up its pillar: the top above, the floor below.
+                const double mid = 0.5 * (s.zMm(s.top[k]) + s.zMm(s.bottom[k]));
+                expectSameHit(vertical, tree, {q.x, q.y, mid}, {0, 0, 1}, -1, INFINITY, "up from inside");
+                expectSameHit(vertical, tree, {q.x, q.y, mid}, {0, 0, -1}, -1, INFINITY, "down from inside");
+                hits += bool(vertical.firstHit({q.x, q.y, b.max.z + 5}, {0, 0, -1}));
+            }
+        }
+        EXPECT_EQ(hits, 7 * s.keptCount());
+        EXPECT_THROW((void)vertical.firstHit({0, 0, 1}, {1, 0, 0}), std::logic_error);
+        EXPECT_THROW((void)vertical.firstHit({0, 0, 1}, {0, 1e-9, -1}), std::logic_error);
+        EXPECT_THROW(vertical.forEachOverlappingPair([](unsigned, uint32_t, uint32_t) {}), std::logic_error);
+    }
+}
 
 TEST(ColumnGrid, SkipMaxDistanceAndDegenerateInputs) {
     const Mesh m = vtest::box({0, 0, 0}, {1, 1, 1});
