@@ -235,33 +235,44 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
     detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
         for (size_t t = nt * w / workers; t < nt * (w + 1) / workers; ++t) set_of[t] = faces.find(uint32_t(t));
     });
+    std::vector<size_t> sizes;  // triangles per component, so each list is sized once
     for (size_t t = 0; t < nt; ++t) {
         if (!usable[t]) continue;
         const uint32_t root = set_of[t];
         if (root == t) {
-            set_of[t] = uint32_t(topo.components.size());
-            topo.components.emplace_back();
+            set_of[t] = uint32_t(sizes.size());
+            sizes.push_back(0);
         } else {
             set_of[t] = set_of[root];
         }
-        topo.components[set_of[t]].triangles.push_back(uint32_t(t));
+        ++sizes[set_of[t]];
     }
+    topo.components.resize(sizes.size());
+    for (size_t c = 0; c < sizes.size(); ++c) topo.components[c].triangles.reserve(sizes[c]);
+    for (size_t t = 0; t < nt; ++t)
+        if (usable[t]) topo.components[set_of[t]].triangles.push_back(uint32_t(t));
     set_of = {};
-    for (MeshComponent& c : topo.components) {
-        const double inf = std::numeric_limits<double>::infinity();
-        c.bounds = {{inf, inf, inf}, {-inf, -inf, -inf}};
-        const Vec3 o = mesh.positions[mesh.triangles[c.triangles.front()][0]];
-        double six_v = 0.0;
-        for (uint32_t t : c.triangles) {
-            const auto& tri = mesh.triangles[t];
-            for (uint32_t v : tri) {
-                const Vec3& p = mesh.positions[v];
-                extendBounds(c.bounds, p);
+    // Each component's volume (summed in triangle order, the same bits on
+    // any machine) on one thread while its box is taken on another.
+    const double inf = std::numeric_limits<double>::infinity();
+    detail::runOnWorkers(std::min(workers, 2u), [&](unsigned w, const std::atomic<bool>&) {
+        for (MeshComponent& c : topo.components) {
+            if (w == 1 || workers == 1) {
+                c.bounds = {{inf, inf, inf}, {-inf, -inf, -inf}};
+                for (uint32_t t : c.triangles)
+                    for (uint32_t v : mesh.triangles[t]) extendBounds(c.bounds, mesh.positions[v]);
             }
-            six_v += signedTetra6(o, mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]);
+            if (w == 0) {
+                const Vec3 o = mesh.positions[mesh.triangles[c.triangles.front()][0]];
+                double six_v = 0.0;
+                for (uint32_t t : c.triangles) {
+                    const auto& tri = mesh.triangles[t];
+                    six_v += signedTetra6(o, mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]);
+                }
+                c.signed_volume_mm3 = six_v / 6.0;
+            }
         }
-        c.signed_volume_mm3 = six_v / 6.0;
-    }
+    });
     std::stable_sort(topo.components.begin(), topo.components.end(),
                      [](const MeshComponent& a, const MeshComponent& b) { return a.triangles.size() > b.triangles.size(); });
 
@@ -287,15 +298,24 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
             std::memcpy(&u, &d, sizeof u);
             return u;
         };
+        auto slotOf = [&](const Vec3& p) {
+            uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull;
+            h = (h ^ (h >> 29) ^ bits(p.y)) * 0xBF58476D1CE4E5B9ull;
+            h = (h ^ (h >> 32) ^ bits(p.z)) * 0x94D049BB133111EBull;
+            h ^= h >> 31;
+            return size_t(h & (cap - 1));
+        };
+        // A slot is a cache miss (the table is far larger than the cache):
+        // each vertex's slot is asked for kAhead vertices before it is used.
+        constexpr size_t kAhead = 16;
         detail::runOnWorkers(workers, [&](unsigned w, const std::atomic<bool>&) {
-            for (size_t v = nv * w / workers; v < nv * (w + 1) / workers; ++v) {
+            const size_t end = nv * (w + 1) / workers;
+            for (size_t v = nv * w / workers; v < end; ++v) {
+                if (v + kAhead < end && finite(mesh.positions[v + kAhead]))
+                    __builtin_prefetch(&table[slotOf(mesh.positions[v + kAhead])]);
                 const Vec3& p = mesh.positions[v];
                 if (!finite(p)) continue;
-                uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull;
-                h = (h ^ (h >> 29) ^ bits(p.y)) * 0xBF58476D1CE4E5B9ull;
-                h = (h ^ (h >> 32) ^ bits(p.z)) * 0x94D049BB133111EBull;
-                h ^= h >> 31;
-                for (size_t slot = h & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+                for (size_t slot = slotOf(p);; slot = (slot + 1) & (cap - 1)) {
                     uint32_t held = kEmpty;
                     if (table[slot].compare_exchange_strong(held, uint32_t(v), std::memory_order_relaxed)) break;
                     if (mesh.positions[held] == p) {
