@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/gen_options.h"
 #include "app/key_stamp.h"
+#include "app/printer_fit.h"
 #include "gen/util/error.h"
 #include "gen/mesh_io/mesh_reader.h"
 #include "gen/mesh_io/mesh_writer.h"
@@ -52,6 +53,8 @@ std::vector<std::string> readNotes(const MeshReadReport& r, const std::string& p
     return notes;
 }
 
+bool given(const CLI::App* cmd, const char* option) { return cmd->get_option(option)->count() > 0; }
+
 void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
     // Model options only make sense with a field to rebuild the Scene from.
     if (o.against.empty()) {
@@ -89,6 +92,19 @@ void runVerify(CLI::App* cmd, const VerifyCommandOptions& o) {
         GenOptions g = o.gen;
         g.input = o.against;
         refuseBandSeries(g, "verify --against");
+        // --layer, --nozzle and --bed shape the model in tsf gen (heights on
+        // whole layers, the fit into the bed, the steepest tilt): the same
+        // options shape the Scene it is checked against.
+        PrinterSpec printer;
+        if (given(cmd, "--layer")) printer.layer_mm = o.layer_mm;
+        if (given(cmd, "--nozzle")) printer.nozzle_mm = o.nozzle_mm;
+        if (given(cmd, "--bed")) printer.bed = o.bed;
+        GivenOptions model_given;
+        model_given.width = given(cmd, "--width");
+        model_given.depth = given(cmd, "--depth");
+        model_given.snap = given(cmd, "--snap");
+        model_given.max_slope = given(cmd, "--max-slope");
+        (void)applyPrinterFit(printer, model_given, g);
         // As tsf gen made it: an STL or 3MF holds a z grid float32 resolves.
         const std::string ext = lowerCaseExtension(o.model);
         g.scene.stored_as_float32 = ext == ".stl" || ext == ".3mf";
@@ -181,7 +197,8 @@ void addVerifyCommand(CLI::App& app) {
     auto* what = "What to check against";
     CLI::Option* against = cmd->add_option("--against", opts->against,
                                            "Field file the model was made from; give the same model options as to "
-                                           "tsf gen (listed below)")->group(what);
+                                           "tsf gen (listed below) and its --layer, --nozzle and --bed (here "
+                                           "WIDTHxDEPTHxHEIGHT), which shape the model as they do in tsf gen")->group(what);
     CLI::Option* scene = cmd->add_option("--scene", opts->scene, "Scene sidecar written by tsf gen (MODEL.scene.json)")
                              ->group(what);
     against->excludes(scene);

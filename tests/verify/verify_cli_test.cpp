@@ -56,6 +56,28 @@ TEST(VerifyCli, GeneratedModelPassesAsFileAgainstFieldAndSidecar) {
     }
 }
 
+// --layer, --nozzle and --bed shape the model in tsf gen (heights snapped
+// to whole layers, the fit into the bed, the steepest tilt): given to
+// verify --against as to gen, they shape the Scene it checks against.
+TEST(VerifyCli, PrinterOptionsShapeTheSceneAgainstAFieldAsInGen) {
+    const auto dir = vtest::scratchDir("cli_printer_against");
+    vtest::writeText(dir / "field.csv", kFieldCsv);
+    const std::string field = (dir / "field.csv").string(), model = (dir / "model.stl").string();
+    const auto gen = runTsf("gen " + field + " --height 12 --bed 120x120 --nozzle 0.6 --layer 0.3 --tilt gradient -o " + model, dir);
+    ASSERT_EQ(gen.exit_code, 0) << gen.out << gen.err;
+    const auto same = runTsf("verify " + model + " --against " + field +
+                                 " --height 12 --bed 120x120x100 --nozzle 0.6 --layer 0.3 --tilt gradient",
+                             dir);
+    EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
+    EXPECT_NE(same.out.find("result: PASS"), std::string::npos) << same.out;
+    // Without the layer the heights are not on whole layers: the model is
+    // not the one these options make.
+    const auto other = runTsf("verify " + model + " --against " + field +
+                                  " --height 12 --bed 120x120x100 --nozzle 0.6 --tilt gradient",
+                              dir);
+    EXPECT_EQ(other.exit_code, 1) << other.out << other.err;
+}
+
 TEST(VerifyCli, SidecarAndJsonFromALibraryBuiltModel) {
     const auto dir = vtest::scratchDir("cli_sidecar");
     const vtest::Model m = vtest::smallModel(Bottom::Mirrored);
