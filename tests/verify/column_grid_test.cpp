@@ -49,10 +49,7 @@ TEST_P(ColumnGridRays, SameFirstHitsAsTheTree) {
         // diagonals of the tops, along the walls' edges.
         size_t hits = 0;
         for (size_t k = 0; k < s.keptCount(); ++k) {
-            std::vector<LatticePoint> pts{hexCentre(s.grid, s.col[k], s.row[k])};
-            for (int c = 0; c < kHexCorners; ++c) pts.push_back(hexCorner(s.grid, s.col[k], s.row[k], c));
-            for (const LatticePoint& lp : pts) {
-                const Vec3 p = s.point(lp, 0);
+            for (const Vec3& p : vtest::cellCentreAndCorners(s, k)) {
                 expectSameHit(grid, tree, {p.x, p.y, b.max.z + 5}, {0, 0, -1}, -1, INFINITY, "down");
                 expectSameHit(grid, tree, {p.x, p.y, b.min.z - 5}, {0, 0, 1}, -1, INFINITY, "up");
                 hits += bool(grid.firstHit({p.x, p.y, b.max.z + 5}, {0, 0, -1}));
@@ -109,10 +106,7 @@ TEST(ColumnGrid, AGridForVerticalRaysHitsWhatTheTreeHits) {
         const Bounds b = meshBounds(m);
         size_t hits = 0;
         for (size_t k = 0; k < s.keptCount(); ++k) {
-            std::vector<LatticePoint> pts{hexCentre(s.grid, s.col[k], s.row[k])};
-            for (int c = 0; c < kHexCorners; ++c) pts.push_back(hexCorner(s.grid, s.col[k], s.row[k], c));
-            for (const LatticePoint& lp : pts) {
-                const Vec3 q = s.point(lp, 0);
+            for (const Vec3& q : vtest::cellCentreAndCorners(s, k)) {
                 expectSameHit(vertical, tree, {q.x, q.y, b.max.z + 5}, {0, 0, -1}, -1, INFINITY, "down");
                 expectSameHit(vertical, tree, {q.x, q.y, b.min.z - 5}, {0, 0, 1}, -1, INFINITY, "up");
                 // From inside the solid, halfway up its pillar: the top above, the floor below.

@@ -26,15 +26,13 @@ TEST(TriangleBvh, VerticalRaysThroughEveryLatticePointHitTheTop) {
     const double above = 100;
     size_t rays = 0;
     for (size_t k = 0; k < s.keptCount(); ++k) {
-        std::vector<LatticePoint> pts{hexCentre(s.grid, s.col[k], s.row[k])};
-        for (int c = 0; c < kHexCorners; ++c) pts.push_back(hexCorner(s.grid, s.col[k], s.row[k], c));
-        for (const LatticePoint& lp : pts) {
-            const Vec3 p = s.point(lp, 0);
+        const std::vector<Vec3> pts = vtest::cellCentreAndCorners(s, k);
+        for (const Vec3& p : pts) {
             const auto down = caster.firstHit({p.x, p.y, above}, {0, 0, -1});
             const auto up = caster.firstHit({p.x, p.y, -above}, {0, 0, 1});
             ASSERT_TRUE(down && up) << "ray at (" << p.x << ", " << p.y << ") missed";
             ++rays;
-            if (lp == pts[0]) {
+            if (&p == &pts[0]) {  // the centre
                 EXPECT_DOUBLE_EQ(down->point_mm.z, s.zMm(s.top[k]));
                 EXPECT_DOUBLE_EQ(up->point_mm.z, s.zMm(s.bottom[k]));
                 EXPECT_DOUBLE_EQ(down->distance_mm, above - s.zMm(s.top[k]));

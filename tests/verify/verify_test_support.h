@@ -112,6 +112,14 @@ inline Vec3 cellCentre(const Scene& s, size_t k, int64_t z_units) {
     return s.point(hexCentre(s.grid, s.col[k], s.row[k]), z_units);
 }
 
+/// Kept cell k's centre and its six corners at z = 0 (mm): where vertical
+/// rays meet a top's diagonals and the walls' edges.
+inline std::vector<Vec3> cellCentreAndCorners(const Scene& s, size_t k) {
+    std::vector<Vec3> out{s.point(hexCentre(s.grid, s.col[k], s.row[k]), 0)};
+    for (int c = 0; c < kHexCorners; ++c) out.push_back(s.point(hexCorner(s.grid, s.col[k], s.row[k], c), 0));
+    return out;
+}
+
 /// The check with this id; fails the test if absent.
 inline const Check& check(const VerifyReport& r, const std::string& id) {
     const Check* c = r.find(id);
