@@ -5,10 +5,12 @@
 #include <bit>
 #include <cctype>
 #include <cmath>
+#include <atomic>
 #include <cstdint>
 #include <condition_variable>
 #include <limits>
 #include <mutex>
+#include <system_error>
 #include <ostream>
 #include <thread>
 #include <vector>
@@ -17,7 +19,6 @@
 #include "gen/util/atomic_file.h"
 #include "gen/mesh_io/mesh_write_checks.h"
 #include "gen/mesh_io/number_text.h"
-#include "gen/util/workers.h"
 
 namespace tsf {
 
@@ -115,15 +116,9 @@ void writeStlBinary(const Mesh& mesh, std::ostream& out, const std::string& titl
     const size_t total = mesh.triangles.size();
     const size_t blocks = (total + kBinaryFacetsPerBlock - 1) / kBinaryFacetsPerBlock;
     const auto facetsIn = [&](size_t block) { return std::min(kBinaryFacetsPerBlock, total - block * kBinaryFacetsPerBlock); };
-    const unsigned converters = blocks <= 2 ? 0u : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
-    if (converters == 0) {
-        std::vector<unsigned char> chunk(std::min(total, kBinaryFacetsPerBlock) * kFacetBytes);
-        for (size_t b = 0; b < blocks; ++b) {
-            convert(b * kBinaryFacetsPerBlock, facetsIn(b), chunk.data());
-            out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(facetsIn(b) * kFacetBytes));
-        }
-        return;
-    }
+    const auto writeBlock = [&](size_t block, const std::vector<unsigned char>& bytes) {
+        out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(facetsIn(block) * kFacetBytes));
+    };
     // The blocks are converted on threads of their own, each taking the next
     // block as it finishes one, while this thread writes the converted blocks
     // in order: the conversion (a square root and three divisions a facet)
@@ -131,46 +126,74 @@ void writeStlBinary(const Mesh& mesh, std::ostream& out, const std::string& titl
     // it. A block goes into slot block % slots, free once the block `slots`
     // before it is written. Each facet's bytes depend on that facet alone, so
     // the file is the same whatever thread converted it.
-    const size_t slots = 2 * size_t(converters);
-    std::vector<std::vector<unsigned char>> slot(slots, std::vector<unsigned char>(kBinaryFacetsPerBlock * kFacetBytes));
-    std::vector<size_t> converted(slots, SIZE_MAX);  // the block each slot holds, converted
-    size_t written = 0;                               // blocks written
-    bool failed = false;                              // the stream failed: the rest is not converted
+    const unsigned wanted = blocks <= 2 ? 0u : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+    const size_t slots = 2 * size_t(std::max(wanted, 1u));
+    std::vector<std::vector<unsigned char>> slot(std::min(slots, std::max<size_t>(blocks, 1)),
+                                                 std::vector<unsigned char>(std::min(total, kBinaryFacetsPerBlock) * kFacetBytes));
+    std::vector<size_t> converted(slot.size(), SIZE_MAX);  // the block each slot holds, converted
+    size_t written = 0;                                    // blocks written
+    bool done = false;  // the writer is done (the stream failed, or it left): nothing more to convert
     std::atomic<size_t> next{0};
     std::mutex m;
     std::condition_variable changed;
-    detail::runOnWorkers(converters + 1, [&](unsigned worker, const std::atomic<bool>&) {
-        if (worker > 0) {
-            for (size_t b; (b = next.fetch_add(1)) < blocks;) {
-                {
-                    std::unique_lock lock(m);
-                    changed.wait(lock, [&] { return failed || b < written + slots; });
-                    if (failed) return;
-                }
-                convert(b * kBinaryFacetsPerBlock, facetsIn(b), slot[b % slots].data());
-                {
-                    const std::lock_guard lock(m);
-                    converted[b % slots] = b;
-                }
-                changed.notify_all();
-            }
-            return;
-        }
-        for (size_t b = 0; b < blocks; ++b) {
+    auto convertBlocks = [&] {
+        for (size_t b; (b = next.fetch_add(1)) < blocks;) {
             {
                 std::unique_lock lock(m);
-                changed.wait(lock, [&] { return converted[b % slots] == b; });
+                changed.wait(lock, [&] { return done || b < written + slot.size(); });
+                if (done) return;
             }
-            out.write(reinterpret_cast<const char*>(slot[b % slots].data()), static_cast<std::streamsize>(facetsIn(b) * kFacetBytes));
+            convert(b * kBinaryFacetsPerBlock, facetsIn(b), slot[b % slot.size()].data());
             {
                 const std::lock_guard lock(m);
-                written = b + 1;
-                failed = !out;
+                converted[b % slot.size()] = b;
             }
             changed.notify_all();
-            if (failed) return;
         }
-    });
+    };
+    std::vector<std::thread> converters;
+    converters.reserve(wanted);
+    try {
+        while (converters.size() < wanted) converters.emplace_back(convertBlocks);
+    } catch (const std::system_error&) {
+        // No more threads to be had: the ones started convert every block
+        // (none: this thread converts each before writing it).
+    }
+    // However the writing ends, the converters are told and joined.
+    struct Joiner {
+        std::vector<std::thread>& threads;
+        std::mutex& m;
+        std::condition_variable& changed;
+        bool& done;
+        ~Joiner() {
+            {
+                const std::lock_guard lock(m);
+                done = true;
+            }
+            changed.notify_all();
+            for (std::thread& t : threads) t.join();
+        }
+    } joiner{converters, m, changed, done};
+    if (converters.empty()) {
+        for (size_t b = 0; b < blocks && out; ++b) {
+            convert(b * kBinaryFacetsPerBlock, facetsIn(b), slot[0].data());
+            writeBlock(b, slot[0]);
+        }
+        return;
+    }
+    for (size_t b = 0; b < blocks; ++b) {
+        {
+            std::unique_lock lock(m);
+            changed.wait(lock, [&] { return converted[b % slot.size()] == b; });
+        }
+        writeBlock(b, slot[b % slot.size()]);
+        if (!out) return;  // the joiner stops the converters
+        {
+            const std::lock_guard lock(m);
+            written = b + 1;
+        }
+        changed.notify_all();
+    }
 }
 
 void writeStlAscii(const Mesh& mesh, std::ostream& out, const std::string& title) {

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -23,7 +24,8 @@ inline unsigned workerCount(unsigned workers) {
 /// calling thread, the others on threads of their own, and joins them. The
 /// first exception fn throws is rethrown here once every worker is done;
 /// `stop` turns true as soon as one is thrown, so that a long loop can end
-/// early.
+/// early. When no more threads can be started, the workers left run on the
+/// calling thread after worker 0: a worker must never wait for another.
 template <class Fn>
 void runOnWorkers(unsigned workers, Fn&& fn) {
     std::atomic<bool> stop{false};
@@ -36,8 +38,16 @@ void runOnWorkers(unsigned workers, Fn&& fn) {
         }
     };
     std::vector<std::thread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(guarded, w);
+    pool.reserve(workers);
+    unsigned started = 1;
+    try {
+        for (; started < workers; ++started) pool.emplace_back(guarded, started);
+    } catch (const std::system_error&) {
+        // No thread to be had (a process or system limit): the workers not
+        // started run here, after worker 0, each once as on its own thread.
+    }
     guarded(0);
+    for (unsigned w = started; w < workers; ++w) guarded(w);
     for (std::thread& t : pool) t.join();
     if (error) std::rethrow_exception(error);
 }
