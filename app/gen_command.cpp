@@ -5,6 +5,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <system_error>
 
 #include "app/commands.h"
 #include "app/gen_options.h"
@@ -78,7 +79,13 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     // thread of their own while the model is converted, written and synced
     // (a million cells: 0.15 s of formatting off the writing path).
     std::future<std::string> sidecar_cells;
-    if (!o.no_sidecar) sidecar_cells = std::async(std::launch::async, [&scene] { return sceneCellsJson(scene); });
+    if (!o.no_sidecar) {
+        try {
+            sidecar_cells = std::async(std::launch::async, [&scene] { return sceneCellsJson(scene); });
+        } catch (const std::system_error&) {
+            // No thread to be had: they are formatted as the sidecar is written.
+        }
+    }
     writeModelFiles(o, made, tiles, summary);
     if (!o.preview.empty()) {
         timer.begin("drawing preview");
@@ -96,8 +103,9 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
         if (!model_stamp) model_stamp = stampFile(written->currentPath(o.output));
     }
     if (!o.no_sidecar) {
-        const std::string cells = sidecar_cells.get();
-        writeSidecarFile(o, scene, model_stamp, &cells, summary);
+        const bool formatted = sidecar_cells.valid();
+        const std::string cells = formatted ? sidecar_cells.get() : std::string();
+        writeSidecarFile(o, scene, model_stamp, formatted ? &cells : nullptr, summary);
     }
     if (!o.no_key && (!o.output.empty() || !o.scad.empty())) {
         timer.begin("writing key");
