@@ -265,16 +265,20 @@ OutputSet::~OutputSet() {
     }
 }
 
-std::string OutputSet::currentPath(const std::string& target) const {
+const OutputSet::Pending* OutputSet::latest(const std::string& target) const {
     for (auto it = pending_.rbegin(); it != pending_.rend(); ++it)
-        if (it->target_path == target) return it->temp_path;
-    return target;
+        if (it->target_path == target) return &*it;
+    return nullptr;
+}
+
+std::string OutputSet::currentPath(const std::string& target) const {
+    const Pending* p = latest(target);
+    return p ? p->temp_path : target;
 }
 
 std::optional<FileStamp> OutputSet::stampOf(const std::string& target) const {
-    for (auto it = pending_.rbegin(); it != pending_.rend(); ++it)
-        if (it->target_path == target) return it->stamp;
-    return std::nullopt;
+    const Pending* p = latest(target);
+    return p ? p->stamp : std::nullopt;
 }
 
 void OutputSet::commit() {

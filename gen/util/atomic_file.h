@@ -110,6 +110,8 @@ public:
 
 private:
     friend class AtomicFile;
+    /// The last file handed to the set for `target`, if any.
+    const Pending* latest(const std::string& target) const;
     std::vector<Pending> pending_;
     bool committed_ = false;
 };
