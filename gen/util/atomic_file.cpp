@@ -238,6 +238,17 @@ void AtomicFile::commit(std::optional<FileStamp> stamp) {
     ::close(fd);
     if (g_output_set != nullptr) {
         // Renamed with the rest of the set; until then the set owns the file.
+        // A target written again in the same run (a model made again) keeps
+        // only its newest bytes: the earlier file is removed, so the commit
+        // never shows the target's superseded version, not even between two
+        // renames.
+        for (auto it = g_output_set->pending_.begin(); it != g_output_set->pending_.end(); ++it)
+            if (it->target_path == target_path_) {
+                ::unlink(it->temp_path.c_str());
+                unregisterTempFile(it->cleanup_slot);
+                g_output_set->pending_.erase(it);
+                break;
+            }
         g_output_set->pending_.push_back({temp_path_, target_path_, cleanup_slot_, stamp});
         cleanup_slot_ = -1;
         committed_ = true;

@@ -81,8 +81,10 @@ private:
 /// them it finds none. SIGKILL or a power cut during the renames can still
 /// leave a mix; what tsf verify checks (the sidecar's model stamp) names it.
 /// If the set is destroyed without commit() (an error while writing), its
-/// temporary files are removed and no target changes. One set at a time, on
-/// the thread that writes.
+/// temporary files are removed and no target changes. A target handed to
+/// the set twice keeps its newer file (the older is removed at once). One
+/// set at a time; files are handed to it by one thread at a time (a writer
+/// thread may, while the thread that owns the set waits for it).
 class OutputSet {
 public:
     OutputSet();
@@ -110,7 +112,7 @@ public:
 
 private:
     friend class AtomicFile;
-    /// The last file handed to the set for `target`, if any.
+    /// The file handed to the set for `target`, if any.
     const Pending* latest(const std::string& target) const;
     std::vector<Pending> pending_;
     bool committed_ = false;

@@ -80,6 +80,43 @@ TEST(OutputSet, AnEmptyFilesStampIsTheHashOfNothing) {
     set.commit();
 }
 
+// A model made again in the same run is written again: the set keeps the
+// newer file only, so its commit never renames the superseded one over the
+// target, and no temporary file is left either way.
+TEST(OutputSet, ATargetWrittenTwiceKeepsOnlyItsNewerFile) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "model.stl").string(), other = (dir / "key.txt").string();
+    writeText(target, "old");
+    {
+        OutputSet set;
+        writeFileAtomically(target, [](std::ostream& out) { out << "first"; });
+        const std::string first_temp = set.currentPath(target);
+        writeFileAtomically(other, [](std::ostream& out) { out << "key"; });
+        writeFileAtomically(target, [](std::ostream& out) { out << "second"; });
+        EXPECT_NE(set.currentPath(target), first_temp);
+        EXPECT_EQ(readText(set.currentPath(target)), "second");
+        EXPECT_EQ(set.stampOf(target)->bytes, 6);
+        EXPECT_THAT(listFiles(dir), UnorderedElementsAre("model.stl", testing::StartsWith(".key.txt.tmp-"),
+                                                         testing::StartsWith(".model.stl.tmp-")));
+        EXPECT_EQ(readText(target), "old");
+        set.commit();
+    }
+    EXPECT_EQ(readText(target), "second");
+    EXPECT_EQ(readText(other), "key");
+    EXPECT_THAT(listFiles(dir), UnorderedElementsAre("model.stl", "key.txt"));
+}
+
+TEST(OutputSet, AnUncommittedSetWrittenTwiceLeavesNothing) {
+    const auto dir = scratchDir();
+    const std::string target = (dir / "model.stl").string();
+    {
+        OutputSet set;
+        writeFileAtomically(target, [](std::ostream& out) { out << "first"; });
+        writeFileAtomically(target, [](std::ostream& out) { out << "second"; });
+    }
+    EXPECT_THAT(listFiles(dir), IsEmpty());
+}
+
 TEST(AtomicFile, TempFileIsInTheTargetFolderAndHidden) {
     const auto dir = scratchDir();
     AtomicFile file((dir / "model.stl").string());
