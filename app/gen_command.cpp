@@ -64,16 +64,18 @@ void runGen(GenCommandOptions o, nlohmann::json* json_out = nullptr) {
     if (const std::string note = cellNozzleNote(scene.pitch_mm, o.printer); !note.empty())
         summary.printer_notes.push_back(note);
 
+    // Every file of this run is written to a temporary file first and all
+    // are renamed together at the end (a signal then leaves the old files
+    // or the new ones, never a mix). The model file may be written while
+    // it is verified (ModelRequest::write_ahead): a refusal then leaves
+    // nothing behind either.
+    std::optional<OutputSet> written(std::in_place);
     const ModelRequest rq = modelRequest(o, scene);
     VerifiedModel made = makeModelOrRefuse(scene, rq, timer);
     const LegibilityOutcome legibility = passLegibility(o, field, scene, made, rq, timer, summary);
     const std::optional<VerifiedTiles> tiles = tilesForBed(o, field, scene, rq, timer, summary);
     summarizeVerdict(made, rq, scene, o.keep_unprintable, summary);
 
-    // Every file of this run is written to a temporary file first and all
-    // are renamed together at the end (a signal then leaves the old files
-    // or the new ones, never a mix).
-    std::optional<OutputSet> written(std::in_place);
     if (!o.output.empty()) timer.begin("writing");
     // The sidecar's cells do not depend on the model file: formatted on a
     // thread of their own while the model is converted, written and synced

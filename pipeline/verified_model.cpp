@@ -1,5 +1,8 @@
 #include "pipeline/verified_model.h"
 
+#include <future>
+#include <system_error>
+
 #include "gen/mesh/direct_mesher.h"
 #include "gen/mesh/halves_mesh.h"
 #include "gen/mesh/scene_parts.h"
@@ -96,8 +99,27 @@ VerifiedModel makeVerifiedModel(const Scene& scene, const ModelRequest& rq,
         // 1000 x 1000).
         const bool whole_written = rq.stored_as_float32 && !rq.parts && !scene.halves;
         if (whole_written) m.mesh = float32Mesh(m.mesh);
-        m.report = verifyModel(m.mesh, &scene, vo);
+        // The checks and the writing only read the mesh: they share it.
+        std::future<void> ahead;
+        if (rq.write_ahead && !rq.parts && !scene.halves) {
+            try {
+                ahead = std::async(std::launch::async, [&] { rq.write_ahead(m.mesh); });
+            } catch (const std::system_error&) {
+                // No thread to be had: the front end writes after the checks.
+            }
+        }
+        try {
+            m.report = verifyModel(m.mesh, &scene, vo);
+        } catch (...) {
+            if (ahead.valid()) ahead.wait();  // the mesh outlives the writer's reading of it
+            throw;
+        }
+        if (ahead.valid()) ahead.wait();
         if (!m.report->passed()) throw ModelVerificationFailed("generated model", formatReport(*m.report));
+        if (ahead.valid()) {
+            ahead.get();
+            m.written_ahead = true;
+        }
     }
     if (rq.parts) {
         say(progress, "meshing parts");

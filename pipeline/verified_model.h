@@ -44,6 +44,17 @@ struct ModelRequest {
     /// end's own early refusal (a model larger than the printer's bed) ends
     /// the call there by throwing.
     std::function<void(const Mesh&)> on_mesh;
+    /// When set, the one solid is handed to it exactly as it is checked (as
+    /// the file holds it) while it is verified, on a thread of its own: the
+    /// file is written and synced during the checks instead of after them.
+    /// Only where that solid is what a front end writes and checks run (no
+    /// parts, no halves, verify on); not called when no thread can be had
+    /// (VerifiedModel::written_ahead then stays false). What it writes must
+    /// be discardable until the model has passed: tsf gen writes through an
+    /// OutputSet that is committed only after every check. A failed check is
+    /// thrown first, once the write has ended; an exception from the write
+    /// is rethrown after the checks pass.
+    std::function<void(const Mesh&)> write_ahead;
 };
 
 /// The support-free halves of a Scene with halves, as they print.
@@ -57,6 +68,7 @@ struct VerifiedModel {
     Mesh mesh;                          ///< the one solid (meshScene)
     std::optional<VerifyReport> report; ///< its self-check, against the Scene (when verified)
     bool quick = false;                 ///< the self-check left out self-intersections and printability for size
+    bool written_ahead = false;         ///< ModelRequest::write_ahead was handed the mesh and returned
     std::vector<MeshPart> parts;        ///< with ModelRequest::parts
     std::optional<PartsVerifyReport> parts_report;
     std::optional<VerifiedHalves> halves;  ///< when the Scene has halves

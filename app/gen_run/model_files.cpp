@@ -25,15 +25,27 @@ void writeParts(const GenCommandOptions& o, const std::vector<MeshPart>& parts, 
 
 }  // namespace
 
-void writeModelFiles(const GenCommandOptions& o, const VerifiedModel& made, const std::optional<VerifiedTiles>& tiles,
-                     GenSummary& summary) {
-    if (o.output.empty()) return;
+MeshWriteOptions modelWriteOptions(const GenCommandOptions& o) {
     MeshWriteOptions wo;
     wo.ascii_stl = o.ascii;
     // The input's file name only: a shared model must not carry the folders
     // of the machine it was made on.
     wo.title = "tsf " TSF_VERSION " " + std::filesystem::path(o.gen.input).filename().string();
-    if (made.halves) {
+    return wo;
+}
+
+bool writesOneSolid(const GenCommandOptions& o, const Scene& scene) {
+    // With --tile the model may be cut after it is made: written after.
+    return !o.output.empty() && !o.parts && !o.printer.tile && !scene.halves;
+}
+
+void writeModelFiles(const GenCommandOptions& o, const VerifiedModel& made, const std::optional<VerifiedTiles>& tiles,
+                     GenSummary& summary) {
+    if (o.output.empty()) return;
+    const MeshWriteOptions wo = modelWriteOptions(o);
+    if (made.written_ahead && !made.halves && !tiles && !o.parts) {
+        summary.outputs.push_back({o.output, "model"});  // written while it was verified
+    } else if (made.halves) {
         writeHalves(*made.halves, o.output, wo, summary);
     } else if (tiles) {
         writeTiles(*tiles, o.output, wo, summary);

@@ -12,7 +12,10 @@ namespace tsf::cli {
 
 /// The request for the run's model. Its on_mesh reads o and scene when
 /// called: both must outlive it (they may change before: a Scene built
-/// again by the legibility pass is fitted as the first was).
+/// again by the legibility pass is fitted as the first was). When the run
+/// writes one solid and verifies it, its write_ahead writes o.output while
+/// the model is verified: an OutputSet must then be alive, to discard the
+/// file if a check fails.
 ModelRequest modelRequest(const GenCommandOptions& o, const Scene& scene);
 
 /// A model (or piece) that fails its own checks is a bug in tsf: never hand

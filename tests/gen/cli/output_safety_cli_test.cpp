@@ -124,6 +124,29 @@ TEST(OutputSafety, AFileSizeLimitFailsCleanly) {
     EXPECT_EQ(temporaryFiles(dir), 0);
 }
 
+// The model file is written while the model is verified: a model refused
+// after that (walls thinner than the nozzle, found by the checks) leaves the
+// file of an earlier run as it was and no temporary file, as when nothing
+// had been written; the same model with --keep-unprintable is written whole.
+TEST(OutputSafety, AModelRefusedByItsChecksLeavesTheOldFileAlone) {
+    const auto dir = scratchDir();
+    writeText(dir / "m.stl", "an earlier model");
+    const std::string gen = "gen " + std::string(TSF_SOURCE_DIR) + "/examples/volcano.csv --cell 2 --nozzle 3 -o " +
+                            (dir / "m.stl").string();
+    const auto r = runTsf(gen);
+    EXPECT_EQ(r.exit_code, kExitBadInput) << r.output;
+    EXPECT_NE(r.output.find("walls thinner than the 3 mm nozzle"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("nothing was written"), std::string::npos) << r.output;
+    EXPECT_EQ(readText(dir / "m.stl"), "an earlier model");
+    EXPECT_FALSE(std::filesystem::exists(dir / "m.stl.scene.json"));
+    EXPECT_EQ(temporaryFiles(dir), 0);
+    const auto kept = runTsf(gen + " --keep-unprintable");
+    ASSERT_EQ(kept.exit_code, test::kExitOk) << kept.output;
+    EXPECT_EQ(temporaryFiles(dir), 0);
+    const auto v = runTsf("verify " + (dir / "m.stl").string() + " --scene " + (dir / "m.stl.scene.json").string());
+    EXPECT_EQ(v.exit_code, test::kExitOk) << v.output;
+}
+
 // Every writer's failure is the user's to fix, whatever the format: with a
 // file-size limit (prlimit --fsize, in bytes) below the size of the file
 // that fails, tsf gen ends with exit 2 and the OS's reason naming that file,
