@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/large_blocks.h"
 #include "gen/util/error.h"
 #include "gen/util/temp_files.h"
 
@@ -33,6 +34,7 @@ void setInvocation(int argc, char** argv) {
 }  // namespace tsf::cli
 
 int main(int argc, char** argv) {
+    tsf::cli::setUpLargeBlocks();  // a model's large arrays on huge pages, reused once freed
     tsf::cli::setInvocation(argc, argv);
     tsf::installTempFileCleanup();  // no temporary file outlives a signal or a file-size limit
     CLI::App app{"tsf " TSF_VERSION " - turn a 2D scalar field into something you can feel:\n"
