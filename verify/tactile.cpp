@@ -80,6 +80,10 @@ bool dihedralAngles(const Mesh& m, std::vector<std::vector<EdgeAngle>>& parts, s
         bool forward;
     };
     auto work = [&](unsigned w) {
+        // A closed mesh has 3/2 edges per triangle, each measured once: room
+        // for a worker's share of them at once (no copying as the list grows;
+        // pages never written are never touched).
+        parts[w].reserve(m.triangles.size() * 3 / 2 / workers + 64);
         std::vector<Use> uses;
         const size_t from = nv * w / workers, to = nv * (w + 1) / workers;
         for (size_t x = from; x < to; ++x) {
