@@ -33,6 +33,18 @@
 #include <malloc.h>
 #include <sys/mman.h>
 
+// Under a sanitizer the sanitizer's own operator new stays: it checks that
+// what new allocated is freed by delete, which a malloc'd block is not.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
+#define TSF_SANITIZER_ALLOCATES 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define TSF_SANITIZER_ALLOCATES 1
+#endif
+
+#ifndef TSF_SANITIZER_ALLOCATES
 namespace {
 
 constexpr std::size_t kLargeBlockBytes = std::size_t(4) << 20;
@@ -62,6 +74,7 @@ void* allocate(std::size_t n) {
 }
 
 }  // namespace
+#endif
 
 namespace tsf::cli {
 
@@ -76,5 +89,7 @@ void setUpLargeBlocks() {
 
 }  // namespace tsf::cli
 
+#ifndef TSF_SANITIZER_ALLOCATES
 void* operator new(std::size_t n) { return allocate(n); }
 void* operator new[](std::size_t n) { return allocate(n); }
+#endif
