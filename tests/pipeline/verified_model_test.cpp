@@ -21,10 +21,16 @@ HexField hills() {
     return test::fieldFromFunction(12, 10, [](int c, int r) { return 1.0 + double((c * 3 + r * 5) % 7); });
 }
 
-TEST(VerifiedModel, OneCallMeshesAndVerifiesAgainstTheScene) {
+// The hills with the default orientation marks (smallParams leaves them
+// out): a model as tsf gen makes it.
+Scene hillsWithMarks() {
     SceneParams p = test::smallParams(Bottom::Flat, Cull::Hull);
     p.marks = MarkParams{};
-    const Scene s = buildScene(hills(), p);
+    return buildScene(hills(), p);
+}
+
+TEST(VerifiedModel, OneCallMeshesAndVerifiesAgainstTheScene) {
+    const Scene s = hillsWithMarks();
     std::vector<std::string> stages;
     const VerifiedModel m = makeVerifiedModel(s, ModelRequest{}, [&](const std::string& st) { stages.push_back(st); });
     ASSERT_TRUE(m.report);
@@ -39,9 +45,7 @@ TEST(VerifiedModel, OneCallMeshesAndVerifiesAgainstTheScene) {
 }
 
 TEST(VerifiedModel, PartsAreMeshedAndVerifiedAloneAndTogether) {
-    SceneParams p = test::smallParams(Bottom::Flat, Cull::Hull);
-    p.marks = MarkParams{};
-    const Scene s = buildScene(hills(), p);
+    const Scene s = hillsWithMarks();
     ModelRequest rq;
     rq.parts = true;
     const VerifiedModel m = makeVerifiedModel(s, rq);
@@ -91,9 +95,7 @@ TEST(VerifiedModel, AFrontEndsEarlyRefusalEndsTheCallBeforeAnyCheck) {
 // The one solid is handed to write_ahead while it is verified: the very
 // mesh the checks read and the call returns (as the file holds it: float32).
 TEST(VerifiedModel, TheSolidIsWrittenAheadAsItIsChecked) {
-    SceneParams p = test::smallParams(Bottom::Flat, Cull::Hull);
-    p.marks = MarkParams{};
-    const Scene s = buildScene(hills(), p);
+    const Scene s = hillsWithMarks();
     ModelRequest rq;
     rq.stored_as_float32 = true;
     Mesh written;
@@ -153,9 +155,7 @@ TEST(VerifiedModel, PartsHalvesAndUnverifiedModelsAreNotWrittenAhead) {
     int calls = 0;
     ModelRequest rq;
     rq.write_ahead = [&](const Mesh&) { ++calls; };
-    SceneParams p = test::smallParams(Bottom::Flat, Cull::Hull);
-    p.marks = MarkParams{};
-    const Scene flat = buildScene(hills(), p);
+    const Scene flat = hillsWithMarks();
     ModelRequest parts = rq;
     parts.parts = true;
     EXPECT_FALSE(makeVerifiedModel(flat, parts).written_ahead);
