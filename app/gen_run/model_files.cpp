@@ -34,16 +34,11 @@ MeshWriteOptions modelWriteOptions(const GenCommandOptions& o) {
     return wo;
 }
 
-bool writesOneSolid(const GenCommandOptions& o, const Scene& scene) {
-    // With --tile the model may be cut after it is made: written after.
-    return !o.output.empty() && !o.parts && !o.printer.tile && !scene.halves;
-}
-
 void writeModelFiles(const GenCommandOptions& o, const VerifiedModel& made, const std::optional<VerifiedTiles>& tiles,
                      GenSummary& summary) {
     if (o.output.empty()) return;
     const MeshWriteOptions wo = modelWriteOptions(o);
-    if (made.written_ahead && !made.halves && !tiles && !o.parts) {
+    if (made.written_ahead) {
         summary.outputs.push_back({o.output, "model"});  // written while it was verified
     } else if (made.halves) {
         writeHalves(*made.halves, o.output, wo, summary);

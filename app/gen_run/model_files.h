@@ -7,7 +7,6 @@
 #include "app/gen_run/gen_command_options.h"
 #include "app/gen_summary.h"
 #include "gen/mesh_io/mesh_writer.h"
-#include "gen/model/scene.h"
 #include "pipeline/verified_model.h"
 #include "pipeline/verified_tiles.h"
 
@@ -15,11 +14,6 @@ namespace tsf::cli {
 
 /// How o.output is written: the STL's ASCII or binary form, its title.
 MeshWriteOptions modelWriteOptions(const GenCommandOptions& o);
-
-/// True when o.output holds the one solid as made (no parts, no tiles, no
-/// halves): it can then be written while the model is verified
-/// (ModelRequest::write_ahead).
-bool writesOneSolid(const GenCommandOptions& o, const Scene& scene);
 
 /// Writes the model's file or files to o.output and lists them in the
 /// summary (a file made.written_ahead is only listed). Nothing when no -o

@@ -30,7 +30,9 @@ ModelRequest modelRequest(const GenCommandOptions& o, const Scene& scene) {
     // takes about a second to convert, write and sync, on the disk more than
     // on the cores the checks use. Committed with the run's other files only
     // once every check has passed.
-    if (rq.verify && writesOneSolid(o, scene))
+    // The pipeline writes none ahead for parts or halves; with --tile the
+    // model may still be cut into tiles after it is made.
+    if (rq.verify && !o.output.empty() && !o.printer.tile)
         rq.write_ahead = [&o](const Mesh& mesh) { writeMesh(mesh, o.output, modelWriteOptions(o)); };
     return rq;
 }
