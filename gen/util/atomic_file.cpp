@@ -238,18 +238,7 @@ void AtomicFile::commit(std::optional<FileStamp> stamp) {
     ::close(fd);
     if (g_output_set != nullptr) {
         // Renamed with the rest of the set; until then the set owns the file.
-        // A target written again in the same run (a model made again) keeps
-        // only its newest bytes: the earlier file is removed, so the commit
-        // never shows the target's superseded version, not even between two
-        // renames.
-        for (auto it = g_output_set->pending_.begin(); it != g_output_set->pending_.end(); ++it)
-            if (it->target_path == target_path_) {
-                ::unlink(it->temp_path.c_str());
-                unregisterTempFile(it->cleanup_slot);
-                g_output_set->pending_.erase(it);
-                break;
-            }
-        g_output_set->pending_.push_back({temp_path_, target_path_, cleanup_slot_, stamp});
+        g_output_set->take({temp_path_, target_path_, cleanup_slot_, stamp});
         cleanup_slot_ = -1;
         committed_ = true;
         return;
@@ -276,19 +265,34 @@ OutputSet::~OutputSet() {
     }
 }
 
-const OutputSet::Pending* OutputSet::latest(const std::string& target) const {
-    for (auto it = pending_.rbegin(); it != pending_.rend(); ++it)
-        if (it->target_path == target) return &*it;
+void OutputSet::take(Pending file) {
+    // A target written again in the same run (a model made again) keeps
+    // only its newest bytes: the earlier file is removed, so the commit
+    // never shows the target's superseded version, not even between two
+    // renames.
+    for (auto it = pending_.begin(); it != pending_.end(); ++it)
+        if (it->target_path == file.target_path) {
+            ::unlink(it->temp_path.c_str());
+            unregisterTempFile(it->cleanup_slot);
+            pending_.erase(it);
+            break;
+        }
+    pending_.push_back(std::move(file));
+}
+
+const OutputSet::Pending* OutputSet::pendingFor(const std::string& target) const {
+    for (const Pending& p : pending_)
+        if (p.target_path == target) return &p;
     return nullptr;
 }
 
 std::string OutputSet::currentPath(const std::string& target) const {
-    const Pending* p = latest(target);
+    const Pending* p = pendingFor(target);
     return p ? p->temp_path : target;
 }
 
 std::optional<FileStamp> OutputSet::stampOf(const std::string& target) const {
-    const Pending* p = latest(target);
+    const Pending* p = pendingFor(target);
     return p ? p->stamp : std::nullopt;
 }
 

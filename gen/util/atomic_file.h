@@ -112,8 +112,11 @@ public:
 
 private:
     friend class AtomicFile;
-    /// The file handed to the set for `target`, if any.
-    const Pending* latest(const std::string& target) const;
+    /// Hands a committed temporary file to the set, in place of the one
+    /// handed earlier for the same target (removed at once).
+    void take(Pending file);
+    /// The file waiting in the set for `target`, if any (one at most).
+    const Pending* pendingFor(const std::string& target) const;
     std::vector<Pending> pending_;
     bool committed_ = false;
 };
