@@ -43,6 +43,50 @@ inline double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The mesh's vertices as the kernel's points. With the filtered kernel a
+// point is three doubles, made from the position where it is read: a copy
+// of every vertex cost 153 MiB on a 1000 x 1000 model, alive through the
+// self-intersection test beside the column grid. The exact-construction
+// kernel's points share reference-counted numbers and are made once.
+template <class K>
+class KernelPoints {
+public:
+    using P = typename K::Point_3;
+    static constexpr bool kMadeWhenRead = std::is_same_v<K, CGAL::Exact_predicates_inexact_constructions_kernel>;
+
+    explicit KernelPoints(const std::vector<Vec3>& positions) : positions_(&positions) {
+        if constexpr (!kMadeWhenRead) {
+            made_.reserve(positions.size());
+            for (const Vec3& p : positions) made_.emplace_back(p.x, p.y, p.z);
+        }
+    }
+    /// A point by value (filtered kernel) or by reference (exact one).
+    decltype(auto) operator[](size_t v) const {
+        if constexpr (kMadeWhenRead) {
+            const Vec3& p = (*positions_)[v];
+            return P(p.x, p.y, p.z);
+        } else {
+            return (made_[v]);
+        }
+    }
+    size_t size() const { return positions_->size(); }
+    /// Every point, in a list of its own (for CGAL's functions that take one).
+    std::vector<P> list() const {
+        if constexpr (kMadeWhenRead) {
+            std::vector<P> all;
+            all.reserve(size());
+            for (size_t v = 0; v < size(); ++v) all.push_back((*this)[v]);
+            return all;
+        } else {
+            return made_;
+        }
+    }
+
+private:
+    const std::vector<Vec3>* positions_;
+    std::vector<P> made_;  // exact kernel only
+};
+
 // Do the triangles a and b of a closed, manifold, consistently oriented
 // soup meet other than in the vertices or the edge they share by index?
 // The same answer as CGAL 5.5's PMP::self_intersections on the
@@ -55,7 +99,7 @@ inline double msSince(std::chrono::steady_clock::time_point t0) {
 // shortcuts above, everything else by CGAL's predicates. Neither triangle
 // may have three collinear corners.
 template <class K>
-bool trianglesMeet(const std::vector<typename K::Point_3>& points, const std::vector<Vec3>& pos,
+bool trianglesMeet(const KernelPoints<K>& points, const std::vector<Vec3>& pos,
                    const std::array<uint32_t, 3>& a, const std::array<uint32_t, 3>& b, uint8_t code_a,
                    uint8_t code_b) {
     using Triangle = typename K::Triangle_3;
@@ -135,20 +179,12 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
     GeometricFindings out;
     auto t0 = std::chrono::steady_clock::now();
 
-    // The points and the zero-area test on the workers, each a run of
-    // vertices or triangles; the runs' findings joined in order, so the list
-    // is the same for any number of threads.
-    // (Points of the exact-construction kernel share reference-counted
-    // numbers: they are made on one thread.)
-    constexpr bool plain_points = std::is_same_v<K, CGAL::Exact_predicates_inexact_constructions_kernel>;
-    const unsigned point_workers = plain_points ? workerCount(workers) : 1u;
-    std::vector<P> points(mesh.positions.size());
-    runOnRanges(point_workers, mesh.positions.size(), [&](unsigned, size_t begin, size_t end) {
-        for (size_t v = begin; v < end; ++v) {
-            const Vec3& p = mesh.positions[v];
-            points[v] = P(p.x, p.y, p.z);
-        }
-    });
+    // The zero-area test on the workers, each a run of triangles; the runs'
+    // findings joined in order, so the list is the same for any number of
+    // threads. (Points of the exact-construction kernel share
+    // reference-counted numbers: they are read on one thread.)
+    const unsigned point_workers = KernelPoints<K>::kMadeWhenRead ? workerCount(workers) : 1u;
+    const KernelPoints<K> points(mesh.positions);
 
     // Usable triangles: indices in range and distinct.
     std::vector<uint8_t> usable(mesh.triangles.size(), 1);
@@ -253,18 +289,19 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
             // added as is; anything else goes through orient_polygon_soup, which
             // flips triangles and duplicates points at non-manifold places (the
             // repair is reported, never used for the verdict of the topology checks).
+            std::vector<P> soup_points = points.list();
             if (!valid_soup) {
-                const size_t before = points.size();
-                PMP::orient_polygon_soup(points, polygons);
+                const size_t before = soup_points.size();
+                PMP::orient_polygon_soup(soup_points, polygons);
                 out.soup_repaired = true;
-                out.points_duplicated = points.size() - before;
+                out.points_duplicated = soup_points.size() - before;
             }
             SM sm;
-            sm.reserve(typename SM::size_type(points.size()), typename SM::size_type(3 * polygons.size()),
+            sm.reserve(typename SM::size_type(soup_points.size()), typename SM::size_type(3 * polygons.size()),
                        typename SM::size_type(polygons.size()));
             std::vector<typename SM::Vertex_index> vid;
-            vid.reserve(points.size());
-            for (const P& p : points) vid.push_back(sm.add_vertex(p));
+            vid.reserve(soup_points.size());
+            for (const P& p : soup_points) vid.push_back(sm.add_vertex(p));
             bool all_added = true;
             for (const auto& q : polygons) {
                 if (sm.add_face(vid[q[0]], vid[q[1]], vid[q[2]]) == SM::null_face()) {
