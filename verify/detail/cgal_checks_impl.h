@@ -26,6 +26,7 @@
 
 #include "verify/detail/cgal_checks.h"
 #include "verify/detail/flat_planes.h"
+#include "verify/detail/pairwise_sum.h"
 #include "verify/column_grid.h"
 #include "verify/detail/vertex_fans.h"
 #include "gen/util/workers.h"
@@ -344,38 +345,21 @@ GeometricFindings geometricChecks(const Mesh& mesh, const MeshTopology& topo, si
         t0 = std::chrono::steady_clock::now();
         typename K::Compute_volume_3 tetra = K().compute_volume_3_object();
         using FT = typename K::FT;
-        // Summed pairwise: a lazy exact number records every operation, and a
-        // million-term running sum is a million-deep chain that overflows the
-        // stack when evaluated or freed; pairwise the depth is log2(terms).
-        auto pairwiseSum = [](std::vector<FT>& terms) {
-            if (terms.empty()) return FT(0);
-            while (terms.size() > 1) {
-                const size_t half = terms.size() / 2;
-                for (size_t i = 0; i < half; ++i) terms[i] = terms[2 * i] + terms[2 * i + 1];
-                if (terms.size() % 2) terms[half] = terms.back();
-                terms.resize(half + terms.size() % 2);
-            }
-            return terms[0];
-        };
+        // Each term on its own (on the workers with plain doubles), the sum
+        // in one order, pairwise: the same bits for any number of threads,
+        // and a depth of log2(terms) for the exact kernel's lazy numbers.
         std::vector<FT> per_component;
-        std::vector<FT> terms;
         for (const MeshComponent& c : topo.components) {
             const P o = points[mesh.triangles[c.triangles.front()][0]];
-            // Each term on its own (on the workers with plain doubles), the
-            // sum in one order: the same bits for any number of threads.
-            terms.resize(c.triangles.size());
-            runOnRanges(point_workers, c.triangles.size(), [&](unsigned, size_t begin, size_t end) {
-                for (size_t k = begin; k < end; ++k) {
-                    const auto& tri = mesh.triangles[c.triangles[k]];
-                    terms[k] = tetra(o, points[tri[0]], points[tri[1]], points[tri[2]]);
-                }
+            const FT v = pairwiseSum<FT>(c.triangles.size(), point_workers, [&](size_t k) {
+                const auto& tri = mesh.triangles[c.triangles[k]];
+                return tetra(o, points[tri[0]], points[tri[1]], points[tri[2]]);
             });
-            const FT v = pairwiseSum(terms);
             out.component_volume_mm3.push_back(CGAL::to_double(v));
             out.component_volume_sign.push_back(int(CGAL::sign(v)));  // exact with Epeck
             per_component.push_back(v);
         }
-        const FT total = pairwiseSum(per_component);
+        const FT total = pairwiseSum<FT>(per_component.size(), 1, [&](size_t k) { return per_component[k]; });
         out.volume_mm3 = CGAL::to_double(total);
         out.volumes_computed = true;
         out.volume_ms = msSince(t0);
