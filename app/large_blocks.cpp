@@ -24,7 +24,7 @@
 // thread allocates from it (one arena): a 100 x 100 model's arrays are all
 // below 4 MiB, and its checks' workers each grew an arena of their own,
 // page by page (7 600 faults; 1 100 with the heap on huge pages and shared;
-// 0.25 -> 0.19 s on that VM). The workers allocate outside their loops, so
+// 0.27 -> 0.21 s on that VM). The workers allocate outside their loops, so
 // one arena costs them no waiting (malloc and free were 0.4 % of a
 // 1000 x 1000 run's profile with it).
 //
