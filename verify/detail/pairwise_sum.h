@@ -1,6 +1,7 @@
 // A pairwise sum of many terms without a list of them all.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <utility>
